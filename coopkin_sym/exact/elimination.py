@@ -1,0 +1,227 @@
+"""Fraction-free Gauss-Jordan elimination on matrices of integer polynomials.
+
+Matrices are lists of rows of python-flint ``fmpz_mpoly`` (one context). The
+elimination is "primitive": a row is updated only when it has a nonzero entry in the
+pivot column, as ``(p/g) row_i - (a/g) row_r`` with ``g = gcd(p, a)``, and every row
+is then divided by the gcd of its entries. Coefficients and degrees stay small, and
+everything is exact: this is elimination over the fraction field ``Q(x)`` done inside
+``Z[x]``.
+
+With no variables (a rational configuration) the work goes to flint's ``fmpz_mat``.
+
+A *reduced row* here is the primitive integer-polynomial multiple of a row of the
+reduced row echelon form over the fraction field, with a positive leading coefficient
+in its pivot entry: unique for a given row space, so equal subspaces give equal
+matrices.
+
+Example
+-------
+>>> import flint
+>>> ctx = flint.fmpz_mpoly_ctx.get(("L",), "degrevlex")
+>>> (L,) = ctx.gens()
+>>> rows = [[L, 2 * L, ctx.constant(0)], [ctx.constant(1), ctx.constant(2), L]]
+>>> rank(rows)
+2
+>>> [[str(e) for e in v] for v in nullspace(rows)]
+[['2', '-1', '0']]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import flint
+
+Poly = flint.fmpz_mpoly
+Row = list[Poly]
+
+
+def _size(p: Poly) -> tuple[int, int, int]:
+    """How costly ``p`` is as a pivot: (total degree, terms, coefficient bits)."""
+    coeffs = p.coeffs()
+    return (p.total_degree(), len(coeffs), max(abs(int(c)).bit_length() for c in coeffs))
+
+
+def primitive(row: Sequence[Poly]) -> Row:
+    """``row`` divided by the gcd of its entries, its first nonzero entry made to have
+    a positive leading coefficient; a zero row is returned unchanged."""
+    g = None
+    for e in row:
+        if not e.is_zero():
+            g = e if g is None else g.gcd(e)
+            if g.is_one():
+                break
+    if g is None:
+        return list(row)
+    first = next(e for e in row if not e.is_zero())
+    if int(first.leading_coefficient()) < 0:
+        g = -g
+    if g.is_one():
+        return list(row)
+    return [e / g for e in row]
+
+
+def _is_zero_row(row: Sequence[Poly]) -> bool:
+    return all(e.is_zero() for e in row)
+
+
+def _eliminate(target: Row, pivot_row: Row, col: int) -> Row:
+    a = target[col]
+    p = pivot_row[col]
+    g = p.gcd(a)
+    pg, ag = p / g, a / g
+    return primitive([pg * x - ag * y for x, y in zip(target, pivot_row, strict=True)])
+
+
+def gauss_jordan(
+    rows: Sequence[Sequence[Poly]],
+    ncols: int,
+    column_order: Sequence[int] | None = None,
+    canonical: bool = True,
+    reduce: bool = True,
+) -> tuple[list[Row], list[int]]:
+    """Fraction-free Gauss-Jordan elimination.
+
+    Parameters
+    ----------
+    rows
+        The matrix, a list of rows of ``fmpz_mpoly``.
+    ncols
+        Number of columns (needed when ``rows`` is empty).
+    column_order
+        With ``canonical``, the order in which columns are taken as pivots; the result
+        is then the reduced row echelon form for the columns permuted into that order
+        (as reduced rows, see the module docstring). Default: natural order.
+    canonical
+        If false, any nonzero entry may be the pivot (the cheapest is taken): same row
+        space and rank, pivot columns not canonical. Faster on big symbolic matrices.
+    reduce
+        If false, only rows below the pivots are eliminated (enough for a rank).
+
+    Returns
+    -------
+    (reduced rows, pivot columns), zero rows dropped, in pivot order.
+    """
+    order = list(range(ncols)) if column_order is None else list(column_order)
+    work = [primitive(r) for r in rows if not _is_zero_row(r)]
+    if not work:
+        return [], []
+    nvars = work[0][0].context().nvars()
+    if nvars == 0 and canonical:
+        return _integer_rref(work, ncols, order)
+    done: list[tuple[Row, int]] = []
+    while work:
+        best = None
+        cols = order if canonical else range(ncols)
+        for c in cols:
+            for i, r in enumerate(work):
+                e = r[c]
+                if not e.is_zero():
+                    s = _size(e)
+                    if best is None or s < best[0]:
+                        best = (s, i, c)
+            if canonical and best is not None:
+                break
+        if best is None:
+            break
+        _, i, c = best
+        prow = work.pop(i)
+        work = [_eliminate(r, prow, c) if not r[c].is_zero() else r for r in work]
+        work = [r for r in work if not _is_zero_row(r)]
+        if reduce:
+            done = [(_eliminate(r, prow, c) if not r[c].is_zero() else r, pc) for r, pc in done]
+        done.append((prow, c))
+    if canonical:
+        rank_of = {c: k for k, c in enumerate(order)}
+        done.sort(key=lambda rc: rank_of[rc[1]])
+    return [_pivot_positive(primitive(r), c) for r, c in done], [c for _, c in done]
+
+
+def _pivot_positive(row: Row, pivot: int) -> Row:
+    """``row`` or ``-row``, whichever has a positive leading coefficient at ``pivot``."""
+    if int(row[pivot].leading_coefficient()) < 0:
+        return [-e for e in row]
+    return row
+
+
+def _integer_rref(rows: list[Row], ncols: int, order: list[int]) -> tuple[list[Row], list[int]]:
+    ctx = rows[0][0].context()
+    m = flint.fmpz_mat([[int(r[c].coeffs()[0]) if not r[c].is_zero() else 0 for c in order]
+                        for r in rows])
+    reduced, _den, rk = m.rref()
+    out_rows, pivots = [], []
+    for i in range(rk):
+        vals = [int(reduced[i, j]) for j in range(ncols)]
+        row = [ctx.constant(0)] * ncols
+        for j, c in enumerate(order):
+            row[c] = ctx.constant(vals[j])
+        pivots.append(order[next(j for j, v in enumerate(vals) if v)])
+        out_rows.append(_pivot_positive(primitive(row), pivots[-1]))
+    return out_rows, pivots
+
+
+def rank(rows: Sequence[Sequence[Poly]], ncols: int | None = None) -> int:
+    """Rank over the fraction field.
+
+    Examples
+    --------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "degrevlex")
+    >>> (t,) = ctx.gens()
+    >>> rank([[t, t**2], [ctx.constant(1), t]])
+    1
+    """
+    if not rows:
+        return 0
+    n = len(rows[0]) if ncols is None else ncols
+    return len(gauss_jordan(rows, n, canonical=False, reduce=False)[1])
+
+
+def nullspace(rows: Sequence[Sequence[Poly]], ncols: int | None = None,
+              zctx=None) -> list[Row]:
+    """A basis of the right nullspace over the fraction field, as primitive
+    polynomial vectors (one per free column).
+
+    ``ncols`` and the context ``zctx`` are needed when ``rows`` is empty.
+    """
+    if rows:
+        ncols = len(rows[0]) if ncols is None else ncols
+        zctx = rows[0][0].context() if zctx is None else zctx
+    if ncols is None or zctx is None:
+        raise ValueError("nullspace of an empty matrix needs ncols and zctx")
+    reduced, pivots = gauss_jordan(rows, ncols, canonical=False, reduce=True)
+    pivot_set = set(pivots)
+    zero = zctx.constant(0)
+    basis = []
+    for f in range(ncols):
+        if f in pivot_set:
+            continue
+        involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[f].is_zero()]
+        scale = zctx.constant(1)
+        for r, c in involved:
+            scale = scale * r[c] / scale.gcd(r[c])
+        v = [zero] * ncols
+        v[f] = scale
+        for r, c in involved:
+            v[c] = -(r[f] * (scale / r[c]))
+        basis.append(primitive(v))
+    return basis
+
+
+def matmul(a: Sequence[Sequence[Poly]], b: Sequence[Sequence[Poly]], zctx) -> list[Row]:
+    """Product of two polynomial matrices given as row lists."""
+    if not a:
+        return []
+    inner = len(b)
+    ncols = len(b[0]) if b else 0
+    out = []
+    for row in a:
+        new = []
+        for j in range(ncols):
+            s = zctx.constant(0)
+            for k in range(inner):
+                if not row[k].is_zero() and not b[k][j].is_zero():
+                    s = s + row[k] * b[k][j]
+            new.append(s)
+        out.append(new)
+    return out

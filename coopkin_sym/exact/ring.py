@@ -1,0 +1,185 @@
+"""Polynomial rings of one analysis and rational functions with known denominators.
+
+Every quantity of the kinematics is a rational function of the analysis variables
+(tangent half-angles ``t_<joint>``, free prismatic displacements, free parameters)
+whose denominator is a product of the factors ``1 + t_j**2``, one per free revolute
+joint. :class:`Frac` keeps the numerator as a python-flint ``fmpq_mpoly`` and the
+denominator as exponents of those known factors, so sums and products never need a
+polynomial gcd, and a row is cleared of denominators by multiplying with the highest
+power of each factor.
+
+Example
+-------
+>>> ring = Ring(["t_q1", "L"], denominator_variables=["t_q1"])
+>>> t, L = ring.gens()
+>>> c = ring.cos_of(0)                       # (1 - t^2) / (1 + t^2)
+>>> (c * L + L).den                          # denominators are exponents of 1 + t^2
+(1,)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+from math import lcm
+
+import flint
+
+ORDERING = "degrevlex"
+
+
+class Ring:
+    """The polynomial ring ``Q[x_1..x_n]`` (and ``Z[...]``) of one analysis.
+
+    Parameters
+    ----------
+    names
+        Variable names, in order.
+    denominator_variables
+        Names ``t`` whose factor ``1 + t**2`` may appear in denominators.
+    """
+
+    def __init__(self, names: Sequence[str], denominator_variables: Sequence[str] = ()):
+        self.names: tuple[str, ...] = tuple(names)
+        self.qctx = flint.fmpq_mpoly_ctx.get(self.names, ORDERING)
+        self.zctx = flint.fmpz_mpoly_ctx.get(self.names, ORDERING)
+        self.den_names: tuple[str, ...] = tuple(denominator_variables)
+        one = self.qctx.constant(1)
+        self.den_factors: tuple[flint.fmpq_mpoly, ...] = tuple(
+            one + self.qvar(n) ** 2 for n in self.den_names
+        )
+        self._no_den = (0,) * len(self.den_names)
+
+    @property
+    def nvars(self) -> int:
+        return len(self.names)
+
+    def qvar(self, name: str) -> flint.fmpq_mpoly:
+        """The variable ``name`` as an ``fmpq_mpoly``."""
+        return self.qctx.gens()[self.names.index(name)]
+
+    def gens(self) -> list[Frac]:
+        """All variables as :class:`Frac`."""
+        return [self.frac(g) for g in self.qctx.gens()]
+
+    # --- constructing fractions -------------------------------------------------
+    def frac(self, num, den: tuple[int, ...] | None = None) -> Frac:
+        """A fraction with numerator ``num`` (fmpq_mpoly, int, Fraction or fmpq)."""
+        if not isinstance(num, flint.fmpq_mpoly):
+            num = self.qctx.constant(_to_fmpq(num))
+        return Frac(self, num, self._no_den if den is None else den)
+
+    def zero(self) -> Frac:
+        return self.frac(0)
+
+    def one(self) -> Frac:
+        return self.frac(1)
+
+    def _den_of(self, name: str) -> tuple[int, ...]:
+        k = self.den_names.index(name)
+        return tuple(1 if i == k else 0 for i in range(len(self.den_names)))
+
+    def cos_of(self, k: int) -> Frac:
+        """``cos q = (1 - t^2)/(1 + t^2)`` for the ``k``-th denominator variable."""
+        t = self.qvar(self.den_names[k])
+        return Frac(self, 1 - t**2, self._den_of(self.den_names[k]))
+
+    def sin_of(self, k: int) -> Frac:
+        """``sin q = 2 t/(1 + t^2)`` for the ``k``-th denominator variable."""
+        t = self.qvar(self.den_names[k])
+        return Frac(self, 2 * t, self._den_of(self.den_names[k]))
+
+    def den_poly(self, den: tuple[int, ...]) -> flint.fmpq_mpoly:
+        """The denominator ``prod (1 + t_j^2)^e_j`` as a polynomial."""
+        p = self.qctx.constant(1)
+        for f, e in zip(self.den_factors, den, strict=True):
+            if e:
+                p = p * f**e
+        return p
+
+    # --- integer polynomials ------------------------------------------------------
+    def to_zpoly(self, p: flint.fmpq_mpoly) -> flint.fmpz_mpoly:
+        """``p`` times the least common denominator of its coefficients, over Z."""
+        terms = p.to_dict()
+        d = lcm(*(int(c.q) for c in terms.values())) if terms else 1
+        return self.zctx.from_dict({m: int(c.p) * (d // int(c.q)) for m, c in terms.items()})
+
+    def clear_row(self, row: Sequence[Frac]) -> list[flint.fmpz_mpoly]:
+        """A row of fractions times one nonzero polynomial, as integer polynomials.
+
+        Scaling a row of a matrix by a nonzero polynomial keeps its nullspace and rank,
+        so this is how a matrix of rational functions enters the fraction-free
+        elimination of :mod:`coopkin_sym.exact.elimination`.
+        """
+        if not row:
+            return []
+        top = tuple(max(es) for es in zip(*(f.den for f in row), strict=True))
+        nums = [f.num * self.den_poly(tuple(a - b for a, b in zip(top, f.den, strict=True)))
+                for f in row]
+        dens = [int(c.q) for p in nums for c in p.to_dict().values()]
+        d = lcm(*dens) if dens else 1
+        return [self.zctx.from_dict({m: int(c.p) * (d // int(c.q))
+                                     for m, c in p.to_dict().items()}) for p in nums]
+
+
+def _to_fmpq(x) -> flint.fmpq:
+    if isinstance(x, flint.fmpq):
+        return x
+    if isinstance(x, int):
+        return flint.fmpq(x)
+    f = Fraction(x)
+    return flint.fmpq(f.numerator, f.denominator)
+
+
+@dataclass(frozen=True, slots=True)
+class Frac:
+    """``num / prod(ring.den_factors[j] ** den[j])`` with ``num`` an ``fmpq_mpoly``."""
+
+    ring: Ring
+    num: flint.fmpq_mpoly
+    den: tuple[int, ...]
+
+    def is_zero(self) -> bool:
+        return self.num.is_zero()
+
+    def _lift(self, other) -> Frac:
+        return other if isinstance(other, Frac) else self.ring.frac(other)
+
+    def _common(self, other: Frac) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly, tuple]:
+        if self.den == other.den:
+            return self.num, other.num, self.den
+        top = tuple(max(a, b) for a, b in zip(self.den, other.den, strict=True))
+        dp = self.ring.den_poly
+        a = self.num * dp(tuple(t - e for t, e in zip(top, self.den, strict=True)))
+        b = other.num * dp(tuple(t - e for t, e in zip(top, other.den, strict=True)))
+        return a, b, top
+
+    def __add__(self, other) -> Frac:
+        other = self._lift(other)
+        if other.num.is_zero():
+            return self
+        if self.num.is_zero():
+            return other
+        a, b, den = self._common(other)
+        return Frac(self.ring, a + b, den)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> Frac:
+        return Frac(self.ring, -self.num, self.den)
+
+    def __sub__(self, other) -> Frac:
+        return self + (-self._lift(other))
+
+    def __rsub__(self, other) -> Frac:
+        return self._lift(other) - self
+
+    def __mul__(self, other) -> Frac:
+        other = self._lift(other)
+        if self.num.is_zero() or other.num.is_zero():
+            return self.ring.zero()
+        den = tuple(a + b for a, b in zip(self.den, other.den, strict=True))
+        return Frac(self.ring, self.num * other.num, den)
+
+    __rmul__ = __mul__

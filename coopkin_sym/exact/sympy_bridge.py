@@ -1,0 +1,99 @@
+"""Conversions between SymPy and python-flint: the one place where they meet.
+
+SymPy is the front end (model numbers in, matrices out for display, LaTeX and
+printing); python-flint does the algebra. Nothing else in the package converts.
+
+Example
+-------
+>>> import sympy as sp
+>>> from coopkin_sym.exact.ring import Ring
+>>> ring = Ring(["L"])
+>>> L = sp.Symbol("L", positive=True)
+>>> p = poly_from_sympy(2 * L**2 + sp.Rational(1, 3), ring, {"L": L})
+>>> poly_to_sympy(p, ring, {"L": L})
+2*L**2 + 1/3
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import flint
+import sympy as sp
+
+from .ring import Frac, Ring
+
+
+def rational_to_sympy(c) -> sp.Rational:
+    """An ``fmpz``/``fmpq``/``int`` as a SymPy ``Rational``."""
+    if isinstance(c, flint.fmpq):
+        return sp.Rational(int(c.p), int(c.q))
+    return sp.Integer(int(c))
+
+
+def poly_to_sympy(p, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """An ``fmpz_mpoly`` or ``fmpq_mpoly`` of ``ring`` as a SymPy expression."""
+    syms = [symbols[n] for n in ring.names]
+    terms = []
+    for monom, c in p.to_dict().items():
+        factors = [rational_to_sympy(c)]
+        factors += [s**e for s, e in zip(syms, monom, strict=True) if e]
+        terms.append(sp.Mul(*factors))
+    return sp.Add(*terms)
+
+
+def frac_to_sympy(f: Frac, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """A :class:`Frac` as a SymPy expression ``num / den``."""
+    num = poly_to_sympy(f.num, f.ring, symbols)
+    if not any(f.den):
+        return num
+    den = sp.Mul(*[(1 + symbols[n] ** 2) ** e
+                   for n, e in zip(f.ring.den_names, f.den, strict=True) if e])
+    return num / den
+
+
+def poly_from_sympy(expr, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> flint.fmpq_mpoly:
+    """A SymPy polynomial with rational coefficients in ``ring``'s variables, as an
+    ``fmpq_mpoly``; raises ``ValueError`` if it is not one."""
+    expr = sp.sympify(expr)
+    if expr.is_Rational:
+        return ring.qctx.constant(flint.fmpq(int(expr.p), int(expr.q)))
+    syms = [symbols[n] for n in ring.names]
+    if not syms:
+        raise ValueError(f"{expr} is not a rational number")
+    try:
+        poly = sp.Poly(expr, *syms, domain=sp.QQ)
+    except (sp.PolynomialError, sp.CoercionFailed) as exc:
+        raise ValueError(f"{expr} is not a polynomial in {', '.join(ring.names)}") from exc
+    return ring.qctx.from_dict({
+        m: flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q)) for m, c in poly.terms()
+    })
+
+
+def ratio_to_sympy(num, den, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """``num / den`` (integer polynomials) as a SymPy expression in lowest terms."""
+    g = num.gcd(den) if not num.is_zero() else den
+    num, den = num / g, den / g
+    if int(den.leading_coefficient()) < 0:
+        num, den = -num, -den
+    n = poly_to_sympy(num, ring, symbols)
+    return n if den.is_one() else n / poly_to_sympy(den, ring, symbols)
+
+
+def matrix_to_sympy(rows, ring: Ring, symbols: Mapping[str, sp.Symbol],
+                    shape: tuple[int, int] | None = None) -> sp.Matrix:
+    """A list of rows of polynomials or :class:`Frac` as an immutable SymPy matrix."""
+    def conv(e):
+        return frac_to_sympy(e, symbols) if isinstance(e, Frac) else poly_to_sympy(e, ring, symbols)
+    if not rows:
+        return sp.ImmutableMatrix(sp.zeros(*(shape or (0, 0))))
+    return sp.ImmutableMatrix([[conv(e) for e in r] for r in rows])
+
+
+def columns_to_sympy(columns, nrows: int, ring: Ring,
+                     symbols: Mapping[str, sp.Symbol]) -> sp.Matrix:
+    """Vectors (lists of polynomials) as the columns of a SymPy matrix
+    (``nrows x 0`` when there are none)."""
+    if not columns:
+        return sp.ImmutableMatrix(sp.zeros(nrows, 0))
+    return matrix_to_sympy(columns, ring, symbols).T
