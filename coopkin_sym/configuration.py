@@ -1,0 +1,139 @@
+"""Where to analyze: exact values for some joint variables and parameters.
+
+A :class:`Configuration` says which joint variables stay symbolic (``free``) and gives
+every other joint an exact value: a revolute angle as its exact ``(cos q, sin q)``
+pair (rational tangent half-angle, or q = pi), a prismatic displacement as a
+rational or a polynomial in the parameters. Parameters without a value stay symbolic.
+Unset joints are at home (q = 0).
+
+Example
+-------
+>>> from coopkin_sym.model import load_model
+>>> m = load_model("paper-case1-hard")
+>>> c = Configuration.parse(m, "q1=pi/2,L=2")
+>>> c.revolute["q1"], c.parameters["L"]
+((0, 1), 2)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from .exactnum import NumberError, angle_text, parse_angle, parse_number
+from .model import Model
+
+
+class ConfigurationError(ValueError):
+    """A configuration that names an unknown variable or has an inexact value."""
+
+
+@dataclass(frozen=True)
+class Configuration:
+    """Exact values of joint variables and parameters, and the free joints."""
+
+    revolute: Mapping[str, tuple[sp.Rational, sp.Rational]] = field(default_factory=dict)
+    prismatic: Mapping[str, sp.Expr] = field(default_factory=dict)
+    parameters: Mapping[str, sp.Rational] = field(default_factory=dict)
+    free: frozenset[str] = frozenset()
+
+    @classmethod
+    def parse(
+        cls,
+        model: Model,
+        at: str | Mapping[str, object] | None = None,
+        free: Iterable[str] | str | None = None,
+    ) -> Configuration:
+        """Read ``at`` (``"q1=pi/2,q2=2*atan(1/3),d4=1/2,L=1000"`` or a mapping) and
+        the free joints (names, or ``"all"``) for ``model``.
+
+        Revolute values are angles in SymPy syntax, or ``(cos, sin)`` pairs; a joint
+        both given a value and declared free is an error.
+        """
+        items = _split_at(at)
+        joints = {j.name: j for j in model.joints}
+        params = {p.name: p for p in model.parameters}
+        if free == "all":
+            free_set = frozenset(joints)
+        else:
+            free_set = frozenset([free] if isinstance(free, str) else (free or ()))
+        unknown = sorted(free_set - set(joints))
+        if unknown:
+            raise ConfigurationError(
+                f"free: unknown joint {', '.join(unknown)} (joints: {', '.join(joints)})")
+        revolute: dict[str, tuple[sp.Rational, sp.Rational]] = {}
+        prismatic: dict[str, sp.Expr] = {}
+        values: dict[str, sp.Rational] = {}
+        for name, value in items:
+            where = f"--at {name}"
+            if name in joints:
+                if name in free_set:
+                    raise ConfigurationError(f"{where}: joint {name} is also declared free")
+                if joints[name].type == "revolute":
+                    revolute[name] = _angle(value, where)
+                else:
+                    prismatic[name] = _number(value, params, where)
+            elif name in params:
+                v = _number(value, {}, where)
+                if v <= 0:
+                    raise ConfigurationError(f"{where}: parameters are lengths and must be "
+                                             f"positive, got {v}")
+                values[name] = v
+            else:
+                known = ", ".join(list(joints) + list(params))
+                raise ConfigurationError(f"{where}: unknown name {name!r} (known: {known})")
+        # a prismatic displacement may use parameters; substitute the given values
+        subs = {params[n]: v for n, v in values.items()}
+        prismatic = {n: sp.expand(e.subs(subs)) for n, e in prismatic.items()}
+        return cls(revolute, prismatic, values, free_set)
+
+    def at_text(self) -> str:
+        """This configuration in ``--at`` syntax (free joints left out)."""
+        parts = [f"{n}={angle_text(c, s)}" for n, (c, s) in self.revolute.items()]
+        parts += [f"{n}={sp.sstr(v)}" for n, v in self.prismatic.items()]
+        parts += [f"{n}={sp.sstr(v)}" for n, v in self.parameters.items()]
+        return ",".join(parts)
+
+
+def _split_at(at) -> list[tuple[str, object]]:
+    if at is None:
+        return []
+    if isinstance(at, Mapping):
+        return [(str(k), v) for k, v in at.items()]
+    items = []
+    for part in str(at).split(","):
+        part = part.strip()
+        if not part:
+            continue
+        if "=" not in part:
+            raise ConfigurationError(f"--at: expected NAME=VALUE, got {part!r}")
+        name, value = part.split("=", 1)
+        items.append((name.strip(), value.strip()))
+    names = [n for n, _ in items]
+    dups = sorted({n for n in names if names.count(n) > 1})
+    if dups:
+        raise ConfigurationError(f"--at: {', '.join(dups)} given more than once")
+    return items
+
+
+def _angle(value, where: str) -> tuple[sp.Rational, sp.Rational]:
+    if isinstance(value, tuple) and len(value) == 2:
+        c, s = (sp.Rational(v) for v in value)
+        if c**2 + s**2 != 1:
+            raise ConfigurationError(f"{where}: (cos, sin) = ({c}, {s}) is not on the unit "
+                                     "circle")
+        return c, s
+    try:
+        return parse_angle(str(value) if not isinstance(value, sp.Basic) else sp.sstr(value),
+                           where)
+    except NumberError as exc:
+        raise ConfigurationError(str(exc)) from None
+
+
+def _number(value, params, where: str) -> sp.Expr:
+    try:
+        return parse_number(value, params, where)
+    except NumberError as exc:
+        raise ConfigurationError(str(exc)) from None

@@ -1,0 +1,74 @@
+"""The paper's case studies, shipped as model files.
+
+Bicchi, Melchiorri and Balluchi (ICRA 1992), section 4: case study 1 (two one-link
+arms, four contact-model combinations) and case study 2 (two SCARA-type robots,
+complete-constraint and hard-finger contacts). Each file's header comment cites the
+section and the numbers the paper states.
+
+Example
+-------
+>>> list_examples()[:2]
+['paper-case1-complete-hard', 'paper-case1-hard']
+>>> example_path("paper-case1-hard").name
+'paper-case1-hard.yaml'
+"""
+
+from __future__ import annotations
+
+from importlib.resources import files
+from pathlib import Path
+
+__all__ = ["describe_example", "example_path", "list_examples"]
+
+_SUFFIX = ".yaml"
+
+
+def list_examples() -> list[str]:
+    """Names of the shipped examples, sorted, without extension.
+
+    Example
+    -------
+    >>> "paper-case2-hard" in list_examples()
+    True
+    """
+    return sorted(entry.name[: -len(_SUFFIX)] for entry in files(__name__).iterdir()
+                  if entry.name.endswith(_SUFFIX))
+
+
+def example_path(name: str) -> Path:
+    """The file of the shipped example ``name``.
+
+    Raises
+    ------
+    ValueError
+        If there is no such example (the message lists the shipped ones).
+
+    Example
+    -------
+    >>> example_path("paper-case2-complete").suffix
+    '.yaml'
+    """
+    names = list_examples()
+    if name not in names:
+        raise ValueError(f"unknown example '{name}'; shipped examples: {', '.join(names)}")
+    return Path(str(files(__name__) / f"{name}{_SUFFIX}"))
+
+
+def describe_example(name: str) -> str:
+    """One line about the example: its first comment line, or else its model's name.
+
+    Example
+    -------
+    >>> describe_example("paper-case1-soft")[:20]
+    'Paper case study 1 ('
+    """
+    path = example_path(name)
+    for line in path.read_text(encoding="utf-8").splitlines():
+        text = line.strip()
+        if text.startswith("#") and text.lstrip("#").strip():
+            return text.lstrip("#").strip()
+        if text and not text.startswith("#"):
+            break
+    from ..model import load_model
+
+    return load_model(path).name

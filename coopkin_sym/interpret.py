@@ -1,0 +1,155 @@
+"""Plain-language meaning of an analysis: one sentence per number, motions in words.
+
+A twist ``u = (v, w)`` (reference point at the base origin) is a translation along
+``v`` when ``w = 0``; otherwise a screw about the line through ``p = w x v / |w|^2``
+with direction ``w`` and pitch ``w.v / |w|^2`` (a pure rotation when the pitch is 0).
+Lines are named by the contact points on them when there are any.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> from coopkin_sym.interpret import sentences
+>>> for s in sentences(load("paper-case1-hard").analyze()):
+...     print(s)  # doctest: +ELLIPSIS
+Nm = 2: ...
+Nc = 2: ...
+Ni = 1: with every joint locked, the object can still rotate about the line through c1 and c2.
+...
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .exact.sympy_bridge import frac_to_sympy
+from .mobility import Analysis
+
+# entries larger than this (in operations) are not simplified for words
+_MAX_OPS = 400
+
+_WORDS = ["no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+          "ten"]
+
+
+def _count(n: int, noun: str) -> str:
+    word = _WORDS[n] if n < len(_WORDS) else str(n)
+    return f"{word} {noun}{'' if n == 1 else 's'}"
+
+
+def _is_zero(e: sp.Expr) -> bool:
+    return sp.cancel(e) == 0
+
+
+def _too_big(vec) -> bool:
+    return any(sp.count_ops(e) > _MAX_OPS for e in vec)
+
+
+def _direction(d: list[sp.Expr]) -> str:
+    nz = [i for i, e in enumerate(d) if not _is_zero(e)]
+    if len(nz) == 1:
+        sign = "-" if (d[nz[0]].is_negative is True) else ""
+        return f"{sign}{'xyz'[nz[0]]}"
+    return "(" + ", ".join(sp.sstr(sp.factor(e)) for e in d) + ")"
+
+
+def _line_name(p: list[sp.Expr], w: list[sp.Expr], analysis: Analysis) -> str:
+    kin = analysis.kinematics
+    on_line = []
+    for contact, point in zip(analysis.model.contacts, kin.points, strict=True):
+        c = [frac_to_sympy(x, kin.symbols) for x in point]
+        rel = sp.Matrix([c[i] - p[i] for i in range(3)])
+        if all(_is_zero(e) for e in rel.cross(sp.Matrix(w))):
+            on_line.append(contact.name)
+    if len(on_line) >= 2:
+        return f"the line through {' and '.join(on_line[:2])}"
+    point = "(" + ", ".join(sp.sstr(sp.factor(e)) for e in p) + ")"
+    where = f"through {on_line[0]}" if on_line else f"through {point}"
+    return f"the line {where} along {_direction(w)}"
+
+
+def describe_twist(u, analysis: Analysis) -> str:
+    """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
+    c1 and c2", "translation along x")."""
+    u = [sp.sympify(e) for e in u]
+    if _too_big(u):
+        return "a motion too large to describe in words (see the blocks)"
+    v, w = u[:3], u[3:]
+    if all(_is_zero(e) for e in w):
+        return f"translate along {_direction(v)}"
+    wv = sp.Matrix(w)
+    vv = sp.Matrix(v)
+    ww = wv.dot(wv)
+    p = [sp.cancel(e / ww) for e in wv.cross(vv)]
+    pitch = sp.cancel(wv.dot(vv) / ww)
+    line = _line_name(p, w, analysis)
+    if pitch == 0:
+        return f"rotate about {line}"
+    return f"screw about {line} with pitch {sp.sstr(sp.factor(pitch))}"
+
+
+def describe_joint_motion(qdot, analysis: Analysis) -> str:
+    """Joint velocities in words ("joint q3 alone", "joints q1 and q2 at equal speed")."""
+    names = analysis.model.joint_names
+    q = [sp.sympify(e) for e in qdot]
+    moving = [(n, e) for n, e in zip(names, q, strict=True) if not _is_zero(e)]
+    if len(moving) == 1:
+        return f"joint {moving[0][0]} alone"
+    if len(moving) == 2 and _is_zero(moving[0][1] - moving[1][1]):
+        return f"joints {moving[0][0]} and {moving[1][0]} at equal speed"
+    if len(moving) == 2 and _is_zero(moving[0][1] + moving[1][1]):
+        return f"joints {moving[0][0]} and {moving[1][0]} at opposite speeds"
+    if _too_big(q):
+        return f"joints {', '.join(n for n, _ in moving)} together"
+    parts = ", ".join(f"{n}: {sp.sstr(sp.factor(e))}" for n, e in moving)
+    return f"joints in the ratio {parts}"
+
+
+def sentences(analysis: Analysis) -> list[str]:
+    """One plain sentence per number of ``analysis``."""
+    n = analysis.numbers
+    r = analysis.r
+    keep = "keeps" if n.Nm == 1 else "keep"
+    out = [f"Nm = {n.Nm}: the object and the joints together have "
+           f"{_count(n.Nm, 'independent motion')} that {keep} every contact."]
+    if n.Nc == 6:
+        conn = "the object can move in every direction (full connectivity)"
+    elif n.Nc == 0:
+        conn = "the object cannot move at all"
+    else:
+        conn = f"the object can move in {_count(n.Nc, 'independent direction')} only"
+    driven = n.Nc - n.Ni
+    coords = [f"{describe_twist(analysis.C12.col(k), analysis)} by moving "
+              f"{describe_joint_motion(analysis.C22.col(k), analysis)}"
+              for k in range(analysis.C12.cols)] if 0 < driven <= 3 else []
+    parts = []
+    if driven and n.Nc:
+        parts.append(f"{_WORDS[driven] if driven < len(_WORDS) else driven} driven by the "
+                     "joints" + (f" ({'; '.join(coords)})" if coords else ""))
+    if n.Ni and n.Nc:
+        parts.append(f"{_WORDS[n.Ni] if n.Ni < len(_WORDS) else n.Ni} left free (Ni)")
+    out.append(f"Nc = {n.Nc}: {conn}" + (": " + " and ".join(parts) if parts else "") + ".")
+    if n.Ni == 0:
+        out.append("Ni = 0: with every joint locked, the object cannot move (no "
+                   "indeterminate motion).")
+    else:
+        free = "; ".join(describe_twist(analysis.C11.col(k), analysis)
+                         for k in range(n.Ni))
+        out.append(f"Ni = {n.Ni}: with every joint locked, the object can still {free}.")
+    if n.Nr == 0:
+        out.append("Nr = 0: no joint can move while the object stays fixed (no "
+                   "redundancy).")
+    else:
+        red = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
+                        for k in range(n.Nr))
+        out.append(f"Nr = {n.Nr}: with the object fixed, the arms can still move: {red}.")
+    out.append(f"Ng = {n.Ng}: the contacts can exert {_count(n.Ng, 'independent internal force')}"
+               " (squeezing the object without moving it).")
+    out.append(f"Nd = {n.Nd}: {_count(n.Nd, 'contact force combination')} "
+               f"{'produces' if n.Nd == 1 else 'produce'} no torque at the {r} joints: "
+               "the joints can neither exert nor feel them (defective grasp)." if n.Nd else
+               "Nd = 0: every contact force loads some joint (not defective).")
+    out.append(f"Nh = {n.Nh}: {_count(n.Nh, 'internal force')} the joints cannot control "
+               "(hyperstatic: internal forces that load no joint)." if n.Nh else
+               "Nh = 0: every internal force can be controlled by the joints (not "
+               "hyperstatic).")
+    return out

@@ -1,0 +1,275 @@
+"""Contact kinematics: the matrices G, D, H and Q of the paper, exactly.
+
+Link poses come from the product of exponentials of the home pose: joint ``k`` of an
+arm moves everything outboard of it by a rotation about (or a translation along) its
+home axis, and the pose of link ``K`` is ``M_1(q_1) ... M_K(q_K)``. A free revolute
+angle enters through ``t = tan(q/2)``, so every entry is a rational function of the
+ring variables whose denominator is a product of ``1 + t_j**2``; a fixed angle enters
+through its exact cosine and sine (q = pi included).
+
+Conventions (DESIGN section 1): object twist ``u = (v, w)`` with the reference point
+at the base origin; contact velocities stacked all linear blocks first, then all
+angular; ``G^T`` maps ``u`` to the object's contact-frame velocities, ``D`` maps
+``qdot`` to the links' ones, ``H`` keeps the components each contact model
+constrains; ``Q = (H G^T | -H D)``.
+
+Example
+-------
+>>> from coopkin_sym.model import load_model
+>>> from coopkin_sym.configuration import Configuration
+>>> m = load_model("paper-case1-hard")
+>>> k = build(m, Configuration())
+>>> len(k.Q), len(k.Q[0])          # 6 constrained components, 6 + 2 unknowns
+(6, 8)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from .configuration import Configuration
+from .exact.ring import Frac, Ring
+from .exact.sympy_bridge import poly_from_sympy
+from .model import Model
+
+Vec = list[Frac]
+Mat = list[list[Frac]]
+
+
+@dataclass(frozen=True)
+class Kinematics:
+    """The exact matrices of one system at one (possibly symbolic) configuration.
+
+    Attributes
+    ----------
+    ring
+        The polynomial ring of the analysis: free joint variables (``t_<joint>`` for
+        revolute, the joint name for prismatic), then free parameters.
+    symbols
+        SymPy symbol of each ring variable (parameters are the model's symbols).
+    GT, D, H, Q
+        ``G^T`` (6n x 6), ``D`` (6n x r), ``H`` (m x 6n), ``Q`` (m x (6+r)), entries
+        :class:`~coopkin_sym.exact.ring.Frac`.
+    row_labels
+        What each row of ``H`` and ``Q`` constrains, e.g. ``"c1: v_x"``, ``"c2: w.n"``.
+    points, normals
+        Current contact points and normals (normals ``None`` where not given).
+    axes, origins
+        Current joint axes and points on them (``None`` for a prismatic joint
+        without a point).
+    """
+
+    ring: Ring
+    symbols: dict[str, sp.Symbol]
+    GT: Mat
+    D: Mat
+    H: Mat
+    Q: Mat
+    row_labels: list[str]
+    points: list[Vec]
+    normals: list[Vec | None]
+    axes: list[Vec]
+    origins: list[Vec | None]
+
+
+def ring_for(model: Model, config: Configuration) -> tuple[Ring, dict[str, sp.Symbol]]:
+    """The ring of the analysis: free joints in model order, then unset parameters."""
+    names: list[str] = []
+    den: list[str] = []
+    symbols: dict[str, sp.Symbol] = {}
+    for j in model.joints:
+        if j.name in config.free:
+            v = f"t_{j.name}" if j.type == "revolute" else j.name
+            names.append(v)
+            symbols[v] = sp.Symbol(v, real=True)
+            if j.type == "revolute":
+                den.append(v)
+    for p in model.parameters:
+        if p.name not in config.parameters:
+            names.append(p.name)
+            symbols[p.name] = p
+    return Ring(names, den), symbols
+
+
+class _Builder:
+    def __init__(self, model: Model, config: Configuration):
+        self.model = model
+        self.config = config
+        self.ring, self.symbols = ring_for(model, config)
+        self.param_subs = {p: config.parameters[p.name] for p in model.parameters
+                           if p.name in config.parameters}
+
+    # exact numbers of the model, as fractions of the ring
+    def num(self, expr) -> Frac:
+        e = sp.sympify(expr).subs(self.param_subs) if self.param_subs else expr
+        return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
+
+    def vec(self, v: Sequence) -> Vec:
+        return [self.num(x) for x in v]
+
+    def joint_motion(self, joint) -> tuple[Mat, Vec]:
+        """Rotation and translation ``x -> R x + p`` of joint ``joint`` at its value."""
+        ring = self.ring
+        axis = self.vec(joint.axis)
+        one, zero = ring.one(), ring.zero()
+        ident = [[one if i == k else zero for k in range(3)] for i in range(3)]
+        if joint.type == "prismatic":
+            if joint.name in self.config.free:
+                d = ring.frac(ring.qvar(joint.name))
+            else:
+                d = self.num(self.config.prismatic.get(joint.name, 0))
+            return ident, [d * a for a in axis]
+        if joint.name in self.config.free:
+            k = ring.den_names.index(f"t_{joint.name}")
+            c, s = ring.cos_of(k), ring.sin_of(k)
+        else:
+            cv, sv = self.config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))
+            c, s = self.num(cv), self.num(sv)
+        sk = skew(axis)
+        sk2 = matmul(sk, sk)
+        one_minus_c = one - c
+        rot = [[ident[i][k] + s * sk[i][k] + one_minus_c * sk2[i][k] for k in range(3)]
+               for i in range(3)]
+        o = self.vec(joint.point)
+        ro = matvec(rot, o)
+        return rot, [o[i] - ro[i] for i in range(3)]
+
+    def build(self) -> Kinematics:
+        model, ring = self.model, self.ring
+        r = len(model.joints)
+        # poses of every link of every arm; current joint axes and points
+        poses: list[list[tuple[Mat, Vec]]] = []
+        axes: list[Vec] = []
+        origins: list[Vec | None] = []
+        one, zero = ring.one(), ring.zero()
+        ident = [[one if i == k else zero for k in range(3)] for i in range(3)]
+        for arm in model.arms:
+            pose = (ident, [zero, zero, zero])
+            arm_poses = [pose]
+            for joint in arm.joints:
+                rot, trans = pose
+                axes.append(matvec(rot, self.vec(joint.axis)))
+                origins.append(apply(pose, self.vec(joint.point))
+                               if joint.point is not None else None)
+                pose = compose(pose, self.joint_motion(joint))
+                arm_poses.append(pose)
+            poses.append(arm_poses)
+        points, normals = [], []
+        for c in model.contacts:
+            pose = (ident, [zero] * 3) if c.arm is None else poses[c.arm][c.link]
+            points.append(apply(pose, self.vec(c.point)))
+            normals.append(matvec(pose[0], self.vec(c.normal)) if c.normal is not None
+                           else None)
+        n = len(model.contacts)
+        GT = [[zero] * 6 for _ in range(6 * n)]
+        D = [[zero] * r for _ in range(6 * n)]
+        for i, c in enumerate(model.contacts):
+            lin, ang = 3 * i, 3 * n + 3 * i
+            sc = skew(points[i])
+            for a in range(3):
+                GT[lin + a][a] = one
+                GT[ang + a][3 + a] = one
+                for b in range(3):
+                    GT[lin + a][3 + b] = -sc[a][b]
+            if c.arm is None:
+                continue
+            off = model.joint_offset(c.arm)
+            for k, joint in enumerate(model.arms[c.arm].joints[: c.link]):
+                col = off + k
+                s = axes[col]
+                if joint.type == "prismatic":
+                    for a in range(3):
+                        D[lin + a][col] = s[a]
+                else:
+                    arm_vec = [points[i][a] - origins[col][a] for a in range(3)]
+                    lv = cross(s, arm_vec)
+                    for a in range(3):
+                        D[lin + a][col] = lv[a]
+                        D[ang + a][col] = s[a]
+        H, labels = self.selection(normals)
+        QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
+        Q = [[_dot_col(h, QT, j) for j in range(6 + r)] for h in H]
+        return Kinematics(ring, self.symbols, GT, D, H, Q, labels, points, normals, axes,
+                          origins)
+
+    def selection(self, normals: list[Vec | None]) -> tuple[Mat, list[str]]:
+        """H: linear-block rows contact by contact, then angular-block rows."""
+        n = len(self.model.contacts)
+        zero, one = self.ring.zero(), self.ring.one()
+        lin_rows, ang_rows, lin_labels, ang_labels = [], [], [], []
+        for i, c in enumerate(self.model.contacts):
+            lin, ang = 3 * i, 3 * n + 3 * i
+            unit = [[one if k == lin + a else zero for k in range(6 * n)] for a in range(3)]
+            unit_ang = [[one if k == ang + a else zero for k in range(6 * n)]
+                        for a in range(3)]
+            if c.model == "frictionless":
+                lin_rows.append(_normal_row(normals[i], lin, 6 * n, zero))
+                lin_labels.append(f"{c.name}: v.n")
+            else:
+                lin_rows += unit
+                lin_labels += [f"{c.name}: v_{a}" for a in "xyz"]
+            if c.model == "complete":
+                ang_rows += unit_ang
+                ang_labels += [f"{c.name}: w_{a}" for a in "xyz"]
+            elif c.model == "soft":
+                ang_rows.append(_normal_row(normals[i], ang, 6 * n, zero))
+                ang_labels.append(f"{c.name}: w.n")
+        return lin_rows + ang_rows, lin_labels + ang_labels
+
+
+def _normal_row(normal: Vec, start: int, width: int, zero: Frac) -> list[Frac]:
+    row = [zero] * width
+    for a in range(3):
+        row[start + a] = normal[a]
+    return row
+
+
+def _dot_col(h: list[Frac], m: Mat, j: int) -> Frac:
+    acc = None
+    for k, hk in enumerate(h):
+        if hk.is_zero() or m[k][j].is_zero():
+            continue
+        term = hk * m[k][j]
+        acc = term if acc is None else acc + term
+    return acc if acc is not None else h[0].ring.zero()
+
+
+def build(model: Model, config: Configuration) -> Kinematics:
+    """G, D, H and Q of ``model`` at ``config``, exactly."""
+    return _Builder(model, config).build()
+
+
+# --- small exact 3-vector algebra on Frac ------------------------------------------
+def skew(v: Vec) -> Mat:
+    """Cross-product matrix ``S(v)`` with ``S(v) x = v x x``."""
+    z = v[0].ring.zero()
+    return [[z, -v[2], v[1]], [v[2], z, -v[0]], [-v[1], v[0], z]]
+
+
+def cross(a: Vec, b: Vec) -> Vec:
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def matmul(a: Mat, b: Mat) -> Mat:
+    return [[sum((a[i][k] * b[k][j] for k in range(3)), a[0][0].ring.zero()) for j in range(3)]
+            for i in range(3)]
+
+
+def matvec(a: Mat, v: Vec) -> Vec:
+    return [sum((a[i][k] * v[k] for k in range(3)), v[0].ring.zero()) for i in range(3)]
+
+
+def apply(pose: tuple[Mat, Vec], x: Vec) -> Vec:
+    rot, trans = pose
+    rx = matvec(rot, x)
+    return [rx[i] + trans[i] for i in range(3)]
+
+
+def compose(outer: tuple[Mat, Vec], inner: tuple[Mat, Vec]) -> tuple[Mat, Vec]:
+    """``outer o inner``: apply ``inner`` first."""
+    r1, p1 = outer
+    r2, p2 = inner
+    return matmul(r1, r2), apply(outer, p2)

@@ -1,0 +1,557 @@
+"""Validated, immutable description of a cooperating robot system.
+
+A model is what a model file (YAML, JSON or a Python dict, DESIGN section 3) says,
+checked and with every number exact: a SymPy ``Rational`` or a polynomial with
+rational coefficients in the declared parameters (each a positive ``Symbol``).
+Nothing here computes kinematics; see :mod:`coopkin_sym.kinematics`.
+
+Example
+-------
+>>> from coopkin_sym.model import load_model
+>>> m = load_model({
+...     "name": "one arm", "parameters": ["L"],
+...     "arms": [{"name": "a", "joints": [
+...         {"name": "q1", "type": "revolute", "axis": [0, 0, 1], "point": [0, 0, 0]}]}],
+...     "contacts": [{"name": "c", "link": "a/1", "point": ["L", 0, 0],
+...                   "normal": [1, 0, 0], "model": "hard"}]})
+>>> [j.name for j in m.joints]
+['q1']
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import keyword
+import os
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, Literal
+
+import sympy as sp
+import yaml
+from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
+
+from .exactnum import NumberError, parse_number
+
+JointType = Literal["revolute", "prismatic"]
+ContactModel = Literal["complete", "soft", "hard", "frictionless"]
+CONTACT_MODELS: tuple[str, ...] = ("complete", "soft", "hard", "frictionless")
+JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic")
+
+Vector = tuple[sp.Expr, sp.Expr, sp.Expr]
+
+
+class ModelError(ValueError):
+    """A model that cannot be accepted.
+
+    ``problems`` lists one line per problem, each naming the entry
+    (``contacts[1].normal: not a unit vector``); ``str(error)`` is the whole message,
+    prefixed by the file name when the model came from a file.
+    """
+
+    def __init__(self, problems: list[str], source: str | None = None):
+        self.problems = list(problems)
+        self.source = source
+        prefix = f"{source}: " if source else ""
+        super().__init__("\n".join(prefix + p for p in self.problems))
+
+
+@dataclass(frozen=True)
+class Joint:
+    """One joint, described at the home pose (all joint variables zero).
+
+    ``axis`` is an exact unit vector for a revolute joint and a nonzero direction for
+    a prismatic one; ``point`` is a point on a revolute joint's axis (``None`` for a
+    prismatic joint without one).
+    """
+
+    name: str
+    type: JointType
+    axis: Vector
+    point: Vector | None
+
+
+@dataclass(frozen=True)
+class Arm:
+    """A serial chain; ``joints`` run from the base outwards."""
+
+    name: str
+    joints: tuple[Joint, ...]
+
+
+@dataclass(frozen=True)
+class Contact:
+    """A contact between the object and a link, at the home pose.
+
+    ``arm`` is the index of the arm in :attr:`Model.arms`, or ``None`` for the ground
+    (``link: base``); ``link`` is ``K`` for the link moved by joint ``K`` of that arm
+    (1-based), 0 for the arm's fixed base (always 0 for the ground).
+    ``normal`` is an exact unit vector, or ``None`` when the file gives none (allowed
+    only for ``hard`` and ``complete`` contacts).
+    """
+
+    name: str
+    arm: int | None
+    link: int
+    point: Vector
+    normal: Vector | None
+    model: ContactModel
+
+
+@dataclass(frozen=True)
+class Model:
+    """A whole system: parameters, arms, contacts."""
+
+    name: str
+    parameters: tuple[sp.Symbol, ...]
+    arms: tuple[Arm, ...]
+    contacts: tuple[Contact, ...]
+    source: str | None = None
+
+    @property
+    def joints(self) -> tuple[Joint, ...]:
+        """All joints in file order: the column order of D and the order of qdot."""
+        return tuple(j for arm in self.arms for j in arm.joints)
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        return tuple(j.name for j in self.joints)
+
+    def joint_offset(self, arm: int) -> int:
+        """Index in :attr:`joints` of the first joint of arm ``arm``."""
+        return sum(len(a.joints) for a in self.arms[:arm])
+
+
+# ----------------------------------------------------------------------------- loading
+
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+#: Names a parameter or joint may not have: they mean something else in SymPy text.
+RESERVED_NAMES: frozenset[str] = frozenset(
+    {"pi", "E", "I", "oo", "nan", "zoo", "atan", "sqrt", "Rational", "Integer"}
+) | frozenset(keyword.kwlist)
+
+
+class _Entry(BaseModel):
+    """Structure of one entry of a model file (types only; meaning is checked later)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+
+class _TopIn(_Entry):
+    name: StrictStr | None = None
+    parameters: list[Any] | None = None
+    arms: list[Any] | None = None
+    contacts: list[Any] | None = None
+
+
+class _ArmIn(_Entry):
+    name: StrictStr
+    joints: list[Any]
+
+
+class _JointIn(_Entry):
+    name: StrictStr
+    type: StrictStr
+    axis: list[Any]
+    point: list[Any] | None = None
+
+
+class _ContactIn(_Entry):
+    name: StrictStr
+    link: StrictStr
+    point: list[Any]
+    normal: list[Any] | None = None
+    model: StrictStr
+
+
+def _join(path: str, loc: tuple[int | str, ...] | list[int | str]) -> str:
+    """``arms[0]`` + ``("joints", 1, "type")`` -> ``arms[0].joints[1].type``."""
+    out = path
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        else:
+            out += f".{part}" if out else str(part)
+    return out or "(top level)"
+
+
+def _brief(value: object) -> str:
+    text = " ".join(repr(value).split())
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _render(exc: ValidationError, path: str, cls: type[_Entry]) -> list[str]:
+    """Pydantic's errors, one line each, in the model file's own terms."""
+    out = []
+    for err in exc.errors(include_url=False):
+        loc, kind, value = tuple(err["loc"]), err["type"], err.get("input")
+        if kind == "missing":
+            out.append(f"{_join(path, loc[:-1])}: missing key '{loc[-1]}'")
+        elif kind == "extra_forbidden":
+            key = str(loc[-1])
+            close = difflib.get_close_matches(key, list(cls.model_fields), n=1)
+            hint = f" (did you mean '{close[0]}'?)" if close else ""
+            out.append(f"{_join(path, loc[:-1])}: unknown key '{key}'{hint}")
+        elif kind == "invalid_key":
+            out.append(f"{_join(path, loc[:-1])}: key {_brief(loc[-1])} is not a name "
+                       f"(keys are words such as 'name')")
+        elif kind == "string_type":
+            out.append(f"{_join(path, loc)}: expected text, got {_brief(value)}")
+        elif kind == "list_type":
+            out.append(f"{_join(path, loc)}: expected a list, got {_brief(value)}")
+        elif kind in ("model_type", "model_attributes_type", "dict_type"):
+            out.append(f"{_join(path, loc)}: expected a mapping (key: value), "
+                       f"got {_brief(value)}")
+        else:
+            message = " ".join(str(err["msg"]).split())
+            out.append(f"{_join(path, loc)}: {message[:1].lower()}{message[1:]}")
+    return out
+
+
+def _validate(cls: type[_Entry], raw: object, path: str,
+              problems: list[str]) -> tuple[Any, set[str]]:
+    """Validate ``raw`` against ``cls``; collect problems.
+
+    Returns the validated entry and the set of fields that were wrong. When only some
+    fields are wrong (unknown keys, bad optional fields) the rest is still returned,
+    so that later checks can find more problems; otherwise the entry is ``None``.
+    """
+    try:
+        return cls.model_validate(raw), set()
+    except ValidationError as exc:
+        problems.extend(_render(exc, path, cls))
+        if not isinstance(raw, Mapping):
+            return None, set()
+        bad = {str(e["loc"][0]) for e in exc.errors() if e["loc"]}
+        kept = {k: v for k, v in raw.items() if k in cls.model_fields and k not in bad}
+        try:
+            return cls.model_validate(kept), bad
+        except ValidationError:
+            return None, bad
+
+
+class _Names:
+    """Every name in the model must be unique (and valid); remembers where each is."""
+
+    def __init__(self, problems: list[str]):
+        self.problems = problems
+        self.where: dict[str, str] = {}   # name -> path of its "name" field
+
+    def add(self, name: str, path: str, *, symbol: bool) -> bool:
+        if not _IDENTIFIER.fullmatch(name):
+            self.problems.append(f"{path}: '{name}' is not a valid name (letters, digits "
+                                 f"and underscores, not starting with a digit)")
+            return False
+        if symbol and name in RESERVED_NAMES:
+            self.problems.append(f"{path}: '{name}' is reserved (it means something else "
+                                 f"in SymPy text); choose another name")
+            return False
+        if name in self.where:
+            self.problems.append(f"{path}: duplicate name '{name}' (already used at "
+                                 f"{self.where[name]})")
+            return False
+        self.where[name] = path
+        return True
+
+
+def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
+            problems: list[str], *, rational: bool) -> Vector | None:
+    """Three exact numbers; ``rational`` forbids parameters."""
+    if len(raw) != 3:
+        problems.append(f"{path}: expected 3 numbers, got {len(raw)}")
+        return None
+    out = []
+    for value in raw:
+        try:
+            number = parse_number(value, parameters, path)
+        except NumberError as exc:
+            problems.append(str(exc))
+            return None
+        if rational and not number.is_Rational:
+            problems.append(f"{path}: '{value}' uses a parameter; this vector must have "
+                            f"rational entries without parameters")
+            return None
+        out.append(number)
+    return (out[0], out[1], out[2])
+
+
+def _unit_problem(v: Vector) -> str | None:
+    """Why ``v`` is not an exact unit vector, or ``None`` if it is one."""
+    length2 = sum((x**2 for x in v), sp.Integer(0))
+    if length2 == 1:
+        return None
+    if length2 == 0:
+        return "not a unit vector (zero vector)"
+    hint = ""
+    root = sp.sqrt(length2)
+    if root.is_Rational:
+        hint = "; did you mean [" + ", ".join(str(x / root) for x in v) + "]?"
+    return f"not a unit vector (squared length {length2}){hint}"
+
+
+def _build(tree: object, source: str | None, default_name: str) -> Model:
+    """Validate a model tree and convert it into a :class:`Model`."""
+    problems: list[str] = []
+    if tree is None:
+        raise ModelError(["(top level): the model is empty"], source)
+    top, top_bad = _validate(_TopIn, tree, "", problems)
+    if top is None:
+        raise ModelError(problems, source)
+    names = _Names(problems)
+
+    parameters: dict[str, sp.Symbol] = {}
+    for i, pname in enumerate(top.parameters or []):
+        path = f"parameters[{i}]"
+        if not isinstance(pname, str):
+            problems.append(f"{path}: expected a name, got {_brief(pname)}")
+        elif names.add(pname, path, symbol=True):
+            parameters[pname] = sp.Symbol(pname, positive=True)
+
+    arms: list[Arm] = []
+    arm_joints: dict[str, tuple[int, int] | None] = {}   # name -> (index, joints)
+    joint_paths: dict[str, str] = {}
+    for i, raw_arm in enumerate(top.arms or []):
+        apath = f"arms[{i}]"
+        arm, _ = _validate(_ArmIn, raw_arm, apath, problems)
+        if arm is None:
+            if isinstance(raw_arm, Mapping) and isinstance(raw_arm.get("name"), str):
+                arm_joints[raw_arm["name"]] = None   # exists, but unusable
+            continue
+        names.add(arm.name, f"{apath}.name", symbol=False)
+        arm_joints.setdefault(arm.name, (i, len(arm.joints)))
+        if not arm.joints:
+            problems.append(f"{apath}.joints: at least one joint is needed (contacts on "
+                            f"the ground use link: base)")
+        joints = []
+        for k, raw_joint in enumerate(arm.joints):
+            jpath = f"{apath}.joints[{k}]"
+            joint = _joint(raw_joint, jpath, parameters, names, problems)
+            if joint is not None:
+                joints.append(joint)
+                joint_paths[joint.name] = jpath
+        arms.append(Arm(arm.name, tuple(joints)))
+    if not top.arms and "arms" not in top_bad:
+        problems.append("arms: at least one arm with one joint is needed")
+
+    for jname, jpath in joint_paths.items():
+        clash = f"t_{jname}"
+        if clash in names.where:
+            problems.append(f"{names.where[clash]}: name '{clash}' clashes with the "
+                            f"half-angle variable t_{jname} of joint {jname} ({jpath})")
+
+    contacts: list[Contact] = []
+    for i, raw_contact in enumerate(top.contacts or []):
+        contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
+                           problems)
+        if contact is not None:
+            contacts.append(contact)
+    if not top.contacts and "contacts" not in top_bad:
+        problems.append("contacts: at least one contact is needed")
+
+    if problems:
+        raise ModelError(problems, source)
+    return Model(name=top.name if top.name is not None else default_name,
+                 parameters=tuple(parameters.values()), arms=tuple(arms),
+                 contacts=tuple(contacts), source=source)
+
+
+def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
+           problems: list[str]) -> Joint | None:
+    entry, bad = _validate(_JointIn, raw, path, problems)
+    if entry is None:
+        return None
+    before = len(problems)
+    names.add(entry.name, f"{path}.name", symbol=True)
+    jtype = entry.type
+    if jtype not in JOINT_TYPES:
+        problems.append(f"{path}.type: unknown joint type '{jtype}' (expected revolute "
+                        f"or prismatic)")
+    axis = _vector(entry.axis, f"{path}.axis", parameters, problems, rational=True)
+    if axis is not None and jtype == "revolute":
+        why = _unit_problem(axis)
+        if why:
+            problems.append(f"{path}.axis: {why}")
+    elif axis is not None and jtype == "prismatic" and all(x == 0 for x in axis):
+        problems.append(f"{path}.axis: zero vector; a prismatic axis needs a nonzero "
+                        f"direction")
+    point = None
+    if entry.point is not None:
+        point = _vector(entry.point, f"{path}.point", parameters, problems, rational=False)
+    elif jtype == "revolute" and "point" not in bad:
+        problems.append(f"{path}.point: required for a revolute joint (a point on its "
+                        f"axis)")
+    if len(problems) > before or bad or axis is None:
+        return None
+    return Joint(entry.name, jtype, axis, point)  # type: ignore[arg-type]
+
+
+def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
+             arm_joints: dict[str, tuple[int, int] | None],
+             problems: list[str]) -> Contact | None:
+    entry, bad = _validate(_ContactIn, raw, path, problems)
+    if entry is None:
+        return None
+    before = len(problems)
+    names.add(entry.name, f"{path}.name", symbol=False)
+    arm_index: int | None = None
+    link = 0
+    text = entry.link.strip()
+    match = re.fullmatch(r"([^/\s]+)\s*/\s*(\d+)", text)
+    if text == "base":
+        pass
+    elif match is None:
+        problems.append(f"{path}.link: expected ARM/K (the link moved by joint K of arm "
+                        f"ARM, ARM/0 its base) or base, got '{entry.link}'")
+    elif match.group(1) not in arm_joints:
+        if arm_joints:  # with no arms at all, "arms" already has the problem
+            problems.append(f"{path}.link: unknown arm '{match.group(1)}' "
+                            f"(arms: {', '.join(arm_joints)})")
+    elif arm_joints[match.group(1)] is not None:
+        arm_index, count = arm_joints[match.group(1)]  # type: ignore[misc]
+        link = int(match.group(2))
+        if link > count:
+            plural = "joint" if count == 1 else "joints"
+            problems.append(f"{path}.link: arm {match.group(1)} has {count} {plural}, "
+                            f"no link {link}")
+    point = _vector(entry.point, f"{path}.point", parameters, problems, rational=False)
+    model = entry.model
+    if model not in CONTACT_MODELS:
+        problems.append(f"{path}.model: unknown contact model '{model}' (expected "
+                        f"complete, soft, hard or frictionless)")
+    normal = None
+    if entry.normal is not None:
+        normal = _vector(entry.normal, f"{path}.normal", parameters, problems,
+                         rational=True)
+        why = _unit_problem(normal) if normal is not None else None
+        if why:
+            problems.append(f"{path}.normal: {why}")
+    elif model in ("soft", "frictionless") and "normal" not in bad:
+        problems.append(f"{path}.normal: required for a {model} contact")
+    if len(problems) > before or bad or point is None:
+        return None
+    return Contact(entry.name, arm_index, link, point, normal, model)  # type: ignore[arg-type]
+
+
+class _ExactLoader(yaml.SafeLoader):
+    """YAML loader that keeps floats exact and refuses duplicate keys."""
+
+    def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
+        seen: set[str] = set()
+        for key_node, _ in node.value:
+            if isinstance(key_node, yaml.ScalarNode) and key_node.value != "<<":
+                if key_node.value in seen:
+                    raise yaml.constructor.ConstructorError(
+                        None, None, f"duplicate key '{key_node.value}'", key_node.start_mark)
+                seen.add(key_node.value)
+        return super().construct_mapping(node, deep=deep)
+
+
+def _exact_float(loader: yaml.SafeLoader, node: yaml.ScalarNode) -> str:
+    """A YAML float is the decimal it prints as: keep its text for ``parse_number``.
+
+    ``.inf`` and ``.nan`` stay text too; ``parse_number`` rejects them with the entry.
+    """
+    text = str(loader.construct_scalar(node)).replace("_", "")
+    if ":" in text:  # YAML 1.1 base 60, e.g. 190:20:30.15
+        sign = -1 if text.startswith("-") else 1
+        total = Fraction(0)
+        for part in text.lstrip("+-").split(":"):
+            total = total * 60 + Fraction(part)
+        return str(sign * total)
+    return text
+
+
+_ExactLoader.add_constructor("tag:yaml.org,2002:float", _exact_float)
+
+
+class _DuplicateKey(ValueError):
+    pass
+
+
+def _json_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise _DuplicateKey(key)
+        out[key] = value
+    return out
+
+
+def _read_tree(path: Path, source: str) -> object:
+    """Read a YAML or JSON file into a plain tree, every float kept as its text."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except IsADirectoryError:
+        raise ModelError(["is a directory, not a model file"], source) from None
+    except UnicodeDecodeError:
+        raise ModelError(["not a text file (UTF-8 expected)"], source) from None
+    except OSError as exc:
+        raise ModelError([f"cannot read the file: {exc.strerror}"], source) from None
+    if path.suffix.lower() == ".json":
+        try:
+            return json.loads(text, parse_float=str, parse_constant=str,
+                              object_pairs_hook=_json_pairs)
+        except json.JSONDecodeError as exc:
+            raise ModelError([f"line {exc.lineno}, column {exc.colno}: not valid JSON: "
+                              f"{exc.msg}"], source) from None
+        except _DuplicateKey as exc:
+            raise ModelError([f"not valid JSON: duplicate key '{exc}'"], source) from None
+    try:
+        return yaml.load(text, Loader=_ExactLoader)  # a SafeLoader subclass: no arbitrary objects
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+        where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
+        problem = getattr(exc, "problem", None) or str(exc)
+        problem = " ".join(str(problem).split())
+        raise ModelError([f"{where}not valid YAML: {problem}"], source) from None
+
+
+def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
+    """Load and validate a model (DESIGN section 3).
+
+    Parameters
+    ----------
+    source : str, path or mapping
+        A ``.yaml``/``.yml``/``.json`` file, the name of a shipped example
+        (``"paper-case1-hard"``, see :mod:`coopkin_sym.examples`), or the same tree
+        as a Python mapping.
+
+    Returns
+    -------
+    Model
+        Every number exact (``Rational`` or a polynomial in the parameters, which are
+        positive ``Symbol``).
+
+    Raises
+    ------
+    ModelError
+        With one line per problem, each naming the entry
+        (``contacts[1].normal: not a unit vector``), and the file when there is one.
+
+    Example
+    -------
+    >>> m = load_model("paper-case2-hard")
+    >>> m.arms[0].joints[3].type, m.contacts[1].point
+    ('prismatic', (3*L, L, L))
+    """
+    if isinstance(source, Mapping):
+        return _build(source, None, "unnamed")
+    if not isinstance(source, str | os.PathLike):
+        raise ModelError([f"(top level): expected a file name, an example name or a "
+                          f"mapping, got {type(source).__name__}"])
+    name = os.fspath(source)
+    path = Path(name)
+    if not path.exists():
+        from .examples import example_path, list_examples
+
+        if isinstance(source, str) and source in list_examples():
+            path = example_path(source)
+            return _build(_read_tree(path, str(path)), str(path), path.stem)
+        shipped = ", ".join(list_examples())
+        raise ModelError([f"no such file (nor a shipped example: {shipped})"], str(name))
+    return _build(_read_tree(path, str(name)), str(name), path.stem)

@@ -1,0 +1,108 @@
+"""The ``coopkin`` command: JSON content, human output, exit codes, clean errors."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from typer.testing import CliRunner
+
+from coopkin_sym.cli import app
+
+runner = CliRunner()
+
+EXAMPLES = ["paper-case1-complete-hard", "paper-case1-hard", "paper-case1-soft",
+            "paper-case1-soft-hard", "paper-case2-complete", "paper-case2-hard"]
+
+
+def run_ok(*args: str) -> str:
+    result = runner.invoke(app, list(args))
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
+def run_error(*args: str) -> str:
+    result = runner.invoke(app, list(args))
+    assert result.exit_code == 2, result.output
+    assert result.stdout == ""
+    assert "Traceback" not in result.stderr
+    assert result.stderr.startswith("coopkin: error: ")
+    return result.stderr
+
+
+def test_paper_case2_hard_json():
+    out = json.loads(run_ok("analyze", "paper-case2-hard", "--json"))
+    assert out["numbers"] == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
+    assert out["blocks"]["C11"] == [["0"], ["L"], ["-L"], ["1"], ["0"], ["0"]]
+    c23 = out["blocks"]["C23"]
+    assert [row for row in c23] == [["0", "0"], ["0", "0"], ["1", "0"], ["0", "0"],
+                                    ["0", "0"], ["0", "1"], ["0", "0"], ["0", "0"]]
+    assert out["shapes"] == {"C11": [6, 1], "C12": [6, 5], "C22": [8, 5], "C23": [8, 2]}
+
+
+def test_at_sets_angles_and_parameters_exactly():
+    out = json.loads(run_ok("analyze", "paper-case1-hard", "--at",
+                            "q1=pi/2,q2=2*atan(1/3),L=1000", "--json"))
+    assert out["configuration"] == "q1=pi/2,q2=2*atan(1/3),L=1000"
+    assert out["variables"] == []
+    assert out["numbers"]["Nm"] == 2
+
+
+def test_generic_keeps_joints_symbolic():
+    out = json.loads(run_ok("analyze", "paper-case1-hard", "--generic", "--json"))
+    assert out["variables"] == ["t_q1", "t_q2", "L"]
+    assert out["numbers"]["Ni"] == 1
+
+
+def test_human_output_explains_each_number():
+    out = run_ok("analyze", "paper-case1-hard")
+    assert "Nm = 2  Nc = 2  Ni = 1  Nr = 0" in out
+    assert "rotate about the line through c1 and c2" in out
+    assert ("one driven by the joints (translate along x by moving joints q1 and q2 at "
+            "equal speed)") in out
+    out2 = run_ok("analyze", "paper-case2-hard")
+    assert "joint q3 alone; joint q6 alone" in out2
+
+
+def test_latex_output():
+    out = run_ok("analyze", "paper-case2-complete", "--latex")
+    assert r"C_{12} = \left[\begin{matrix}L & 0 & 0" in out
+    assert r"$N_{m} = 3$" in out
+
+
+def test_examples_lists_the_paper_cases():
+    out = run_ok("examples")
+    assert [line.split()[0] for line in out.splitlines()] == EXAMPLES
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["analyze", "no-such-model.yaml"], "no-such-model.yaml"),
+    (["analyze", "paper-case1-hard", "--at", "q1=pi/3"], "nearest exact"),
+    (["analyze", "paper-case1-hard", "--at", "q9=0"], "unknown name 'q9'"),
+    (["analyze", "paper-case1-hard", "--at", "L=-1"], "positive"),
+    (["analyze", "paper-case1-hard", "--at", "q1"], "expected NAME=VALUE"),
+    (["analyze", "paper-case1-hard", "--free", "q7"], "unknown joint q7"),
+])
+def test_errors_are_one_clear_line(args, fragment):
+    assert fragment in run_error(*args)
+
+
+def test_bad_model_file_names_the_entry(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("name: x\narms:\n  - name: a\n    joints:\n"
+                   "      - {name: q1, type: revolute, axis: [0, 0, 2], point: [0, 0, 0]}\n"
+                   "contacts:\n  - {name: c, link: a/1, point: [1, 0, 0], model: hard}\n")
+    err = run_error("analyze", str(bad))
+    assert "bad.yaml" in err and "arms[0].joints[0].axis" in err
+
+
+def test_module_entry_point_exit_codes():
+    ok = subprocess.run([sys.executable, "-m", "coopkin_sym", "analyze", "paper-case1-soft",
+                         "--json"], capture_output=True, text=True, check=False)
+    assert ok.returncode == 0 and json.loads(ok.stdout)["numbers"]["Nm"] == 1
+    bad = subprocess.run([sys.executable, "-m", "coopkin_sym", "analyze", "paper-case1-soft",
+                          "--at", "q1=1"], capture_output=True, text=True, check=False)
+    assert bad.returncode == 2 and bad.stdout == ""
+    assert "Traceback" not in bad.stderr and "q1" in bad.stderr

@@ -1,0 +1,253 @@
+"""Exact numbers and angles from text (coopkin_sym.exactnum)."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
+
+from coopkin_sym.exactnum import NumberError, angle_text, parse_angle, parse_number
+
+L = sp.Symbol("L", positive=True)
+PARAMS = {"L": L}
+R = sp.Rational
+
+
+# ------------------------------------------------------------------------ parse_number
+
+
+@pytest.mark.parametrize(
+    ("value", "expected"),
+    [
+        (3, sp.Integer(3)),
+        (Fraction(3, 5), R(3, 5)),
+        (R(-7, 2), R(-7, 2)),
+        ("3/5", R(3, 5)),
+        ("-2", sp.Integer(-2)),
+        ("0.1", R(1, 10)),
+        ("-0.25", R(-1, 4)),
+        ("1e-3", R(1, 1000)),
+        ("1.5E3", sp.Integer(1500)),
+        ("2*L", 2 * L),
+        ("L/2 + 1", L / 2 + 1),
+        ("L^2/3", L**2 / 3),
+        ("L**2/3", L**2 / 3),
+        ("2*(L + 1)", 2 * L + 2),
+        ("0.1*L", L / 10),
+        ("Rational(1, 3)*L", L / 3),
+        ("Integer(4)", sp.Integer(4)),
+        ("sqrt(4)", sp.Integer(2)),
+        ("4*atan(1)/pi", sp.Integer(1)),
+        ("2**-2", R(1, 4)),
+        ("(L**2 - 1)/(L - 1)", L + 1),
+    ],
+)
+def test_parse_number_exact(value, expected):
+    result = parse_number(value, PARAMS, "x")
+    assert result == expected
+    assert sp.expand(result - expected) == 0
+
+
+def test_parse_number_result_uses_the_declared_symbol():
+    result = parse_number("2*L", PARAMS, "x")
+    assert result.free_symbols == {L}
+    assert next(iter(result.free_symbols)).is_positive
+
+
+def test_parse_number_python_float_is_its_decimal():
+    assert parse_number(0.1, PARAMS, "x") == R(1, 10)
+    assert parse_number(1e-05, PARAMS, "x") == R(1, 100000)
+    assert parse_number(-2.5, PARAMS, "x") == R(-5, 2)
+
+
+def test_parse_number_decimal_object():
+    assert parse_number(Decimal("0.1"), PARAMS, "x") == R(1, 10)
+
+
+def test_parse_number_sympy_symbol_is_mapped_by_name():
+    plain = sp.Symbol("L")
+    result = parse_number(2 * plain, PARAMS, "x")
+    assert result == 2 * L
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ("sqrt(2)", "'sqrt(2)' is not an exact rational number"),
+        ("pi", "'pi' is not an exact rational number"),
+        ("M", "'M' uses undeclared symbol M (declared parameters: L)"),
+        ("1/L", "'1/L' is not a polynomial in the parameters"),
+        ("L**-1", "'L**-1' is not a polynomial in the parameters"),
+        ("abc(", "'abc(' cannot be parsed"),
+        ("sqrt(2)*L", "has a coefficient that is not an exact rational number"),
+        ("sin(1)", "uses unknown function sin"),
+        ("1/0", "is not a finite number"),
+        (".inf", "'.inf' is not a finite number"),
+        (".nan", "'.nan' is not a finite number"),
+        ("", "empty text is not a number"),
+        ("0x10", "cannot be parsed"),
+        ("L**(1/2)", "an exponent must be an integer literal"),
+        ("10**10**10", "chained powers are not accepted"),
+        ("(10**1000)**1000", "too large"),
+        ("1e5000", "too large"),
+        ("().__class__", "cannot be parsed"),
+        ("__import__('os')", "unknown function __import__"),
+        ("lambda: 1", "undeclared symbol lambda"),
+        (True, "is a truth value, not a number"),
+        (float("nan"), "is not a finite number"),
+        (float("inf"), "is not a finite number"),
+        ([1, 2], "is not a number"),
+        (None, "is not a number"),
+        (sp.Symbol("x"), "uses undeclared symbol x"),
+    ],
+)
+def test_parse_number_errors(value, message):
+    with pytest.raises(NumberError) as info:
+        parse_number(value, PARAMS, "arms[0].joints[0].point")
+    err = info.value
+    assert isinstance(err, ValueError)
+    assert err.where == "arms[0].joints[0].point"
+    assert message in err.message
+    assert str(err) == f"arms[0].joints[0].point: {err.message}"
+    assert "\n" not in str(err)
+
+
+def test_parse_number_without_parameters_names_none():
+    with pytest.raises(NumberError, match=r"declared parameters: none"):
+        parse_number("L", {}, "x")
+
+
+@given(st.fractions())
+def test_parse_number_fraction_text_round_trip(value):
+    assert parse_number(str(value), {}, "x") == R(value.numerator, value.denominator)
+
+
+@given(st.decimals(allow_nan=False, allow_infinity=False, places=6))
+def test_parse_number_decimal_text_is_exact(value):
+    exact = Fraction(value)
+    assert parse_number(str(value), {}, "x") == R(exact.numerator, exact.denominator)
+
+
+@given(st.floats(allow_nan=False, allow_infinity=False, min_value=-1e12, max_value=1e12))
+def test_parse_number_float_is_its_repr(value):
+    exact = Fraction(repr(value))
+    assert parse_number(value, {}, "x") == R(exact.numerator, exact.denominator)
+
+
+# ------------------------------------------------------------------------- parse_angle
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("0", (1, 0)),
+        ("pi/2", (0, 1)),
+        ("-pi/2", (0, -1)),
+        ("pi", (-1, 0)),
+        ("-pi", (-1, 0)),
+        ("5*pi", (-1, 0)),
+        ("2*pi", (1, 0)),
+        ("3*pi/2", (0, -1)),
+        ("2*atan(1)", (0, 1)),
+        ("2*atan(1/3)", (R(4, 5), R(3, 5))),
+        ("2*atan(-1/3)", (R(4, 5), R(-3, 5))),
+        ("2*atan(1/3) + pi", (R(-4, 5), R(-3, 5))),
+        ("4*atan(1/2)", (R(-7, 25), R(24, 25))),
+        ("2*atan(1/2) + 2*atan(1/3)", (0, 1)),
+    ],
+)
+def test_parse_angle_exact(text, expected):
+    cos, sin = parse_angle(text, "q1")
+    assert (cos, sin) == (R(expected[0]), R(expected[1]))
+    assert cos.is_Rational and sin.is_Rational
+
+
+def test_parse_angle_pi_over_3_names_nearby_exact_angles():
+    with pytest.raises(NumberError) as info:
+        parse_angle("pi/3", "q1=pi/3")
+    message = str(info.value)
+    assert message.startswith("q1=pi/3: ")
+    assert "tan(q/2) = sqrt(3)/3 is irrational" in message
+    assert "nearest exact angles: 2*atan(4/7)" in message
+    assert message.count("2*atan(") >= 2
+    assert "\n" not in message
+
+
+def test_parse_angle_nearest_suggestions_are_exact_angles():
+    with pytest.raises(NumberError) as info:
+        parse_angle("pi/3", "q1")
+    suggestions = info.value.message.split("nearest exact angles: ")[1]
+    for item in suggestions.split(", "):
+        text = item.split(" (")[0]
+        cos, sin = parse_angle(text, "check")
+        assert cos**2 + sin**2 == 1
+
+
+@pytest.mark.parametrize("text", ["1/2", "0.5", "1", "3.14159"])
+def test_parse_angle_plain_rational_radians_are_not_exact(text):
+    with pytest.raises(NumberError, match="is irrational"):
+        parse_angle(text, "q1")
+
+
+def test_parse_angle_near_pi_suggests_pi():
+    with pytest.raises(NumberError, match=r"nearest exact angles: pi \("):
+        parse_angle("3.14159", "q1")
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("L", "undeclared symbol L"),
+        ("sqrt(-1)", "is not a real angle"),
+        ("pi/", "cannot be parsed"),
+        (True, "truth value"),
+    ],
+)
+def test_parse_angle_errors(text, message):
+    with pytest.raises(NumberError, match=message):
+        parse_angle(text, "q1")
+
+
+# -------------------------------------------------------------------------- angle_text
+
+
+@pytest.mark.parametrize(
+    ("cos", "sin", "text"),
+    [
+        (1, 0, "0"),
+        (0, 1, "pi/2"),
+        (0, -1, "-pi/2"),
+        (-1, 0, "pi"),
+        (R(4, 5), R(3, 5), "2*atan(1/3)"),
+        (R(4, 5), R(-3, 5), "2*atan(-1/3)"),
+        (R(-3, 5), R(4, 5), "2*atan(2)"),
+    ],
+)
+def test_angle_text(cos, sin, text):
+    assert angle_text(R(cos), R(sin)) == text
+
+
+def test_angle_text_rejects_points_off_the_circle():
+    with pytest.raises(NumberError, match="not a point on the unit circle"):
+        angle_text(R(1, 2), R(1, 2))
+
+
+def test_angle_text_rejects_floats():
+    with pytest.raises(NumberError, match="exact rationals"):
+        angle_text(0.6, 0.8)
+
+
+@given(st.fractions(max_denominator=10**6))
+def test_angle_round_trip(t):
+    t = R(t.numerator, t.denominator)
+    cos, sin = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+    text = angle_text(cos, sin)
+    assert parse_angle(text, "q") == (cos, sin)
+
+
+def test_angle_round_trip_pi():
+    assert parse_angle(angle_text(sp.Integer(-1), sp.Integer(0)), "q") == (-1, 0)

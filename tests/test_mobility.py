@@ -1,0 +1,183 @@
+"""The paper's case studies reproduced: numbers, subspaces, maps (exact)."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+from sympy.polys.matrices import DomainMatrix
+
+import coopkin_sym
+from coopkin_sym import InfeasibleMotion
+
+L = sp.Symbol("L", positive=True)
+
+
+def rank(m: sp.Matrix) -> int:
+    """Exact rank over Q(symbols), by SymPy's DomainMatrix (independent of flint)."""
+    if 0 in m.shape:
+        return 0
+    return DomainMatrix.from_Matrix(sp.Matrix(m)).to_field().rank()
+
+
+def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
+    if a.cols == 0 or b.cols == 0:
+        return rank(a) == rank(b) == 0
+    return rank(a) == rank(b) == rank(a.row_join(b))
+
+
+def is_zero(m: sp.Matrix) -> bool:
+    return m.applyfunc(sp.cancel) == sp.zeros(*m.shape)
+
+
+PAPER_NUMBERS = {
+    # paper section 4.1 and 4.2: (Nm, Nc, Ni, Nr)
+    "paper-case1-hard": (2, 2, 1, 0),
+    "paper-case1-soft": (1, 1, 0, 0),
+    "paper-case1-soft-hard": (1, 1, 0, 0),
+    "paper-case1-complete-hard": (0, 0, 0, 0),
+    "paper-case2-complete": (3, 3, 0, 0),
+    "paper-case2-hard": (8, 6, 1, 2),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PAPER_NUMBERS))
+@pytest.mark.parametrize("at", [None, "L=1", "L=1000", "L=3/7"])
+def test_paper_numbers(name, at):
+    a = coopkin_sym.load(name).analyze(at)
+    n = a.numbers
+    assert (n.Nm, n.Nc, n.Ni, n.Nr) == PAPER_NUMBERS[name]
+    assert n.Nm == n.Nc + n.Nr
+    assert n.Nm - n.Nh == 6 + a.r - a.m
+    assert a.check()
+    assert is_zero(a.Q * a.C)
+
+
+def test_case1_hard_subspaces():
+    a = coopkin_sym.load("paper-case1-hard").analyze()
+    # indeterminate: rotation about the line through c1 and c2 (x axis at y = L)
+    assert same_span(a.C11, sp.Matrix([0, 0, -L, 1, 0, 0]))
+    # coordinated: translation along x with both joints at equal speed
+    coordinated = a.C12.col_join(a.C22)
+    assert same_span(coordinated, sp.Matrix([-L, 0, 0, 0, 0, 0, 1, 1]))
+    assert a.C23.shape == (2, 0)
+    # canonical bases: primitive, positive pivot
+    assert a.C11 == sp.Matrix([0, 0, L, -1, 0, 0])
+    assert a.C12 == sp.Matrix([L, 0, 0, 0, 0, 0]) and a.C22 == sp.Matrix([-1, -1])
+
+
+@pytest.mark.parametrize("name", ["paper-case1-soft", "paper-case1-soft-hard"])
+def test_case1_soft_only_the_coordinated_translation(name):
+    a = coopkin_sym.load(name).analyze()
+    assert a.C11.shape == (6, 0)
+    assert same_span(a.C12.col_join(a.C22), sp.Matrix([-L, 0, 0, 0, 0, 0, 1, 1]))
+
+
+def test_case1_matrices_as_in_section_2_1():
+    a = coopkin_sym.load("paper-case1-soft").analyze()
+    assert a.G.shape == (6, 12) and a.D.shape == (12, 2) and a.H.shape == (8, 12)
+    # c1 = (0, L, 0), c2 = (L, L, 0): G = [[I, I, 0, 0], [S(c1), S(c2), I, I]]
+    assert a.G[3:, 0:3] == sp.Matrix([[0, 0, L], [0, 0, 0], [-L, 0, 0]])
+    assert a.G[3:, 3:6] == sp.Matrix([[0, 0, L], [0, 0, -L], [-L, L, 0]])
+    # D: q1 moves c1 by z x c1 = (-L, 0, 0), and spins it about z
+    assert a.D[:, 0].T == sp.Matrix([[-L, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0]])
+    assert a.D[:, 1].T == sp.Matrix([[0, 0, 0, -L, 0, 0, 0, 0, 0, 0, 0, 1]])
+    # soft/soft H: the last two rows are n1^T and n2^T on the angular block
+    assert a.H[6, 6:] == sp.Matrix([[1, 0, 0, 0, 0, 0]])
+    assert a.H[7, 6:] == sp.Matrix([[0, 0, 0, -1, 0, 0]])
+    assert a.H[:6, :6] == sp.eye(6)
+
+
+def test_case2_complete_blocks_are_the_papers():
+    a = coopkin_sym.load("paper-case2-complete").analyze()
+    c12 = sp.Matrix([[L, 0, 0], [0, L, 0], [0, 0, L], [0, 0, 0], [0, 0, 0], [0, 0, 0]])
+    c22 = sp.Matrix([[0, 1, 0], [1, -1, 0], [-1, 0, 0], [0, 0, L], [L, 0, 0],
+                     [0, -1, 0], [0, 1, -1], [0, 0, 1]])
+    assert a.C12 == c12 and a.C22 == c22
+    assert a.C11.shape == (6, 0) and a.C23.shape == (8, 0)
+
+
+def test_case2_hard_subspaces():
+    a = coopkin_sym.load("paper-case2-hard").analyze()
+    # rotation about the line through c1 = (L, L, L) and c2 = (3L, L, L)
+    assert same_span(a.C11, sp.Matrix([0, L, -L, 1, 0, 0]))
+    # redundancy: the third and sixth joints alone (SCARA axes)
+    e3, e6 = sp.zeros(8, 1), sp.zeros(8, 1)
+    e3[2] = e6[5] = 1
+    assert same_span(a.C23, e3.row_join(e6))
+    # full connectivity: [C11 C12] spans every twist
+    assert rank(a.C11.row_join(a.C12)) == 6
+
+
+def test_generic_case2_all_eight_joints():
+    a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    assert a.numbers.as_dict() == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2,
+                                   "Ng": 1, "Nd": 0, "Nh": 0}
+    assert a.check()
+    assert [str(v) for v in a.variables] == [
+        "t_q1", "t_q2", "t_q3", "q4", "q5", "t_q6", "t_q7", "t_q8", "L"]
+
+
+def test_generic_numbers_match_a_random_rational_configuration():
+    # Schwartz-Zippel: generic ranks equal the ranks at a random point (w.h.p.)
+    system = coopkin_sym.load("paper-case2-hard")
+    generic = system.analyze(generic=True).numbers
+    at = "q1=2*atan(3/7),q2=2*atan(-5/11),q3=2*atan(2/9),q4=3/13,q5=-4/17,"
+    at += "q6=2*atan(7/3),q7=2*atan(1/19),q8=2*atan(-8/5),L=29/31"
+    assert system.analyze(at).numbers == generic
+
+
+def test_joint_velocities_paper_eq_11():
+    a = coopkin_sym.load("paper-case2-hard").analyze("L=2")
+    u = a.C12[:, 0] + 3 * a.C12[:, 1]
+    motion = a.joint_velocities(list(u))
+    assert motion.particular == a.C22[:, 0] + 3 * a.C22[:, 1]
+    assert motion.free == a.C23
+    # every solution keeps the contacts: Q (u, qdot) = 0
+    y = motion.particular + 5 * motion.free[:, 0] - motion.free[:, 1]
+    assert is_zero(a.Q * u.col_join(y))
+
+
+def test_object_velocities_paper_eq_12_with_indeterminacy():
+    a = coopkin_sym.load("paper-case1-hard").analyze()
+    motion = a.object_velocities([1, 1])
+    assert motion.particular == sp.Matrix([-L, 0, 0, 0, 0, 0])
+    assert motion.free == a.C11
+
+
+def test_infeasible_requests_raise():
+    a = coopkin_sym.load("paper-case1-soft").analyze()
+    with pytest.raises(InfeasibleMotion, match="not feasible"):
+        a.joint_velocities([0, 1, 0, 0, 0, 0])
+    with pytest.raises(InfeasibleMotion, match="not feasible"):
+        a.object_velocities([1, 0])
+    with pytest.raises(InfeasibleMotion, match="expected 6 components"):
+        a.joint_velocities([1, 0])
+
+
+def test_one_to_one_map_eq_10_symbolic_configuration():
+    # with q1 free the coordinated motion depends on the angle; the map stays exact
+    a = coopkin_sym.load("paper-case1-soft").analyze(free=["q1", "q2"])
+    assert a.numbers.Ni == a.numbers.Nr == 0
+    for k in range(a.C12.cols):
+        motion = a.joint_velocities(list(a.C12[:, k]))
+        assert is_zero(motion.particular - a.C22[:, k])
+
+
+def test_pi_is_exact():
+    # q = pi is the one angle t = tan(q/2) misses: it goes through cos, sin directly
+    a = coopkin_sym.load("paper-case1-hard").analyze("q1=pi,q2=pi")
+    assert (a.numbers.Nm, a.numbers.Nc, a.numbers.Ni) == (2, 2, 1)
+    # both links now point down: c1 = (0, -L, 0), c2 = (L, -L, 0)
+    assert a.C11 == sp.Matrix([0, 0, L, 1, 0, 0]) or same_span(
+        a.C11, sp.Matrix([0, 0, L, 1, 0, 0]))
+
+
+def test_singular_configuration_found_exactly():
+    # both links along the contact line (q1 = q2 = -pi/2): the rank of Q drops
+    system = coopkin_sym.load("paper-case1-hard")
+    generic = system.analyze(generic=True).numbers
+    assert (generic.Nm, generic.Nc, generic.Ni, generic.Nr) == (2, 2, 1, 0)
+    # c1 = (L, 0, 0), c2 = (2L, 0, 0): each joint now moves its contact along y alone,
+    # so the object gains a rotation about z: Nm = Nc = 3 (by hand, see the docstring)
+    special = system.analyze("q1=-pi/2,q2=-pi/2").numbers
+    assert (special.Nm, special.Nc, special.Ni, special.Nr) == (3, 3, 1, 0)
