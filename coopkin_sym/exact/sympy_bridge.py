@@ -37,7 +37,7 @@ def poly_to_sympy(p, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
     terms = []
     for monom, c in p.to_dict().items():
         factors = [rational_to_sympy(c)]
-        factors += [s**e for s, e in zip(syms, monom, strict=True) if e]
+        factors += [s ** int(e) for s, e in zip(syms, monom, strict=True) if e]
         terms.append(sp.Mul(*factors))
     return sp.Add(*terms)
 
