@@ -97,17 +97,25 @@ def render_text(a: Analysis) -> str:
     lines.append("")
     for s in sentences(a):
         lines.append(f"- {s}")
-    lines.append("")
-    lines.append("Object rows of C: (v_x, v_y, v_z, w_x, w_y, w_z); joint rows: "
-                 + ", ".join(a.model.joint_names))
+    object_rows = ["v_x", "v_y", "v_z", "w_x", "w_y", "w_z"]
+    joint_rows = list(a.model.joint_names)
     for name, mat in a.blocks().items():
         lines.append("")
-        if mat.cols == 0:
-            lines.append(f"{name}: empty")
-        else:
-            lines.append(f"{name} =")
-            lines.append(sp.pretty(mat, use_unicode=True))
+        labels = object_rows if name in ("C11", "C12") else joint_rows
+        lines.append(f"{name} ({mat.rows} x {mat.cols})" + (": empty" if mat.cols == 0 else ""))
+        if mat.cols:
+            lines.extend(block_table(mat, labels))
     return "\n".join(lines)
+
+
+def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
+    """A matrix as aligned text rows, each led by its label."""
+    cells = [[sp.sstr(mat[i, j]) for j in range(mat.cols)] for i in range(mat.rows)]
+    widths = [max(len(cells[i][j]) for i in range(mat.rows)) for j in range(mat.cols)]
+    lw = max(len(x) for x in labels)
+    return [f"  {labels[i]:>{lw}} | " + "  ".join(c.rjust(w) for c, w in zip(row, widths,
+                                                                          strict=True))
+            for i, row in enumerate(cells)]
 
 
 def render_latex(a: Analysis) -> str:
