@@ -16,12 +16,13 @@ Example
 """
 
 from .configuration import Configuration, ConfigurationError
-from .mobility import Analysis, InfeasibleMotion, Motion, Numbers
+from .mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion, Numbers
 from .model import Model, ModelError
 from .system import System, load
 
 __all__ = [
     "Analysis",
+    "BlockTooLarge",
     "Configuration",
     "ConfigurationError",
     "InfeasibleMotion",

@@ -118,9 +118,11 @@ def sentences(analysis: Analysis) -> list[str]:
     else:
         conn = f"the object can move in {_count(n.Nc, 'independent direction')} only"
     driven = n.Nc - n.Ni
-    coords = [f"{describe_twist(analysis.C12.col(k), analysis)} by moving "
-              f"{describe_joint_motion(analysis.C22.col(k), analysis)}"
-              for k in range(analysis.C12.cols)] if 0 < driven <= 3 else []
+    blocks, _ = analysis.available_blocks()
+    c12, c22 = blocks["C12"], blocks["C22"]
+    coords = [f"{describe_twist(c12.col(k), analysis)} by moving "
+              f"{describe_joint_motion(c22.col(k), analysis)}"
+              for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
     parts = []
     if driven and n.Nc:
         parts.append(f"{_WORDS[driven] if driven < len(_WORDS) else driven} driven by the "

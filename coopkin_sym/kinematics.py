@@ -55,6 +55,9 @@ class Kinematics:
         :class:`~coopkin_sym.exact.ring.Frac`.
     row_labels
         What each row of ``H`` and ``Q`` constrains, e.g. ``"c1: v_x"``, ``"c2: w.n"``.
+    row_contacts
+        Index (in the model's contacts) of the contact each row of ``H`` and ``Q``
+        belongs to.
     points, normals
         Current contact points and normals (normals ``None`` where not given).
     axes, origins
@@ -69,6 +72,7 @@ class Kinematics:
     H: Mat
     Q: Mat
     row_labels: list[str]
+    row_contacts: list[int]
     points: list[Vec]
     normals: list[Vec | None]
     axes: list[Vec]
@@ -189,17 +193,20 @@ class _Builder:
                     for a in range(3):
                         D[lin + a][col] = lv[a]
                         D[ang + a][col] = s[a]
-        H, labels = self.selection(normals)
+        H, labels, row_contacts = self.selection(normals)
         QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
         Q = [[_dot_col(h, QT, j) for j in range(6 + r)] for h in H]
-        return Kinematics(ring, self.symbols, GT, D, H, Q, labels, points, normals, axes,
-                          origins)
+        return Kinematics(ring, self.symbols, GT, D, H, Q, labels, row_contacts, points,
+                          normals, axes, origins)
 
-    def selection(self, normals: list[Vec | None]) -> tuple[Mat, list[str]]:
-        """H: linear-block rows contact by contact, then angular-block rows."""
+    def selection(self, normals: list[Vec | None]) -> tuple[Mat, list[str], list[int]]:
+        """H: linear-block rows contact by contact, then angular-block rows; with the
+        rows' labels and contacts."""
         n = len(self.model.contacts)
         zero, one = self.ring.zero(), self.ring.one()
         lin_rows, ang_rows, lin_labels, ang_labels = [], [], [], []
+        lin_owner: list[int] = []
+        ang_owner: list[int] = []
         for i, c in enumerate(self.model.contacts):
             lin, ang = 3 * i, 3 * n + 3 * i
             unit = [[one if k == lin + a else zero for k in range(6 * n)] for a in range(3)]
@@ -217,7 +224,9 @@ class _Builder:
             elif c.model == "soft":
                 ang_rows.append(_normal_row(normals[i], ang, 6 * n, zero))
                 ang_labels.append(f"{c.name}: w.n")
-        return lin_rows + ang_rows, lin_labels + ang_labels
+            lin_owner += [i] * (len(lin_rows) - len(lin_owner))
+            ang_owner += [i] * (len(ang_rows) - len(ang_owner))
+        return lin_rows + ang_rows, lin_labels + ang_labels, lin_owner + ang_owner
 
 
 def _normal_row(normal: Vec, start: int, width: int, zero: Frac) -> list[Frac]:

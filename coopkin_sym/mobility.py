@@ -42,6 +42,7 @@ import sympy as sp
 from . import kinematics
 from .configuration import Configuration
 from .exact import elimination as el
+from .exact.ratfunc import RatFunc
 from .exact.sympy_bridge import (
     columns_to_sympy,
     matrix_to_sympy,
@@ -52,6 +53,13 @@ from .exact.sympy_bridge import (
 from .model import Model
 
 NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+
+# the largest primitive coordinated column (in terms of one entry) shown as polynomials
+DEFAULT_TERM_BUDGET = 20_000
+
+
+class BlockTooLarge(ValueError):
+    """A symbolic block whose entries would exceed the analysis's term budget."""
 
 
 class InfeasibleMotion(ValueError):
@@ -97,31 +105,106 @@ class Analysis:
     (entries are polynomials or rational functions of :attr:`variables`).
     """
 
-    def __init__(self, model: Model, config: Configuration, kin: kinematics.Kinematics):
+    def __init__(self, model: Model, config: Configuration, kin: kinematics.Kinematics,
+                 term_budget: int | None = DEFAULT_TERM_BUDGET):
         self.model = model
         self.configuration = config
         self.kinematics = kin
+        self.term_budget = term_budget
         ring = kin.ring
+        zctx = ring.zctx
         r = len(model.joints)
         self.r = r
         self.m = len(kin.Q)
         q_rows = [ring.clear_row(row) for row in kin.Q]
         self._q_rows = q_rows
-        basis = el.nullspace(q_rows, 6 + r, ring.zctx)
-        self._basis = basis
-        obj_first, piv1 = el.gauss_jordan(basis, 6 + r)
-        with_object = [v for v, p in zip(obj_first, piv1, strict=True) if p < 6]
-        self._c23 = [v[6:] for v, p in zip(obj_first, piv1, strict=True) if p >= 6]
+        # C11: reduced echelon basis of N(Gt^T), the first six columns of Q
         gt_rows = [row[:6] for row in q_rows]
-        self._c11, c11_pivots = el.gauss_jordan(el.nullspace(gt_rows, 6, ring.zctx), 6)
-        order = c11_pivots + [c for c in range(6 + r) if c not in c11_pivots]
-        second, piv2 = el.gauss_jordan(with_object, 6 + r, column_order=order)
-        self._coordinated = [v for v, p in zip(second, piv2, strict=True)
-                             if p not in c11_pivots]
-        nm, ni, nr = len(basis), len(self._c11), len(self._c23)
+        self._c11, c11_pivots = el.nullspace_rref(gt_rows, 6, zctx)
+        # arm by arm: each arm's joint variables appear only in its contacts' rows
+        constraints: list[list] = []
+        self._c23: list[list] = []
+        self._arm_maps: list[_ArmMap] = []
+        owners = [model.contacts[c].arm for c in kin.row_contacts]
+        constraints += [gt_rows[i] for i, a in enumerate(owners) if a is None]
+        for a, arm in enumerate(model.arms):
+            arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
+                                    6 + model.joint_offset(a), len(arm.joints), zctx)
+            constraints += arm_map.constraints
+            zero = zctx.constant(0)
+            off = model.joint_offset(a)
+            for v in arm_map.null:
+                self._c23.append([zero] * off + v + [zero] * (r - off - len(v)))
+            self._arm_maps.append(arm_map)
+        # feasible object twists U = R(C1): those every arm can follow
+        order = c11_pivots + [c for c in range(6) if c not in c11_pivots]
+        feasible, pivots = el.nullspace_rref(constraints, 6, zctx, column_order=order)
+        self._coord_u = [v for v, p in zip(feasible, pivots, strict=True)
+                         if p not in c11_pivots]
+        nc, ni, nr = len(feasible), len(self._c11), len(self._c23)
+        nm = nc + nr
         m = self.m
-        self.numbers = Numbers(Nm=nm, Nc=nm - nr, Ni=ni, Nr=nr, Ng=m - (6 - ni),
+        self.numbers = Numbers(Nm=nm, Nc=nc, Ni=ni, Nr=nr, Ng=m - (6 - ni),
                                Nd=m - (r - nr), Nh=m - (6 + r - nm))
+
+    @property
+    def coordinated_terms(self) -> int:
+        """An upper bound on the terms of one entry of the coordinated joint motions
+        ``C22`` (as rational functions), known before building them."""
+        if not self._coord_u:
+            return 0
+        u_terms = max(len(x) for u in self._coord_u for x in u)
+        coef = max((len(e) for arm in self._arm_maps for _, row in arm.solved
+                    for e in row[arm.joints:]), default=0)
+        den = max((len(row[p]) for arm in self._arm_maps for p, row in arm.solved), default=1)
+        return u_terms * coef + den
+
+    def _within_budget(self, what: str) -> None:
+        size = self.coordinated_terms
+        if self.term_budget is not None and size > self.term_budget:
+            raise BlockTooLarge(
+                f"{what}: the coordinated joint motions would have entries of up to about "
+                f"{size:,} terms, over the budget of {self.term_budget:,}; keep fewer "
+                "joints symbolic (free=[...] / --free) or set analysis.term_budget = None")
+
+    @cached_property
+    def _coord_q(self) -> list[list[RatFunc]]:
+        return [self._joint_motion(u) for u in self._coord_u]
+
+    def _joint_motion(self, u) -> list[RatFunc]:
+        """The joint velocities realizing the object twist ``u`` (a feasible twist),
+        vanishing at the pivot coordinates of the redundant motions."""
+        out: list[RatFunc] = []
+        for arm_map in self._arm_maps:
+            out += arm_map.joints_for(u)
+        return out
+
+    @cached_property
+    def _coordinated(self) -> list[list] | None:
+        """The coordinated columns ``(C12; C22)`` as primitive polynomial vectors, or
+        ``None`` when clearing the joint part's denominators would exceed the term
+        budget (the blocks then show the joint part as rational functions)."""
+        self._within_budget("C22")
+        budget = self.term_budget if self.term_budget is not None else 10**18
+        zctx = self.ring.zctx
+        out = []
+        for u, q in zip(self._coord_u, self._coord_q, strict=True):
+            common = zctx.constant(1)
+            for e in q:
+                if e.den.is_one() or e.den == common:
+                    continue
+                g = common.gcd(e.den)
+                if len(common) * len(e.den) > budget:
+                    return None
+                common = common * (e.den / g)
+            if common.is_one():
+                out.append(el.primitive(list(u) + [e.num for e in q]))
+                continue
+            if max(len(x) for x in u) * len(common) > budget:
+                return None
+            col = [x * common for x in u] + [e.num * (common / e.den) for e in q]
+            out.append(el.primitive(col))
+        return out
 
     # --- presentation -------------------------------------------------------------
     @property
@@ -171,14 +254,37 @@ class Analysis:
         """Basis of ``N(Gt^T)``: object motions with every joint locked (6 x Ni)."""
         return self._cols(self._c11, 6)
 
+    @property
+    def coordinated_form(self) -> str:
+        """``"primitive"`` when each coordinated column ``(C12; C22)`` is a primitive
+        polynomial vector, ``"rational"`` when that would exceed the term budget and
+        ``C12`` is a primitive polynomial vector with ``C22`` its exact joint
+        velocities as rational functions (same column space, canonical either way)."""
+        try:
+            return "primitive" if self._coordinated is not None else "rational"
+        except BlockTooLarge:
+            return "rational"
+
     @cached_property
     def C12(self) -> sp.Matrix:
         """Object part of the coordinated motions (6 x (Nc - Ni))."""
-        return self._cols([v[:6] for v in self._coordinated], 6)
+        try:
+            coordinated = self._coordinated
+        except BlockTooLarge:
+            coordinated = None
+        if coordinated is None:
+            return self._cols(self._coord_u, 6)
+        return self._cols([v[:6] for v in coordinated], 6)
 
     @cached_property
     def C22(self) -> sp.Matrix:
         """Joint part of the coordinated motions (r x (Nc - Ni))."""
+        if self._coordinated is None:
+            syms = self.kinematics.symbols
+            cols = [[ratio_to_sympy(e.num, e.den, self.ring, syms) for e in q]
+                    for q in self._coord_q]
+            return sp.ImmutableMatrix(sp.Matrix(cols).T) if cols else sp.ImmutableMatrix(
+                sp.zeros(self.r, 0))
         return self._cols([v[6:] for v in self._coordinated], self.r)
 
     @cached_property
@@ -192,7 +298,7 @@ class Analysis:
     def check(self) -> bool:
         """``Q C = 0`` exactly, on the integer-polynomial form of ``Q``."""
         cols = ([v + [self.ring.zctx.constant(0)] * self.r for v in self._c11]
-                + self._coordinated
+                + self._polynomial_coordinated()
                 + [[self.ring.zctx.constant(0)] * 6 + v for v in self._c23])
         prod = el.matmul(self._q_rows, [list(c) for c in zip(*cols, strict=True)],
                          self.ring.zctx) if cols else []
@@ -213,20 +319,35 @@ class Analysis:
         >>> a.joint_velocities([-2, 0, 0, 0, 0, 0]).particular.T
         Matrix([[1, 1]])
         """
-        x = self._solve(self._c11 + [v[:6] for v in self._coordinated], u, "object twist u")
+        coordinated = self._polynomial_coordinated()
+        x = self._solve(self._c11 + [v[:6] for v in coordinated], u, "object twist u")
         x2 = x[len(self._c11):]
-        part = self._combine([v[6:] for v in self._coordinated], x2, self.r)
+        part = self._combine([v[6:] for v in coordinated], x2, self.r)
         return Motion(part, self.C23)
 
     def object_velocities(self, qdot: Sequence) -> Motion:
         """All object twists produced by joint velocities ``qdot`` (paper eq. 12):
         ``u = C12 x + C11 y``; raises :class:`InfeasibleMotion` when ``qdot`` is not
         in ``R(C2)`` (it would break a contact)."""
-        x = self._solve([v[6:] for v in self._coordinated] + self._c23, qdot,
+        coordinated = self._polynomial_coordinated()
+        x = self._solve([v[6:] for v in coordinated] + self._c23, qdot,
                         "joint velocity qdot")
-        x2 = x[: len(self._coordinated)]
-        part = self._combine([v[:6] for v in self._coordinated], x2, 6)
+        x2 = x[: len(coordinated)]
+        part = self._combine([v[:6] for v in coordinated], x2, 6)
         return Motion(part, self.C11)
+
+    def _polynomial_coordinated(self) -> list[list]:
+        """Coordinated columns as polynomial vectors, whatever their size."""
+        if self._coordinated is not None:
+            return self._coordinated
+        self._within_budget("kinematic maps")
+        saved, self.term_budget = self.term_budget, None
+        try:
+            del self.__dict__["_coordinated"]
+            return self._coordinated
+        finally:
+            self.term_budget = saved
+            self.__dict__["_coordinated"] = None
 
     def _solve(self, columns, rhs, what: str):
         """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent), as
@@ -277,18 +398,88 @@ class Analysis:
         """The analysis as plain data, entries as exact strings."""
         def strs(mat: sp.Matrix):
             return [[sp.sstr(e) for e in mat.row(i)] for i in range(mat.rows)]
-        return {
+        blocks, omitted = self.available_blocks()
+        shapes = {"C11": [6, self.numbers.Ni], "C12": [6, len(self._coord_u)],
+                  "C22": [self.r, len(self._coord_u)], "C23": [self.r, self.numbers.Nr]}
+        out = {
             "system": self.model.name,
             "configuration": self.configuration.at_text(),
             "variables": [str(v) for v in self.variables],
             "joints": list(self.model.joint_names),
             "numbers": self.numbers.as_dict(),
-            "blocks": {k: strs(v) for k, v in self.blocks().items()},
-            "shapes": {k: list(v.shape) for k, v in self.blocks().items()},
+            "blocks": {k: strs(v) if v is not None else None for k, v in blocks.items()},
+            "shapes": shapes,
+            "coordinated_form": None if omitted else self.coordinated_form,
         }
+        if omitted:
+            out["omitted"] = omitted
+        return out
+
+    def available_blocks(self) -> tuple[dict[str, sp.Matrix | None], dict[str, str]]:
+        """The blocks that fit the term budget (``None`` for the others), and why each
+        missing one was left out."""
+        blocks: dict[str, sp.Matrix | None] = {}
+        omitted: dict[str, str] = {}
+        for name in ("C11", "C12", "C22", "C23"):
+            try:
+                blocks[name] = getattr(self, name)
+            except BlockTooLarge as exc:
+                blocks[name] = None
+                omitted[name] = str(exc)
+        return blocks, omitted
 
     def poly(self, p) -> sp.Expr:
         return poly_to_sympy(p, self.ring, self.kinematics.symbols)
+
+
+@dataclass
+class _ArmMap:
+    """One arm's share of the analysis.
+
+    ``constraints``: rows ``y Gt_a`` (``y`` in the left nullspace of ``Dt_a``) that
+    every feasible object twist satisfies; ``null``: reduced echelon basis of
+    ``N(Dt_a)``; ``solved``: for each pivot joint of the reduced echelon form of
+    ``[Dt_a | Gt_a]``, the row that gives its velocity from the object twist.
+    """
+
+    joints: int
+    constraints: list
+    null: list
+    null_pivots: list[int]
+    solved: list[tuple[int, list]]
+
+    @classmethod
+    def build(cls, q_rows, rows: list[int], col0: int, joints: int, zctx) -> _ArmMap:
+        d_rows = [[q_rows[i][col0 + k] for k in range(joints)] for i in rows]
+        m_rows = [d + q_rows[i][:6] for d, i in zip(d_rows, rows, strict=True)]
+        reduced, pivots = el.gauss_jordan(m_rows, joints + 6)
+        constraints = [row[joints:] for row, p in zip(reduced, pivots, strict=True)
+                       if p >= joints]
+        solved = [(p, row) for row, p in zip(reduced, pivots, strict=True) if p < joints]
+        null, null_pivots = el.nullspace_rref(d_rows, joints, zctx)
+        return cls(joints, constraints, null, null_pivots, solved)
+
+    def joints_for(self, u) -> list[RatFunc]:
+        """Joint velocities of this arm that follow the object twist ``u``: the pivot
+        joints of ``[Dt_a | Gt_a]`` solved with the free joints at rest, then reduced
+        so they vanish at the pivots of the redundant motions."""
+        zctx = u[0].context()
+        zero = RatFunc.poly(zctx.constant(0))
+        q = [zero] * self.joints
+        for p, row in self.solved:
+            acc = zctx.constant(0)
+            for k in range(6):
+                if not row[self.joints + k].is_zero() and not u[k].is_zero():
+                    acc = acc + row[self.joints + k] * u[k]
+            if not acc.is_zero():
+                q[p] = RatFunc.make(-acc, row[p])
+        for v, p in zip(self.null, self.null_pivots, strict=True):
+            if q[p].is_zero():
+                continue
+            factor = q[p] / RatFunc.poly(v[p])
+            q = [qi - factor * RatFunc.poly(vi) if not vi.is_zero() else qi
+                 for qi, vi in zip(q, v, strict=True)]
+        return q
 
 
 def analyze(model: Model, config: Configuration) -> Analysis:

@@ -28,6 +28,7 @@ Example
 
 from __future__ import annotations
 
+import random
 from collections.abc import Sequence
 
 import flint
@@ -206,6 +207,100 @@ def nullspace(rows: Sequence[Sequence[Poly]], ncols: int | None = None,
             v[c] = -(r[f] * (scale / r[c]))
         basis.append(primitive(v))
     return basis
+
+
+# a prime for choosing pivot rows at a random point (choice only: results are verified)
+_PRIME = 2**61 - 1
+_rng = random.Random(20260522)
+
+
+def independent_rows(rows: Sequence[Sequence[Poly]], ncols: int) -> list[int]:
+    """Indices of rows independent at a random integer point, modulo a prime.
+
+    Cheaper rows (by entry size) are preferred. The count is a certified lower bound
+    on the rank over the fraction field (a rank modulo p at a point never exceeds the
+    generic rank); the choice itself is only a guess that callers verify.
+    """
+    if not rows:
+        return []
+    nvars = rows[0][0].context().nvars()
+    point = [_rng.randrange(1, 2**20) for _ in range(nvars)]
+    cost = [sum(len(e) for e in r) for r in rows]
+    order = sorted(range(len(rows)), key=lambda i: cost[i])
+    values = [[int(e(*point)) % _PRIME if not e.is_zero() else 0 for e in rows[i]]
+              for i in order]
+    # pivot columns of the transposed matrix's echelon form = independent rows
+    reduced, rk = flint.nmod_mat(values, _PRIME).transpose().rref()
+    chosen, col = [], 0
+    for i in range(rk):
+        while int(reduced[i, col]) == 0:
+            col += 1
+        chosen.append(order[col])
+    return sorted(chosen)
+
+
+def nullspace_rref(rows: Sequence[Sequence[Poly]], ncols: int, zctx,
+                   column_order: Sequence[int] | None = None) -> tuple[list[Row], list[int]]:
+    """The reduced echelon basis of the right nullspace (as reduced rows, see the
+    module docstring), and its pivot columns, for the columns taken in
+    ``column_order``.
+
+    The reduced echelon basis of ``N(M)`` comes straight from the elimination of
+    ``M`` with the columns in reverse order: its free columns are the basis's pivots.
+    Only rows independent at a random point are eliminated; the others are then
+    checked exactly against the basis (and everything is redone on all rows in the
+    rare case a check fails), so the result is exact.
+
+    Examples
+    --------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("L",), "degrevlex")
+    >>> (L,) = ctx.gens()
+    >>> basis, pivots = nullspace_rref([[ctx.constant(0), L, L]], 3, ctx)
+    >>> [[str(e) for e in v] for v in basis], pivots
+    ([['1', '0', '0'], ['0', '1', '-1']], [0, 1])
+    """
+    order = list(range(ncols)) if column_order is None else list(column_order)
+    rows = [list(r) for r in rows if not _is_zero_row(r)]
+    chosen = independent_rows(rows, ncols)
+    if len(chosen) == ncols:
+        return [], []
+    subset = [rows[i] for i in chosen]
+    basis, pivots = _nullspace_from(subset, ncols, zctx, order)
+    others = [r for i, r in enumerate(rows) if i not in set(chosen)]
+    if not all(_dot(r, v).is_zero() for r in others for v in basis):
+        basis, pivots = _nullspace_from(rows, ncols, zctx, order)
+    return basis, pivots
+
+
+def _dot(a: Sequence[Poly], b: Sequence[Poly]) -> Poly:
+    acc = None
+    for x, y in zip(a, b, strict=True):
+        if not x.is_zero() and not y.is_zero():
+            acc = x * y if acc is None else acc + x * y
+    return acc if acc is not None else a[0].context().constant(0)
+
+
+def _nullspace_from(rows: list[Row], ncols: int, zctx, order: list[int]):
+    reduced, pivots = gauss_jordan(rows, ncols, column_order=order[::-1]) if rows else (
+        [], [])
+    pivot_set = set(pivots)
+    zero = zctx.constant(0)
+    basis, free = [], []
+    for f in order:
+        if f in pivot_set:
+            continue
+        involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[f].is_zero()]
+        scale = zctx.constant(1)
+        for r, c in involved:
+            scale = scale * r[c] / scale.gcd(r[c])
+        v = [zero] * ncols
+        v[f] = scale
+        for r, c in involved:
+            v[c] = -(r[f] * (scale / r[c]))
+        basis.append(_pivot_positive(primitive(v), f))
+        free.append(f)
+    return basis, free
 
 
 def matmul(a: Sequence[Sequence[Poly]], b: Sequence[Sequence[Poly]], zctx) -> list[Row]:
