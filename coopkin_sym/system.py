@@ -65,6 +65,25 @@ class System:
             config = self.configuration(at, "all" if generic else free)
         return analyze(self.model, config)
 
+    def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
+              progress: bool = False, chunk: int = 16384):
+        """Exact numbers at many points, fast (see :func:`coopkin_sym.sweep.sweep`).
+
+        ``points`` is a grid (:func:`coopkin_sym.sweep.grid`) or an iterable of points
+        (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
+        :class:`concurrent.futures.Executor`.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2", "q1=0"])
+        >>> res.numbers[:, 0].tolist()
+        [3, 2]
+        """
+        from .sweep import sweep
+
+        return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
+
     def __repr__(self) -> str:
         return (f"System({self.model.name!r}: {len(self.model.arms)} arms, "
                 f"{len(self.model.joints)} joints, {len(self.model.contacts)} contacts)")
