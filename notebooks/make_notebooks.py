@@ -1,0 +1,679 @@
+"""Build the notebooks of this folder, without outputs.
+
+Run ``python notebooks/make_notebooks.py`` after editing a notebook's cells here; the
+test suite (``python -m pytest``, through nbmake) runs every notebook top to bottom.
+Each notebook checks the paper's numbers with ``assert`` cells, so a wrong result fails
+the run.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import nbformat
+from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+
+HERE = Path(__file__).resolve().parent
+
+
+def md(text: str):
+    return new_markdown_cell(textwrap.dedent(text).strip())
+
+
+def code(text: str):
+    return new_code_cell(textwrap.dedent(text).strip())
+
+
+SETUP = code("""
+    import sympy as sp
+    from IPython.display import Markdown, Math, display
+
+    import coopkin_sym
+    from coopkin_sym.draw import draw_system
+    from coopkin_sym.examples import example_path
+    from coopkin_sym.interpret import sentences
+
+
+    def show(name, matrix):
+        \"\"\"A matrix as LaTeX (an empty block as the empty set).\"\"\"
+        body = sp.latex(matrix) if 0 not in matrix.shape else r"\\emptyset"
+        display(Math(f"{name} = {body}"))
+
+
+    def same_span(a, b):
+        \"\"\"Exact test: the columns of a and b span the same space.\"\"\"
+        return a.rows == b.rows and a.rank() == b.rank() == a.row_join(b).rank()
+
+
+    def numbers_table(rows):
+        \"\"\"A Markdown table of (label, Numbers) pairs.\"\"\"
+        head = "| | Nm | Nc | Ni | Nr | Ng | Nd | Nh |\\n|---|---|---|---|---|---|---|---|\\n"
+        body = "".join(f"| {label} | " + " | ".join(str(v) for v in n.as_dict().values())
+                       + " |\\n" for label, n in rows)
+        return Markdown(head + body)
+""")
+
+
+# ---------------------------------------------------------------------------- 01
+
+NB01 = [
+    md("""
+    # Case study 1: two one-link arms holding an object
+
+    The first example of Bicchi, Melchiorri and Balluchi, *Mobility and Kinematic
+    Analysis of General Cooperating Robot Systems* (ICRA 1992): section 2.1 builds its
+    matrices G, D, H (fig. 2) and section 4.1 analyzes it for several contact models.
+    Two one-link arms turn about vertical axes through $o_1 = (0, 0, 0)$ and
+    $o_2 = (L, 0, 0)$; their links (length $L$) touch the object at $c_1 = (0, L, 0)$ and
+    $c_2 = (L, L, 0)$ with normals $n_1 = (1, 0, 0)$, $n_2 = (-1, 0, 0)$.
+
+    Everything below is computed exactly by `coopkin_sym`; the length $L$ stays a symbol.
+    """),
+    SETUP,
+    md("""
+    ## The model
+
+    The system ships as model files, one per contact-model combination
+    (`paper-case1-hard`, `-soft`, `-soft-hard`, `-complete-hard`). Each file is the
+    paper's data, nothing else:
+    """),
+    code("""
+    print(example_path("paper-case1-hard").read_text())
+    hard = coopkin_sym.load("paper-case1-hard")
+    L = hard.model.parameters[0]
+    a = hard.analyze()          # joints at home (q1 = q2 = 0), L symbolic
+    """),
+    md("""
+    ## G and D (paper eqs. 2 to 4)
+
+    $G^T$ maps the object's twist $\\dot u = (v, \\omega)$ (reference point at the base
+    origin) to the velocities of the object's contact frames; $D$ maps the joint rates
+    to the velocities of the links' contact frames. Rows: all linear blocks first
+    ($\\dot c_1, \\dot c_2$), then the angular ones ($\\omega_1, \\omega_2$), as in the paper.
+    """),
+    code("""
+    show("G", a.G)
+    show("D", a.D)
+    """),
+    code("""
+    def S(c):
+        return sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+
+
+    c1, c2 = sp.Matrix([0, L, 0]), sp.Matrix([L, L, 0])
+    I3, O3 = sp.eye(3), sp.zeros(3)
+    assert a.G == sp.Matrix(sp.BlockMatrix([[I3, I3, O3, O3], [S(c1), S(c2), I3, I3]]))
+    # joint k moves its contact by s_k x (c - o_k) and turns it by s_k
+    assert a.D.T == sp.Matrix([[-L, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0],
+                               [0, 0, 0, -L, 0, 0, 0, 0, 0, 0, 0, 1]])
+    """),
+    md("""
+    ## H for each contact model
+
+    $H$ keeps the velocity components a contact constrains: a **hard finger** (point
+    contact with friction) the three linear ones; a **soft finger** also the rotation
+    about the normal ($n_i^T$ on the angular block); a **complete constraint** all six.
+    These are the paper's $H$ matrices of section 2.1.
+    """),
+    code("""
+    names = ["paper-case1-hard", "paper-case1-soft", "paper-case1-soft-hard",
+             "paper-case1-complete-hard"]
+    analyses = {name: coopkin_sym.load(name).analyze() for name in names}
+    for name, an in analyses.items():
+        display(Markdown(f"`{name}`: contacts "
+                         + ", ".join(f"{c.name} {c.model}" for c in an.model.contacts)))
+        show("H", an.H)
+    """),
+    code("""
+    assert analyses["paper-case1-hard"].H == sp.eye(6).row_join(sp.zeros(6))
+    soft_rows = sp.Matrix([[0] * 6 + [1, 0, 0, 0, 0, 0], [0] * 6 + [0, 0, 0, -1, 0, 0]])
+    assert analyses["paper-case1-soft"].H == sp.eye(6).row_join(sp.zeros(6)).col_join(soft_rows)
+    assert analyses["paper-case1-soft-hard"].H.shape == (7, 12)
+    assert analyses["paper-case1-complete-hard"].H.shape == (9, 12)
+    """),
+    md("""
+    ## Q and its nullspace C (eqs. 7 and 8), both contacts hard
+
+    $Q = (H G^T \\mid -H D)$ acts on $(\\dot u, \\dot q)$; the columns of $C$ span its
+    nullspace, arranged by column operations as
+    $C = \\begin{pmatrix} C_{11} & C_{12} & 0 \\\\ 0 & C_{22} & C_{23} \\end{pmatrix}$.
+    """),
+    code("""
+    show("Q", a.Q)
+    show("C", a.C)
+    for name, block in a.blocks().items():
+        show(name, block)
+    assert a.check()           # Q C = 0, exactly
+    a.numbers
+    """),
+    md("""
+    The paper (section 4.1): *"the mobility and connectivity of the system are
+    $N_m = N_c = 2$, being the redundancy $N_r = 0$. The system is quasi-statically
+    indeterminate ($N_i = 1$)"*, with $C_{11} = (0, 0, -L, 1, 0, 0)^T$ and one
+    coordinated motion $C_{12} = (-L, 0, 0, 0, 0, 0)^T$, $C_{22} = (1, 1)^T$ (a
+    translation along $x$; the scanned text says $z$, a misprint). Bases may differ by
+    a scale factor, so we compare spans:
+    """),
+    code("""
+    n = a.numbers
+    assert (n.Nm, n.Nc, n.Ni, n.Nr) == (2, 2, 1, 0)
+    assert same_span(a.C11, sp.Matrix([0, 0, -L, 1, 0, 0]))
+    assert same_span(a.C12.col_join(a.C22), sp.Matrix([-L, 0, 0, 0, 0, 0, 1, 1]))
+    for s in sentences(a):
+        print("-", s)
+    """),
+    md("""
+    **Interpretation** (section 4.1). With every joint locked the object can still spin
+    about the line through the two contact points: hard fingers cannot resist that
+    rotation ($C_{11}$). Besides this free motion there is one coordinated motion: both
+    joints at the same rate translate the object along $x$ ($C_{12}$, $C_{22}$).
+
+    ## All four contact models
+
+    Soft fingers (friction about the normals) remove the free spin; one soft finger is
+    enough; a complete-constraint contact stops everything:
+    """),
+    code("""
+    paper = {  # section 4.1
+        "paper-case1-hard": (2, 2, 1, 0),
+        "paper-case1-soft": (1, 1, 0, 0),
+        "paper-case1-soft-hard": (1, 1, 0, 0),   # "the same result ... any single contact soft"
+        "paper-case1-complete-hard": (0, 0, 0, 0),
+    }
+    display(numbers_table([(f"`{name}`", an.numbers) for name, an in analyses.items()]))
+    for name, expected in paper.items():
+        n = analyses[name].numbers
+        assert (n.Nm, n.Nc, n.Ni, n.Nr) == expected, name
+    for name in ["paper-case1-soft", "paper-case1-soft-hard"]:
+        an = analyses[name]
+        assert same_span(an.C12.col_join(an.C22), sp.Matrix([-L, 0, 0, 0, 0, 0, 1, 1]))
+    assert analyses["paper-case1-complete-hard"].C.shape == (8, 0)
+    """),
+    md("""
+    ## The kinematic maps (eqs. 11 and 12)
+
+    Which joint rates move the object along $-L\\,x$? And what does the object do when
+    both joints turn at rate 1? (Eq. 12 adds the indeterminate spin $C_{11} y$.) A
+    velocity outside the feasible subspace would break a contact and is refused.
+    """),
+    code("""
+    m = a.joint_velocities([-L, 0, 0, 0, 0, 0])
+    show(r"\\dot q", m.particular)
+    assert m.particular == sp.Matrix([1, 1]) and m.free.shape == (2, 0)
+    u = a.object_velocities([1, 1])
+    show(r"\\dot u", u.particular)
+    show(r"\\text{plus any multiple of}", u.free)
+    assert u.particular == sp.Matrix([-L, 0, 0, 0, 0, 0]) and same_span(u.free, a.C11)
+    try:
+        a.joint_velocities([0, 1, 0, 0, 0, 0])
+    except coopkin_sym.InfeasibleMotion as exc:
+        print("translation along y:", exc)
+    """),
+    code("""
+    draw_system(a, motion=("coordinated", 1))
+    """),
+    md("""
+    ## The arms' angles free: the generic analysis
+
+    With `generic=True` both joint angles stay symbolic, through $t_i = \\tan(q_i/2)$
+    (then $\\cos q_i = (1 - t_i^2)/(1 + t_i^2)$ and $\\sin q_i = 2t_i/(1 + t_i^2)$): the
+    result holds for almost every configuration. The numbers are those of the home
+    configuration:
+    """),
+    code("""
+    g = hard.analyze(generic=True)
+    print("variables:", g.variables)
+    for name, block in g.blocks().items():
+        show(name, block.applyfunc(sp.factor))
+    assert (g.numbers.Nm, g.numbers.Nc, g.numbers.Ni, g.numbers.Nr) == (2, 2, 1, 0)
+    generic = {name: coopkin_sym.load(name).analyze(generic=True).numbers for name in names}
+    display(numbers_table([(f"`{name}`, generic", n) for name, n in generic.items()]))
+    for name, expected in paper.items():
+        n = generic[name]
+        assert (n.Nm, n.Nc, n.Ni, n.Nr) == expected, name
+    """),
+    md("""
+    ## Where the numbers change
+
+    The object keeps its size when both arms turn together ($q_1 = q_2$: the links and
+    the object form a parallelogram). Along that family the numbers are the generic
+    ones except where both links lie on the contact line, $q_1 = q_2 = \\pm\\pi/2$: there
+    $N_m$ jumps from 2 to 3. The exact engine sees this at the exact angle and nowhere
+    else (angles are exact when $\\tan(q/2)$ is rational, e.g. `2*atan(1/3)`):
+    """),
+    code("""
+    family = ["0", "2*atan(1/3)", "2*atan(9/10)", "pi/2", "2*atan(11/10)", "pi",
+              "2*atan(-99/100)", "-pi/2", "2*atan(-101/100)"]
+    rows = [(f"q1 = q2 = `{q}`", hard.analyze(f"q1={q},q2={q}").numbers) for q in family]
+    display(numbers_table(rows))
+    for q, (_, n) in zip(family, rows, strict=True):
+        assert n.Nm == (3 if q in ("pi/2", "-pi/2") else 2), q
+    """),
+    code("""
+    s = hard.analyze("q1=-pi/2,q2=-pi/2")
+    for name, block in s.blocks().items():
+        show(name, block)
+    for line in sentences(s):
+        print("-", line)
+    assert (s.numbers.Nm, s.numbers.Nc, s.numbers.Ni, s.numbers.Nr) == (3, 3, 1, 0)
+    assert same_span(s.C11, sp.Matrix([0, 0, 0, 1, 0, 0]))       # spin about the x axis
+    assert same_span(s.C12.col_join(s.C22),
+                     sp.Matrix([[0, L, 0, 0, 0, 0, 1, 1], [0, 0, 0, 0, 0, 1, 1, 2]]).T)
+    """),
+    md("""
+    At $q_1 = q_2 = -\\pi/2$ the contacts are $c_1 = (L, 0, 0)$ and $c_2 = (2L, 0, 0)$
+    and both links lie along the $x$ axis. Each contact can only move across its link
+    (along $y$), and since the two links no longer turn the contact line, the two
+    contact speeds are independent to first order: besides the translation along $y$
+    ($\\dot q_1 = \\dot q_2$) the object can now turn about the $z$ axis through the base
+    ($\\dot q_2 = 2\\dot q_1$). This is a first-order (instantaneous) statement, as in the
+    paper; the extra motion does not persist (second-order effects, cf. the paper's
+    remark on higher-order motions). The other contact models change there too:
+    """),
+    code("""
+    rows = [(f"`{name}`", coopkin_sym.load(name).analyze("q1=-pi/2,q2=-pi/2").numbers)
+            for name in names]
+    display(numbers_table(rows))
+    assert [n.Nm for _, n in rows] == [3, 3, 3, 1]
+    draw_system(s, motion=("coordinated", 2))
+    """),
+]
+
+
+# ---------------------------------------------------------------------------- 02
+
+NB02 = [
+    md("""
+    # Case study 2: two SCARA robots
+
+    Section 4.2 of the paper (fig. 3): two four-joint SCARA-type robots hold an object.
+    Robot `s1` has revolute joints q1, q2, q3 about $z$ and a prismatic q4 along $z$;
+    robot `s2` a prismatic q5 along $x$ and revolute joints q6, q7, q8 about $x$. The
+    contacts are at $c_1 = (L, L, L)$ and $c_2 = (3L, L, L)$ with normals $\\pm x$. The
+    paper analyzes two grips: complete-constraint contacts (grippers) and hard-finger
+    contacts ("sticks").
+    """),
+    SETUP,
+    code("""
+    print(example_path("paper-case2-hard").read_text())
+    complete = coopkin_sym.load("paper-case2-complete")
+    hard = coopkin_sym.load("paper-case2-hard")
+    L = hard.model.parameters[0]
+    """),
+    md("""
+    ## Complete-constraint contacts
+
+    The paper: *"connectivity $N_c = 3$, no redundancy nor indeterminacy. The feasible
+    motions for the object are all pure translations (the last three rows of $C_{12}$ are
+    zeroes)"*, with $C_{12}$ and $C_{22}$ printed in full. Ours are the same matrices:
+    """),
+    code("""
+    c = complete.analyze()
+    show("C_{12}", c.C12)
+    show("C_{22}", c.C22)
+    paper_c12 = sp.Matrix([[L, 0, 0], [0, L, 0], [0, 0, L], [0, 0, 0], [0, 0, 0], [0, 0, 0]])
+    paper_c22 = sp.Matrix([[0, 1, 0], [1, -1, 0], [-1, 0, 0], [0, 0, L], [L, 0, 0],
+                           [0, -1, 0], [0, 1, -1], [0, 0, 1]])
+    n = c.numbers
+    assert (n.Nm, n.Nc, n.Ni, n.Nr) == (3, 3, 0, 0)
+    assert same_span(c.C12.col_join(c.C22), paper_c12.col_join(paper_c22))
+    assert c.C12[3:, :] == sp.zeros(3, 3)       # translations only
+    for s in sentences(c):
+        print("-", s)
+    """),
+    md("""
+    ## Hard-finger contacts
+
+    The paper: *"the mechanism has full connectivity ($N_c = 6$), although one of the
+    movements of the object is quasi-statically indeterminate ($N_i = 1$). The system
+    also exhibits redundant degrees of freedom in this configuration ($N_r = 2$)"*. (Its
+    printed $C$ has unreadable entries, so we check the subspaces it describes in words.)
+    """),
+    code("""
+    h = hard.analyze()
+    for name, block in h.blocks().items():
+        show(name, block)
+    n = h.numbers
+    assert (n.Nm, n.Nc, n.Ni, n.Nr) == (8, 6, 1, 2)
+    assert h.check()
+    assert h.C11.row_join(h.C12).rank() == 6      # every object motion is possible
+    """),
+    md("""
+    **Indeterminate motion** ($C_{11}$): *"rotations of the object about the axis joining
+    the two contact points, which cannot be resisted by hard-point contacts"*. The
+    twist of a rotation about the line through $c_1$ with direction $w$ is
+    $(c_1 \\times w, w)$:
+    """),
+    code("""
+    c1, c2 = sp.Matrix([L, L, L]), sp.Matrix([3 * L, L, L])
+    w = (c2 - c1) / (2 * L)
+    spin = c1.cross(w).col_join(w)
+    show(r"(c_1 \\times w, w)", spin)
+    assert same_span(h.C11, spin)
+    """),
+    md("""
+    **Redundant motions** ($C_{23}$): *"obtained by moving any of the third and sixth
+    joint, i.e. rotations about the axis of the SCARA arms"*. At home $c_1$ lies on the
+    axis of q3 and $c_2$ on the axis of q6, so each of these joints turns its link
+    about the contact point and the object does not move:
+    """),
+    code("""
+    e = sp.eye(8)
+    assert same_span(h.C23, e[:, 2].row_join(e[:, 5]))        # q3 alone, q6 alone
+    print(h.model.joint_names)
+    m = h.object_velocities([0, 0, 1, 0, 0, 0, 0, 0])          # eq. (12), q3 alone
+    show(r"\\dot u", m.particular)
+    show(r"\\text{plus any multiple of}", m.free)
+    assert m.particular == sp.zeros(6, 1) and same_span(m.free, h.C11)
+    """),
+    md("""
+    **Coordinated motions** (eq. 11): for any object velocity the joint rates are a
+    particular solution plus any combination of the redundant motions. For instance a
+    translation of the object along $z$:
+    """),
+    code("""
+    m = h.joint_velocities([0, 0, L, 0, 0, 0])
+    show(r"\\dot q", m.particular)
+    show(r"\\text{plus}", m.free)
+    assert h.Q * sp.Matrix([0, 0, L, 0, 0, 0, *m.particular]) == sp.zeros(h.m, 1)
+    for s in sentences(h):
+        print("-", s)
+    """),
+    code("""
+    draw_system(h, motion=("indeterminate", 1))
+    """),
+    code("""
+    draw_system(h, motion=("redundant", 2))
+    """),
+    md("""
+    ## All eight joints symbolic: the generic analysis
+
+    `generic=True` keeps every joint variable symbolic ($t_i = \\tan(q_i/2)$ for the six
+    revolute joints, the displacements q4 and q5) and $L$ too: nine variables. The
+    numbers are those of the paper's configuration, so that configuration is generic
+    for both grips:
+    """),
+    code("""
+    gh = hard.analyze(generic=True)
+    gc = complete.analyze(generic=True)
+    print("variables:", gh.variables)
+    display(numbers_table([("complete, generic", gc.numbers), ("hard, generic", gh.numbers)]))
+    assert (gh.numbers.Nm, gh.numbers.Nc, gh.numbers.Ni, gh.numbers.Nr) == (8, 6, 1, 2)
+    assert (gc.numbers.Nm, gc.numbers.Nc, gc.numbers.Ni, gc.numbers.Nr) == (3, 3, 0, 0)
+    """),
+    md("""
+    The generic blocks are exact polynomial matrices, too large to read in full. Their
+    sizes (terms of the largest entry, terms in all):
+    """),
+    code("""
+    def terms(e):
+        return len(sp.Add.make_args(sp.expand(e))) if e != 0 else 0
+
+    rows = "".join(f"| {name} | {b.rows} x {b.cols} | {max((terms(x) for x in b), default=0)} "
+                   f"| {sum(terms(x) for x in b)} |\\n" for name, b in gh.blocks().items())
+    display(Markdown("| block | shape | largest entry | all entries |\\n|---|---|---|---|\\n"
+                     + rows))
+    assert {k: v.shape for k, v in gh.blocks().items()} == {
+        "C11": (6, 1), "C12": (6, 5), "C22": (8, 5), "C23": (8, 2)}
+    """),
+    md("""
+    $C_{23}$ is small and tells something the home configuration hides: for robot `s2`
+    the generic redundant motion combines q6, q7 and q8 (three parallel revolute axes
+    placing the contact point in a plane leave one motion free). At home the contact
+    lies on the axis of q6 and the combination reduces to q6 alone:
+    """),
+    code("""
+    show("C_{23}", gh.C23.applyfunc(sp.factor))
+    home = {v: 0 for v in gh.variables if v != L}             # every joint at home
+    assert same_span(gh.C23.subs(home), h.C23)
+    """),
+    code("""
+    draw_system(h, motion=("coordinated", 4))
+    """),
+]
+
+
+# ---------------------------------------------------------------------------- 04
+
+NB04 = [
+    md("""
+    # Exact versus floating-point rank tests
+
+    Mobility numbers are ranks. A floating-point rank test (an SVD with a tolerance,
+    e.g. `numpy.linalg.matrix_rank`) decides whether a small singular value is zero,
+    and near a singular configuration, or when lengths have very different scales, it
+    decides wrongly. `coopkin_sym` never decides a rank in floating point: at a
+    configuration with exact (rational) data the answer is exact, whatever the scale.
+
+    In this notebook floats appear only where marked: the float baselines we compare
+    with, the numerical integration of section 3 and the plots.
+    """),
+    code("""
+    import math
+    from fractions import Fraction
+
+    import matplotlib.pyplot as plt  # float-ok: plots
+    import numpy as np  # float-ok: the float baselines
+    import sympy as sp
+    from IPython.display import Markdown, display
+
+    import coopkin_sym
+    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+
+
+    def float_nm(analysis, tol=None):  # float-ok
+        \"\"\"Nm decided the usual way: numpy's SVD rank of the float Q.\"\"\"
+        q = np.array(analysis.Q.tolist(), dtype=float)                # float-ok
+        return 6 + analysis.r - int(np.linalg.matrix_rank(q, tol=tol))  # float-ok
+
+
+    def table(header, rows):
+        lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        lines += ["| " + " | ".join(str(x) for x in row) + " |" for row in rows]
+        return Markdown("\\n".join(lines))
+    """),
+    md("""
+    ## 1. Near a singular configuration, at different scales
+
+    Paper case 1 with hard fingers: $N_m = 2$ everywhere on the family $q_1 = q_2$
+    except at $q_1 = q_2 = -\\pi/2$ (both links on the contact line), where $N_m = 3$
+    (notebook 01). Approach that configuration along exact angles
+    $q = 2\\arctan(-1 + \\varepsilon)$, $\\varepsilon = 10^{-k}$ (the angle is then within
+    about $\\varepsilon$ of $-\\pi/2$), with the length $L$ given in three units. Columns:
+    the exact $N_m$, and $N_m$ from numpy's rank with its default tolerance and with a
+    fixed tolerance $10^{-9}$.
+    """),
+    code("""
+    case1 = coopkin_sym.load("paper-case1-hard")
+    rows, results = [], {}
+    for length in ["1/1000", "1", "1000"]:
+        for k in [3, 6, 9, 12, 15, None]:
+            eps = sp.Rational(1, 10**k) if k is not None else 0
+            q = f"2*atan({-1 + eps})"
+            a = case1.analyze({"q1": q, "q2": q, "L": length})
+            found = (a.numbers.Nm, float_nm(a), float_nm(a, tol=1e-9))  # float-ok
+            results[length, k] = found
+            rows.append((f"L = {length}", f"1e-{k}" if k else "0 (singular)", *found))
+    display(table(["length", "ε", "exact Nm", "numpy default", "numpy tol=1e-9"], rows))
+    """),
+    code("""
+    # exact: 2 at every distance, 3 exactly at the singular configuration, for every unit
+    for (_, k), (exact, _, _) in results.items():
+        assert exact == (3 if k is None else 2)
+    # float: the same configuration gets a different answer in millimetres and metres
+    assert results["1/1000", 12][1] == 3 and results["1000", 12][1] == 2
+    assert results["1", 15][1] == 3 and results["1/1000", 6][2] == 3
+    """),
+    md("""
+    Read the table: with $L$ = 1/1000 numpy's default test calls the configuration
+    singular ($N_m = 3$) at $\\varepsilon = 10^{-12}$, where the exact answer is 2; with
+    $L$ = 1000 the same configuration is (correctly) regular. A fixed tolerance is worse:
+    $10^{-9}$ already fails at $\\varepsilon = 10^{-6}$ when $L$ = 1/1000. The smallest
+    singular value of $Q$ is proportional to $L\\varepsilon$, so any float test has a
+    scale-dependent blind zone; the exact test has none.
+
+    ## 2. Two lengths of very different scale
+
+    A variant of case 1 where the links are short ($l$) and the joints far apart ($d$):
+    contacts at $(0, l, 0)$ and $(d, l, 0)$. The singular configuration is again
+    $q_1 = q_2 = -\\pi/2$. With $l$ = 1/1000 and $d$ = 1000 in one system, numpy's
+    default test is wrong already at distance $10^{-10}$:
+    """),
+    code("""
+    model = {
+        "name": "short links far apart", "parameters": ["l", "d"],
+        "arms": [
+            {"name": "a1", "joints": [{"name": "q1", "type": "revolute", "axis": [0, 0, 1],
+                                       "point": [0, 0, 0]}]},
+            {"name": "a2", "joints": [{"name": "q2", "type": "revolute", "axis": [0, 0, 1],
+                                       "point": ["d", 0, 0]}]},
+        ],
+        "contacts": [
+            {"name": "c1", "link": "a1/1", "point": [0, "l", 0], "normal": [1, 0, 0],
+             "model": "hard"},
+            {"name": "c2", "link": "a2/1", "point": ["d", "l", 0], "normal": [-1, 0, 0],
+             "model": "hard"},
+        ],
+    }
+    scales = coopkin_sym.load(model)
+    rows, results = [], {}
+    for k in [3, 6, 8, 10, 12, None]:
+        eps = sp.Rational(1, 10**k) if k is not None else 0
+        q = f"2*atan({-1 + eps})"
+        a = scales.analyze({"q1": q, "q2": q, "l": "1/1000", "d": 1000})
+        symbolic = scales.analyze({"q1": q, "q2": q})      # l and d left symbolic
+        results[k] = (a.numbers.Nm, float_nm(a), symbolic.numbers.Nm)  # float-ok
+        rows.append((f"1e-{k}" if k else "0 (singular)", *results[k]))
+    display(table(["ε", "exact Nm (l=1/1000, d=1000)", "numpy default",
+                   "exact Nm, l and d symbolic"], rows))
+    """),
+    code("""
+    for k, (exact, _, symbolic) in results.items():
+        assert exact == symbolic == (3 if k is None else 2)
+    assert results[10][1] == 3 and results[12][1] == 3     # float: wrong
+    assert results[3][1] == 2                              # float: right far away
+    """),
+    md("""
+    The last column is computed with $l$ and $d$ left as symbols: the exact engine
+    works over the field of rational functions in $l, d$ and finds $N_m = 2$ for
+    almost all lengths, and 3 at the singular angle; no scale can fool it.
+
+    ## 3. Resolved-rate control with the exact kinematic maps
+
+    The paper proposes the maps (10)-(12) for resolved-rate control. Take case study 2
+    with complete-constraint grips ($N_i = N_r = 0$: eq. (10) is one-to-one): ask the
+    object to translate with velocity $v = (1/2, 1/4, 1/4)$ (in $R(C_{12})$: the object
+    can only translate) and at each step get the joint rates exactly from
+    `Analysis.joint_velocities`. The configuration is integrated with small midpoint
+    steps in floating point (labelled); wherever rates are needed the float state is
+    rounded to the nearest exact configuration (rational $\\tan(q/2)$), the exact
+    analysis runs there and we check $Q\\,(\\dot u, \\dot q) = 0$ exactly: the rates keep
+    every contact.
+    """),
+    code("""
+    system = coopkin_sym.load("paper-case2-complete")
+    joints = system.model.joints
+    u = [sp.Rational(1, 2), sp.Rational(1, 4), sp.Rational(1, 4), 0, 0, 0]
+
+
+    def exact_configuration(q):  # float-ok: rounds the float state to exact values
+        at = {"L": 1}
+        for joint, value in zip(joints, q, strict=True):
+            if joint.type == "revolute":
+                t = Fraction(math.tan(value / 2)).limit_denominator(10**6)  # float-ok
+                at[joint.name] = f"2*atan({t})"
+            else:
+                at[joint.name] = str(Fraction(value).limit_denominator(10**6))  # float-ok
+        return at
+
+
+    def exact_rates(q):
+        \"\"\"Exact rates for u at the exact configuration nearest q; checks Q (u, qdot) = 0.\"\"\"
+        a = system.analyze(exact_configuration(q))
+        qdot = a.joint_velocities(u).particular                   # eq. (10), exact
+        kept.append(a.Q * sp.Matrix([*u, *qdot]) == sp.zeros(a.m, 1))
+        points = [[float(frac_to_sympy(x, {})) for x in p]           # float-ok
+                  for p in a.kinematics.points]
+        return np.array([float(x) for x in qdot]), points         # float-ok
+
+
+    h, steps = 0.05, 24                 # float-ok: the integration (midpoint rule)
+    q = np.zeros(len(joints))           # float-ok: start at home
+    path, rates, kept = [], [], []
+    for _ in range(steps):
+        qdot, points = exact_rates(q)
+        path.append(points)
+        rates.append(qdot)
+        qdot_mid, _ = exact_rates(q + h / 2 * qdot)               # float-ok
+        q = q + h * qdot_mid                                      # float-ok
+    path.append(exact_rates(q)[1])
+    assert all(kept)
+    print(f"{len(kept)} exact analyses, Q (u, qdot) = 0 exactly at every one of them")
+    """),
+    code("""
+    path = np.array(path)               # float-ok: (step, contact, xyz)
+    gap = path[:, 1, :] - path[:, 0, :]  # float-ok: c2 - c1 should stay (2L, 0, 0)
+    drift = np.abs(gap - [2, 0, 0]).max()                         # float-ok
+    moved = path[-1, 0, :] - path[0, 0, :]                         # float-ok
+    print("largest change of c2 - c1 (float, from the integration):", f"{drift:.2e}")
+    asked = np.array([float(x) for x in u[:3]]) * h * steps      # float-ok
+    print("c1 moved by", np.round(moved, 5), "; asked", np.round(asked, 5))
+    assert drift < 1e-3 and np.abs(moved - asked).max() < 1e-3    # float-ok
+
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))     # float-ok: plots
+    t = h * np.arange(steps + 1)                                  # float-ok
+    for i, name in enumerate(["c1", "c2"]):
+        for axis, style in zip("xyz", ["-", "--", ":"], strict=True):
+            left.plot(t, path[:, i, "xyz".index(axis)], style, label=f"{name} {axis}")
+    left.set(title="contact points (float integration)", xlabel="time")
+    left.legend(fontsize=7, ncol=2)
+    for j, joint in enumerate(joints):
+        right.plot(t[:-1], np.array(rates)[:, j], label=joint.name)  # float-ok
+    right.set(title="exact joint rates at each step (plotted as floats)", xlabel="time")
+    right.legend(fontsize=7, ncol=2)
+    plt.show()
+    """),
+    md("""
+    Both contact points move with the commanded velocity and keep their distance (the
+    small drift is the integration's, not the rates'). A velocity outside the
+    feasible subspace, such as a rotation, is refused exactly:
+    """),
+    code("""
+    try:
+        system.analyze().joint_velocities([0, 0, 0, 1, 0, 0])
+    except coopkin_sym.InfeasibleMotion as exc:
+        print("rotation about x:", exc)
+    else:
+        raise AssertionError("a rotation should break a complete-constraint contact")
+    """),
+]
+
+
+NOTEBOOKS = {
+    "01_two_one_link_arms.ipynb": NB01,
+    "02_two_scara_robots.ipynb": NB02,
+    "04_exact_vs_float.ipynb": NB04,
+}
+
+
+def build(name: str, cells: list) -> nbformat.NotebookNode:
+    nb = new_notebook(cells=cells, metadata={
+        "kernelspec": {"display_name": "Python 3", "language": "python", "name": "python3"},
+        "language_info": {"name": "python"},
+    })
+    stem = name.split("_")[0]
+    for i, cell in enumerate(nb.cells):   # stable ids: rebuilding changes nothing
+        cell["id"] = f"nb{stem}-{i:02d}"
+    nbformat.validate(nb)
+    return nb
+
+
+def main() -> None:
+    for name, cells in NOTEBOOKS.items():
+        nbformat.write(build(name, cells), HERE / name)
+        print(f"wrote {HERE / name}")
+
+
+if __name__ == "__main__":
+    main()
