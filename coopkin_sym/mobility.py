@@ -118,34 +118,9 @@ class Analysis:
         self.m = len(kin.Q)
         q_rows = [ring.clear_row(row) for row in kin.Q]
         self._q_rows = q_rows
-        # C11: reduced echelon basis of N(Gt^T), the first six columns of Q
-        gt_rows = [row[:6] for row in q_rows]
-        self._c11, c11_pivots = el.nullspace_rref(gt_rows, 6, zctx)
-        # arm by arm: each arm's joint variables appear only in its contacts' rows
-        constraints: list[list] = []
-        self._c23: list[list] = []
-        self._arm_maps: list[_ArmMap] = []
-        owners = [model.contacts[c].arm for c in kin.row_contacts]
-        constraints += [gt_rows[i] for i, a in enumerate(owners) if a is None]
-        for a, arm in enumerate(model.arms):
-            arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
-                                    6 + model.joint_offset(a), len(arm.joints), zctx)
-            constraints += arm_map.constraints
-            zero = zctx.constant(0)
-            off = model.joint_offset(a)
-            for v in arm_map.null:
-                self._c23.append([zero] * off + v + [zero] * (r - off - len(v)))
-            self._arm_maps.append(arm_map)
-        # feasible object twists U = R(C1): those every arm can follow
-        order = c11_pivots + [c for c in range(6) if c not in c11_pivots]
-        feasible, pivots = el.nullspace_rref(constraints, 6, zctx, column_order=order)
-        self._coord_u = [v for v, p in zip(feasible, pivots, strict=True)
-                         if p not in c11_pivots]
-        nc, ni, nr = len(feasible), len(self._c11), len(self._c23)
-        nm = nc + nr
-        m = self.m
-        self.numbers = Numbers(Nm=nm, Nc=nc, Ni=ni, Nr=nr, Ng=m - (6 - ni),
-                               Nd=m - (r - nr), Nh=m - (6 + r - nm))
+        d = decompose(q_rows, model, kin.row_contacts, zctx)
+        self._c11, self._c23, self._arm_maps, self._coord_u = d.c11, d.c23, d.arm_maps, d.coord_u
+        self.numbers = d.numbers
 
     @property
     def coordinated_terms(self) -> int:
@@ -430,6 +405,54 @@ class Analysis:
 
     def poly(self, p) -> sp.Expr:
         return poly_to_sympy(p, self.ring, self.kinematics.symbols)
+
+
+@dataclass
+class Decomposition:
+    """The arm-by-arm decomposition of ``N(Q)`` (see :func:`decompose`)."""
+
+    numbers: Numbers
+    c11: list
+    c11_pivots: list[int]
+    c23: list
+    arm_maps: list[_ArmMap]
+    coord_u: list
+
+
+def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposition:
+    """Numbers and canonical subspaces from the integer-polynomial rows of ``Q``.
+
+    Each arm's joint variables appear only in the rows of its own contacts, so the
+    joints are eliminated arm by arm (:class:`_ArmMap`), leaving constraints on the
+    object twist alone (six columns); ``N(Gt^T)`` comes from the first six columns.
+    Everything is exact over the fraction field of the ring of ``zctx``.
+    """
+    r = len(model.joints)
+    m = len(q_rows)
+    gt_rows = [row[:6] for row in q_rows]
+    c11, c11_pivots = el.nullspace_rref(gt_rows, 6, zctx)
+    owners = [model.contacts[c].arm for c in row_contacts]
+    constraints = [gt_rows[i] for i, a in enumerate(owners) if a is None]
+    c23: list[list] = []
+    arm_maps: list[_ArmMap] = []
+    zero = zctx.constant(0)
+    for a, arm in enumerate(model.arms):
+        off = model.joint_offset(a)
+        arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
+                                6 + off, len(arm.joints), zctx)
+        constraints += arm_map.constraints
+        for v in arm_map.null:
+            c23.append([zero] * off + v + [zero] * (r - off - len(v)))
+        arm_maps.append(arm_map)
+    # feasible object twists U = R(C1): those every arm can follow
+    order = c11_pivots + [c for c in range(6) if c not in c11_pivots]
+    feasible, pivots = el.nullspace_rref(constraints, 6, zctx, column_order=order)
+    coord_u = [v for v, p in zip(feasible, pivots, strict=True) if p not in c11_pivots]
+    nc, ni, nr = len(feasible), len(c11), len(c23)
+    nm = nc + nr
+    numbers = Numbers(Nm=nm, Nc=nc, Ni=ni, Nr=nr, Ng=m - (6 - ni), Nd=m - (r - nr),
+                      Nh=m - (6 + r - nm))
+    return Decomposition(numbers, c11, c11_pivots, c23, arm_maps, coord_u)
 
 
 @dataclass

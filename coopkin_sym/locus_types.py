@@ -1,0 +1,167 @@
+"""Plain-data results of a singularity-locus computation (see :mod:`coopkin_sym.locus`).
+
+Everything here is plain Python (strings, ints, dicts), so a locus can be written as
+JSON, rendered as a report, or sent to another process.
+
+Example
+-------
+>>> c = Component(equations=["t_q1 - t_q2"], numbers={"Nm": 3}, witness={"q1": "pi/2"},
+...               real=True)
+>>> c.to_json()["equations"]
+['t_q1 - t_q2']
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+
+@dataclass
+class FloatCheck:
+    """What a float rank test (numpy's ``matrix_rank``, default tolerance) says near a
+    witness: ``distance`` is how far (in radians, on one joint) the point is from the
+    witness, ``scale`` the value given to the length parameters; ``exact`` the exact
+    numbers there, ``float`` the float ones."""
+
+    distance: float
+    scale: str
+    point: dict[str, str]
+    exact: dict[str, int]
+    float: dict[str, int]
+
+    @property
+    def agree(self) -> bool:
+        return self.exact == self.float
+
+
+@dataclass
+class Component:
+    """One irreducible family of configurations where the numbers differ from the
+    generic ones.
+
+    Attributes
+    ----------
+    equations
+        Polynomials (strings) in the variables ``t_<joint>`` (tan of half the angle),
+        prismatic displacements and parameters, whose common zeros are the component.
+    numbers
+        The seven numbers on the component (at its generic points).
+    witness
+        An exact point on it, in ``--at`` syntax (``{"q1": "pi/2", ...}``), or None.
+    real
+        Whether the component has real points.
+    kind
+        ``"hypersurface"``, ``"subvariety"`` (codimension 2 or more), ``"isolated"``
+        (a point), or ``"chart"`` (a joint at q = pi, outside the t chart).
+    condition
+        The equations in angles where they read simply (``"q1 = q2"``, ``"q2 = 0"``).
+    drops
+        Which matrices lose rank there: subset of ``["Q", "HG^T", "HD"]``.
+    changes
+        Number name -> (generic, here), for the numbers that differ.
+    meaning
+        Plain sentences: what motion is gained or lost there.
+    decided
+        How the numbers were decided (``"exact over the component's function field"``,
+        ``"exact at a rational point of the component"``).
+    witness_checked
+        The witness's numbers from a direct exact analysis equal ``numbers``.
+    float_checks
+        Float rank tests at and near the witness.
+    depth
+        0 for a component of the generic locus, k for one found inside a depth-(k-1)
+        component.
+    parent
+        Index (in :attr:`Locus.components`) of the component this one lies in.
+    """
+
+    equations: list[str]
+    numbers: dict[str, int]
+    witness: dict[str, str] | None
+    real: bool
+    kind: str = "hypersurface"
+    condition: str = ""
+    drops: list[str] = field(default_factory=list)
+    changes: dict[str, tuple[int, int]] = field(default_factory=dict)
+    meaning: list[str] = field(default_factory=list)
+    decided: str = ""
+    witness_checked: bool = False
+    float_checks: list[FloatCheck] = field(default_factory=list)
+    depth: int = 0
+    parent: int | None = None
+
+    def to_json(self) -> dict:
+        out = asdict(self)
+        out["changes"] = {k: list(v) for k, v in self.changes.items()}
+        out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
+        return out
+
+
+@dataclass
+class Locus:
+    """Where the numbers of a system change, exactly.
+
+    Attributes
+    ----------
+    system
+        The system's name.
+    variables
+        The free variables (``t_<joint>``, prismatic names, parameters).
+    fixed
+        Values set with ``at`` (``--at`` syntax), plus a note when all lengths were
+        scaled to one parameter set to 1.
+    generic
+        The generic numbers (over the field of rational functions).
+    components
+        Every component found, depth first.
+    parameter_conditions
+        Parameter-only degeneracies (e.g. ``L``: a length of zero), reported apart.
+    dropped
+        Factors with no real points (dropped from the components), as strings.
+    unexplored
+        What was not explored within the bounds (depth, time), in words.
+    notes
+        Anything else the reader should know (scaling, probabilistic steps).
+    """
+
+    system: str
+    variables: list[str]
+    fixed: str
+    generic: dict[str, int]
+    components: list[Component] = field(default_factory=list)
+    parameter_conditions: list[str] = field(default_factory=list)
+    dropped: list[str] = field(default_factory=list)
+    unexplored: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    seconds: float = 0.0
+
+    def float_summary(self) -> dict[str, int]:
+        """How many singular configurations float tests called regular (missed), and
+        how many regular ones they called singular (false alarms)."""
+        missed = false_alarm = 0
+        for c in self.components:
+            for f in c.float_checks:
+                if f.agree:
+                    continue
+                if f.distance == 0:
+                    missed += 1
+                elif f.exact == self.generic:
+                    false_alarm += 1
+                else:
+                    missed += 1
+        return {"missed_singular": missed, "false_singular": false_alarm}
+
+    def to_json(self) -> dict:
+        return {
+            "system": self.system,
+            "variables": self.variables,
+            "fixed": self.fixed,
+            "generic": self.generic,
+            "components": [c.to_json() for c in self.components],
+            "parameter_conditions": self.parameter_conditions,
+            "dropped": self.dropped,
+            "unexplored": self.unexplored,
+            "notes": self.notes,
+            "float_summary": self.float_summary(),
+            "seconds": self.seconds,
+        }

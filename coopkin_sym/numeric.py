@@ -1,0 +1,44 @@
+"""Floating-point comparisons: what a float rank test would say (never used to decide).
+
+Everything here is deliberately *not* exact: it reproduces the usual float pipeline
+(the matrices rounded to float64, ranks by ``numpy.linalg.matrix_rank`` with its
+default tolerance) so that reports can show where it disagrees with the exact engine.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> a = load("paper-case1-hard").analyze("q1=-pi/2,q2=-pi/2,L=1")
+>>> float_numbers(a) == a.numbers.as_dict()
+True
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .mobility import Analysis
+
+
+def float_matrix(m) -> np.ndarray:
+    """A SymPy matrix with numeric entries, rounded to float64."""
+    return np.array([[float(e) for e in m.row(i)] for i in range(m.rows)],  # float-ok
+                    dtype=float).reshape(m.shape)
+
+
+def float_numbers(analysis: Analysis) -> dict[str, int]:
+    """The seven numbers as a float pipeline computes them at a numeric configuration:
+    ranks of ``Q``, ``H G^T`` and ``H D`` by ``numpy.linalg.matrix_rank``
+    (default tolerance) on the float64 image of the exact matrices."""
+    if analysis.variables:
+        raise ValueError("float_numbers needs a configuration with every joint and "
+                         f"parameter set (free: {', '.join(map(str, analysis.variables))})")
+    q = float_matrix(analysis.Q)
+    r, m = analysis.r, analysis.m
+
+    def rank(a: np.ndarray) -> int:
+        return int(np.linalg.matrix_rank(a)) if a.size else 0  # float-ok
+
+    rq, rg, rd = rank(q), rank(q[:, :6]), rank(q[:, 6:])
+    nm, ni, nr = 6 + r - rq, 6 - rg, r - rd
+    return {"Nm": nm, "Nc": nm - nr, "Ni": ni, "Nr": nr, "Ng": m - rg, "Nd": m - rd,
+            "Nh": m - rq}
