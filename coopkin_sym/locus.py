@@ -39,6 +39,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from math import atan, pi, tan
 
+import flint
 import sympy as sp
 
 from . import kinematics
@@ -214,9 +215,18 @@ def _minor_combinations(rows, ctx: _Context) -> list:
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in _vars_of(ctx, e)})
+    if nvars > 2 and not _common_factor_on_a_line(ctx, rows, rank):
+        # no hypersurface part (the lower-dimensional part is solved only in up to two
+        # variables, so nothing here needs the full determinants)
+        ctx.locus.unexplored.append(
+            f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} block in "
+            f"{nvars} variables: not solved (it has no hypersurface part)")
+        return []
     count = nvars + 1 if nvars <= 2 else 3
     polys = []
     for _ in range(count):
+        if ctx.expired():
+            break
         left = _random_matrix(ctx, rank, len(rows)) if rank < len(rows) else None
         right = _random_matrix(ctx, ncols, rank) if rank < ncols else None
         m = rows
@@ -232,8 +242,35 @@ def _minor_combinations(rows, ctx: _Context) -> list:
     return polys
 
 
-def _random_matrix(ctx: _Context, n: int, m: int):
-    c = ctx.ring.zctx.constant
+def _common_factor_on_a_line(ctx: _Context, rows, rank: int) -> bool:
+    """Whether two random combinations of the maximal minors may share a factor.
+
+    Restricted to a random line ``x = a + b s``, a common factor of the two
+    determinants stays a common factor of the univariate restrictions (for all lines
+    but a proper subvariety), so a constant gcd there proves, up to that choice, that
+    the drop set has no hypersurface part; the univariate determinants are cheap.
+    """
+    lctx = flint.fmpz_mpoly_ctx.get(("s",), "degrevlex")
+    (svar,) = lctx.gens()
+    line = [lctx.constant(ctx.rng.randint(-50, 50)) + ctx.rng.randint(1, 50) * svar
+            for _ in ctx.ring_names]
+    restricted = [[e.compose(*line, ctx=lctx) if not e.is_constant() else
+                   lctx.constant(int(e.leading_coefficient()) if not e.is_zero() else 0)
+                   for e in r] for r in rows]
+    dets = []
+    for _ in range(2):
+        m = restricted
+        if rank < len(rows):
+            m = el.matmul(_random_matrix(ctx, rank, len(rows), lctx), m, lctx)
+        if rank < len(rows[0]):
+            m = el.matmul(m, _random_matrix(ctx, len(rows[0]), rank, lctx), lctx)
+        dets.append(_determinant(m))
+    g = dets[0].gcd(dets[1])
+    return not g.is_constant()
+
+
+def _random_matrix(ctx: _Context, n: int, m: int, zctx=None):
+    c = (zctx or ctx.ring.zctx).constant
     return [[c(ctx.rng.randint(-3, 3)) for _ in range(m)] for _ in range(n)]
 
 
