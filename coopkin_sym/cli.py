@@ -2,6 +2,8 @@
 
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
 ``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
+``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
+[--timeout SECONDS] [--pair q1,q2]``.
 Bad input prints one clear error to stderr and exits 2; no traceback, nothing
 half-written.
 
@@ -164,6 +166,57 @@ def sweep(
     typer.echo(f"{c['points']} points: {c['certified_mod_p']} certified modulo "
                f"{result.prime}, {c['rechecked_exact']} rechecked exactly; "
                f"{c['snapped_values']} snapped angles; wrote {output}")
+
+
+@app.command()
+def locus(
+    model: Annotated[str, typer.Argument(help="A model file (YAML/JSON) or a shipped "
+                                              "example name (see `coopkin examples`).")],
+    output: Annotated[str, typer.Option(
+        "--output", "-o", help="The report to write: .md, .html, .tex or .json (plots of "
+                               "the components go next to it as <stem>_<qi>_<qj>.png).")],
+    at: Annotated[str | None, typer.Option(
+        "--at", help="Values fixing some joints or parameters, as for `coopkin analyze`; "
+                     "the other joints stay free.")] = None,
+    max_depth: Annotated[int, typer.Option(
+        "--max-depth", min=0, help="How deep to look inside components for further "
+                                   "drops (0: the generic locus only).")] = 2,
+    timeout: Annotated[float | None, typer.Option(
+        "--timeout", min=0, help="Seconds after which nothing new is explored; the report "
+                                 "says what was left out.")] = None,
+    no_progress: Annotated[bool, typer.Option(
+        "--no-progress", help="No progress bar (none is shown when stderr is not a "
+                              "terminal).")] = False,
+    pair: Annotated[list[str] | None, typer.Option(
+        "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
+                       "default: the pairs that occur together in a component).")] = None,
+) -> None:
+    """The singularity locus: every family of configurations where the numbers differ
+    from the generic ones, decided exactly, as a report."""
+    from .report import ReportError, check_target, parse_pairs, write_report
+
+    try:
+        check_target(output)
+        system = load(model)
+        pairs = parse_pairs(pair, system) if pair else None
+    except (*USER_ERRORS, ReportError) as exc:
+        _fail(str(exc))
+    try:
+        from .locus import LocusError, compute_locus
+    except ImportError as exc:  # pragma: no cover - depends on the installation
+        _fail(f"the locus engine is not available: {exc}")
+    show = not no_progress and sys.stderr.isatty()
+    try:
+        result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
+                               progress=show)
+        written = write_report(result, output, system, pairs=pairs)
+    except (*USER_ERRORS, LocusError, ReportError) as exc:
+        _fail(str(exc))
+    real = sum(1 for c in result.components if c.real)
+    n, u = len(result.components), len(result.unexplored)
+    left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
+    typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; wrote "
+               + ", ".join(str(p) for p in written))
 
 
 def render_text(a: Analysis) -> str:

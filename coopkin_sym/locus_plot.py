@@ -1,0 +1,638 @@
+"""Pictures of a singularity locus on a pair of joint variables.
+
+Each real component of a :class:`~coopkin_sym.locus_types.Locus` whose equations
+involve the two chosen joints is drawn in the plane of those joints, from its exact
+polynomials:
+
+* the other joint variables are set to the component's witness (home, q = 0, when it
+  has none) and parameters to the witness, to the values fixed in the locus, or else
+  to 1 (the title says which);
+* what is left is a set of polynomials in ``x = t_i`` and ``y = t_j``; their gcd ``g``
+  is a curve, drawn as the zero contour of the bounded trigonometric polynomial
+  ``g(tan(a/2), tan(b/2)) cos(a/2)^deg_x cos(b/2)^deg_y`` on a fine grid over
+  ``a, b`` in ``[-pi, pi]`` (so q = pi, where t is infinite, is drawn too);
+* the common zeros of the rest (finitely many, two variables with gcd 1) are marked
+  as points, and so are the witnesses.
+
+A prismatic joint is drawn over ``[-2, 2]`` (lengths at their drawing values).
+Everything here is drawing: floats appear only after the exact substitution, and each
+such line is marked ``# float-ok``. No singularity is decided here.
+
+Example
+-------
+>>> from coopkin_sym.locus_types import Component, Locus
+>>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+>>> here = dict(generic, Nm=3, Nc=3, Nh=1)
+>>> locus = Locus("demo", ["t_q1", "t_q2", "L"], "", generic, [
+...     Component(["t_q1 + 1", "t_q2 + 1"], here, {"q1": "-pi/2", "q2": "-pi/2"}, True,
+...               kind="isolated", condition="q1 = q2 = -pi/2")])
+>>> fig = plot_components(locus, None)
+>>> sorted(a.get_gid() for a in fig.axes[0].get_children()
+...        if (a.get_gid() or "").startswith("component:"))
+['component:1']
+"""
+
+from __future__ import annotations
+
+import functools
+import io
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np  # float-ok: plotting grids only
+import sympy as sp
+
+from .exactnum import NumberError, parse_angle, parse_number
+from .locus_types import Component, Locus
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+__all__ = ["PlotError", "components_on", "default_pairs", "plot_components", "plot_png"]
+
+#: Grid points per axis for the zero contours.
+GRID = 721
+#: Range drawn for a prismatic joint (lengths at their drawing values).
+PRISMATIC_RANGE = (-2.0, 2.0)  # float-ok: plotting range
+#: Margin drawn beyond q = -pi and q = pi (radians).
+MARGIN = 0.2  # float-ok: plotting range
+COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:brown",
+          "tab:pink", "tab:olive", "tab:cyan", "tab:gray")
+INFINITY = "oo"  # a revolute joint at q = pi: t = tan(q/2) is infinite
+
+
+class PlotError(ValueError):
+    """A pair of joints that cannot be plotted (unknown, the same twice, or not
+    among the locus's variables), or matplotlib missing."""
+
+
+@functools.cache
+def _mpl():
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+        from matplotlib.lines import Line2D
+    except ImportError:  # pragma: no cover - depends on the installation
+        raise PlotError("plots need matplotlib: pip install matplotlib") from None
+    return Figure, FigureCanvasAgg, Line2D
+
+
+# ------------------------------------------------------------------ variables
+
+# The variable of a revolute joint X is t_X = tan(X/2), or s_X = cot(X/2) in the second
+# chart (s_X = 0 is X = pi); a prismatic joint's variable is its name.
+CHARTS = ("t", "s")
+
+
+@dataclass
+class _Kinds:
+    """Which variable belongs to which joint, and which variables are parameters."""
+
+    joints: dict[str, str] = field(default_factory=dict)      # joint -> revolute|prismatic
+    parameters: list[str] = field(default_factory=list)
+
+    def variables(self, joint: str) -> list[str]:
+        if self.joints[joint] == "revolute":
+            return [f"{c}_{joint}" for c in CHARTS]
+        return [joint]
+
+    def joint_of(self, variable: str) -> tuple[str | None, str]:
+        """The joint of a variable and its chart (``t``, ``s``, or ``d`` for a
+        prismatic displacement); ``(None, "")`` for a parameter."""
+        if variable in self.joints and self.joints[variable] == "prismatic":
+            return variable, "d"
+        head, sep, joint = variable.partition("_")
+        if sep and head in CHARTS and self.joints.get(joint) == "revolute":
+            return joint, head
+        return None, ""
+
+
+def _kinds(locus: Locus, system: Any) -> _Kinds:
+    """Joint kinds from the system when given, else from the variable names (``t_X``
+    is revolute joint X; other names are taken for parameters)."""
+    out = _Kinds()
+    if system is not None:
+        model = getattr(system, "model", system)
+        for j in model.joints:
+            out.joints[j.name] = j.type
+        out.parameters = [p.name for p in model.parameters]
+        return out
+    for v in locus.variables:
+        if v.startswith("t_"):
+            out.joints[v[2:]] = "revolute"
+        else:
+            out.parameters.append(v)
+    return out
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse(text: str, names: tuple[str, ...]) -> sp.Expr:
+    local = {n: sp.Symbol(n) for n in names}
+    return sp.parse_expr(text, local_dict=local)
+
+
+def _names(locus: Locus, kinds: _Kinds) -> tuple[str, ...]:
+    extra = [v for j in kinds.joints for v in kinds.variables(j)] + kinds.parameters
+    return tuple(dict.fromkeys([*locus.variables, *extra]))
+
+
+def _equations(c: Component, names: tuple[str, ...]) -> list[sp.Expr]:
+    return [_parse(e, names) for e in c.equations]
+
+
+def _free(c: Component, names: tuple[str, ...]) -> set[str]:
+    return {str(s) for e in _equations(c, names) for s in e.free_symbols}
+
+
+def _joints_in(c: Component, kinds: _Kinds, names: tuple[str, ...]) -> dict[str, str]:
+    """Joint -> the variable of it that ``c``'s equations use."""
+    out: dict[str, str] = {}
+    for v in sorted(_free(c, names)):
+        joint, _ = kinds.joint_of(v)
+        if joint is not None:
+            out.setdefault(joint, v)
+    return out
+
+
+def components_on(locus: Locus, system: Any, pair: Sequence[str]) -> list[int]:
+    """Indices (from 0) of the real components whose equations involve either joint
+    of ``pair``: the ones :func:`plot_components` draws.
+
+    Example
+    -------
+    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> c = Component(["t_q2"], {}, {"q2": "0"}, True)
+    >>> components_on(Locus("demo", ["t_q1", "t_q2"], "", {}, [c]), None, ("q1", "q2"))
+    [0]
+    """
+    kinds = _kinds(locus, system)
+    _check_pair(kinds, pair)
+    names = _names(locus, kinds)
+    return [k for k, c in enumerate(locus.components)
+            if c.real and set(_joints_in(c, kinds, names)) & set(pair)]
+
+
+def _check_pair(kinds: _Kinds, pair: Sequence[str]) -> None:
+    if len(pair) != 2:
+        raise PlotError(f"pair: expected two joints, got {list(pair)!r}")
+    for j in pair:
+        if j not in kinds.joints:
+            known = ", ".join(kinds.joints) or "none"
+            raise PlotError(f"pair: unknown joint {j!r} (joints: {known})")
+    if pair[0] == pair[1]:
+        raise PlotError(f"pair: the two joints must differ, got {pair[0]!r} twice")
+
+
+def default_pairs(locus: Locus, system: Any, limit: int = 6) -> list[tuple[str, str]]:
+    """The joint pairs worth plotting: those that appear together in the equations of
+    a real component (most often first), then pairs for joints that appear alone.
+
+    Example
+    -------
+    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> c = Component(["t_q1 - t_q2"], {}, None, True)
+    >>> default_pairs(Locus("demo", ["t_q1", "t_q2", "t_q3"], "", {}, [c]), None)
+    [('q1', 'q2')]
+    """
+    kinds = _kinds(locus, system)
+    names = _names(locus, kinds)
+    order = list(kinds.joints)
+    counts: dict[tuple[str, str], int] = {}
+    alone: list[str] = []
+    for c in locus.components:
+        if not c.real:
+            continue
+        joints = sorted(_joints_in(c, kinds, names), key=order.index)
+        for a in range(len(joints)):
+            for b in range(a + 1, len(joints)):
+                key = (joints[a], joints[b])
+                counts[key] = counts.get(key, 0) + 1
+        if len(joints) == 1:
+            alone.append(joints[0])
+    pairs = sorted(counts, key=lambda p: (-counts[p], order.index(p[0]), order.index(p[1])))
+    covered = {j for p in pairs for j in p}
+    for j in dict.fromkeys(alone):
+        if j in covered:
+            continue
+        other = next((o for o in order if o != j), None)
+        if other is not None:
+            pair = tuple(sorted((j, other), key=order.index))
+            if pair not in pairs:
+                pairs.append(pair)
+            covered.update(pair)
+    return pairs[:limit]
+
+
+# ------------------------------------------------------------------ exact slices
+
+
+def _chart_value(chart: str, cos: sp.Rational, sin: sp.Rational) -> sp.Rational | str:
+    """tan(q/2) or cot(q/2) from exact (cos q, sin q); INFINITY where it has none."""
+    if chart == "t":
+        return INFINITY if cos == -1 else sp.Rational(sin / (1 + cos))
+    return INFINITY if cos == 1 else sp.Rational(sin / (1 - cos))
+
+
+def _value(kinds: _Kinds, name: str, text: str, params: dict) -> sp.Expr | str:
+    """The exact value of variable ``name`` given in ``--at`` syntax, or INFINITY."""
+    joint, chart = kinds.joint_of(name)
+    if chart in CHARTS:
+        cos, sin = parse_angle(text, f"{joint}={text}")
+        return _chart_value(chart, cos, sin)
+    return parse_number(text, params, f"{name}={text}")
+
+
+def _fixed(locus: Locus) -> dict[str, str]:
+    out = {}
+    for part in (locus.fixed or "").split(","):
+        name, sep, value = part.partition("=")
+        if sep and name.strip().isidentifier():
+            out[name.strip()] = value.strip()
+    return out
+
+
+def _slice(locus: Locus, kinds: _Kinds, c: Component, keep: set[str],
+           names: tuple[str, ...]) -> tuple[dict[str, Any], list[str]]:
+    """Exact values for every variable of ``c``'s equations but ``keep``; notes on
+    the values that were chosen rather than given by the witness."""
+    witness = dict(c.witness or {})
+    fixed = _fixed(locus)
+    params = {p: sp.Symbol(p, positive=True) for p in kinds.parameters}
+    values: dict[str, Any] = {}
+    notes: list[str] = []
+    for name in sorted(_free(c, names)):
+        if name in keep:
+            continue
+        joint, _ = kinds.joint_of(name)
+        key = joint if joint is not None else name
+        text = witness.get(key, fixed.get(key))
+        if text is None:
+            if joint is not None:
+                values[name] = _value(kinds, name, "0", params)
+                notes.append(f"{joint} at home (0)")
+            else:
+                values[name] = sp.Integer(1)
+                notes.append(f"parameter {name}")
+            continue
+        try:
+            values[name] = _value(kinds, name, str(text), params)
+        except NumberError as exc:
+            raise PlotError(f"component witness {key}={text}: {exc}") from None
+    return values, notes
+
+
+def _substitute(f: sp.Expr, values: Mapping[str, Any]) -> sp.Expr:
+    """``f`` with exact values put in; a variable at INFINITY keeps the top
+    coefficient (what ``f cos(q/2)^deg`` tends to at q = pi)."""
+    for name, v in values.items():
+        s = sp.Symbol(name)
+        if s not in f.free_symbols:
+            continue
+        if isinstance(v, str):  # INFINITY
+            f = sp.Poly(f, s).LC()
+        else:
+            f = f.xreplace({s: v})
+    return sp.expand(f)
+
+
+@dataclass
+class _Axis:
+    """One axis of the plane: its joint, the variable the component uses and its
+    chart (``t``, ``s`` or ``d``)."""
+
+    joint: str
+    variable: str
+    chart: str
+
+    @property
+    def symbol(self) -> sp.Symbol:
+        return sp.Symbol(self.variable)
+
+    def angle(self, z: Any) -> float | None:  # float-ok: plotting
+        """The plotted coordinate of a real value of the variable (None if complex)."""
+        w = complex(sp.N(z, 30))  # float-ok
+        if abs(w.imag) > 1e-9 * max(1.0, abs(w.real)):  # float-ok: complex, not drawn
+            return None
+        if self.chart == "t":
+            return 2 * math.atan(w.real)  # float-ok
+        if self.chart == "s":
+            return math.remainder(2 * math.atan2(1.0, w.real), 2 * math.pi)  # float-ok
+        return w.real  # float-ok
+
+    @property
+    def at_infinity(self) -> float | None:  # float-ok
+        return {"t": math.pi, "s": 0.0}.get(self.chart)  # float-ok
+
+
+@dataclass
+class _Drawn:
+    """What one component becomes in the plane: a curve (or none) and points."""
+
+    curve: sp.Poly | None = None
+    points: list[tuple[float, float]] = field(default_factory=list)   # float-ok
+    whole: bool = False
+
+
+def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis
+            ) -> list[tuple[float, float]]:  # float-ok: plotting
+    """Real common zeros of ``polys`` (gcd 1, so finitely many), in the plane's
+    coordinates, including the ones where a variable is infinite."""
+    out = []
+    x, y = ax.symbol, ay.symbol
+    polys = [p for p in polys if p != 0]
+    if not polys or any(p.is_number for p in polys):
+        return out
+    try:
+        solutions = sp.solve_poly_system(polys, x, y) or []
+    except (NotImplementedError, sp.PolificationFailed):  # pragma: no cover
+        solutions = []
+    for sx, sy in solutions:
+        a, b = ax.angle(sx), ay.angle(sy)
+        if a is not None and b is not None:
+            out.append((a, b))
+    # one variable infinite: the top coefficients in it, solved for the other
+    for inf, other, swap in ((ax, ay, False), (ay, ax, True)):
+        if inf.at_infinity is None:
+            continue
+        tops = [_substitute(p, {inf.variable: INFINITY}) for p in polys]
+        tops = [t for t in tops if t != 0]
+        if tops and any(t.is_number for t in tops):
+            continue
+        g = functools.reduce(sp.gcd, tops) if tops else sp.Integer(0)
+        if g == 0:
+            continue
+        g = sp.Poly(g, other.symbol)
+        for r in (g.real_roots() if g.degree() > 0 else []):
+            value = other.angle(r)
+            if value is not None:
+                out.append((value, inf.at_infinity) if swap else (inf.at_infinity, value))
+    if ax.at_infinity is not None and ay.at_infinity is not None:
+        both = [_substitute(p, {ax.variable: INFINITY, ay.variable: INFINITY})
+                for p in polys]
+        if all(b == 0 for b in both):
+            out.append((ax.at_infinity, ay.at_infinity))
+    return out
+
+
+def _in_plane(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _Axis,
+              names: tuple[str, ...]) -> _Drawn:
+    drawn = _Drawn()
+    x, y = ax.symbol, ay.symbol
+    polys = [_substitute(f, values) for f in _equations(c, names)]
+    polys = [p for p in polys if p != 0]
+    if not polys:
+        drawn.whole = True
+        return drawn
+    if any(p.is_number for p in polys):
+        return drawn            # does not meet the plane at these values
+    if set().union(*(p.free_symbols for p in polys)) - {x, y}:
+        return drawn            # pragma: no cover - every other variable has a value
+    g = functools.reduce(sp.gcd, polys)
+    if not g.is_number:
+        drawn.curve = sp.Poly(g, x, y)
+    rest = [sp.cancel(p / g) for p in polys]
+    if len(rest) > 1:
+        drawn.points = _points(rest, ax, ay)
+    return drawn
+
+
+# ------------------------------------------------------------------ floats
+
+
+def _half(grid, chart: str):  # float-ok: plotting values
+    """(numerator, denominator) of the variable on a grid: tan(a/2) = sin/cos,
+    cot(a/2) = cos/sin, a displacement = d/1."""
+    if chart == "t":
+        return np.sin(grid / 2), np.cos(grid / 2)  # float-ok
+    if chart == "s":
+        return np.cos(grid / 2), np.sin(grid / 2)  # float-ok
+    return grid, np.ones_like(grid)  # float-ok
+
+
+def _trig(poly: sp.Poly, a, b, charts: tuple[str, str]):  # float-ok: plotting values
+    """``poly(x, y)`` times the denominators to the degrees of ``poly``: for t charts
+    ``poly(tan(a/2), tan(b/2)) cos(a/2)^dx cos(b/2)^dy``, bounded for every angle."""
+    dx, dy = poly.degree(0), poly.degree(1)
+    na, da = _half(a, charts[0])
+    nb, db = _half(b, charts[1])
+    out = np.zeros_like(a)  # float-ok
+    for (i, j), coeff in zip(poly.monoms(), poly.coeffs(), strict=True):
+        out += float(coeff) * na**i * da**(dx - i) * nb**j * db**(dy - j)  # float-ok
+    return out
+
+
+def _axis_range(revolute: bool) -> tuple[float, float]:  # float-ok
+    """Drawn range: a revolute joint over [-pi, pi] plus a margin (so that curves
+    through q = pi, the same as -pi, show on the frame's inside)."""
+    if revolute:
+        return (-math.pi - MARGIN, math.pi + MARGIN)  # float-ok
+    return PRISMATIC_RANGE
+
+
+def _pi_ticks(axis) -> None:
+    ticks = [-math.pi, -math.pi / 2, 0.0, math.pi / 2, math.pi]  # float-ok
+    axis.set_ticks(ticks)
+    axis.set_ticklabels(["\u2212\u03c0", "\u2212\u03c0/2", "0", "\u03c0/2", "\u03c0"])
+
+
+def _both_edges(marks: list, rev: tuple[bool, bool]) -> list:  # float-ok: plotting
+    """Points at q = pi also drawn at q = -pi (the same angle), and the reverse."""
+    out = list(marks)
+    for a, b in marks:
+        for k, value in enumerate((a, b)):
+            if rev[k] and abs(abs(value) - math.pi) < 1e-12:  # float-ok: the edge
+                moved = [a, b]
+                moved[k] = -value
+                out.append(tuple(moved))
+    return list(dict.fromkeys(out))
+
+
+def _ring_size(placed: dict, marks: list) -> float:  # float-ok: marker sizes
+    """A marker size that leaves the discs already drawn at these places visible."""
+    keys = [(round(a, 6), round(b, 6)) for a, b in marks]  # float-ok
+    count = max((placed.get(key, 0) for key in keys), default=0)
+    for key in keys:
+        placed[key] = placed.get(key, 0) + 1
+    return max(17.0 - 5.0 * count, 6.0)  # float-ok
+
+
+def _label(k: int, c: Component) -> str:
+    text = c.condition or ", ".join(f"{e} = 0" for e in c.equations)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return f"#{k + 1}: {text}"
+
+
+def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
+                ) -> tuple[float, float] | None:  # float-ok
+    if not c.witness or any(j not in c.witness for j in pair):
+        return None
+    out = []
+    for j in pair:
+        text = str(c.witness[j])
+        try:
+            if kinds.joints[j] == "revolute":
+                cos, sin = parse_angle(text, f"{j}={text}")
+                out.append(math.atan2(float(sin), float(cos)))  # float-ok
+            else:
+                out.append(float(parse_number(text, {}, f"{j}={text}")))  # float-ok
+        except (NumberError, TypeError):
+            return None
+    return out[0], out[1]
+
+
+def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
+                    ax: Axes | None = None) -> Figure:
+    """Draw the real components of ``locus`` that involve the joints ``pair``.
+
+    Parameters
+    ----------
+    locus
+        The locus (see :func:`coopkin_sym.locus.compute_locus`).
+    system
+        The system (for joint kinds and parameter names), or ``None``: then ``t_X``
+        variables are revolute joints and other variables parameters.
+    pair
+        Two joint names: the horizontal and the vertical axis.
+    ax
+        Axes to draw on (a new figure when ``None``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Each drawn component is one artist with gid ``component:K`` (K from 1: a zero
+        contour, or a line of markers for points); witnesses have gid ``witness:K``.
+
+    Example
+    -------
+    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> c = Component(["t_q1 - t_q2"], {}, {"q1": "0", "q2": "0"}, True, condition="q1 = q2")
+    >>> fig = plot_components(Locus("demo", ["t_q1", "t_q2"], "", {}, [c]), None)
+    >>> fig.axes[0].get_xlabel()
+    'q1 (rad)'
+    """
+    Figure, FigureCanvasAgg, Line2D = _mpl()
+    kinds = _kinds(locus, system)
+    _check_pair(kinds, pair)
+    names = _names(locus, kinds)
+    if ax is None:
+        fig = Figure(figsize=(7.0, 7.6), layout="constrained")  # float-ok: inches
+        FigureCanvasAgg(fig)
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
+    rev = (kinds.joints[pair[0]] == "revolute", kinds.joints[pair[1]] == "revolute")
+    lo_a, hi_a = _axis_range(rev[0])
+    lo_b, hi_b = _axis_range(rev[1])
+    grid_a = np.linspace(lo_a, hi_a, GRID)  # float-ok
+    grid_b = np.linspace(lo_b, hi_b, GRID)  # float-ok
+    A, B = np.meshgrid(grid_a, grid_b)  # float-ok
+    handles = []
+    placed: dict[tuple[float, float], int] = {}  # float-ok: marker positions
+    notes: set[str] = set()
+    has_others = False
+    for n, k in enumerate(components_on(locus, system, pair)):
+        c = locus.components[k]
+        color = COLORS[n % len(COLORS)]
+        gid = f"component:{k + 1}"
+        used = _joints_in(c, kinds, names)
+        axes = []
+        for j in pair:
+            v = used.get(j) or kinds.variables(j)[0]
+            axes.append(_Axis(j, v, kinds.joint_of(v)[1]))
+        values, chosen = _slice(locus, kinds, c, {a.variable for a in axes}, names)
+        notes.update(chosen)
+        has_others = has_others or any(kinds.joint_of(v)[0] for v in values)
+        drawn = _in_plane(c, values, axes[0], axes[1], names)
+        label = _label(k, c) + (" (the whole plane)" if drawn.whole else "")
+        marks = list(drawn.points)
+        drawn_curve = False
+        if drawn.curve is not None:
+            F = _trig(drawn.curve, A, B, (axes[0].chart, axes[1].chart))
+            if np.any(F > 0) and np.any(F < 0):  # float-ok: a contour exists
+                cs = ax.contour(A, B, F, levels=[0.0], colors=[color],  # float-ok
+                                linewidths=2.0)  # float-ok
+                cs.set_gid(gid)
+                drawn_curve = True
+                handles.append(Line2D([], [], color=color, lw=2.0, label=label))  # float-ok
+        where = _witness_xy(c, pair, kinds)
+        if not drawn_curve and not marks and where is not None:
+            marks = [where]   # the witness is the only point we can place
+        marks = _both_edges(marks, rev)
+        if not drawn_curve:
+            # points of several components at one place: concentric discs
+            size = _ring_size(placed, marks)
+            xs, ys = zip(*marks, strict=True) if marks else ((), ())
+            ax.plot(xs, ys, linestyle="none", marker="o", markersize=size, color=color,
+                    markeredgecolor="black", gid=gid, zorder=3 + n / 100)  # float-ok
+            handles.append(Line2D([], [], linestyle="none", marker="o", markersize=11,
+                                  color=color, markeredgecolor="black", label=label))
+        elif marks:
+            xs, ys = zip(*marks, strict=True)
+            ax.plot(xs, ys, linestyle="none", marker="o", markersize=7, color=color,
+                    markeredgecolor="black", gid=f"points:{k + 1}", zorder=3)
+        if where is not None:
+            ax.plot([where[0]], [where[1]], linestyle="none", marker="*", markersize=10,
+                    color="white", markeredgecolor="black", gid=f"witness:{k + 1}",
+                    zorder=4)
+    if handles:
+        handles.append(Line2D([], [], linestyle="none", marker="*", markersize=10,
+                              color="white", markeredgecolor="black",
+                              label="exact witness point"))
+        ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.09),  # float-ok
+                  ncol=1 if len(handles) > 4 else 2, fontsize=9, frameon=False)
+    else:
+        ax.text(0.5, 0.5, "no real component involves these joints", ha="center",  # float-ok
+                va="center", transform=ax.transAxes, color="0.4")
+    ax.set_xlim(lo_a, hi_a)
+    ax.set_ylim(lo_b, hi_b)
+    ax.set_aspect("equal" if rev[0] == rev[1] else "auto")
+    for axis, joint, r in ((ax.xaxis, pair[0], rev[0]), (ax.yaxis, pair[1], rev[1])):
+        if r:
+            _pi_ticks(axis)
+            line = ax.axvline if axis is ax.xaxis else ax.axhline
+            for edge in (-math.pi, math.pi):  # float-ok: q = -pi and q = pi are one
+                line(edge, color="0.55", linestyle=":", linewidth=1.0, zorder=1)  # float-ok
+        axis.set_label_text(f"{joint} (rad)" if r else f"{joint} (length)")
+    ax.grid(True, color="0.9", linewidth=0.8)  # float-ok
+    ax.axhline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
+    ax.axvline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
+    ax.set_title(_title(locus, pair, sorted(notes), has_others), fontsize=10)
+    return fig
+
+
+def _title(locus: Locus, pair: Sequence[str], notes: list[str], others: bool) -> str:
+    lines = [f"{locus.system}: singular configurations in the ({pair[0]}, {pair[1]}) plane"]
+    said = []
+    if locus.fixed:
+        said.append(f"at {locus.fixed}")
+    params = sorted({n.split()[1] for n in notes if n.startswith("parameter ")})
+    if params:
+        said.append(", ".join(params) + " symbolic, drawn at 1")
+    if others:
+        said.append("other joints at each component's witness")
+    homes = sorted({n for n in notes if "home" in n})
+    if homes:
+        said.append("; ".join(homes))
+    if said:
+        lines.append("; ".join(said))
+    return "\n".join(lines)
+
+
+def plot_png(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
+             dpi: int = 110) -> bytes:
+    """:func:`plot_components` as PNG bytes.
+
+    Example
+    -------
+    >>> from coopkin_sym.locus_types import Locus
+    >>> plot_png(Locus("demo", ["t_q1", "t_q2"], "", {}), None)[:4]
+    b'\\x89PNG'
+    """
+    fig = plot_components(locus, system, pair)
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=dpi)
+    return buffer.getvalue()
