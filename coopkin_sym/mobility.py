@@ -267,6 +267,35 @@ class Analysis:
         """Basis of ``N(Dt)``: joint motions with the object fixed (r x Nr)."""
         return self._cols(self._c23, self.r)
 
+    def in_angles(self, matrix: sp.Matrix) -> sp.Matrix:
+        """A block's columns rewritten in ``cos q``, ``sin q`` instead of ``t = tan(q/2)``.
+
+        Each column (defined up to a nonzero factor) is scaled by
+        ``(1 + t^2)^(-m)`` per variable, ``2m`` its degree in ``t`` rounded up to even;
+        every monomial ``t^j / (1 + t^2)^m`` is then ``sin^j(q/2) cos^(2m-j)(q/2)``,
+        a polynomial in ``cos q`` and ``sin q``. Same column space, exact.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> a = load("paper-case1-soft").analyze(free=["q1"])
+        >>> a.in_angles(a.C12).T
+        Matrix([[-L*cos(q1), -L*sin(q1), 0, 0, 0, sin(q1)]])
+        """
+        kinds = {f"t_{j.name}": j.name for j in self.model.joints if j.type == "revolute"}
+        tsyms = {self.kinematics.symbols[n]: sp.Symbol(q, real=True)
+                 for n, q in kinds.items() if n in self.kinematics.symbols}
+        if not tsyms:
+            return matrix
+        cols = []
+        for k in range(matrix.cols):
+            col = [sp.together(e) for e in matrix.col(k)]
+            dens = sp.lcm([sp.fraction(e)[1] for e in col])
+            nums = [sp.expand(sp.cancel(e * dens)) for e in col]
+            cols.append([_to_angles(e, tsyms, nums) for e in nums])
+        out = sp.Matrix(cols).T if cols else sp.zeros(matrix.rows, 0)
+        return sp.ImmutableMatrix(out.applyfunc(sp.factor))
+
     def blocks(self) -> dict[str, sp.Matrix]:
         return {"C11": self.C11, "C12": self.C12, "C22": self.C22, "C23": self.C23}
 
@@ -405,6 +434,30 @@ class Analysis:
 
     def poly(self, p) -> sp.Expr:
         return poly_to_sympy(p, self.ring, self.kinematics.symbols)
+
+
+def _to_angles(expr: sp.Expr, tsyms: dict, column: list[sp.Expr]) -> sp.Expr:
+    """``expr`` (a polynomial in the t's) times ``prod (1+t^2)^-m`` in cos q, sin q."""
+    if expr == 0:
+        return expr
+    out = sp.Integer(0)
+    gens = list(tsyms)
+    degs = {t: max((sp.degree(e, t) for e in column if e != 0), default=0) for t in gens}
+    half = {t: (d + 1) // 2 for t, d in degs.items()}
+    poly = sp.Poly(expr, *gens)
+    for monom, coeff in poly.terms():
+        term = coeff
+        for t, j in zip(gens, monom, strict=True):
+            q = tsyms[t]
+            k = 2 * half[t] - j
+            c, s_ = sp.cos(q), sp.sin(q)
+            if j % 2 == 0:
+                term *= ((1 - c) / 2) ** (j // 2) * ((1 + c) / 2) ** (k // 2)
+            else:
+                term *= (s_ / 2) * ((1 - c) / 2) ** ((j - 1) // 2) * ((1 + c) / 2) ** (
+                    (k - 1) // 2)
+        out += term
+    return sp.expand(out)
 
 
 @dataclass

@@ -181,3 +181,33 @@ def test_singular_configuration_found_exactly():
     # so the object gains a rotation about z: Nm = Nc = 3 (by hand, see the docstring)
     special = system.analyze("q1=-pi/2,q2=-pi/2").numbers
     assert (special.Nm, special.Nc, special.Ni, special.Nr) == (3, 3, 1, 0)
+
+
+def test_blocks_in_angles_span_the_same_columns():
+    a = coopkin_sym.load("paper-case2-hard").analyze(free=["q1", "q2", "q7"])
+    t = {str(v): v for v in a.variables}
+    q = {n: sp.Symbol(n, real=True) for n in ("q1", "q2", "q7")}
+    point = {"q1": sp.Rational(1, 3), "q2": sp.Rational(-2, 5), "q7": sp.Rational(3, 7)}
+    for block in (a.C11, a.C12, a.C23):
+        angles = a.in_angles(block)
+        assert not any(s.name.startswith("t_") for s in angles.free_symbols)
+        for k in range(block.cols):
+            x = block.col(k).subs({t[f"t_{n}"]: v for n, v in point.items()})
+            # t = tan(q/2) = v  <=>  cos q = (1-v^2)/(1+v^2), sin q = 2v/(1+v^2)
+            trig = {}
+            for n, v in point.items():
+                trig[sp.cos(q[n])] = (1 - v**2) / (1 + v**2)
+                trig[sp.sin(q[n])] = 2 * v / (1 + v**2)
+            y = angles.col(k).subs(trig)
+            assert rank(x.row_join(y)) == 1
+
+
+def test_term_budget_leaves_out_huge_blocks_and_says_so():
+    a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    a.term_budget = 10
+    with pytest.raises(coopkin_sym.BlockTooLarge, match="over the budget of 10"):
+        _ = a.C22
+    data = a.as_json()
+    assert data["blocks"]["C22"] is None and "C22" in data["omitted"]
+    assert data["blocks"]["C23"] is not None
+    assert data["numbers"]["Nm"] == 8
