@@ -266,11 +266,23 @@ def nullspace_rref(rows: Sequence[Sequence[Poly]], ncols: int, zctx,
     if len(chosen) == ncols:
         return [], []
     subset = [rows[i] for i in chosen]
-    basis, pivots = _nullspace_from(subset, ncols, zctx, order)
+    basis, pivots = _canonical_nullspace(subset, ncols, zctx, order)
     others = [r for i, r in enumerate(rows) if i not in set(chosen)]
     if not all(_dot(r, v).is_zero() for r in others for v in basis):
-        basis, pivots = _nullspace_from(rows, ncols, zctx, order)
+        basis, pivots = _canonical_nullspace(rows, ncols, zctx, order)
     return basis, pivots
+
+
+def _canonical_nullspace(rows: list[Row], ncols: int, zctx, order: list[int]):
+    """The reduced echelon nullspace basis by the cheaper of two exact routes: the
+    elimination of ``rows`` in reversed column order (few rows), or any nullspace
+    basis brought to reduced echelon form (few basis vectors)."""
+    if len(rows) <= ncols - len(rows):
+        return _nullspace_from(rows, ncols, zctx, order)
+    basis = nullspace(rows, ncols, zctx)
+    if not basis:
+        return [], []
+    return gauss_jordan(basis, ncols, column_order=order)
 
 
 def _dot(a: Sequence[Poly], b: Sequence[Poly]) -> Poly:
