@@ -215,12 +215,12 @@ def _minor_combinations(rows, ctx: _Context) -> list:
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in _vars_of(ctx, e)})
-    if nvars > 2 and not _common_factor_on_a_line(ctx, rows, rank):
+    if nvars > 4 and not _common_factor_on_a_line(ctx, rows, rank):
         # no hypersurface part (the lower-dimensional part is solved only in up to two
         # variables, so nothing here needs the full determinants)
         ctx.locus.unexplored.append(
             f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} block in "
-            f"{nvars} variables: not solved (it has no hypersurface part)")
+            f"{nvars} variables: not solved (it has no real hypersurface part)")
         return []
     count = nvars + 1 if nvars <= 2 else 3
     polys = []
@@ -242,31 +242,42 @@ def _minor_combinations(rows, ctx: _Context) -> list:
     return polys
 
 
-def _common_factor_on_a_line(ctx: _Context, rows, rank: int) -> bool:
-    """Whether two random combinations of the maximal minors may share a factor.
+def _common_factor_on_a_line(ctx: _Context, rows, rank: int, lines: int = 3) -> bool:
+    """Whether two random combinations of the maximal minors may share a factor with
+    real zeros.
 
-    Restricted to a random line ``x = a + b s``, a common factor of the two
-    determinants stays a common factor of the univariate restrictions (for all lines
-    but a proper subvariety), so a constant gcd there proves, up to that choice, that
-    the drop set has no hypersurface part; the univariate determinants are cheap.
+    Restricted to a random real line ``x = a + b s``, a common factor of the two
+    determinants stays a common factor of the univariate restrictions, and a real
+    hypersurface meets almost every line through the region it crosses; factors
+    without real points (``1 + t^2``) stay positive on every real line. So a gcd
+    without real roots on a few lines through ``[-2, 2]^n`` shows, up to that choice,
+    that the drop set has no real hypersurface part. The univariate work is cheap.
     """
     lctx = flint.fmpz_mpoly_ctx.get(("s",), "degrevlex")
     (svar,) = lctx.gens()
-    line = [lctx.constant(ctx.rng.randint(-50, 50)) + ctx.rng.randint(1, 50) * svar
-            for _ in ctx.ring_names]
-    restricted = [[e.compose(*line, ctx=lctx) if not e.is_constant() else
-                   lctx.constant(int(e.leading_coefficient()) if not e.is_zero() else 0)
-                   for e in r] for r in rows]
-    dets = []
-    for _ in range(2):
-        m = restricted
-        if rank < len(rows):
-            m = el.matmul(_random_matrix(ctx, rank, len(rows), lctx), m, lctx)
-        if rank < len(rows[0]):
-            m = el.matmul(m, _random_matrix(ctx, len(rows[0]), rank, lctx), lctx)
-        dets.append(_determinant(m))
-    g = dets[0].gcd(dets[1])
-    return not g.is_constant()
+    for _ in range(lines):
+        line = [lctx.constant(ctx.rng.randint(-2, 2)) + ctx.rng.randint(1, 9) * svar
+                for _ in ctx.ring_names]
+        restricted = [[e.compose(*line, ctx=lctx) if not e.is_constant() else
+                       lctx.constant(int(e.leading_coefficient()) if not e.is_zero()
+                                     else 0) for e in r] for r in rows]
+        dets = []
+        for _ in range(2):
+            m = restricted
+            if rank < len(rows):
+                m = el.matmul(_random_matrix(ctx, rank, len(rows), lctx), m, lctx)
+            if rank < len(rows[0]):
+                m = el.matmul(m, _random_matrix(ctx, len(rows[0]), rank, lctx), lctx)
+            dets.append(_determinant(m))
+        g = dets[0].gcd(dets[1])
+        if g.is_constant():
+            continue
+        coeffs = [0] * (g.total_degree() + 1)
+        for (e,), c in g.to_dict().items():
+            coeffs[int(e)] = int(c)
+        if sp.Poly(coeffs[::-1], sp.Symbol("s")).count_roots() > 0:
+            return True
+    return False
 
 
 def _random_matrix(ctx: _Context, n: int, m: int, zctx=None):
