@@ -98,23 +98,29 @@ class Configuration:
 
 
 def _split_at(at) -> list[tuple[str, object]]:
-    if at is None:
+    return split_assignments(at, "--at")
+
+
+def split_assignments(text, context: str) -> list[tuple[str, object]]:
+    """``"q1=pi/2,L=2"`` (or a mapping) as ``[(name, value), ...]``; errors
+    (:class:`ConfigurationError`) start with ``context``."""
+    if text is None:
         return []
-    if isinstance(at, Mapping):
-        return [(str(k), v) for k, v in at.items()]
+    if isinstance(text, Mapping):
+        return [(str(k), v) for k, v in text.items()]
     items = []
-    for part in str(at).split(","):
+    for part in str(text).split(","):
         part = part.strip()
         if not part:
             continue
         if "=" not in part:
-            raise ConfigurationError(f"--at: expected NAME=VALUE, got {part!r}")
+            raise ConfigurationError(f"{context}: expected NAME=VALUE, got {part!r}")
         name, value = part.split("=", 1)
         items.append((name.strip(), value.strip()))
     names = [n for n, _ in items]
     dups = sorted({n for n in names if names.count(n) > 1})
     if dups:
-        raise ConfigurationError(f"--at: {', '.join(dups)} given more than once")
+        raise ConfigurationError(f"{context}: {', '.join(dups)} given more than once")
     return items
 
 

@@ -49,7 +49,7 @@ import numpy as np
 import sympy as sp
 
 from . import kinematics
-from .configuration import Configuration, ConfigurationError
+from .configuration import Configuration, ConfigurationError, split_assignments
 from .exact import elimination as el
 from .exact import modular
 from .exactnum import NumberError, _parse_text, parse_angle
@@ -555,25 +555,10 @@ def compile_system(system: System | Model, joints: Sequence[str],
 
 
 def _split_point(point) -> list[tuple[str, object]]:
-    if point is None:
-        return []
-    if isinstance(point, Mapping):
-        items = [(str(k), v) for k, v in point.items()]
-    else:
-        items = []
-        for part in str(point).split(","):
-            part = part.strip()
-            if not part:
-                continue
-            if "=" not in part:
-                raise SweepError(f"point {point!r}: expected NAME=VALUE, got {part!r}")
-            name, value = part.split("=", 1)
-            items.append((name.strip(), value.strip()))
-    names = [n for n, _ in items]
-    dups = sorted({n for n in names if names.count(n) > 1})
-    if dups:
-        raise SweepError(f"point {point!r}: {', '.join(dups)} given more than once")
-    return items
+    try:
+        return split_assignments(point, f"point {point!r}")
+    except ConfigurationError as exc:
+        raise SweepError(str(exc)) from None
 
 
 # --- grids ----------------------------------------------------------------------------

@@ -192,21 +192,23 @@ def nullspace(rows: Sequence[Sequence[Poly]], ncols: int | None = None,
         raise ValueError("nullspace of an empty matrix needs ncols and zctx")
     reduced, pivots = gauss_jordan(rows, ncols, canonical=False, reduce=True)
     pivot_set = set(pivots)
-    zero = zctx.constant(0)
-    basis = []
-    for f in range(ncols):
-        if f in pivot_set:
-            continue
-        involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[f].is_zero()]
-        scale = zctx.constant(1)
-        for r, c in involved:
-            scale = scale * r[c] / scale.gcd(r[c])
-        v = [zero] * ncols
-        v[f] = scale
-        for r, c in involved:
-            v[c] = -(r[f] * (scale / r[c]))
-        basis.append(primitive(v))
-    return basis
+    return [primitive(_kernel_vector(reduced, pivots, f, ncols, zctx))
+            for f in range(ncols) if f not in pivot_set]
+
+
+def _kernel_vector(reduced: list[Row], pivots: list[int], free: int, ncols: int,
+                   zctx) -> Row:
+    """The nullspace vector of a Gauss-Jordan form for the free column ``free``:
+    ``free`` set to the lcm of the pivots involved, pivot coordinates solved."""
+    involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[free].is_zero()]
+    scale = zctx.constant(1)
+    for r, c in involved:
+        scale = scale * r[c] / scale.gcd(r[c])
+    v = [zctx.constant(0)] * ncols
+    v[free] = scale
+    for r, c in involved:
+        v[c] = -(r[free] * (scale / r[c]))
+    return v
 
 
 # a prime for choosing pivot rows at a random point (choice only: results are verified)
@@ -297,21 +299,9 @@ def _nullspace_from(rows: list[Row], ncols: int, zctx, order: list[int]):
     reduced, pivots = gauss_jordan(rows, ncols, column_order=order[::-1]) if rows else (
         [], [])
     pivot_set = set(pivots)
-    zero = zctx.constant(0)
-    basis, free = [], []
-    for f in order:
-        if f in pivot_set:
-            continue
-        involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[f].is_zero()]
-        scale = zctx.constant(1)
-        for r, c in involved:
-            scale = scale * r[c] / scale.gcd(r[c])
-        v = [zero] * ncols
-        v[f] = scale
-        for r, c in involved:
-            v[c] = -(r[f] * (scale / r[c]))
-        basis.append(_pivot_positive(primitive(v), f))
-        free.append(f)
+    free = [f for f in order if f not in pivot_set]
+    basis = [_pivot_positive(primitive(_kernel_vector(reduced, pivots, f, ncols, zctx)), f)
+             for f in free]
     return basis, free
 
 
