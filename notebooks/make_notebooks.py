@@ -434,6 +434,397 @@ NB02 = [
 ]
 
 
+# ---------------------------------------------------------------------------- 03
+
+NB03 = [
+    md("""
+    # Singularity loci: where the numbers change, exactly
+
+    The paper computes the mobility numbers at one configuration; notebook 01 found by
+    hand, along one family, where they jump. `coopkin_sym.locus.compute_locus` finds
+    every family of configurations where the numbers differ from the generic ones
+    (the *locus*), decides each family's numbers exactly, gives an exact witness point
+    on it (checked by a direct analysis), recurses inside each family for deeper drops,
+    and lists what it did not explore. `coopkin_sym.report` writes it up.
+
+    Angles are handled through $t = \\tan(q/2)$, so a component such as
+    `t_q1 - 1 = 0` is $q_1 = \\pi/2$. Floats appear only in the plots and in the float
+    comparison of section 4 (marked).
+    """),
+    code("""
+    import io
+    import tempfile
+    from pathlib import Path
+
+    import sympy as sp
+    from IPython.display import Image, Markdown, display
+
+    import coopkin_sym
+    from coopkin_sym.draw import draw_system
+    from coopkin_sym.locus import compute_locus
+    from coopkin_sym.locus_plot import plot_components
+    from coopkin_sym.report import write_report
+
+    NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+
+
+    def png(figure):
+        \"\"\"A matplotlib figure (plot_components returns a plain one) as an inline PNG.\"\"\"
+        buffer = io.BytesIO()
+        figure.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
+        return Image(buffer.getvalue())
+
+
+    def at_text(witness):
+        \"\"\"A witness dict in --at syntax.\"\"\"
+        return ",".join(f"{k}={v}" for k, v in witness.items())
+
+
+    def locus_table(locus):
+        \"\"\"The generic numbers, then one row per component (changes in bold).\"\"\"
+        head = ("| # | where | kind | depth | " + " | ".join(NAMES) + " | witness |\\n"
+                + "|---" * 12 + "|\\n")
+        rows = ["| | generic | | | " + " | ".join(str(locus.generic[n]) for n in NAMES)
+                + " | |"]
+        for k, c in enumerate(locus.components):
+            nums = " | ".join(f"**{c.numbers[n]}**" if n in c.changes else str(c.numbers[n])
+                              for n in NAMES)
+            inside = f" (in #{c.parent + 1})" if c.parent is not None else ""
+            rows.append(f"| #{k + 1}{inside} | `{c.condition}` | {c.kind} | {c.depth} | "
+                        f"{nums} | `{at_text(c.witness)}` |")
+        return Markdown(head + "\\n".join(rows))
+
+
+    def recheck(system, locus):
+        \"\"\"Each witness again, by a direct exact analysis; asserts the numbers agree.\"\"\"
+        for c in locus.components:
+            direct = system.analyze(at_text(c.witness)).numbers.as_dict()
+            assert c.witness_checked and direct == c.numbers, c.condition
+            print(f"{at_text(c.witness):58} Nm={direct['Nm']} Nc={direct['Nc']} "
+                  f"Nr={direct['Nr']}: as reported")
+    """),
+    md("""
+    ## 1. Paper case 1, both angles free
+
+    Two one-link arms, hard contacts (section 4.1 of the paper). Both joint angles are
+    free; $L$ only scales the system, so the engine sets it to 1 (the report notes it).
+    """),
+    code("""
+    case1 = coopkin_sym.load("paper-case1-hard")
+    locus1 = compute_locus(case1)
+    print("free variables:", locus1.variables, "| fixed:", locus1.fixed)
+    locus_table(locus1)
+    """),
+    code("""
+    GENERIC1 = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+    assert locus1.generic == GENERIC1            # the paper's numbers, now generic
+    assert sorted(c.condition for c in locus1.components) == [
+        "q1 = -pi/2, q2 = -pi/2", "q1 = -pi/2, q2 = pi/2",
+        "q1 = pi/2, q2 = -pi/2", "q1 = pi/2, q2 = pi/2"]
+    for c in locus1.components:
+        assert c.kind == "isolated" and c.depth == 0 and c.real
+        assert c.numbers == dict(GENERIC1, Nm=3, Nc=3, Nh=1)
+        assert c.changes == {"Nm": (2, 3), "Nc": (2, 3), "Nh": (0, 1)}
+    for line in locus1.components[3].meaning:
+        print("-", line)
+    """),
+    md("""
+    Four isolated configurations, $q_1, q_2 = \\pm\\pi/2$: both links lie on the line
+    through the two contacts, and the object gains a rotation about $z$ ($N_m$ and
+    $N_c$ go from 2 to 3, with one more internal force the joints cannot control,
+    $N_h$). Notebook 01 saw two of them on the family $q_1 = q_2$; the locus finds
+    exactly these four (and one family it could not decide, below). In the
+    $(q_1, q_2)$ plane:
+    """),
+    code("""
+    png(plot_components(locus1, case1, pair=("q1", "q2")))
+    """),
+    md("""
+    Each witness is an exact point; a direct exact analysis there (with nothing from
+    the locus engine) gives the reported numbers, at $L = 1$ and with $L$ symbolic:
+    """),
+    code("""
+    recheck(case1, locus1)
+    for c in locus1.components:
+        symbolic_L = {k: v for k, v in c.witness.items() if k != "L"}
+        assert case1.analyze(at_text(symbolic_L)).numbers.as_dict() == c.numbers
+    """),
+    md("""
+    ### The report
+
+    `write_report` writes the report (Markdown here; also HTML, LaTeX, JSON) with a
+    PNG per joint pair, everything rendered before anything is written. Its opening
+    and its last sections:
+    """),
+    code("""
+    out = Path(tempfile.mkdtemp()) / "case1_locus.md"
+    print([p.name for p in write_report(locus1, out, system=case1)])
+    report = out.read_text()
+    opening, *sections = report.split("\\n## ")
+    keep = ("Dropped factors (no real points)", "Not explored")
+    display(Markdown(opening.replace("# ", "#### ", 1) + "\\n\\n" + "\\n\\n".join(
+        "#### " + s for s in sections if s.split("\\n", 1)[0] in keep)))
+    assert "Not everything was explored: 1 item below." in report
+    assert locus1.dropped == ["t_q1**2 + 1 = 0 (no real points)",
+                              "t_q2**2 + 1 = 0 (no real points)"]
+    assert locus1.unexplored == ["real points with irrational coordinates "
+                                 "(t_q1**2 + 4*t_q1 + 1 = 0): numbers not decided"]
+    """),
+    md("""
+    **What was not explored.** The candidate factor $t_{q_1}^2 + 4 t_{q_1} + 1$ has
+    real roots $t = -2 \\pm \\sqrt 3$, that is $q_1 = -\\pi/6$ or $-5\\pi/6$, with
+    $q_2 = -q_1$: there the two contact points coincide. These configurations have no
+    rational $\\tan(q/2)$, so no exact analysis over the rationals can be run there, and
+    the direct analysis refuses them too:
+    """),
+    code("""
+    t = sp.Symbol("t")
+    q1s = sorted(2 * sp.atan(r) for r in sp.solve(t**2 + 4 * t + 1, t))
+    assert q1s == [-5 * sp.pi / 6, -sp.pi / 6]
+    L = sp.Symbol("L", positive=True)
+    for q1 in q1s:
+        q2 = -q1
+        c1 = sp.Matrix([-L * sp.sin(q1), L * sp.cos(q1), 0])      # (0, L, 0) turned by q1
+        c2 = sp.Matrix([L - L * sp.sin(q2), L * sp.cos(q2), 0])   # (L, L, 0) about (L, 0, 0)
+        assert c1 == c2
+        print(f"q1 = {q1}, q2 = {q2}: c1 = c2 = {list(c1)}")
+    try:
+        case1.analyze("q1=-pi/6,q2=pi/6")
+    except coopkin_sym.ConfigurationError as exc:
+        print("direct analysis:", exc)
+    """),
+    md("""
+    The gap is real: with $c_1 = c_2$ the hard contacts constrain only the velocity of
+    one point, so $H G^T = \\begin{pmatrix} I & S(c)^T \\\\ I & S(c)^T \\end{pmatrix}$
+    has rank 3 and $N_i = 6 - 3 = 3$ (any rotation about the common point) instead of 1.
+    Deciding such points in floating point, or skipping them silently, would make the
+    report look complete when it is not; so the engine names the polynomial and says
+    "not decided", and the reader knows exactly which configurations to look at.
+    """),
+    code("""
+    def S(c):
+        return sp.Matrix([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+
+
+    c = sp.Matrix([L / 2, sp.sqrt(3) * L / 2, 0])               # the common point, q1 = -pi/6
+    block = sp.eye(3).row_join(S(c).T)
+    HGt = block.col_join(block)
+    assert HGt.rank() == 3                                      # so Ni = 6 - 3 = 3
+    """),
+    md("""
+    ## 2. Where the recursion matters: two planar 2R fingers
+
+    A constructed example: two fingers with two revolute joints about $z$ each (links of
+    length $L$), bases at $(0, 0, 0)$ and $(3L, 0, 0)$, holding an object with hard
+    contacts at the fingertips. At home both fingers point up along $y$.
+    """),
+    code("""
+    TWO_FINGERS = {
+        "name": "two planar 2R fingers", "parameters": ["L"],
+        "arms": [
+            {"name": "f1", "joints": [
+                {"name": "a1", "type": "revolute", "axis": [0, 0, 1], "point": [0, 0, 0]},
+                {"name": "a2", "type": "revolute", "axis": [0, 0, 1], "point": [0, "L", 0]}]},
+            {"name": "f2", "joints": [
+                {"name": "b1", "type": "revolute", "axis": [0, 0, 1], "point": ["3*L", 0, 0]},
+                {"name": "b2", "type": "revolute", "axis": [0, 0, 1],
+                 "point": ["3*L", "L", 0]}]}],
+        "contacts": [
+            {"name": "c1", "link": "f1/2", "point": [0, "2*L", 0], "normal": [1, 0, 0],
+             "model": "hard"},
+            {"name": "c2", "link": "f2/2", "point": ["3*L", "2*L", 0], "normal": [-1, 0, 0],
+             "model": "hard"}]}
+    fingers = coopkin_sym.load(TWO_FINGERS)
+    locus2 = compute_locus(fingers, max_depth=2)
+    locus_table(locus2)
+    """),
+    code("""
+    assert locus2.generic == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
+    by = {c.condition: c for c in locus2.components}
+    index = {c.condition: k for k, c in enumerate(locus2.components)}
+    straight = {"Nc": (4, 3), "Nr": (0, 1), "Nd": (2, 3)}
+    for cond in ("a2 = 0", "b2 = 0"):                     # one finger straight
+        assert by[cond].kind == "hypersurface" and by[cond].depth == 0
+        assert by[cond].changes == straight
+    both = by["a2 = 0, b2 = 0"]                           # both straight: codimension 2
+    assert both.kind == "subvariety" and both.depth == 1 and both.parent == index["a2 = 0"]
+    assert both.changes == {"Nc": (4, 2), "Nr": (0, 2), "Nd": (2, 4)}
+    deepest = [c for c in locus2.components if c.depth == 2]  # both on the contact line
+    assert sorted(c.condition for c in deepest) == sorted(
+        f"a2 = 0, b2 = 0, a1 = {a}, b1 = {b}" for a in ("pi/2", "-pi/2")
+        for b in ("pi/2", "-pi/2"))
+    for c in deepest:
+        assert c.kind == "isolated" and c.parent == index["a2 = 0, b2 = 0"]
+        assert c.changes == {"Nm": (4, 5), "Nc": (4, 3), "Nr": (0, 2), "Nd": (2, 4),
+                             "Nh": (0, 1)}
+    charts = [c for c in locus2.components if c.kind == "chart"]  # q = pi: t infinite
+    assert {c.condition: c.equations for c in charts} == {"a2 = pi": ["s_a2"],
+                                                          "b2 = pi": ["s_b2"]}
+    assert all(c.changes == straight for c in charts)
+    recheck(fingers, locus2)
+    """),
+    md("""
+    Read the table from the top:
+
+    * **One finger straight** ($a_2 = 0$ or $b_2 = 0$, hypersurfaces): the fingertip
+      cannot move along the finger. The object loses a direction ($N_c$ 4 to 3) and the
+      finger gains a self-motion that keeps its tip still to first order ($N_r$ 0 to 1:
+      joints in the ratio $a_1 : a_2 = 1 : -2$).
+    * **Both straight** ($a_2 = b_2 = 0$, codimension 2): not a component of the generic
+      locus, so a one-level search reports only the two hypersurfaces. The engine
+      finds it by recursing inside $a_2 = 0$: there the numbers are computed over the
+      component's own function field and $b_2$ drops them again ($N_c$ 2, $N_r$ 2).
+    * **Both straight along the contact line** ($a_1, b_1 = \\pm\\pi/2$ inside that,
+      depth 2): the object gains a rotation about $z$ as in case 1 ($N_m$ 4 to 5).
+    * **Folded back** ($a_2 = \\pi$ or $b_2 = \\pi$), where $t = \\tan(q/2)$ is infinite:
+      checked in the second chart $s = \\cot(q/2)$; same changes as straight.
+    """),
+    md("""
+    In the $(a_2, b_2)$ plane the hypersurfaces are lines (the folded-back ones at
+    $\\pm\\pi$, one angle drawn twice) and the deeper components all sit at $(0, 0)$;
+    the $(a_1, b_1)$ plane separates the four depth-2 points:
+    """),
+    code("""
+    display(png(plot_components(locus2, fingers, pair=("a2", "b2"))))
+    display(png(plot_components(locus2, fingers, pair=("a1", "b1"))))
+    """),
+    md("""
+    The system at the witness of component #6: both fingers straight and along the
+    line through the contacts (the numbers in the title come from a fresh exact
+    analysis):
+    """),
+    code("""
+    witness = locus2.components[5].witness
+    assert witness == {"a1": "-pi/2", "a2": "0", "b1": "-pi/2", "b2": "0", "L": "1"}
+    draw_system(fingers, at=witness)
+    """),
+    code("""
+    for item in locus2.unexplored:
+        print("-", item)
+    assert len(locus2.unexplored) == 5
+    """),
+    md("""
+    Here too the report lists what it left out: two families at irrational angles
+    (e.g. $3t_{a_1}^2 + 8t_{a_1} + 3 = 0$) and rank drops of codimension 2 or more in
+    three or four variables, which it does not solve (it solves up to two).
+
+    ## 3. Paper case 2, all eight joints free
+
+    Two SCARA-type robots with hard contacts (section 4.2): six revolute and two
+    prismatic joints, all free. One level of recursion:
+    """),
+    code("""
+    case2 = coopkin_sym.load("paper-case2-hard")
+    locus3 = compute_locus(case2, max_depth=1)
+    print(f"{len(locus3.variables)} variables: {', '.join(locus3.variables)}; "
+          f"computed in {locus3.seconds:.2f} s")
+    locus_table(locus3)
+    """),
+    code("""
+    assert locus3.generic == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
+    assert sorted(c.condition for c in locus3.components) == ["q2 = -pi/2", "q2 = pi/2"]
+    for c in locus3.components:
+        assert c.kind == "hypersurface" and c.equations in (["t_q2 + 1"], ["t_q2 - 1"])
+        assert c.changes == {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
+        print(c.condition, "->", c.meaning[1])
+    recheck(case2, locus3)
+    """),
+    md("""
+    The only hypersurfaces are the elbow of robot `s1` straight ($q_2 = \\pi/2$, the
+    link q2-q3 in line with the link q1-q2) or folded back ($q_2 = -\\pi/2$, the axes
+    of q1 and q3 coincide). Either way the axes of q1, q2, q3 meet the horizontal
+    plane in three points on a line, and the contact (on the axis of q3) cannot be
+    moved along that line: the object loses a direction ($N_c$ 6 to 5) and the arm
+    gains a self-motion ($N_r$ 2 to 3). No hypersurface involves robot `s2`.
+    """),
+    code("""
+    png(plot_components(locus3, case2, pair=("q1", "q2")))
+    """),
+    code("""
+    for item in locus3.unexplored:
+        print("-", item)
+    assert len(locus3.unexplored) == 5
+    assert sum("not solved" in u for u in locus3.unexplored) == 3
+    assert ("real points with irrational coordinates (t_q7 = 1, t_q8**2 + 2*t_q8 - 1 = 0)"
+            ": numbers not decided") in locus3.unexplored
+    assert sorted(2 * sp.atan(r) for r in sp.solve(t**2 + 2 * t - 1, t)) == [
+        -3 * sp.pi / 4, sp.pi / 4]
+    """),
+    md("""
+    So the report does not claim these two hypersurfaces are the whole locus. It says
+    that rank drops of codimension 2 or more of three blocks (in 8, 6 and 5
+    variables) were not solved (they have no real hypersurface part, so they are
+    at most lower-dimensional families), and that the families $q_7 = \\pm\\pi/2$,
+    $q_8 = \\pi/4$ or $-3\\pi/4$ ($\\tan(q_8/2) = -1 \\pm \\sqrt 2$) have irrational
+    coordinates, where nothing was decided. A reader gets the boundary of what was
+    checked along with the result.
+
+    ## 4. What a float rank test says near the locus
+
+    At and near every witness (at 1e-6, 1e-9 and 1e-12 rad on one joint, with the
+    lengths at 1, 1/1000 and 1000) the engine also computes the numbers the usual way,
+    with numpy's `matrix_rank` at its default tolerance, and compares them with the
+    exact ones:
+    """),
+    code("""
+    loci = {"paper case 1": locus1, "two fingers": locus2, "paper case 2": locus3}
+    rows = ["| system | tests | disagree | missed singular | regular called singular |",
+            "|---|---|---|---|---|"]
+    for name, locus in loci.items():
+        checks = [f for c in locus.components for f in c.float_checks]
+        s = locus.float_summary()
+        rows.append(f"| {name} | {len(checks)} | {sum(not f.agree for f in checks)} | "
+                    f"{s['missed_singular']} | {s['false_singular']} |")
+    display(Markdown("\\n".join(rows)))
+    assert locus1.float_summary() == {"missed_singular": 0, "false_singular": 8}
+    assert locus2.float_summary() == {"missed_singular": 8, "false_singular": 0}
+    assert locus3.float_summary() == {"missed_singular": 0, "false_singular": 0}
+    """),
+    code("""
+    rows = ["| system | near | lengths | distance | exact Nm | float Nm |",
+            "|---|---|---|---|---|---|"]
+    for name, locus in loci.items():
+        for c in locus.components:
+            for f in c.float_checks:
+                if not f.agree:
+                    rows.append(f"| {name} | `{c.condition}` | {f.scale} | "
+                                f"{f.distance:.0e} rad | {f.exact['Nm']} | {f.float['Nm']} |")
+    display(Markdown("\\n".join(rows)))
+
+    for locus in loci.values():
+        for c in locus.components:
+            for f in c.float_checks:
+                if f.distance == 0:                                    # float-ok
+                    assert f.agree       # at the exact singular points floats agree
+                elif not f.agree:
+                    assert f.distance == 1e-12                         # float-ok
+                    assert f.scale in ("L=1/1000", "L=1000")
+                    assert f.float == c.numbers      # numpy: "on the singular point"
+                    # exactly: regular (case 1), on the parent component (fingers)
+                    parent = locus.generic if c.parent is None else \\
+                        locus.components[c.parent].numbers
+                    assert f.exact == parent
+    """),
+    md("""
+    Every disagreement is the same: $10^{-12}$ rad from an isolated singular point,
+    with the lengths rescaled to 1/1000 or 1000, numpy gives the numbers of the point
+    itself. In case 1 it calls regular configurations singular; for the fingers it
+    gives configurations on the codimension-2 set $a_2 = b_2 = 0$ the numbers of the
+    isolated point next to them (counted as missed: a singular configuration given
+    the wrong numbers). With $L = 1$ the same configurations are answered
+    correctly.
+
+    For a float-based tool this means that its locus is a band of unknown width around
+    the true one, and the width depends on the unit of length: the same configuration
+    is singular in millimetres and regular in metres, and nothing in the output says
+    which answer is wrong. A difference of $10^{-12}$ rad is physically negligible, but
+    it shows that such a tool cannot certify any configuration near the locus, in
+    either direction. The exact components above have no tolerance: they are where they
+    are at every scale, and every reported number was re-derived at an exact witness.
+    """),
+]
+
+
 # ---------------------------------------------------------------------------- 04
 
 NB04 = [
@@ -653,6 +1044,7 @@ NB04 = [
 NOTEBOOKS = {
     "01_two_one_link_arms.ipynb": NB01,
     "02_two_scara_robots.ipynb": NB02,
+    "03_singularity_locus.ipynb": NB03,
     "04_exact_vs_float.ipynb": NB04,
 }
 
