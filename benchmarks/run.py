@@ -1,0 +1,213 @@
+"""Run every benchmark in one process, print a table, write ``RESULTS.md`` and
+``scaling.png`` next to this file.
+
+    python benchmarks/run.py [--quick]
+
+Each benchmark module has ``run(quick) -> list[dict]`` with rows
+``{"benchmark", "case", "ours_s", "baseline", "baseline_s", "ratio", "note"}``
+(``ratio = baseline_s / ours_s``; a row may carry a ``"plot"`` entry, a list of
+``{"panel", "series", "x", "y"}`` points for the log-log scaling figure). A module
+that is missing or fails is reported as a row, and the others still run. The output
+files are written only after everything has run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime as _dt
+import importlib
+import os
+import platform
+import sys
+import time
+import traceback
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+MODULES = ("bench_sweep", "bench_generic")
+COLUMNS = ("benchmark", "case", "ours_s", "baseline", "baseline_s", "ratio", "note")
+
+
+def _log(msg: str) -> None:
+    print(msg, file=sys.stderr, flush=True)
+
+
+def run_module(name: str, quick: bool) -> tuple[list[dict], float]:
+    t0 = time.perf_counter()
+    try:
+        module = importlib.import_module(name)
+    except ModuleNotFoundError as exc:
+        if exc.name != name:
+            raise
+        return [_row(name, "(module missing)", f"benchmarks/{name}.py does not exist yet; "
+                     "skipped")], 0.0
+    try:
+        kwargs = {"log": _log} if "log" in module.run.__code__.co_varnames else {}
+        rows = list(module.run(quick, **kwargs))
+    except Exception as exc:
+        traceback.print_exc()
+        rows = [_row(name, "(failed)", f"{type(exc).__name__}: {exc}")]
+    return rows, time.perf_counter() - t0
+
+
+def _row(benchmark: str, case: str, note: str) -> dict:
+    return {"benchmark": benchmark, "case": case, "ours_s": None, "baseline": None,
+            "baseline_s": None, "ratio": None, "note": note}
+
+
+def _seconds(v) -> str:
+    if v is None:
+        return "-"
+    if v >= 100:
+        return f"{v:.0f}"
+    if v >= 1:
+        return f"{v:.2f}"
+    if v >= 0.001:
+        return f"{v:.4f}"
+    return f"{v:.2e}"
+
+
+def _ratio(row: dict) -> str:
+    v = row.get("ratio")
+    if v is None:
+        return "-"
+    bound = ">= " if "lower bound" in (row.get("note") or "") else ""
+    return f"{bound}{v:.3g}"
+
+
+def cells(row: dict) -> list[str]:
+    return [str(row.get("benchmark") or "-"), str(row.get("case") or "-"),
+            _seconds(row.get("ours_s")), str(row.get("baseline") or "-"),
+            _seconds(row.get("baseline_s")), _ratio(row), str(row.get("note") or "")]
+
+
+def text_table(rows: list[dict], note_width: int = 70) -> str:
+    data = [list(COLUMNS)] + [cells(r) for r in rows]
+    for d in data:
+        if len(d[-1]) > note_width:
+            d[-1] = d[-1][: note_width - 3] + "..."
+    widths = [max(len(d[i]) for d in data) for i in range(len(COLUMNS))]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(d, widths, strict=True)).rstrip()
+             for d in data]
+    lines.insert(1, "  ".join("-" * w for w in widths))
+    return "\n".join(lines)
+
+
+def markdown_table(rows: list[dict]) -> str:
+    def esc(s: str) -> str:
+        return s.replace("|", "\\|")
+    out = ["| " + " | ".join(COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
+    out += ["| " + " | ".join(esc(c) for c in cells(r)) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def machine() -> list[tuple[str, str]]:
+    import flint
+    import numpy
+    import sympy
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            names = [ln.split(":", 1)[1].strip() for ln in f if ln.startswith("model name")]
+        if names:
+            cpu = names[0]
+    except OSError:
+        pass
+    ground = getattr(sympy.external.gmpy, "GROUND_TYPES", "?")
+    return [("date", _dt.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")),
+            ("CPU", f"{cpu}, {os.cpu_count()} logical CPUs"),
+            ("platform", platform.platform()),
+            ("python", platform.python_version()),
+            ("python-flint", flint.__version__),
+            ("sympy", f"{sympy.__version__} (ground types: {ground})"),
+            ("numpy", numpy.__version__)]
+
+
+def plot(rows: list[dict], path: Path) -> bool:
+    """Log-log figure of the rows' ``"plot"`` points (lists of ``{"panel", "series",
+    "x", "y"}``), one panel per ``panel``."""
+    panels: dict[str, dict[str, list[tuple[float, float]]]] = {}
+    for r in rows:
+        for p in r.get("plot") or []:
+            if p.get("y"):
+                panels.setdefault(p["panel"], {}).setdefault(p["series"], []).append(
+                    (p["x"], p["y"]))
+    if not panels:
+        return False
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+    fig, axes = plt.subplots(1, len(panels), figsize=(7 * len(panels), 5.5), squeeze=False)
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for ax, (title, series) in zip(axes[0], panels.items(), strict=True):
+        families = sorted({name.split(":")[0] for name in series})
+        kinds = sorted({name.split(":", 1)[-1] for name in series})
+        xs = set()
+        for name, pts in sorted(series.items()):
+            pts.sort()
+            xs.update(x for x, _ in pts)
+            family, kind = name.split(":")[0], name.split(":", 1)[-1]
+            k = kinds.index(kind)
+            ax.plot([x for x, _ in pts], [y for _, y in pts], ("-", "--", ":")[k % 3],
+                    marker="os^D"[k % 4], markersize=4, label=name,
+                    color=colors[families.index(family) % len(colors)])
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.xaxis.set_major_formatter(ScalarFormatter())
+        ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.set_xticks(sorted(xs))
+        ax.set_xlabel("joints r")
+        ax.set_ylabel("seconds")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, loc="best")
+    fig.suptitle("coopkin_sym: cost against size (log-log)")
+    fig.tight_layout()
+    tmp = path.with_name(path.stem + ".tmp.png")
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    os.replace(tmp, path)
+    return True
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes, short caps")
+    args = parser.parse_args(argv)
+    sys.path.insert(0, str(HERE))
+    t0 = time.perf_counter()
+    rows: list[dict] = []
+    durations = []
+    for name in MODULES:
+        _log(f"{name} ...")
+        module_rows, seconds = run_module(name, args.quick)
+        rows += module_rows
+        durations.append((name, seconds))
+    total = time.perf_counter() - t0
+    print(text_table(rows))
+    print(f"\n{'quick' if args.quick else 'full'} run: {total:.0f} s")
+    has_plot = plot(rows, HERE / "scaling.png")
+    info = machine()
+    lines = ["# Benchmark results", "",
+             f"Generated by `python benchmarks/run.py{' --quick' if args.quick else ''}` "
+             f"({'quick' if args.quick else 'full'} run, {total:.0f} s in all: "
+             + ", ".join(f"{n} {s:.0f} s" for n, s in durations) + ").", "",
+             "| machine | |", "|---|---|"]
+    lines += [f"| {k} | {v} |" for k, v in info]
+    lines += ["", "Times in seconds; `ratio = baseline_s / ours_s` (above 1: ours is faster); "
+              "`>=` marks a lower bound (the baseline was stopped at its cap). "
+              "See `benchmarks/README.md` for what each row measures.", "",
+              markdown_table(rows), ""]
+    if has_plot:
+        lines += ["![scaling](scaling.png)", ""]
+    out = HERE / "RESULTS.md"
+    tmp = out.with_suffix(".md.tmp")
+    tmp.write_text("\n".join(lines))
+    os.replace(tmp, out)
+    _log(f"wrote {out}" + (f" and {HERE / 'scaling.png'}" if has_plot else ""))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
