@@ -495,7 +495,7 @@ def render_markdown(locus: Locus, plots: Mapping[tuple[str, str], str] | None = 
                 lines.append("| " + " | ".join(_md_inline(c) for c in row) + " |")
             lines.append("")
         elif isinstance(b, _Plot):
-            lines += [f"![Components in the ({b.pair[0]}, {b.pair[1]}) plane]({b.ref})", ""]
+            lines += [f"![{_caption(b.pair)}]({b.ref})", ""]
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -588,7 +588,7 @@ def render_html(locus: Locus, plots: Mapping[tuple[str, str], bytes] | None = No
             body.append(table)
         elif isinstance(b, _Plot):
             data = base64.b64encode(b.ref).decode("ascii")
-            caption = f"Components in the ({b.pair[0]}, {b.pair[1]}) plane"
+            caption = _caption(b.pair)
             body.append(f'<figure><img alt="{html.escape(caption)}" '
                         f'src="data:image/png;base64,{data}">'
                         f"<figcaption>{html.escape(caption)}</figcaption></figure>")
@@ -760,7 +760,7 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
         out.append("% Plots of the components (need \\usepackage{graphicx}):")
         for pair, name in plots.items():
             out.append(f"% \\includegraphics[width=0.8\\textwidth]{{{name}}}"
-                       f"  % ({pair[0]}, {pair[1]}) plane")
+                       f"  % {_caption(pair)}")
     return "\n".join(out).rstrip() + "\n"
 
 
@@ -869,6 +869,38 @@ def parse_pairs(pairs: Sequence[str | Sequence[str]] | None, system: Any = None
     return out
 
 
+def _caption(pair: tuple[str, str]) -> str:
+    if pair[0] == SYSTEM_PICTURE:
+        return f"The system at the witness of {pair[1]} (drawn with lengths as given)"
+    return f"Components in the ({pair[0]}, {pair[1]}) plane"
+
+
+# key of the picture of the system at a witness among the plots
+SYSTEM_PICTURE = "system"
+
+
+def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str], bytes]:
+    """The system drawn at the first real component's witness, with its motion."""
+    if system is None or not hasattr(system, "model"):
+        return {}
+    for k, comp in enumerate(locus.components):
+        if comp.real and comp.witness:
+            try:
+                import io
+
+                from .draw import draw_system
+                fig = draw_system(system, at=",".join(f"{n}={v}" for n, v in
+                                                     comp.witness.items()),
+                                  title=f"{locus.system}: component {k + 1}, "
+                                        f"{comp.condition}")
+                buf = io.BytesIO()
+                fig.savefig(buf, format="png", dpi=dpi)
+                return {(SYSTEM_PICTURE, f"component {k + 1}"): buf.getvalue()}
+            except (ImportError, ValueError):  # the picture is optional in a report
+                return {}
+    return {}
+
+
 def _png_name(stem: str, pair: tuple[str, str]) -> str:
     safe = [re.sub(r"[^A-Za-z0-9_.-]", "_", j) for j in pair]
     return f"{stem}_{safe[0]}_{safe[1]}.png"
@@ -882,7 +914,9 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
         return {}, "plots need matplotlib"
     try:
         chosen = pairs if pairs is not None else default_pairs(locus, system)
-        return {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}, None
+        pngs = {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}
+        pngs.update(_system_picture(locus, system, dpi))
+        return pngs, None
     except PlotError as exc:
         if "matplotlib" in str(exc) and pairs is None:  # pragma: no cover
             return {}, str(exc)

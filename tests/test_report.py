@@ -242,7 +242,8 @@ def test_latex_structure():
     assert cells[2:9] == [r"\textbf{3}", r"\textbf{3}", "1", "0", "1", "4", r"\textbf{1}"]
     assert r"\textbf{Missed singular configurations: 1}" in tex
     assert r"\item inside component 1: deeper than max\_depth = 0" in lines
-    assert r"% \includegraphics[width=0.8\textwidth]{r_q1_q2.png}  % (q1, q2) plane" in lines
+    assert (r"% \includegraphics[width=0.8\textwidth]{r_q1_q2.png}  % Components in the "
+            "(q1, q2) plane") in lines
     # no package needed: no longtable, no \usepackage, balanced environments
     code = "\n".join(x for x in lines if not x.startswith("%"))
     assert "longtable" not in code and r"\usepackage" not in code
@@ -379,13 +380,15 @@ def test_plot_legend_names_each_component():
 def test_write_markdown_with_png_next_to_it(tmp_path, case1):
     out = tmp_path / "report.md"
     written = write_report(case1, out, load("paper-case1-hard"))
-    assert written == [out, tmp_path / "report_q1_q2.png"]
+    assert written == [out, tmp_path / "report_q1_q2.png",
+                       tmp_path / "report_system_component_1.png"]
     assert "![Components in the (q1, q2) plane](report_q1_q2.png)" in out.read_text()
     png = (tmp_path / "report_q1_q2.png").read_bytes()
     assert png.startswith(PNG_SIGNATURE)
     image = matplotlib.image.imread(tmp_path / "report_q1_q2.png")
     assert image.ndim == 3 and image.shape[0] > 300 and image.shape[1] > 300
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["report.md", "report_q1_q2.png"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "report.md", "report_q1_q2.png", "report_system_component_1.png"]
 
 
 def test_write_html_embeds_the_png_it_writes(tmp_path, case1):
@@ -460,3 +463,17 @@ def test_cli_locus_errors_write_nothing(tmp_path):
     assert "not exact" in run_error(
         "locus", "paper-case1-hard", "-o", str(tmp_path / "r.md"), "--at", "q1=pi/3")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_report_carries_a_picture_of_the_system_at_a_witness(tmp_path):
+    from coopkin_sym.locus import compute_locus
+    from coopkin_sym.report import write_report
+
+    system = load("paper-case1-hard")
+    written = write_report(compute_locus(system), tmp_path / "r.md", system=system)
+    names = [p.name for p in written]
+    assert "r_system_component_1.png" in names
+    picture = tmp_path / "r_system_component_1.png"
+    assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    text = (tmp_path / "r.md").read_text()
+    assert "![The system at the witness of component 1" in text
