@@ -138,11 +138,13 @@ def plot(rows: list[dict], path: Path) -> bool:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.ticker import NullFormatter, ScalarFormatter
-    fig, axes = plt.subplots(1, len(panels), figsize=(7 * len(panels), 5.5), squeeze=False)
+    fig, axes = plt.subplots(1, len(panels), figsize=(7 * len(panels), 7.5), squeeze=False)
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for ax, (title, series) in zip(axes[0], panels.items(), strict=True):
         families = sorted({name.split(":")[0] for name in series})
-        kinds = sorted({name.split(":", 1)[-1] for name in series})
+        # ours first (solid lines), baselines after (dashed)
+        kinds = sorted({name.split(":", 1)[-1] for name in series},
+                       key=lambda k: ("DomainMatrix" in k, k))
         xs = set()
         for name, pts in sorted(series.items()):
             pts.sort()
@@ -161,7 +163,8 @@ def plot(rows: list[dict], path: Path) -> bool:
         ax.set_ylabel("seconds")
         ax.set_title(title)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2,
+                  frameon=False)
     fig.suptitle("coopkin_sym: cost against size (log-log)")
     fig.tight_layout()
     tmp = path.with_name(path.stem + ".tmp.png")
