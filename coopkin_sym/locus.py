@@ -285,25 +285,7 @@ def _random_matrix(ctx: _Context, n: int, m: int, zctx=None):
     return [[c(ctx.rng.randint(-3, 3)) for _ in range(m)] for _ in range(n)]
 
 
-def _determinant(m):
-    """Fraction-free (Bareiss) determinant of a square polynomial matrix."""
-    a = [list(r) for r in m]
-    n = len(a)
-    zctx = a[0][0].context()
-    prev = zctx.constant(1)
-    sign = 1
-    for k in range(n - 1):
-        if a[k][k].is_zero():
-            swap = next((i for i in range(k + 1, n) if not a[i][k].is_zero()), None)
-            if swap is None:
-                return zctx.constant(0)
-            a[k], a[swap] = a[swap], a[k]
-            sign = -sign
-        for i in range(k + 1, n):
-            for j in range(k + 1, n):
-                a[i][j] = (a[i][j] * a[k][k] - a[i][k] * a[k][j]) / prev
-        prev = a[k][k]
-    return a[n - 1][n - 1] if sign > 0 else -a[n - 1][n - 1]
+_determinant = el.determinant
 
 
 # --- exploring --------------------------------------------------------------------------

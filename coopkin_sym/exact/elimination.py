@@ -275,10 +275,87 @@ def nullspace_rref(rows: Sequence[Sequence[Poly]], ncols: int, zctx,
     return basis, pivots
 
 
+def determinant(m: Sequence[Sequence[Poly]]) -> Poly:
+    """Fraction-free (Bareiss) determinant of a square polynomial matrix.
+
+    Examples
+    --------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "degrevlex")
+    >>> (t,) = ctx.gens()
+    >>> str(determinant([[t, ctx.constant(1)], [ctx.constant(1), t]]))
+    't^2 - 1'
+    """
+    a = [list(r) for r in m]
+    n = len(a)
+    zctx = a[0][0].context()
+    prev = zctx.constant(1)
+    sign = 1
+    for k in range(n - 1):
+        if a[k][k].is_zero():
+            swap = next((i for i in range(k + 1, n) if not a[i][k].is_zero()), None)
+            if swap is None:
+                return zctx.constant(0)
+            a[k], a[swap] = a[swap], a[k]
+            sign = -sign
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                a[i][j] = (a[i][j] * a[k][k] - a[i][k] * a[k][j]) / prev
+        prev = a[k][k]
+    return a[n - 1][n - 1] if sign > 0 else -a[n - 1][n - 1]
+
+
+def _minors_nullspace(rows: list[Row], ncols: int, zctx, order: list[int]):
+    """The reduced echelon nullspace basis of a few independent rows from maximal
+    minors (Cramer's rule), or None when this route does not apply.
+
+    The pivot columns ``P`` are chosen at a random point modulo a prime (greedily in
+    reversed column order); a nonzero minor there proves ``det(R_P) != 0``. Each free
+    column ``f`` gives ``det(R_P) e_f - sum_c det(R_P[c <- f]) e_c``. The result is
+    kept only if it is exactly in reduced echelon form for ``order`` (then it is the
+    unique reduced echelon basis); no entry ever holds a fraction.
+    """
+    k = len(rows)
+    if k == 0 or k > 4 or rows[0][0].context().nvars() == 0:
+        return None
+    nvars = rows[0][0].context().nvars()
+    point = [_rng.randrange(1, 2**20) for _ in range(nvars)]
+    rev = order[::-1]
+    values = [[int(r[c](*point)) % _PRIME if not r[c].is_zero() else 0 for c in rev]
+              for r in rows]
+    reduced, rk = flint.nmod_mat(values, _PRIME).rref()
+    if rk < k:
+        return None
+    pivots, col = [], 0
+    for i in range(rk):
+        while int(reduced[i, col]) == 0:
+            col += 1
+        pivots.append(rev[col])
+    d = determinant([[r[c] for c in pivots] for r in rows])
+    position = {c: i for i, c in enumerate(order)}
+    basis, free = [], []
+    for f in order:
+        if f in pivots:
+            continue
+        v = [zctx.constant(0)] * ncols
+        v[f] = d
+        for i, c in enumerate(pivots):
+            cols = [f if j == i else pc for j, pc in enumerate(pivots)]
+            v[c] = -determinant([[r[cc] for cc in cols] for r in rows])
+        if any(not v[c].is_zero() and position[c] < position[f] for c in pivots):
+            return None  # not the reduced echelon form: let elimination decide
+        basis.append(_pivot_positive(primitive(v), f))
+        free.append(f)
+    return basis, free
+
+
 def _canonical_nullspace(rows: list[Row], ncols: int, zctx, order: list[int]):
-    """The reduced echelon nullspace basis by the cheaper of two exact routes: the
-    elimination of ``rows`` in reversed column order (few rows), or any nullspace
-    basis brought to reduced echelon form (few basis vectors)."""
+    """The reduced echelon nullspace basis by the cheapest exact route: maximal minors
+    for a few rows, the elimination of ``rows`` in reversed column order (few rows),
+    or any nullspace basis brought to reduced echelon form (few basis vectors)."""
+    by_minors = _minors_nullspace(rows, ncols, zctx, order)
+    if by_minors is not None:
+        return by_minors
     if len(rows) <= ncols - len(rows):
         return _nullspace_from(rows, ncols, zctx, order)
     basis = nullspace(rows, ncols, zctx)
