@@ -33,6 +33,9 @@ from .system import load
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
 
+ModelArg = Annotated[str, typer.Argument(
+    help="A model file (YAML/JSON) or a shipped example name (see `coopkin examples`).")]
+
 USER_ERRORS = (ModelError, ConfigurationError, NumberError, InfeasibleMotion)
 
 
@@ -43,8 +46,7 @@ def _fail(message: str) -> None:
 
 @app.command()
 def analyze(
-    model: Annotated[str, typer.Argument(help="A model file (YAML/JSON) or a shipped "
-                                              "example name (see `coopkin examples`).")],
+    model: ModelArg,
     at: Annotated[str | None, typer.Option(
         "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000; "
                      "unset joints stay at home (q = 0), unset parameters symbolic.")] = None,
@@ -83,8 +85,7 @@ def examples() -> None:
 
 @app.command()
 def draw(
-    model: Annotated[str, typer.Argument(help="A model file (YAML/JSON) or a shipped "
-                                              "example name (see `coopkin examples`).")],
+    model: ModelArg,
     output: Annotated[str, typer.Option(
         "--output", "-o", help="The picture to write: .png, .pdf or .svg.")],
     at: Annotated[str | None, typer.Option(
@@ -106,8 +107,7 @@ def draw(
 
 @app.command()
 def sweep(
-    model: Annotated[str, typer.Argument(help="A model file (YAML/JSON) or a shipped "
-                                              "example name (see `coopkin examples`).")],
+    model: ModelArg,
     grid_spec: Annotated[str, typer.Option(
         "--grid", help="Joints to sweep: NAME=LO..HI:COUNT,... e.g. "
                        "q1=-pi..pi:181,q2=-pi..pi:181 (angles with an irrational tan(q/2) "
@@ -170,8 +170,7 @@ def sweep(
 
 @app.command()
 def locus(
-    model: Annotated[str, typer.Argument(help="A model file (YAML/JSON) or a shipped "
-                                              "example name (see `coopkin examples`).")],
+    model: ModelArg,
     output: Annotated[str, typer.Option(
         "--output", "-o", help="The report to write: .md, .html, .tex or .json (plots of "
                                "the components go next to it as <stem>_<qi>_<qj>.png).")],

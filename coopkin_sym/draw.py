@@ -50,6 +50,7 @@ import sympy as sp
 from .exact.ring import Frac
 from .exact.sympy_bridge import rational_to_sympy
 from .mobility import Analysis
+from .output import check_output_path
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -729,17 +730,10 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     >>> save_picture(load("paper-case1-hard"), out, motion="coordinated:1").read_bytes()[:4]
     b'\\x89PNG'
     """
-    target = Path(path)
-    suffix = target.suffix.lower()
-    if suffix not in SAVE_FORMATS:
-        raise DrawError(f"{target}: unknown picture format {suffix or '(no suffix)'!r} "
-                        f"(expected {', '.join(SAVE_FORMATS)})")
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise DrawError(f"{target}: no such directory {str(folder)!r}")
+    target, suffix = check_output_path(path, SAVE_FORMATS, DrawError, "picture")
     fig = draw_system(analysis_or_system, at=at, motion=motion, title=title)
     try:
-        handle, tmp = tempfile.mkstemp(suffix=suffix, dir=folder, prefix=".draw-")
+        handle, tmp = tempfile.mkstemp(suffix=suffix, dir=target.parent, prefix=".draw-")
     except OSError as exc:
         raise DrawError(f"{target}: cannot write: {exc.strerror}") from None
     os.close(handle)

@@ -436,7 +436,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             f"{f_text} = 0: no rational point found, numbers not decided (depth {depth})")
         return
     values = _complete_point(ctx, point_so_far, point)
-    numbers = _numbers_at(ctx, q_rows, values)
+    numbers = _numbers_at_values(ctx, values)
     if numbers is None or numbers == base:
         return
     witness = _to_at(ctx, values)
@@ -627,10 +627,6 @@ def _witness_linear(ctx, sub_rows, name, f0, f1, point_so_far, numbers):
         if _numbers_at_values(ctx, full) == numbers:
             return _to_at(ctx, full)
     return None
-
-
-def _numbers_at(ctx, q_rows, values) -> Numbers | None:
-    return _numbers_at_values(ctx, values)
 
 
 def _numbers_at_values(ctx, values: dict[str, Fraction]) -> Numbers | None:

@@ -38,6 +38,7 @@ from typing import Any
 import sympy as sp
 
 from .locus_types import Component, FloatCheck, Locus
+from .output import check_output_path
 
 __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_pairs",
            "render_html", "render_json", "render_latex", "render_markdown",
@@ -828,14 +829,7 @@ def check_target(path: str | os.PathLike) -> str:
     ...
     coopkin_sym.report.ReportError: report.txt: unknown report format '.txt' ...
     """
-    target = Path(path)
-    suffix = target.suffix.lower()
-    if suffix not in FORMATS:
-        raise ReportError(f"{target}: unknown report format {suffix or '(no suffix)'!r} "
-                          f"(expected {', '.join(FORMATS)})")
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise ReportError(f"{target}: no such directory {str(folder)!r}")
+    _, suffix = check_output_path(path, FORMATS, ReportError, "report")
     return FORMATS[suffix]
 
 
