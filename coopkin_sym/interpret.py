@@ -155,3 +155,52 @@ def sentences(analysis: Analysis) -> list[str]:
                "Nh = 0: every internal force can be controlled by the joints (not "
                "hyperstatic).")
     return out
+
+
+def count_sentences(numbers, r: int) -> list[str]:
+    """One plain sentence per number from the numbers alone (where no basis of the
+    subspaces is at hand, e.g. at an irrational point).
+
+    Example
+    -------
+    >>> from coopkin_sym.mobility import Numbers
+    >>> print(count_sentences(Numbers(3, 3, 1, 0, 1, 4, 1), 2)[2])
+    Ni = 1: with every joint locked, the object can still make one independent motion.
+    """
+    n = numbers
+    out = [f"Nm = {n.Nm}: the object and the joints together have "
+           f"{_count(n.Nm, 'independent motion')} that {'keeps' if n.Nm == 1 else 'keep'} "
+           "every contact."]
+    if n.Nc == 6:
+        conn = "the object can move in every direction (full connectivity)"
+    elif n.Nc == 0:
+        conn = "the object cannot move at all"
+    else:
+        conn = f"the object can move in {_count(n.Nc, 'independent direction')} only"
+    parts = []
+    driven = n.Nc - n.Ni
+    if driven and n.Nc:
+        parts.append(f"{_WORDS[driven] if driven < len(_WORDS) else driven} driven by the "
+                     "joints")
+    if n.Ni and n.Nc:
+        parts.append(f"{_WORDS[n.Ni] if n.Ni < len(_WORDS) else n.Ni} left free (Ni)")
+    out.append(f"Nc = {n.Nc}: {conn}" + (": " + " and ".join(parts) if parts else "") + ".")
+    out.append(f"Ni = {n.Ni}: with every joint locked, the object "
+               + (f"can still make {_count(n.Ni, 'independent motion')}." if n.Ni else
+                  "cannot move (no indeterminate motion)."))
+    out.append(f"Nr = {n.Nr}: " + (f"with the object fixed, the arms can still make "
+                                   f"{_count(n.Nr, 'independent motion')}." if n.Nr else
+                                   "no joint can move while the object stays fixed (no "
+                                   "redundancy)."))
+    out.append(f"Ng = {n.Ng}: the contacts can exert "
+               f"{_count(n.Ng, 'independent internal force')} (squeezing the object "
+               "without moving it).")
+    out.append(f"Nd = {n.Nd}: {_count(n.Nd, 'contact force combination')} "
+               f"{'produces' if n.Nd == 1 else 'produce'} no torque at the {r} joints "
+               "(defective grasp)." if n.Nd else
+               "Nd = 0: every contact force loads some joint (not defective).")
+    out.append(f"Nh = {n.Nh}: {_count(n.Nh, 'internal force')} the joints cannot control "
+               "(hyperstatic)." if n.Nh else
+               "Nh = 0: every internal force can be controlled by the joints (not "
+               "hyperstatic).")
+    return out

@@ -16,18 +16,26 @@ the rest is solved when few variables remain (isolated configurations).
 
 Every candidate component is then decided exactly: when its polynomial is linear in a
 variable it is parametrized and the numbers are computed over its function field
-(and the search recurses inside it for deeper drops); otherwise at a rational point on
-it. Every reported component has an exact witness checked by a direct analysis where
-one with rational coordinates exists. ``q = pi`` (``t = oo``) is checked joint by
-joint in the second chart.
+(and the search recurses inside it for deeper drops); otherwise by ranks modulo its
+irreducible polynomial (:mod:`coopkin_sym.exact.quotient`: over the function field of a
+curved hypersurface, or over a number field ``Q(alpha)`` for points with irrational
+coordinates, every conjugate point at once). Points of two variables come from
+resultants, a gcd over ``Q(alpha)`` and, when one coordinate does not separate them,
+the coordinate ``y + c x``. Every reported component gets an exact witness checked by a
+direct analysis: rational where one exists, else a real algebraic point (radicals or
+``CRootOf``). ``q = pi`` (``t = oo``) is checked joint by joint in the second chart.
 
 Example
 -------
 >>> from coopkin_sym import load
 >>> locus = compute_locus(load("paper-case1-hard"))
->>> sorted(c.condition for c in locus.components)  # doctest: +NORMALIZE_WHITESPACE
-['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2', 'q1 = pi/2, q2 = -pi/2',
- 'q1 = pi/2, q2 = pi/2']
+>>> for c in locus.components:
+...     print(c.condition)
+q1 = -pi/2, q2 = -pi/2
+q1 = -pi/2, q2 = pi/2
+q1 = pi/2, q2 = -pi/2
+q1 = pi/2, q2 = pi/2
+q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6
 """
 
 from __future__ import annotations
@@ -43,12 +51,15 @@ import flint
 import sympy as sp
 
 from . import kinematics
+from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact import elimination as el
+from .exact.numberfield import NumberField
+from .exact.quotient import Quotient
 from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
 from .locus_types import Component, FloatCheck, Locus
-from .mobility import Numbers, analyze, decompose
+from .mobility import Numbers, analyze, decompose, numbers_modulo
 from .model import Model
 from .numeric import float_numbers
 
@@ -77,6 +88,7 @@ class _Context:
     max_depth: int
     locus: Locus
     rng: random.Random
+    rows0: list = None  # the rows of Q with every free variable, for direct checks
 
     def expired(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
@@ -137,7 +149,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         "never wrongly reported, and a miss has probability below degree/2^20 per step.")
     ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
                    generic, None if timeout is None else started + timeout, max_depth,
-                   locus, random.Random(1992))
+                   locus, random.Random(1992), q_rows)
     reporter = _Progress(progress)
     with reporter:
         _explore(ctx, q_rows, [], {}, depth=0, parent=None, reporter=reporter)
@@ -290,8 +302,12 @@ _determinant = el.determinant
 
 # --- exploring --------------------------------------------------------------------------
 def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
-             depth: int, parent: int | None, reporter) -> None:
-    """Find the components inside the current (parametrized) set and decide them."""
+             depth: int, parent: int | None, reporter, charts: tuple = ()) -> None:
+    """Find the components inside the current (parametrized) set and decide them.
+
+    ``point_so_far`` maps each parametrized variable to ``(f0, f1)`` (it equals
+    ``-f0/f1``); ``charts`` are the denominators ``f1``, in the current variables: the
+    rows are valid only where none of them vanishes."""
     if ctx.expired():
         ctx.locus.unexplored.append(
             f"depth {depth}{' inside ' + '; '.join(equations) if equations else ''}: not "
@@ -325,10 +341,15 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             ctx.locus.unexplored.append(f"component {f} = 0 (depth {depth}): not decided, "
                                         "time bound reached")
             continue
+        if any(not c.gcd(f).is_constant() for c in charts):
+            ctx.locus.unexplored.append(
+                f"inside {'; '.join(equations)}: the points where {_text(ctx, f)} = 0 lie "
+                "outside its parametrization; not explored")
+            continue
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
-                       reporter)
+                       reporter, charts)
     if rests:
-        _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent)
+        _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts)
 
 
 def _normalize(f):
@@ -346,10 +367,14 @@ def _drops_text(drops: set[str]) -> list[str]:
     return sorted({names[d] for d in drops})
 
 
+def _text(ctx: _Context, f) -> str:
+    return sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+
+
 def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, base, depth,
-                   parent, reporter) -> None:
+                   parent, reporter, charts=()) -> None:
     names = _vars_of(ctx, f)
-    f_text = sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+    f_text = _text(ctx, f)
     if all(ctx.kinds[n][0] == "parameter" for n in names):
         text = f"{f_text} = 0"
         if text not in ctx.locus.parameter_conditions:
@@ -362,6 +387,13 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
                           depth, parent)
         return
     sub_rows, f0, f1 = _substitute_linear(ctx, q_rows, f, linear)
+    k = ctx.ring_names.index(linear)
+    sub_charts = [_substitute(c, k, f0, f1, c.degrees()[k]) for c in charts]
+    if any(c.is_zero() for c in sub_charts):
+        ctx.locus.unexplored.append(f"{f_text} = 0 inside {'; '.join(equations)}: outside "
+                                    "the parametrization of the enclosing component")
+        return
+    sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
     numbers = decompose(sub_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     if numbers == base:
         return
@@ -376,7 +408,7 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
     if depth < ctx.max_depth and comp is not None:
         sub_point = dict(point_so_far)
         sub_point[linear] = (f0, f1)
-        _explore(ctx, sub_rows, eqs, sub_point, depth + 1, index, reporter)
+        _explore(ctx, sub_rows, eqs, sub_point, depth + 1, index, reporter, sub_charts)
     elif comp is not None and depth >= ctx.max_depth:
         ctx.locus.unexplored.append(f"inside component {index} ({comp.condition}): deeper "
                                     f"drops not explored (max depth {ctx.max_depth})")
@@ -386,12 +418,31 @@ def _substitute_linear(ctx: _Context, q_rows, f, name: str):
     """Rows of Q on ``f = 0`` with ``name = -f0/f1`` (denominators cleared row by row)."""
     k = ctx.ring_names.index(name)
     f1, f0 = _split_linear(f, k)
+    return _substitute_rows(q_rows, k, f0, f1), f0, f1
+
+
+def _substitute_rows(rows, k: int, f0, f1):
+    """``rows`` with ``x_k = -f0/f1``, each row times the power of ``f1`` that clears
+    it, then divided by the part of its content that divides that power (never by a
+    factor that could vanish where ``f1`` does not: the rank stays right at every point
+    with ``f1 != 0``)."""
     out = []
-    for row in q_rows:
+    for row in rows:
         deg = max((e.degrees()[k] for e in row if not e.is_zero()), default=0)
         new = [_substitute(e, k, f0, f1, deg) for e in row]
-        out.append(el.primitive(new))
-    return out, f0, f1
+        nonzero = [e for e in new if not e.is_zero()]
+        if not nonzero:
+            out.append(new)
+            continue
+        content = nonzero[0]
+        for e in nonzero[1:]:
+            content = content.gcd(e)
+        common = content.gcd(f1 ** deg) if not f1.is_constant() else \
+            content.context().constant(content.content())
+        if not common.is_one():
+            new = [e / common for e in new]
+        out.append(new)
+    return out
 
 
 def _split_linear(f, k: int):
@@ -422,7 +473,8 @@ def _substitute(p, k: int, f0, f1, deg: int):
 
 def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, base, depth,
                       parent) -> None:
-    """A factor linear in no variable: look for real and rational points on it."""
+    """A factor linear in no variable: its numbers over its function field (rank modulo
+    ``f``), a witness on it (rational, else a real algebraic point)."""
     names = _vars_of(ctx, f)
     real = _has_real_point(ctx, f, names)
     if real is False:
@@ -430,20 +482,24 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
         if text not in ctx.locus.dropped:
             ctx.locus.dropped.append(text)
         return
+    k = min((ctx.ring_names.index(n) for n in names if ctx.kinds[n][0] != "parameter"),
+            key=lambda i: (f.degrees()[i], i))
+    numbers = numbers_modulo(q_rows, ctx.model, ctx.row_contacts, Quotient(f, k))
+    if numbers == base:
+        return
+    comp = _component(ctx, equations + [f_text], numbers, None, "hypersurface" if depth == 0
+                      else "subvariety", drops, depth, parent,
+                      "exact over the component's function field (rank modulo its "
+                      "irreducible polynomial)", real=real is True)
+    if comp is None:
+        return
     point = _rational_point(ctx, f, names)
-    if point is None:
-        ctx.locus.unexplored.append(
-            f"{f_text} = 0: no rational point found, numbers not decided (depth {depth})")
-        return
-    values = _complete_point(ctx, point_so_far, point)
-    numbers = _numbers_at_values(ctx, values)
-    if numbers is None or numbers == base:
-        return
-    witness = _to_at(ctx, values)
-    _component(ctx, equations + [f_text], numbers, witness, "hypersurface" if depth == 0
-               else "subvariety", drops, depth, parent,
-               "exact at a rational point of the component (generic there with high "
-               "probability)")
+    if point is not None:
+        values = _complete_point(ctx, point_so_far, point)
+        if values is not None and _numbers_at_values(ctx, values) == numbers:
+            _attach_witness(ctx, comp, _to_at(ctx, values), numbers)
+    if comp.witness is None:
+        _algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
     ctx.locus.unexplored.append(
         f"inside {f_text} = 0: deeper drops not explored (no rational parametrization)")
 
@@ -490,9 +546,12 @@ def _name_of(ctx, symbol_name: str) -> str:
     return symbol_name
 
 
-def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent) -> None:
+def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
+              charts=()) -> None:
     """Common zeros of the remaining minor combinations (codimension 2 or more)."""
     free = [n for n in ctx.ring_names if n not in point_so_far]
+    rational_points: list[dict] = []
+    algebraic_points: list[tuple] = []
     for polys in rests:
         names_used = sorted({n for p in polys for n in _vars_of(ctx, p)},
                             key=ctx.ring_names.index)
@@ -504,40 +563,127 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent) 
             if note not in ctx.locus.unexplored:
                 ctx.locus.unexplored.append(note)
             continue
-        points, irrational = _solve_small(ctx, polys, names_used)
-        for text in irrational:
-            note = f"real points with irrational coordinates ({text}): numbers not decided"
+        points, algebraic, unresolved = _solve_small(ctx, polys, names_used)
+        for text in unresolved:
+            note = f"real points {text}: numbers not decided"
             if note not in ctx.locus.unexplored:
                 ctx.locus.unexplored.append(note)
-        for point in points:
-            values = _complete_point(ctx, point_so_far, point)
-            if values is None:
-                continue
-            numbers = _numbers_at_values(ctx, values)
-            if numbers is None or numbers == base:
-                continue
-            eqs = equations + [sp.sstr(v.denominator * ctx.symbols[n] - v.numerator)
-                               for n, v in point.items()]
-            if any(c.equations == eqs for c in ctx.locus.components):
-                continue
-            kind = "isolated" if len(point) == len(free) else "subvariety"
-            _component(ctx, eqs, numbers, _to_at(ctx, values), kind, {"Q"}, depth, parent,
-                       "exact at the point")
+        rational_points += points
+        algebraic_points += algebraic
+    for point in rational_points:
+        _decide_point(ctx, q_rows, point, None, equations, point_so_far, base, depth,
+                      parent, charts, free)
+    for x, g, values, eqs, alpha in algebraic_points:
+        _decide_point(ctx, q_rows, values, (x, g, eqs, alpha), equations, point_so_far,
+                      base, depth, parent, charts, free)
+
+
+def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,
+                  depth, parent, charts, free) -> None:
+    """The numbers on the set where some coordinates are fixed (rationals, or
+    polynomials over Q in a root ``x`` of ``g`` when ``algebraic = (x, g, equations,
+    alpha)``, ``alpha`` naming what ``x`` stands for), every
+    other free variable staying generic, decided exactly."""
+    quotient = None
+    if algebraic is not None:
+        x, g, _, _ = algebraic
+        quotient = Quotient(g, ctx.ring_names.index(x))
+    x = algebraic[0] if algebraic is not None else None
+    for c in charts:
+        c_here = _substitute_values(ctx, [[c]], values, x)[0][0]
+        if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
+            return  # outside the enclosing parametrization
+    rows = _substitute_values(ctx, q_rows, values, x)
+    if quotient is None:
+        numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    else:
+        numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+    if numbers == base:
+        return
+    eqs = list(equations)
+    if algebraic is not None:
+        eqs += [_text(ctx, e) for e in algebraic[2]]
+    else:
+        eqs += [_text(ctx, _linear_equation(ctx, n, v)) for n, v in values.items()]
+    dims = set(values) | ({x} if x is not None else set())
+    kind = "isolated" if len(dims) == len(free) else "subvariety"
+    if algebraic is None:
+        comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
+                          "exact at the point" if kind == "isolated" else
+                          "exact over the function field of the free variables")
+        if comp is None:
+            return
+        for offset in range(6):
+            full = _complete_point(ctx, point_so_far, values, offset)
+            if full is not None and _numbers_at_values(ctx, full) == numbers:
+                _attach_witness(ctx, comp, _to_at(ctx, full), numbers)
+                break
+        return
+    x, g, eq_polys, alpha = algebraic
+    condition = _algebraic_condition(ctx, x, g, values)
+    if equations:
+        inside = _condition(ctx, equations)
+        condition = " or ".join(f"{inside}, {part}" for part in condition.split(" or "))
+    m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
+                                                                sp.Symbol("alpha")))
+    comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
+                      f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
+                      "conjugate point at once)", condition=condition)
+    if comp is not None:
+        _attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
+
+
+def _as_poly(ctx, v, x: str | None):
+    """A coordinate value (``Fraction``, or ``fmpq_poly`` in ``x``) as ``(P, c)``:
+    an integer polynomial in the ring and a positive integer with ``v = P/c``."""
+    zctx = ctx.ring.zctx
+    if isinstance(v, Fraction):
+        return zctx.constant(v.numerator), v.denominator
+    k = ctx.ring_names.index(x)
+    num, den = v.numer(), int(v.denom())
+    terms = {}
+    for e, c in enumerate(num.coeffs()):
+        if c:
+            mon = [0] * len(ctx.ring_names)
+            mon[k] = e
+            terms[tuple(mon)] = int(c)
+    return zctx.from_dict(terms), den
+
+
+def _substitute_values(ctx, rows, values: dict, x: str | None = None):
+    """``rows`` with each variable in ``values`` replaced (rationals, or polynomials in
+    the algebraic variable ``x``), rows scaled by the cleared denominators. A value for
+    ``x`` itself (a polynomial in its own slot) goes first, so the others' values,
+    which are polynomials in ``x``, are not substituted again."""
+    ordered = sorted(values.items(), key=lambda nv: nv[0] != x)
+    for n, v in ordered:
+        num, den = _as_poly(ctx, v, x)
+        rows = _substitute_rows(rows, ctx.ring_names.index(n), -num,
+                                ctx.ring.zctx.constant(den))
+    return rows
 
 
 def _solve_small(ctx, polys, names: list[str]):
-    """Common zeros of ``polys`` in one or two variables: rational points, and the
-    real irrational ones described by their minimal polynomials. Resultants and
-    factorization over Z (python-flint), all exact."""
-    zctx = ctx.ring.zctx
+    """Common zeros of ``polys`` in one or two variables, exactly: the rational points,
+    the real algebraic ones as ``(x, g, {y: r(x)}, equations, alpha)`` (``g``
+    irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
+    and descriptions of what could not be resolved. Resultants and factorization over
+    Z (python-flint)."""
     x = names[0]
     if len(names) == 1:
         g = polys[0]
         for p in polys[1:]:
             g = g.gcd(p)
-        xs = _roots(ctx, g, x)
-        return [{x: r} for r in xs[0]], xs[1]
-    y = names[1]
+        rational, curved = _roots(ctx, g, x)
+        return [{x: r} for r in rational], [(x, f, {}, [f], x) for f in curved], []
+    return _solve_two(ctx, polys, names)
+
+
+def _solve_two(ctx, polys, names: list[str]):
+    """:func:`_solve_small` for two variables, eliminating the second: ``x`` must
+    generate each point's field (else the point is left unresolved)."""
+    zctx = ctx.ring.zctx
+    x, y = names
     combo = polys[1] if len(polys) == 2 else sum(
         (p * zctx.constant(ctx.rng.randint(1, 9)) for p in polys[1:]), zctx.constant(0))
     g = polys[0].resultant(combo, y)
@@ -546,53 +692,156 @@ def _solve_small(ctx, polys, names: list[str]):
             break
         g = g.gcd(polys[0].resultant(p, y))
     points: list[dict] = []
-    irrational: list[str] = []
+    algebraic: list[tuple] = []
+    unresolved: list[str] = []
     if g.is_zero() or g.is_constant():
-        return points, irrational
+        return points, algebraic, unresolved
     k = ctx.ring_names.index(x)
-    xs, irr = _roots(ctx, g, x)
-    irrational += irr
-    for x0 in xs:
+    rational, curved = _roots(ctx, g, x)
+    for x0 in rational:
         f0, f1 = zctx.constant(-x0.numerator), zctx.constant(x0.denominator)
         uni = None
         for p in polys:
-            deg = p.degrees()[k]
-            q = _substitute(p, k, f0, f1, deg)
+            q = _substitute(p, k, f0, f1, p.degrees()[k])
             uni = q if uni is None else uni.gcd(q)
-        ys, irr_y = _roots(ctx, uni, y)
+        ys, curved_y = _roots(ctx, uni, y)
         points += [{x: x0, y: y0} for y0 in ys]
-        irrational += [f"{x} = {x0}, {text}" for text in irr_y]
-    return points, irrational
+        algebraic += [(y, h, {x: x0}, [h, _linear_equation(ctx, x, x0)], y)
+                      for h in curved_y]
+    for h in curved:
+        field = NumberField(_univariate(ctx, h, x))
+        ky = ctx.ring_names.index(y)
+        common = field.squarefree(field.gcd([_coefficients_in(ctx, p, k, ky)
+                                             for p in polys]))
+        if len(common) == 2:
+            value = field.element(-common[0])
+            algebraic.append((x, h, {y: value}, [h, _value_equation(ctx, y, value, x)], x))
+        elif len(common) > 2:
+            sheared = _sheared(ctx, [*polys, h], x, y)
+            if sheared:
+                algebraic += sheared
+            else:
+                unresolved.append(f"where {_text(ctx, h)} = 0 and {len(common) - 1} values "
+                                  f"of {y} share each {x}")
+    return points, algebraic, unresolved
+
+
+def _sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
+    """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
+    (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
+    point's field. Returns ``(y, m(z), {y: z - c r(z), x: r(z)}, equations)`` with the
+    equations in the original coordinates (``m(y + c x)``, ``x - r(y + c x)``)."""
+    zctx = ctx.ring.zctx
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    gx, gy = zctx.gens()[kx], zctx.gens()[ky]
+    for c in tries:
+        moved = [_substitute(p, ky, c * gx - gy, zctx.constant(1), p.degrees()[ky])
+                 for p in polys]
+        elim = None
+        for p in moved[1:]:
+            r = moved[0].resultant(p, x) if moved[0].degrees()[kx] else moved[0]
+            elim = r if elim is None else elim.gcd(r)
+        if elim is None or elim.is_zero() or elim.is_constant():
+            continue
+        _, factors = elim.factor()
+        out, separated = [], True
+        for m, _e in factors:
+            if m.degrees()[kx] or m.is_constant():
+                continue
+            if not RealRoot.all_of(_univariate(ctx, m, y).coeffs()):
+                continue
+            field = NumberField(_univariate(ctx, m, y))
+            common = field.squarefree(field.gcd([_coefficients_in(ctx, p, ky, kx)
+                                                 for p in moved]))
+            if len(common) == 1:
+                continue
+            if len(common) > 2:
+                separated = False
+                break
+            r = field.element(-common[0])
+            z = flint.fmpq_poly([0, 1])
+            values = {y: field.element(z - c * r), x: r}
+            back = gy + c * gx
+            m_back = _substitute(_normalize(m), ky, -back, zctx.constant(1), m.degrees()[ky])
+            num, den = _as_poly(ctx, r, y)
+            x_eq = zctx.constant(den) * gx - _substitute(num, ky, -back, zctx.constant(1),
+                                                         num.degrees()[ky])
+            out.append((y, _normalize(m), values, [_normalize(m_back), x_eq],
+                        f"{y} {'+' if c > 0 else '-'} {abs(c) if abs(c) != 1 else ''}"
+                        f"{'*' if abs(c) != 1 else ''}{x}"))
+        if separated and out:
+            return out
+    return []
+
+
+def _linear_equation(ctx, name: str, value: Fraction):
+    zctx = ctx.ring.zctx
+    return zctx.constant(value.denominator) * zctx.gens()[ctx.ring_names.index(name)] - \
+        zctx.constant(value.numerator)
+
+
+def _value_equation(ctx, name: str, value, x: str):
+    """``den * name - P(x)`` for ``name = P(x)/den``."""
+    zctx = ctx.ring.zctx
+    num, den = _as_poly(ctx, value, x)
+    return zctx.constant(den) * zctx.gens()[ctx.ring_names.index(name)] - num
+
+
+def _univariate(ctx, g, x: str) -> flint.fmpq_poly:
+    k = ctx.ring_names.index(x)
+    coeffs = [0] * (g.degrees()[k] + 1)
+    for mon, c in g.to_dict().items():
+        coeffs[mon[k]] = int(c)
+    return flint.fmpq_poly(coeffs)
+
+
+def _coefficients_in(ctx, p, kx: int, ky: int) -> list:
+    """``p(x, y)`` as a list of polynomials in ``x`` (``fmpq_poly``), by power of y."""
+    by_y: dict[int, dict[int, int]] = {}
+    for mon, c in p.to_dict().items():
+        by_y.setdefault(mon[ky], {})[mon[kx]] = int(c)
+    out = []
+    for e in range(max(by_y) + 1):
+        terms = by_y.get(e, {})
+        coeffs = [0] * (max(terms, default=0) + 1)
+        for d, c in terms.items():
+            coeffs[d] = c
+        out.append(flint.fmpq_poly(coeffs))
+    return out
 
 
 def _roots(ctx, g, name: str):
     """Rational roots of a univariate polynomial ``g`` (in ``name``), and its
-    irreducible factors of higher degree that have real roots (as text)."""
+    irreducible factors of higher degree that have real roots (those without are
+    listed as dropped)."""
     if g.is_zero() or g.is_constant():
         return [], []
     k = ctx.ring_names.index(name)
     _, factors = g.factor()
-    roots, irrational = [], []
-    for f, _e in factors:
+    roots, curved = [], []
+    for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
         if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
             f1, f0 = _split_linear(f, k)
             roots.append(Fraction(-int(f0.leading_coefficient()) if not f0.is_zero() else 0,
                                   int(f1.leading_coefficient())))
-        else:
-            expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
-            if sp.Poly(expr, ctx.symbols[name]).count_roots() > 0:
-                irrational.append(f"{sp.sstr(expr)} = 0")
-    return roots, irrational
+        elif sum(f.degrees()) == f.degrees()[k]:
+            if RealRoot.all_of(_univariate(ctx, f, name).coeffs()):
+                curved.append(_normalize(f))
+            else:
+                text = f"{_text(ctx, f)} = 0 (no real points)"
+                if text not in ctx.locus.dropped:
+                    ctx.locus.dropped.append(text)
+    return roots, curved
 
 
 # --- points and witnesses ---------------------------------------------------------------
-def _complete_point(ctx, point_so_far: dict, point: dict[str, Fraction]):
+def _complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: int = 0):
     """A full point: the given coordinates, nice values for the others, then the
     parametrized coordinates of enclosing components (``x = -f0/f1``)."""
     values = dict(point)
     for n in ctx.ring_names:
         if n not in values and n not in point_so_far:
-            values[n] = _NICE[len(values) % len(_NICE)]
+            values[n] = _NICE[(len(values) + offset) % len(_NICE)]
     for n, (f0, f1) in reversed(list(point_so_far.items())):
         args = [values.get(k, Fraction(0)) for k in ctx.ring_names]
         den = _eval(f1, args)
@@ -661,26 +910,233 @@ def _to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
     return out
 
 
+# --- real algebraic witnesses -----------------------------------------------------------
+def _complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, values: dict,
+                        offset: int = 0) -> dict | None:
+    """A full point over ``Q(alpha)``: every variable but ``x`` as an element (a
+    polynomial in ``x`` of degree below ``deg g``); nice rationals for the free ones."""
+    full = {n: field.element(v if not isinstance(v, Fraction) else
+                             flint.fmpq(v.numerator, v.denominator))
+            for n, v in values.items()}
+    for n in ctx.ring_names:
+        if n != x and n not in full and n not in point_so_far:
+            v = _NICE[(len(full) + offset) % len(_NICE)]
+            full[n] = field.element(flint.fmpq(v.numerator, v.denominator))
+    for n, (f0, f1) in reversed(list(point_so_far.items())):
+        den = _eval_in(ctx, f1, full, x, field)
+        if den.is_zero():
+            return None
+        full[n] = field.element(-_eval_in(ctx, f0, full, x, field) * field.inverse(den))
+    return full
+
+
+def _eval_in(ctx, p, values: dict, x: str, field: NumberField):
+    """``p`` at a point over ``Q(alpha)`` (``x`` is alpha itself)."""
+    args = [flint.fmpq_poly([0, 1]) if n == x and n not in values else
+            values.get(n, flint.fmpq_poly(0))
+            for n in ctx.ring_names]
+    total = flint.fmpq_poly(0)
+    for mon, c in p.to_dict().items():
+        term = flint.fmpq_poly(int(c))
+        for a, e in zip(args, mon, strict=True):
+            if e:
+                term = field.element(term * a ** int(e))
+        total += term
+    return field.element(total)
+
+
+def _numbers_at_algebraic(ctx, x: str, g, full: dict) -> Numbers:
+    """The numbers at a point over ``Q(alpha)``, by a direct exact analysis: the rows of
+    ``Q`` with every free variable (nothing from the locus search) evaluated there."""
+    rows = _substitute_values(ctx, ctx.rows0, full, x)
+    return numbers_modulo(rows, ctx.model, ctx.row_contacts,
+                          Quotient(g, ctx.ring_names.index(x)))
+
+
+def _value_expr(v, root: sp.Expr) -> sp.Expr:
+    """An element of ``Q(alpha)`` (polynomial in alpha) at the real root ``root``."""
+    if isinstance(v, Fraction):
+        return sp.Rational(v.numerator, v.denominator)
+    coeffs = [sp.Rational(int(c.p), int(c.q)) for c in v.coeffs()]
+    return sp.radsimp(sp.expand(sum(c * root**i for i, c in enumerate(coeffs))))
+
+
+def _value_near(v, a: Fraction) -> Fraction:
+    if isinstance(v, Fraction):
+        return v
+    return sum((Fraction(int(c.p), int(c.q)) * a**i for i, c in enumerate(v.coeffs())),
+               Fraction(0))
+
+
+def _algebraic_point_text(ctx, values: dict, root: RealRoot, x: str,
+                          only: set[str] | None = None) -> dict[str, str]:
+    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf)."""
+    expr = root.expression()
+    out: dict[str, str] = {}
+    for n, (kind, name) in ctx.kinds.items():
+        if only is not None and n not in only:
+            continue
+        v = expr if n == x and n not in values else _value_expr(values[n], expr)
+        out[name] = sp.sstr(angle_of(v)) if kind == "revolute" else sp.sstr(v)
+    return out
+
+
+def _algebraic_condition(ctx, x: str, g, values: dict) -> str:
+    """The real points of an algebraic component, in angles where they read simply."""
+    names = {x, *values}
+    roots = RealRoot.all_of(_univariate(ctx, g, x).coeffs())
+    kinds = {name: kind for kind, name in ctx.kinds.values()}
+    parts = []
+    for root in roots:
+        text = _algebraic_point_text(ctx, values, root, x, only=names)
+        parts.append(", ".join(_readable(k, v, kinds[k]) for k, v in text.items()))
+    return " or ".join(parts)
+
+
+def _readable(name: str, exact: str, kind: str) -> str:
+    """``name = exact`` when short, else its value to 4 significant digits (in degrees
+    for an angle); the exact value stays in the witness."""
+    if len(exact) <= 32 and "CRootOf" not in exact:
+        return f"{name} = {exact}"
+    value = float(sp.sympify(exact).evalf(30))  # float-ok: display only
+    if kind == "revolute":
+        return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
+    return f"{name} \u2248 {value:.4g}"
+
+
+def _attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
+                              point_so_far: dict, numbers: Numbers,
+                              alpha: str | None = None) -> None:
+    """A witness at a real root of ``g``: exact coordinates (radicals or ``CRootOf``),
+    its numbers from a direct analysis over ``Q(alpha)``, and float checks on its float
+    image."""
+    field = NumberField(_univariate(ctx, g, x))
+    roots = RealRoot.all_of(field.g.coeffs())
+    if not roots:
+        return
+    for offset in range(6):
+        full = _complete_algebraic(ctx, point_so_far, x, field, values, offset)
+        if full is None:
+            continue
+        direct = _numbers_at_algebraic(ctx, x, g, full)
+        if direct != numbers:
+            continue
+        root = roots[0]
+        point = _algebraic_point_text(ctx, full, root, x)
+        given = {**_fixed_at(ctx), **point}
+        order = [j.name for j in ctx.model.joints] + [p.name for p in ctx.model.parameters]
+        at = {k: given[k] for k in order if k in given}
+        a = root.approximation()
+        near = {n: (a if n == x and n not in full else _value_near(full[n], a))
+                for n in ctx.ring_names}
+        approx_at = _to_at(ctx, near)
+        comp.algebraic_witness = {
+            "point": at,
+            "alpha": alpha or x,
+            "root_of": sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(
+                ctx.symbols[x], sp.Symbol("alpha"))),
+            "root": sp.sstr(root.expression()),
+            "interval": [str(root.lo), str(root.hi)],
+            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+                       for k, v in point.items()},
+        }
+        comp.witness_checked = True
+        comp.meaning = _count_meaning(ctx, numbers, comp.changes)
+        if approx_at is not None:
+            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
+            comp.float_checks = _float_image_checks(ctx, approx_at, analysis, numbers,
+                                                    comp.equations)
+        return
+
+
+def _algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
+                          numbers: Numbers) -> None:
+    """A real algebraic witness on the hypersurface ``f = 0``: nice rationals for the
+    other variables, ``x_k`` a real root of an irreducible factor of what is left."""
+    x = ctx.ring_names[k]
+    others = [n for n in _vars_of(ctx, f) if n != x]
+    zctx = ctx.ring.zctx
+    for values in itertools.islice(itertools.product(_NICE, repeat=len(others)), 30):
+        point = dict(zip(others, values, strict=True))
+        h = f
+        for n, v in point.items():
+            j = ctx.ring_names.index(n)
+            h = _substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+                            h.degrees()[j])
+        if h.is_zero() or h.degrees()[k] == 0:
+            continue
+        _, curved = _roots(ctx, h, x)
+        for g in curved:
+            _attach_algebraic_witness(ctx, comp, x, g, point, point_so_far, numbers)
+            if comp.algebraic_witness is not None:
+                return
+
+
+def _fixed_at(ctx) -> dict[str, str]:
+    """The joints and parameters the locus was asked to hold fixed, in ``--at`` syntax."""
+    out: dict[str, str] = {}
+    config = ctx.config
+    for j in ctx.model.joints:
+        if j.name in config.revolute:
+            out[j.name] = angle_text(*config.revolute[j.name])
+        elif j.name in config.prismatic:
+            out[j.name] = sp.sstr(config.prismatic[j.name])
+    for p, v in config.parameters.items():
+        out[p] = sp.sstr(v)
+    return out
+
+
+def _count_meaning(ctx, numbers: Numbers, changes) -> list[str]:
+    from .interpret import count_sentences
+
+    return [s for s in count_sentences(numbers, len(ctx.model.joints))
+            if s.split(" ")[0] in changes]
+
+
+def _float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Numbers,
+                        comp_equations: list[str]):
+    """Float checks at the float image of an irrational witness (a rational point
+    within 1e-40 of it stands in for it; its float64 image is the same), where the
+    exact numbers are the witness's own."""
+    checks = _float_checks(ctx, approx_at, analysis, comp_equations)
+    uniform = len(ctx.model.parameters) <= 1
+    out = []
+    for c in checks:
+        if c.distance == 0:
+            if c.scale != checks[0].scale and not uniform:
+                continue
+            c.exact = numbers.as_dict()
+        out.append(c)
+    return out
+
+
 # --- components -------------------------------------------------------------------------
 def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, parent,
-               decided, condition: str | None = None) -> Component | None:
+               decided, condition: str | None = None, real: bool = True
+               ) -> Component | None:
     if any(sorted(c.equations) == sorted(equations) for c in ctx.locus.components):
         return None
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
     changes = {k: (generic[k], here[k]) for k in generic if generic[k] != here[k]}
-    comp = Component(equations=equations, numbers=here, witness=witness, real=True,
+    comp = Component(equations=equations, numbers=here, witness=None, real=real,
                      kind=kind, condition=condition or _condition(ctx, equations),
                      drops=_drops_text(
                          drops), changes=changes, decided=decided, depth=depth,
                      parent=parent)
     if witness is not None:
-        analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
-        comp.witness_checked = analysis.numbers == numbers
-        comp.meaning = _meaning(analysis, changes)
-        comp.float_checks = _float_checks(ctx, witness, analysis)
+        _attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
     return comp
+
+
+def _attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbers) -> None:
+    """A rational witness, checked by a direct exact analysis, with its float checks."""
+    analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
+    comp.witness = witness
+    comp.witness_checked = analysis.numbers == numbers
+    comp.meaning = _meaning(analysis, {k: tuple(v) for k, v in comp.changes.items()})
+    comp.float_checks = _float_checks(ctx, witness, analysis, comp.equations)
 
 
 def _meaning(analysis, changes) -> list[str]:
@@ -724,13 +1180,20 @@ def _read_equation(ctx, eq: str) -> str:
     return f"{eq} = 0"
 
 
-def _float_checks(ctx, witness: dict[str, str], analysis) -> list[FloatCheck]:
-    """Float ranks at the witness, at points near it, and with lengths rescaled."""
+def _float_checks(ctx, witness: dict[str, str], analysis,
+                  equations: list[str] = ()) -> list[FloatCheck]:
+    """Float ranks at the witness, at points near it, and with lengths rescaled. The
+    nearby points move a revolute joint that the component's equations involve (so they
+    leave the component)."""
     checks = []
     scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
                              float_numbers(analysis)))
-    joint = next((name for kind, name in ctx.kinds.values() if kind == "revolute"), None)
+    used = {str(s) for eq in equations for s in sp.sympify(eq, locals={
+        str(v): v for v in ctx.symbols.values()}).free_symbols}
+    revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
+    joint = next((name for n, name in revolute if str(ctx.symbols[n]) in used),
+                 revolute[0][1] if revolute else None)
     for distance in _FLOAT_DISTANCES:
         if joint is None:
             break

@@ -468,6 +468,11 @@ def _label(k: int, c: Component) -> str:
 
 def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
                 ) -> tuple[float, float] | None:  # float-ok
+    if not c.witness and c.algebraic_witness:
+        approx = c.algebraic_witness.get("approx", {})
+        if all(j in approx for j in pair):
+            return float(approx[pair[0]]), float(approx[pair[1]])  # float-ok: display
+        return None
     if not c.witness or any(j not in c.witness for j in pair):
         return None
     out = []

@@ -73,6 +73,11 @@ class Component:
         component.
     parent
         Index (in :attr:`Locus.components`) of the component this one lies in.
+    algebraic_witness
+        When no rational witness exists: a real point with algebraic coordinates,
+        ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
+        "-2 + sqrt(3)", "interval": [lo, hi], "approx": {...}}`` (exact texts; the
+        ``root_of`` polynomial is irreducible, the root the one in ``interval``).
     """
 
     equations: list[str]
@@ -89,6 +94,7 @@ class Component:
     float_checks: list[FloatCheck] = field(default_factory=list)
     depth: int = 0
     parent: int | None = None
+    algebraic_witness: dict | None = None
 
     def to_json(self) -> dict:
         out = asdict(self)

@@ -42,6 +42,7 @@ import sympy as sp
 from . import kinematics
 from .configuration import Configuration
 from .exact import elimination as el
+from .exact.quotient import eliminate_modulo, rank_modulo
 from .exact.ratfunc import RatFunc
 from .exact.sympy_bridge import (
     columns_to_sympy,
@@ -556,6 +557,46 @@ class _ArmMap:
             q = [qi - factor * RatFunc.poly(vi) if not vi.is_zero() else qi
                  for qi, vi in zip(q, v, strict=True)]
         return q
+
+
+def numbers_from_ranks(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> Numbers:
+    """The seven numbers of a system with ``m`` constraint rows and ``r`` joints from
+    the ranks of ``Q``, ``Gt^T`` and ``Dt``.
+
+    Example
+    -------
+    >>> numbers_from_ranks(6, 2, 6, 5, 2).as_dict()    # paper case 1, hard contacts
+    {'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
+    """
+    nm, nr = 6 + r - rank_q, r - rank_dt
+    return Numbers(Nm=nm, Nc=nm - nr, Ni=6 - rank_gt, Nr=nr, Ng=m - rank_gt,
+                   Nd=m - rank_dt, Nh=m - rank_q)
+
+
+def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> Numbers:
+    """The numbers at the generic point of the component ``f = 0`` of an irreducible
+    ``f`` (a :class:`~coopkin_sym.exact.quotient.Quotient`), exactly: ranks over its
+    function field (or, for a univariate ``f``, at its roots, which are conjugate).
+
+    ``rank Q`` is found arm by arm: each arm's joint columns are eliminated from its own
+    rows, then the object rows left over from every arm are ranked together.
+    """
+    gt = [row[:6] for row in q_rows]
+    rank_gt = rank_modulo(gt, 6, quotient) if gt else 0
+    owners = [model.contacts[c].arm for c in row_contacts]
+    leftover = [gt[i] for i, a in enumerate(owners) if a is None]
+    rank_dt = 0
+    for a, arm in enumerate(model.arms):
+        off = 6 + model.joint_offset(a)
+        n = len(arm.joints)
+        rows = [q_rows[i][off:off + n] + gt[i] for i, o in enumerate(owners) if o == a]
+        if not rows:
+            continue
+        pivots, left = eliminate_modulo(rows, range(n), quotient)
+        rank_dt += pivots
+        leftover += [r[n:] for r in left]
+    rank_q = rank_dt + (rank_modulo(leftover, 6, quotient) if leftover else 0)
+    return numbers_from_ranks(len(q_rows), len(model.joints), rank_q, rank_gt, rank_dt)
 
 
 def analyze(model: Model, config: Configuration) -> Analysis:

@@ -206,6 +206,17 @@ def _float_cell(c: Component, generic: Mapping[str, int]) -> list[tuple[str, str
     return [("strong", f"{wrong}/{len(verdicts)} wrong"), _t(": " + ", ".join(kinds))]
 
 
+def _algebraic_witness_cell(w: Mapping) -> list:
+    """An algebraic witness: exact in ``--at`` syntax when short, else its value to 12
+    digits (the exact point is in the component's details)."""
+    point = w["point"]
+    if all(len(str(v)) <= 32 and "CRootOf" not in str(v) for v in point.values()):
+        return [("at", witness_text(point))]
+    approx = dict(point)
+    approx.update({k: v for k, v in w.get("approx", {}).items()})
+    return [_t("\u2248 "), ("at", witness_text(approx))]
+
+
 def _components_table(locus: Locus) -> _Table:
     rows = []
     for k, c in enumerate(locus.components):
@@ -216,6 +227,8 @@ def _components_table(locus: Locus) -> _Table:
         if not c.real:
             where.append(_t(" (no real points)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
+        if not c.witness and c.algebraic_witness:
+            witness = _algebraic_witness_cell(c.algebraic_witness)
         rows.append([[_t(name)], where, [_t(KIND_WORDS.get(c.kind, c.kind))],
                      *_numbers_cells(c, locus.generic), witness,
                      _float_cell(c, locus.generic)])
@@ -268,6 +281,17 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
                    if c.witness_checked else "; not checked by a direct analysis")
         items.append([("strong", "Witness:"), _t(" "), ("at", witness_text(c.witness)),
                       _t(checked)])
+    elif c.algebraic_witness:
+        w = c.algebraic_witness
+        checked = ("; a direct exact analysis over Q(alpha) there gives the same numbers"
+                   if c.witness_checked else "")
+        items.append([("strong", "Witness:"), _t(" none with rational coordinates; a real "
+                                                  "point with algebraic ones: "),
+                      *_algebraic_witness_cell(w), _t(checked)])
+        items.append([("strong", "Exact point:"), _t(f" alpha = {w['alpha']} is the root "
+                                                      f"of "), ("eq0", w["root_of"]),
+                      _t(f" in ({w['interval'][0]}, {w['interval'][1]}]: alpha = "
+                         f"{w['root']}")])
     else:
         items.append([("strong", "Witness:"), _t(" "), _t("none with rational coordinates")])
     if c.decided:
@@ -605,7 +629,8 @@ _TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "
                 "#": r"\#", "^": r"\textasciicircum{}", "_": r"\_", "%": r"\%",
                 "~": r"\textasciitilde{}", "\u2192": r"$\to$", "\u00b1": r"$\pm$",
                 "<": r"$<$", ">": r"$>$", "|": r"$|$", "\u2260": r"$\neq$",
-                "\u2264": r"$\leq$", "\u2265": r"$\geq$"}
+                "\u2264": r"$\leq$", "\u2265": r"$\geq$", "\u2248": r"$\approx$",
+                "\u00b0": r"$^\circ$"}
 
 
 def _tex_escape(text: str) -> str:
@@ -672,9 +697,12 @@ def _tex_side(text: str) -> str | None:
 
 
 def _tex_cond(text: str) -> str:
-    """A condition in angles (``q1 = q2 = -pi/2``, ``q2 = ±pi/2, q1 = 0``) in math."""
+    """A condition in angles (``q1 = q2 = -pi/2``, ``q2 = ±pi/2, q1 = 0``) in math;
+    alternatives joined by ``or`` are rendered one by one."""
+    if " or " in text:
+        return " or ".join(_tex_cond(part) for part in text.split(" or "))
     pieces = []
-    for clause in re.split(r",\s*|\s+and\s+", text):
+    for clause in re.split(r",\s*|\s+and\s+|\s+or\s+", text):
         sides = [_tex_side(s) for s in clause.split("=")]
         if len(sides) < 2 or any(s is None for s in sides):
             return _tex_code(text)

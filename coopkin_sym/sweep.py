@@ -53,7 +53,7 @@ from .configuration import Configuration, ConfigurationError, split_assignments
 from .exact import elimination as el
 from .exact import modular
 from .exactnum import NumberError, _parse_text, parse_angle
-from .mobility import NUMBER_NAMES, Numbers
+from .mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
 from .model import Model
 
 if TYPE_CHECKING:
@@ -477,9 +477,7 @@ class Compiled:
         return Value(sp.sstr(d), int(d.p), int(d.q))
 
     def _numbers(self, rq: int, r6: int, rr: int) -> Numbers:
-        m, r = self.m, self.r
-        nm, nr = 6 + r - rq, r - rr
-        return Numbers(Nm=nm, Nc=nm - nr, Ni=6 - r6, Nr=nr, Ng=m - r6, Nd=m - rr, Nh=m - rq)
+        return numbers_from_ranks(self.m, self.r, rq, r6, rr)
 
     def value(self, joint: str, value) -> Value:
         """The exact :class:`Value` of ``joint`` for ``value`` (an angle in SymPy syntax,

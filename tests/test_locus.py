@@ -5,14 +5,25 @@ from __future__ import annotations
 import json
 
 import pytest
+import sympy as sp
+import yaml
+from independent import at_from_text, reference_analysis
+from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
+import coopkin_sym.examples
 from coopkin_sym.locus import LocusError, compute_locus
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 # both links on the contact line: the object gains a rotation about z (checked by
 # hand in tests/test_mobility.py::test_singular_configuration_found_exactly)
 CASE1_ON_LINE = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
+# c1 and c2 at the same point: two point contacts make a spherical joint, so with the
+# joints locked the object can still turn about that point (Ni = 3)
+CASE1_COINCIDENT = {"Nm": 3, "Nc": 3, "Ni": 3, "Nr": 0, "Ng": 3, "Nd": 4, "Nh": 1}
+ON_LINE = {("t_q1 - 1", "t_q2 - 1"), ("t_q1 - 1", "t_q2 + 1"), ("t_q1 + 1", "t_q2 - 1"),
+           ("t_q1 + 1", "t_q2 + 1")}
+COINCIDENT = ("t_q1 + t_q2", "t_q1**2 + 4*t_q1 + 1")
 
 
 @pytest.fixture(scope="module")
@@ -20,48 +31,82 @@ def case1():
     return compute_locus(coopkin_sym.load("paper-case1-hard"))
 
 
-def test_case1_finds_exactly_the_four_isolated_configurations(case1):
+def test_case1_finds_exactly_the_five_isolated_families(case1):
+    # hand check: c1 = L(-sin q1, cos q1), c2 = L(1 - sin q2, cos q2).
+    # * both links along the contact line x: q1, q2 = +-pi/2 (four points);
+    # * c1 = c2: cos q1 = cos q2 and sin q2 - sin q1 = 1, so q2 = -q1 and
+    #   sin q1 = -1/2: q1 = -pi/6 or -5pi/6, i.e. t1 = tan(q1/2) = -2 +- sqrt(3), the
+    #   roots of t^2 + 4t + 1, with t2 = -t1. No rational point: decided over Q(sqrt 3).
     assert case1.generic == CASE1_GENERIC
     found = {tuple(sorted(c.equations)): c for c in case1.components}
-    expected = {("t_q1 - 1", "t_q2 - 1"), ("t_q1 - 1", "t_q2 + 1"),
-                ("t_q1 + 1", "t_q2 - 1"), ("t_q1 + 1", "t_q2 + 1")}
-    assert set(found) == expected
-    for c in case1.components:
-        assert c.kind == "isolated" and c.real
-        assert c.numbers == CASE1_ON_LINE
-        assert c.changes == {"Nm": (2, 3), "Nc": (2, 3), "Nh": (0, 1)}
-        assert c.witness_checked
+    assert set(found) == ON_LINE | {COINCIDENT}
+    for key, c in found.items():
+        assert c.kind == "isolated" and c.real and c.witness_checked
+        if key in ON_LINE:
+            assert c.numbers == CASE1_ON_LINE
+            assert c.changes == {"Nm": (2, 3), "Nc": (2, 3), "Nh": (0, 1)}
+    c = found[COINCIDENT]
+    assert c.numbers == CASE1_COINCIDENT
+    assert c.condition == "q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6"
+    assert c.decided.startswith("exact over Q(alpha), alpha = t_q1 a root of "
+                                "alpha**2 + 4*alpha + 1")
+    assert c.witness is None  # no rational point (DESIGN: witness only when rational)
+    w = c.algebraic_witness
+    assert w["point"] == {"L": "1", "q1": "-5*pi/6", "q2": "5*pi/6"}
+    assert w["root"] == "-2 - sqrt(3)" and w["root_of"] == "alpha**2 + 4*alpha + 1"
+    assert c.meaning[2].startswith("Ni = 3")
 
 
-def test_case1_witnesses_are_exact_and_confirmed_by_a_direct_analysis(case1):
-    system = coopkin_sym.load("paper-case1-hard")
+def _ranks_over_the_algebraic_numbers(q: sp.Matrix) -> tuple[int, int, int]:
+    """Ranks of Q, H G^T and H D in the smallest number field holding the entries."""
+    def rank(m):
+        return DomainMatrix.from_Matrix(m, extension=True).rank()
+    return rank(q), rank(q[:, :6]), rank(q[:, 6:])
+
+
+def test_case1_witnesses_are_confirmed_by_an_independent_analysis(case1):
+    model = yaml.safe_load(coopkin_sym.examples.example_path(
+        "paper-case1-hard").read_text())
     conditions = set()
     for c in case1.components:
-        assert set(c.witness) == {"q1", "q2", "L"}
-        assert c.witness["q1"] in ("pi/2", "-pi/2") and c.witness["q2"] in ("pi/2", "-pi/2")
-        direct = system.analyze(",".join(f"{k}={v}" for k, v in c.witness.items()))
-        assert direct.numbers.as_dict() == c.numbers
-        conditions.add(c.condition)
+        if c.witness is not None:
+            assert set(c.witness) == {"q1", "q2", "L"}
+            assert c.witness["q1"] in ("pi/2", "-pi/2")
+            assert c.witness["q2"] in ("pi/2", "-pi/2")
+            ref = reference_analysis(model, at_from_text(model, ",".join(
+                f"{k}={v}" for k, v in c.witness.items())))
+            assert {k: ref[k] for k in c.numbers} == c.numbers
+            conditions.add(c.condition)
+            continue
+        # the irrational witness, and the other real point of the family, in radicals
+        for q1, q2 in ((-5 * sp.pi / 6, 5 * sp.pi / 6), (-sp.pi / 6, sp.pi / 6)):
+            ref = reference_analysis(model, {"q1": (sp.cos(q1), sp.sin(q1)),
+                                             "q2": (sp.cos(q2), sp.sin(q2)), "L": 1})
+            rq, rg, rd = _ranks_over_the_algebraic_numbers(ref["Q"])
+            assert (rq, rg, rd) == (5, 3, 2)          # Nm = 8 - 5, Ni = 6 - 3, Nr = 0
+            assert c.numbers["Nm"] == 8 - rq and c.numbers["Ni"] == 6 - rg
     assert "q1 = -pi/2, q2 = -pi/2" in conditions
 
 
-def test_case1_drops_non_real_factors_and_states_its_limits(case1):
+def test_case1_drops_non_real_factors_and_leaves_nothing_unexplored(case1):
     assert "t_q1**2 + 1 = 0 (no real points)" in case1.dropped
-    # the configurations where c1 and c2 coincide have irrational coordinates
-    assert "real points with irrational coordinates (t_q1**2 + 4*t_q1 + 1 = 0): numbers " \
-        "not decided" in case1.unexplored
+    assert case1.unexplored == []
     assert any("L = 1" in n for n in case1.notes)
 
 
 def test_float_rank_tests_fail_near_the_locus_with_rescaled_lengths(case1):
     summary = case1.float_summary()
     assert summary["false_singular"] > 0
-    bad = [f for c in case1.components for f in c.float_checks if not f.agree]
+    bad = [(c, f) for c in case1.components for f in c.float_checks if not f.agree]
     # every disagreement is 1e-12 rad from a singular configuration, lengths rescaled:
-    # numpy calls a regular configuration singular
+    # numpy calls a regular configuration singular, with the numbers of the component
     assert bad and all(f.distance == 1e-12 and f.scale in ("L=1/1000", "L=1000")
-                       for f in bad)
-    assert all(f.exact == CASE1_GENERIC and f.float["Nm"] == 3 for f in bad)
+                       for _, f in bad)
+    # floats see motions that are not there (larger Nm or Ni), mostly the component's
+    assert all(f.exact == CASE1_GENERIC for _, f in bad)
+    assert all(f.float["Nm"] > 2 or f.float["Ni"] > 1 for _, f in bad)
+    assert sum(f.float == c.numbers for c, f in bad) >= len(bad) - 1
+    assert len(bad) == summary["false_singular"] == 10
     # at the singular configurations themselves floats agree
     assert all(f.agree for c in case1.components for f in c.float_checks if f.distance == 0)
 

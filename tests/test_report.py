@@ -100,14 +100,15 @@ def case1() -> Locus:
 # --- the engine's result, as the reports see it ----------------------------------------
 
 
-def test_case1_hard_real_locus_is_four_isolated_configurations(case1):
+def test_case1_hard_real_locus_is_five_isolated_families(case1):
     assert case1.generic == GENERIC
     assert sorted(tuple(c.equations) for c in case1.components) == [
         ("t_q1 + 1", "t_q2 + 1"), ("t_q1 + 1", "t_q2 - 1"),
-        ("t_q1 - 1", "t_q2 + 1"), ("t_q1 - 1", "t_q2 - 1")]
+        ("t_q1 - 1", "t_q2 + 1"), ("t_q1 - 1", "t_q2 - 1"),
+        ("t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2")]
     for c in case1.components:
         assert c.kind == "isolated" and c.real
-        assert c.numbers == ON_LINE
+    assert [c.numbers == ON_LINE for c in case1.components] == [True] * 4 + [False]
     # the brief's check: a direct analysis at the witness gives the same numbers
     c = next(c for c in case1.components if c.equations == ["t_q1 + 1", "t_q2 + 1"])
     assert c.witness == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
@@ -189,8 +190,14 @@ def test_markdown_links_the_plots_only_when_given():
 
 def test_markdown_of_the_real_case1(case1):
     lines = render_markdown(case1).splitlines()
-    assert ("| #1 | `q1 = pi/2, q2 = pi/2` | isolated point | **3** | **3** | 1 | 0 | 1 | 4 "
+    assert ("| #4 | `q1 = pi/2, q2 = pi/2` | isolated point | **3** | **3** | 1 | 0 | 1 | 4 "
             "| **1** | `q1=pi/2,q2=pi/2,L=1` |") in "\n".join(lines)
+    # c1 = c2: irrational, decided over Q(sqrt 3), its real points read as angles
+    assert ("| #5 | `q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6` | isolated point "
+            "| **3** | **3** | **3** | 0 | **3** | 4 | **1** | `q1=-5*pi/6,q2=5*pi/6,L=1` |"
+            ) in "\n".join(lines)
+    assert ("- **Exact point:** alpha = t\\_q1 is the root of `alpha**2 + 4*alpha + 1 = 0` "
+            "in (-4, -3\\]: alpha = -2 - sqrt(3)") in lines
     assert "- **Equations:** `t_q1 - 1 = 0`, `t_q2 - 1 = 0`" in lines
 
 
@@ -317,9 +324,17 @@ def artist(fig, gid: str):
 
 def test_plot_case1_one_point_per_component_at_the_exact_places(case1):
     fig = plot_components(case1, load("paper-case1-hard"))
-    assert component_gids(fig) == [f"component:{k + 1}" for k in range(4)]
+    assert component_gids(fig) == [f"component:{k + 1}" for k in range(5)]
     half = math.pi / 2
-    for k, c in enumerate(case1.components):
+    # c1 = c2 (isolated, irrational): both real points, the witness at the first
+    xs, ys = artist(fig, "component:5").get_data()
+    assert sorted((float(x), float(y)) for x, y in zip(xs, ys, strict=True)) == [
+        pytest.approx((-5 * math.pi / 6, 5 * math.pi / 6), abs=1e-9),
+        pytest.approx((-math.pi / 6, math.pi / 6), abs=1e-9)]
+    wx, wy = artist(fig, "witness:5").get_data()
+    assert (float(wx[0]), float(wy[0])) == pytest.approx((-5 * math.pi / 6, 5 * math.pi / 6),
+                                                         abs=1e-9)
+    for k, c in enumerate(case1.components[:4]):
         xs, ys = artist(fig, f"component:{k + 1}").get_data()
         expected = (half if c.equations[0] == "t_q1 - 1" else -half,
                     half if c.equations[1] == "t_q2 - 1" else -half)
@@ -441,12 +456,12 @@ def test_cli_locus_writes_the_report(tmp_path):
     result = runner.invoke(app, ["locus", "paper-case1-hard", "-o", str(out),
                                  "--max-depth", "1", "--timeout", "600", "--no-progress"])
     assert result.exit_code == 0, result.output
-    assert result.stdout.startswith("4 components (4 real)")
+    assert result.stdout.startswith("5 components (5 real)")
     data = json.loads(out.read_text())
     assert data["generic"] == GENERIC
     assert {tuple(c["equations"]) for c in data["components"]} == {
         ("t_q1 - 1", "t_q2 - 1"), ("t_q1 - 1", "t_q2 + 1"), ("t_q1 + 1", "t_q2 - 1"),
-        ("t_q1 + 1", "t_q2 + 1")}
+        ("t_q1 + 1", "t_q2 + 1"), ("t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2")}
 
 
 def test_cli_locus_errors_write_nothing(tmp_path):

@@ -1,0 +1,127 @@
+"""Real algebraic numbers: a root of an irreducible integer polynomial, exactly.
+
+A :class:`RealRoot` is the irreducible polynomial and an isolating interval with
+rational ends, so it can be compared, refined to any precision and written out
+exactly: in radicals for degree two (``-2 + sqrt(3)``), as a SymPy ``CRootOf``
+otherwise. As a tangent half-angle it reads as an angle, recognized exactly when it is
+a rational multiple of pi (``-2 + sqrt(3)`` is ``tan(-pi/12)``).
+
+Example
+-------
+>>> roots = RealRoot.all_of([1, 4, 1])           # t^2 + 4 t + 1
+>>> [str(r.expression()) for r in roots]
+['-2 - sqrt(3)', '-2 + sqrt(3)']
+>>> [r.angle_text() for r in roots]
+['-5*pi/6', '-pi/6']
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy as sp
+
+_T = sp.Symbol("t")
+
+
+@dataclass(frozen=True)
+class RealRoot:
+    """The root in ``(lo, hi]`` of the irreducible polynomial with integer
+    coefficients ``coeffs`` (lowest degree first); ``index`` is its rank among the real
+    roots, smallest first."""
+
+    coeffs: tuple[int, ...]
+    lo: Fraction
+    hi: Fraction
+    index: int
+
+    @classmethod
+    def all_of(cls, coeffs) -> list[RealRoot]:
+        """Every real root of the irreducible polynomial ``coeffs``, in increasing
+        order."""
+        poly = cls._poly_of(coeffs)
+        out = []
+        for i, ((lo, hi), _m) in enumerate(poly.intervals()):
+            out.append(cls(tuple(int(c) for c in coeffs), Fraction(int(lo.p), int(lo.q)),
+                           Fraction(int(hi.p), int(hi.q)), i))
+        return out
+
+    @staticmethod
+    def _poly_of(coeffs) -> sp.Poly:
+        return sp.Poly([int(c) for c in reversed(list(coeffs))], _T)
+
+    @property
+    def degree(self) -> int:
+        return len(self.coeffs) - 1
+
+    def polynomial_text(self, name: str) -> str:
+        """The polynomial in the variable ``name``."""
+        return sp.sstr(self._poly_of(self.coeffs).as_expr().subs(_T, sp.Symbol(name)))
+
+    def refine(self, width: Fraction) -> tuple[Fraction, Fraction]:
+        """An isolating interval of at most ``width``."""
+        if self.lo == self.hi or self.hi - self.lo <= width:
+            return self.lo, self.hi
+        lo, hi = self._poly_of(self.coeffs).refine_root(
+            sp.Rational(self.lo.numerator, self.lo.denominator),
+            sp.Rational(self.hi.numerator, self.hi.denominator),
+            eps=sp.Rational(width.numerator, width.denominator))
+        return Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q))
+
+    def approximation(self, width: Fraction = Fraction(1, 10**40)) -> Fraction:
+        """A rational within ``width`` of the root."""
+        lo, hi = self.refine(width)
+        return (lo + hi) / 2
+
+    def __float__(self) -> float:
+        return float(self.approximation(Fraction(1, 10**20)))  # float-ok: display only
+
+    def expression(self) -> sp.Expr:
+        """The root as an exact SymPy expression (radicals up to degree two)."""
+        poly = self._poly_of(self.coeffs)
+        if self.degree == 1:
+            return sp.Rational(-self.coeffs[0], self.coeffs[1])
+        if self.degree == 2:
+            for r in sorted(sp.roots(poly, _T), key=lambda e: float(e)):  # float-ok: order
+                if self._contains(r):
+                    return r
+        return sp.CRootOf(poly.as_expr(), self.index)
+
+    def _contains(self, expr: sp.Expr) -> bool:
+        lo = sp.Rational(self.lo.numerator, self.lo.denominator)
+        hi = sp.Rational(self.hi.numerator, self.hi.denominator)
+        return bool(expr > lo) and bool(expr <= hi)
+
+    def angle(self) -> sp.Expr:
+        """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``: see :func:`angle_of`."""
+        return angle_of(self.expression())
+
+    def angle_text(self) -> str:
+        """:meth:`angle` in ``--at`` syntax."""
+        return sp.sstr(self.angle())
+
+
+def angle_of(tangent: sp.Expr) -> sp.Expr:
+    """``2 atan(tangent)`` for an algebraic ``tangent``, as a rational multiple of pi
+    when it is one (checked exactly: ``tan(q/2) - tangent`` has minimal polynomial
+    ``t``), else left as ``2*atan(tangent)``.
+
+    Example
+    -------
+    >>> angle_of(sp.sqrt(2) - 1), angle_of(sp.sqrt(2))
+    (pi/4, 2*atan(sqrt(2)))
+    """
+    plain = 2 * sp.atan(tangent)
+    try:
+        guess = sp.nsimplify(sp.simplify(plain))
+        if not (guess / sp.pi).is_Rational:
+            return plain
+        if sp.minimal_polynomial(sp.tan(guess / 2) - tangent, _T) != _T:
+            return plain
+    except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):
+        return plain
+    return guess
+
+
+__all__ = ["RealRoot", "angle_of"]

@@ -1,0 +1,124 @@
+"""Exact rank modulo an irreducible polynomial: numbers on a curved component.
+
+For an irreducible integer polynomial ``f`` of degree ``d > 0`` in the variable
+``x_k``, the ring ``Z[x]/(f)`` is a domain and its fraction field is the function field
+of the hypersurface ``f = 0`` (the number field ``Q(alpha)``, ``f(alpha) = 0``, when
+``f`` is univariate). A polynomial is zero there exactly when ``f`` divides it, which
+the pseudo-remainder by ``f`` in ``x_k`` decides. Fraction-free elimination with that
+zero test gives the rank of a polynomial matrix at the generic point of the component,
+or, for a univariate ``f``, at every root of ``f`` at once (the roots are conjugate, so
+the rank is the same at each).
+
+Example
+-------
+>>> import flint
+>>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+>>> x, y = ctx.gens()
+>>> circle = Quotient(x**2 + y**2 - 1, 0)         # reduce in x
+>>> circle.is_zero(x**4 - (1 - y**2)**2)
+True
+>>> rows = [[x, y], [1 - y, x]]    # det = x^2 + y^2 - y = 1 - y on the circle
+>>> rank_modulo(rows, 2, circle)
+2
+>>> rank_modulo(rows, 2, Quotient(x**2 + y**2 - y, 0))   # det vanishes on this one
+1
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import flint
+
+from .elimination import primitive
+
+Poly = flint.fmpz_mpoly
+
+
+class Quotient:
+    """``Z[x]/(f)`` with ``f`` irreducible of positive degree in variable ``k``.
+
+    Elements are kept reduced (degree below ``deg_k f`` in ``x_k``) by pseudo-division;
+    a reduced element is zero in the quotient exactly when it is the zero polynomial.
+    Pseudo-division multiplies by powers of the leading coefficient of ``f`` in
+    ``x_k``, which is not divisible by ``f``: the result is the element times a nonzero
+    factor, which a rank never notices.
+    """
+
+    def __init__(self, f: Poly, k: int):
+        degree = f.degrees()[k]
+        if degree < 1:
+            raise ValueError(f"{f} does not involve variable {k}")
+        self.f, self.k, self.degree = f, k, degree
+        self.lead = _coefficient(f, k, degree)
+        self._x = f.context().gens()[k]
+
+    def reduce(self, p: Poly) -> Poly:
+        """A multiple of ``p`` by a nonzero element, of degree below ``deg_k f``."""
+        while not p.is_zero():
+            e = p.degrees()[self.k]
+            if e < self.degree:
+                break
+            c = _coefficient(p, self.k, e)
+            p = self.lead * p - c * self._x ** (e - self.degree) * self.f
+        return p
+
+    def is_zero(self, p: Poly) -> bool:
+        """Whether ``f`` divides ``p``."""
+        return self.reduce(p).is_zero()
+
+
+def _coefficient(p: Poly, k: int, e: int) -> Poly:
+    """The coefficient of ``x_k^e`` in ``p`` (a polynomial free of ``x_k``)."""
+    terms = {m[:k] + (0,) + m[k + 1:]: c for m, c in p.to_dict().items() if m[k] == e}
+    return p.context().from_dict(terms)
+
+
+def _size(p: Poly) -> tuple[int, int]:
+    return (p.total_degree(), len(p))
+
+
+def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
+                     quotient: Quotient) -> tuple[int, list[list[Poly]]]:
+    """Fraction-free elimination over the fraction field of ``quotient`` on the given
+    columns: the number of pivots found there, and the rows left over (zero in those
+    columns), reduced and primitive.
+
+    Dividing a row by the gcd of its reduced entries is safe: that gcd has degree in
+    ``x_k`` below ``deg_k f``, so ``f`` does not divide it.
+    """
+    left = [[quotient.reduce(e) for e in row] for row in rows]
+    left = [primitive(r) for r in left if any(not e.is_zero() for e in r)]
+    pivots = 0
+    for col in columns:
+        candidates = [i for i, r in enumerate(left) if not r[col].is_zero()]
+        if not candidates:
+            continue
+        best = min(candidates, key=lambda i: _size(left[i][col]))
+        prow = left.pop(best)
+        pivots += 1
+        p = prow[col]
+        out = []
+        for r in left:
+            a = r[col]
+            if not a.is_zero():
+                g = p.gcd(a)
+                pg, ag = p / g, a / g
+                r = [quotient.reduce(pg * x - ag * y) for x, y in zip(r, prow, strict=True)]
+                if all(e.is_zero() for e in r):
+                    continue
+                r = primitive(r)
+            out.append(r)
+        left = out
+    return pivots, left
+
+
+def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) -> int:
+    """The rank of ``rows`` over the fraction field of ``quotient``."""
+    if not rows:
+        return 0
+    pivots, _ = eliminate_modulo(rows, range(ncols), quotient)
+    return pivots
+
+
+__all__ = ["Quotient", "eliminate_modulo", "rank_modulo"]
