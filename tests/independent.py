@@ -19,6 +19,8 @@ Public functions
 ----------------
 reference_analysis(model, at=None) -> dict
     Exact numbers and matrices (see its docstring for the keys).
+reference_jacobians(model, at=None) -> dict
+    ``H G^T`` and ``H D`` only, also at symbolic angles.
 reference_numbers_float(model, at=None, tol=None) -> dict
     The same seven numbers decided by numpy float SVD ranks (the only float code here).
 at_from_text(model, text) -> dict
@@ -327,6 +329,15 @@ def _nullspace(m: sp.Matrix) -> list[sp.Matrix]:
     if m.rows == 0:
         return [sp.eye(m.cols)[:, j] for j in range(m.cols)]
     return m.nullspace()
+
+
+def reference_jacobians(
+    model: Mapping[str, Any], at: Mapping[str, Any] | None = None
+) -> dict[str, sp.Matrix]:
+    """``H G^T`` and ``H D`` alone (no ranks, no nullspaces): ``at`` may hold symbolic
+    ``(cos, sin)`` pairs, e.g. rational functions of a tangent half-angle."""
+    built = _build(model, at)
+    return {"HGt": built["H"] * built["G"].T, "HD": built["H"] * built["D"]}
 
 
 def reference_analysis(

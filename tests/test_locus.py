@@ -2,16 +2,18 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 
 import pytest
 import sympy as sp
 import yaml
-from independent import at_from_text, reference_analysis
+from independent import at_from_text, reference_analysis, reference_jacobians
 from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
 import coopkin_sym.examples
+from coopkin_sym.builders import planar_hand
 from coopkin_sym.locus import LocusError, compute_locus
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
@@ -149,7 +151,14 @@ def test_recursion_finds_the_codimension_two_drop():
     assert both.changes == {"Nc": (4, 2), "Nr": (0, 2), "Nd": (2, 4)}
     # and deeper still: both stretched along the contact line (isolated, depth 2)
     deepest = [c for c in locus.components if c.depth == 2]
-    assert len(deepest) == 4 and all(c.numbers["Nm"] == 5 for c in deepest)
+    assert len(deepest) == 5 and all(c.numbers["Nm"] == 5 for c in deepest)
+    # ... and both stretched with the tips at one point: tip1 = 2L(-sin a1, cos a1),
+    # tip2 = (3L, 0) + 2L(-sin b1, cos b1), so b1 = -a1 and sin a1 = -3/4, i.e.
+    # 3 t^2 + 8 t + 3 = 0 for t = tan(a1/2): irrational, Ni 1 -> 3 as in case 1
+    (tips,) = [c for c in deepest if c.witness is None]
+    assert tips.equations == ["t_a2", "t_b2", "3*t_a1**2 + 8*t_a1 + 3", "t_a1 + t_b1"]
+    assert tips.changes["Ni"] == (1, 3) and tips.witness_checked
+    assert tips.algebraic_witness["point"]["a1"] == "-2*atan(sqrt(7)/3 + 4/3)"
     # q = pi, outside the t chart: the finger folded back is singular too
     assert {c.condition for c in locus.components if c.kind == "chart"} == {
         "a2 = pi", "b2 = pi"}
@@ -165,3 +174,84 @@ def test_max_depth_bounds_the_search_and_says_so():
 def test_a_locus_needs_a_free_joint():
     with pytest.raises(LocusError, match="free joint"):
         compute_locus(coopkin_sym.load("paper-case1-hard"), at="q1=0,q2=0")
+
+
+# --- curved components and irrational points -------------------------------------------
+
+
+def test_function_field_rank_agrees_with_the_parametrization():
+    """Case 1 soft/hard has a hypersurface linear in t_q2 only: its numbers by
+    substitution (t_q2 = ...) and by ranks modulo the polynomial in t_q1 (degree 2,
+    the function-field route used for curved components) agree."""
+    from coopkin_sym import kinematics
+    from coopkin_sym.configuration import Configuration
+    from coopkin_sym.exact.quotient import Quotient
+    from coopkin_sym.mobility import numbers_modulo
+
+    system = coopkin_sym.load("paper-case1-soft-hard")
+    locus = compute_locus(system, max_depth=0)
+    curve = "t_q1**2*t_q2 - t_q1**2 + 2*t_q1*t_q2 + 2*t_q1 - t_q2 + 1"
+    (comp,) = [c for c in locus.components if c.equations == [curve]]
+    assert comp.decided == "exact over the component's function field"
+    config = Configuration.parse(system.model, "L=1", free=["q1", "q2"])
+    kin = kinematics.build(system.model, config)
+    rows = [kin.ring.clear_row(r) for r in kin.Q]
+    t1, t2 = kin.ring.zctx.gens()
+    f = t1**2 * t2 - t1**2 + 2 * t1 * t2 + 2 * t1 - t2 + 1
+    k = kin.ring.names.index("t_q1")
+    assert f.degrees()[k] == 2
+    numbers = numbers_modulo(rows, system.model, kin.row_contacts, Quotient(f, k))
+    assert numbers.as_dict() == comp.numbers
+    assert comp.changes == {"Nm": (1, 2), "Nc": (1, 2), "Ni": (0, 1), "Ng": (1, 2),
+                            "Nh": (0, 1)}
+    # and a curve through the four singular points is generic almost everywhere on it
+    circle = Quotient(t1**2 + t2**2 - 2, k)
+    assert numbers_modulo(rows, system.model, kin.row_contacts, circle).as_dict() == \
+        locus.generic
+
+
+@pytest.fixture(scope="module")
+def three_fingers():
+    model = planar_hand(3, 3)
+    return model, compute_locus(coopkin_sym.load(model))
+
+
+def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
+    model, locus = three_fingers
+    assert locus.generic == {"Nm": 6, "Nc": 3, "Ni": 0, "Nr": 3, "Ng": 3, "Nd": 3, "Nh": 0}
+    assert len(locus.components) == 3
+    for i, c in enumerate(locus.components, start=1):
+        # a finger whose tip and joints 2, 3 line up: codimension 2, irrational angles
+        names = {f"t_f{i}_2", f"t_f{i}_3"}
+        assert c.kind == "subvariety" and c.real
+        assert c.changes == {"Nc": (3, 2), "Nr": (3, 4), "Nd": (3, 4)}
+        assert c.witness is None and c.witness_checked
+        assert set(c.algebraic_witness["point"]) == {j["name"] for a in model["arms"]
+                                                      for j in a["joints"]} | {"L"}
+        assert c.condition.count(" or ") == 3          # four real points per finger
+        syms = sp.symbols(sorted(names))
+        eqs = [sp.sympify(e, locals={str(s): s for s in syms}) for e in c.equations]
+        assert set().union(*(e.free_symbols for e in eqs)) == set(syms)
+    assert not any("irrational" in u or "not decided" in u for u in locus.unexplored)
+
+
+def test_three_finger_components_are_where_an_independent_jacobian_drops(three_fingers):
+    """Independent check: the reference H D of finger 1 (4x4 transforms, SymPy) at
+    symbolic angles has all its 2 x 2 minors in the ideal of the component's equations,
+    while its generic rank is 2."""
+    model, locus = three_fingers
+    t2, t3 = sp.symbols("t_f1_2 t_f1_3")
+
+    def circle(t):
+        return (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+
+    ref = reference_jacobians(model, {"f1_2": circle(t2), "f1_3": circle(t3), "L": 1})
+    block = ref["HD"][0:3, 0:3]
+    minors = [sp.numer(sp.together(block.extract(list(r), list(c)).det()))
+              for r in itertools.combinations(range(3), 2)
+              for c in itertools.combinations(range(3), 2)]
+    assert any(sp.expand(m) != 0 for m in minors)       # rank 2 at generic angles
+    (comp,) = [c for c in locus.components if "t_f1_2" in c.equations[0]]
+    basis = sp.groebner([sp.sympify(e, locals={"t_f1_2": t2, "t_f1_3": t3})
+                         for e in comp.equations], t2, t3, order="lex")
+    assert all(basis.reduce(sp.expand(m))[1] == 0 for m in minors)

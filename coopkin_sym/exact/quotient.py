@@ -41,8 +41,9 @@ class Quotient:
     Elements are kept reduced (degree below ``deg_k f`` in ``x_k``) by pseudo-division;
     a reduced element is zero in the quotient exactly when it is the zero polynomial.
     Pseudo-division multiplies by powers of the leading coefficient of ``f`` in
-    ``x_k``, which is not divisible by ``f``: the result is the element times a nonzero
-    factor, which a rank never notices.
+    ``x_k``, which is not divisible by ``f``; a row is reduced with one power for all
+    its entries, so it is the same row times a nonzero factor, which a rank never
+    notices.
     """
 
     def __init__(self, f: Poly, k: int):
@@ -53,15 +54,31 @@ class Quotient:
         self.lead = _coefficient(f, k, degree)
         self._x = f.context().gens()[k]
 
-    def reduce(self, p: Poly) -> Poly:
-        """A multiple of ``p`` by a nonzero element, of degree below ``deg_k f``."""
+    def _reduce_counted(self, p: Poly) -> tuple[Poly, int]:
+        """``lead^n p`` reduced, and ``n``."""
+        n = 0
         while not p.is_zero():
             e = p.degrees()[self.k]
             if e < self.degree:
                 break
             c = _coefficient(p, self.k, e)
             p = self.lead * p - c * self._x ** (e - self.degree) * self.f
-        return p
+            n += 1
+        return p, n
+
+    def reduce(self, p: Poly) -> Poly:
+        """``lead^n p`` (for some ``n``) of degree below ``deg_k f``: the same element up
+        to a nonzero factor, enough for a zero test. Rows go through
+        :meth:`reduce_row`, which uses one factor for the whole row."""
+        return self._reduce_counted(p)[0]
+
+    def reduce_row(self, row: Sequence[Poly]) -> list[Poly]:
+        """Every entry reduced with the same multiplier ``lead^n`` (a row times a
+        nonzero element: its span, hence every rank, is unchanged)."""
+        done = [self._reduce_counted(e) for e in row]
+        top = max((n for _, n in done), default=0)
+        return [r if n == top or r.is_zero() else r * self.lead ** (top - n)
+                for r, n in done]
 
     def is_zero(self, p: Poly) -> bool:
         """Whether ``f`` divides ``p``."""
@@ -87,7 +104,7 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
     Dividing a row by the gcd of its reduced entries is safe: that gcd has degree in
     ``x_k`` below ``deg_k f``, so ``f`` does not divide it.
     """
-    left = [[quotient.reduce(e) for e in row] for row in rows]
+    left = [quotient.reduce_row(row) for row in rows]
     left = [primitive(r) for r in left if any(not e.is_zero() for e in r)]
     pivots = 0
     for col in columns:
@@ -104,7 +121,7 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
             if not a.is_zero():
                 g = p.gcd(a)
                 pg, ag = p / g, a / g
-                r = [quotient.reduce(pg * x - ag * y) for x, y in zip(r, prow, strict=True)]
+                r = quotient.reduce_row([pg * x - ag * y for x, y in zip(r, prow, strict=True)])
                 if all(e.is_zero() for e in r):
                     continue
                 r = primitive(r)
