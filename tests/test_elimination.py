@@ -113,3 +113,12 @@ def test_fmpz_context_without_variables_uses_integers():
     rows = [[ctx.constant(2), ctx.constant(4)], [ctx.constant(3), ctx.constant(6)]]
     reduced, pivots = el.gauss_jordan(rows, 2)
     assert pivots == [0] and [int(e.coeffs()[0]) for e in reduced[0]] == [1, 2]
+
+
+def test_primitive_makes_the_first_entry_positive_even_when_it_is_alone():
+    ctx = flint.fmpz_mpoly_ctx.get(("y",), "degrevlex")
+    (y,) = ctx.gens()
+    zero = ctx.constant(0)
+    assert [str(e) for e in el.primitive([-y, zero])] == ["1", "0"]
+    assert [str(e) for e in el.primitive([-2 * y, 4 * y**2])] == ["1", "-2*y"]
+    assert [str(e) for e in el.primitive([zero, -3 * y, ctx.constant(6)])] == ["0", "y", "-2"]

@@ -55,7 +55,7 @@ def primitive(row: Sequence[Poly]) -> Row:
     if g is None:
         return list(row)
     first = next(e for e in row if not e.is_zero())
-    if int(first.leading_coefficient()) < 0:
+    if (int(first.leading_coefficient()) < 0) != (int(g.leading_coefficient()) < 0):
         g = -g
     if g.is_one():
         return list(row)

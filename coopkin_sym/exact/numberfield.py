@@ -19,6 +19,7 @@ Example
 from __future__ import annotations
 
 from collections.abc import Sequence
+from fractions import Fraction
 
 import flint
 
@@ -35,7 +36,10 @@ class NumberField:
         self.g = g
 
     def element(self, a) -> Element:
-        """``a`` (an integer, fraction or polynomial in ``x``) reduced mod ``g``."""
+        """``a`` (an integer, ``Fraction``, ``fmpq`` or polynomial in ``x``) reduced mod
+        ``g``."""
+        if isinstance(a, Fraction):
+            a = flint.fmpq(a.numerator, a.denominator)
         return flint.fmpq_poly(a) % self.g if not isinstance(a, flint.fmpq_poly) \
             else a % self.g
 
