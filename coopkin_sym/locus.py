@@ -1183,17 +1183,18 @@ def _read_equation(ctx, eq: str) -> str:
 def _float_checks(ctx, witness: dict[str, str], analysis,
                   equations: list[str] = ()) -> list[FloatCheck]:
     """Float ranks at the witness, at points near it, and with lengths rescaled. The
-    nearby points move a revolute joint that the component's equations involve (so they
-    leave the component)."""
+    nearby points move a revolute joint of the component's last equation (so they leave
+    the component, and stay in its parent)."""
     checks = []
     scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
                              float_numbers(analysis)))
-    used = {str(s) for eq in equations for s in sp.sympify(eq, locals={
-        str(v): v for v in ctx.symbols.values()}).free_symbols}
+    local = {str(v): v for v in ctx.symbols.values()}
+    used = [{str(s) for s in sp.sympify(eq, locals=local).free_symbols}
+            for eq in reversed(equations)]
     revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
-    joint = next((name for n, name in revolute if str(ctx.symbols[n]) in used),
-                 revolute[0][1] if revolute else None)
+    joint = next((name for names in used for n, name in revolute
+                  if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
     for distance in _FLOAT_DISTANCES:
         if joint is None:
             break
