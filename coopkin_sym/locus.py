@@ -55,7 +55,7 @@ from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact import elimination as el
 from .exact.numberfield import NumberField
-from .exact.quotient import Quotient
+from .exact.quotient import Quotient, coefficients_in, gcd_modulo
 from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
 from .locus_types import Component, FloatCheck, Locus
@@ -558,8 +558,14 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
         if not names_used:
             continue
         if len(names_used) > 2:
+            if len(names_used) <= 4 and _solve_with_parameters(
+                    ctx, q_rows, polys, names_used, equations, point_so_far, base, depth,
+                    parent, charts):
+                continue
             note = (f"depth {depth}: lower-dimensional drops in {len(names_used)} variables "
-                    f"({', '.join(names_used)}) not solved (up to two are solved)")
+                    f"({', '.join(names_used)}) not solved (solved: up to two variables, "
+                    f"and up to four when the equations have at most "
+                    f"{_PARAMETER_SOLVE_TERMS} terms)")
             if note not in ctx.locus.unexplored:
                 ctx.locus.unexplored.append(note)
             continue
@@ -576,6 +582,187 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
     for x, g, values, eqs, alpha in algebraic_points:
         _decide_point(ctx, q_rows, values, (x, g, eqs, alpha), equations, point_so_far,
                       base, depth, parent, charts, free)
+
+
+# the largest minor combination (in terms) solved with parameters
+_PARAMETER_SOLVE_TERMS = 400
+
+
+def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, point_so_far,
+                           base, depth, parent, charts) -> bool:
+    """Codimension-2 families in three or four variables, decided exactly.
+
+    Two variables ``x, y`` are solved over the field of the others (the parameters):
+    the resultant in ``y`` is factored over Z; for each factor ``h`` involving ``x``,
+    ``x`` is substituted when ``h`` is linear in it (then ``y`` comes from the gcd of
+    the equations, substituted too or kept as a curve ``k(y, ...) = 0``), and otherwise
+    ``y = -c0/c1`` comes from their gcd over the function field of ``h``, whose ranks
+    are computed modulo ``h``. Returns whether the system was solved.
+    """
+    if any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
+        return False
+    for x, y in itertools.permutations(names, 2):
+        kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+        if any(p.degrees()[ky] == 0 for p in polys):
+            continue
+        res = None
+        for p in polys[1:]:
+            r = polys[0].resultant(p, y)
+            res = r if res is None else res.gcd(r)
+        if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
+            continue
+        _, factors = res.factor()
+        for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+            h = _normalize(h)
+            if _no_real_points(ctx, h):
+                continue
+            if h.degrees()[kx] == 0:
+                note = (f"depth {depth}: the family where {_text(ctx, h)} = 0 (codimension "
+                        "2 or more) not solved")
+                if note not in ctx.locus.unexplored:
+                    ctx.locus.unexplored.append(note)
+                continue
+            if h.degrees()[kx] == 1:
+                _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
+                                depth, parent, charts)
+            else:
+                _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
+                                depth, parent, charts)
+        return True
+    return False
+
+
+def _no_real_points(ctx, f) -> bool:
+    """Whether ``f = 0`` has no real points (then it is listed as dropped)."""
+    if _has_real_point(ctx, f, _vars_of(ctx, f)) is not False:
+        return False
+    text = f"{_text(ctx, f)} = 0 (no real points)"
+    if text not in ctx.locus.dropped:
+        ctx.locus.dropped.append(text)
+    return True
+
+
+def _off_charts(charts, substitute, quotient=None) -> bool:
+    """Whether an enclosing chart denominator vanishes on the new family."""
+    for c in charts:
+        c_here = substitute(c)
+        if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
+            return True
+    return False
+
+
+def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
+                    parent, charts) -> None:
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    h1, h0 = _split_linear(h, kx)
+    moved = [_substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
+    common = None
+    for p in moved:
+        if not p.is_zero():
+            common = p if common is None else common.gcd(p)
+    if common is None or common.degrees()[ky] == 0:
+        return
+    rows_x = _substitute_rows(q_rows, kx, h0, h1)
+    inner = dict(point_so_far)
+    inner[x] = (h0, h1)
+    _, factors = common.factor()
+    for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+        if k.degrees()[ky] == 0:
+            continue
+        k = _normalize(k)
+        if _no_real_points(ctx, k):
+            continue
+
+        def at_x(c):
+            return _substitute(c, kx, h0, h1, c.degrees()[kx])
+
+        if k.degrees()[ky] == 1:
+            k1, k0 = _split_linear(k, ky)
+
+            def at_xy(c, k0=k0, k1=k1):
+                c = at_x(c)
+                return _substitute(c, ky, k0, k1, c.degrees()[ky])
+
+            if _off_charts([*charts, h1], at_xy):
+                continue
+            rows = _substitute_rows(rows_x, ky, k0, k1)
+            numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+            decided = "exact over the family's function field (two substitutions)"
+        else:
+            quotient = Quotient(k, ky)
+            if _off_charts([*charts, h1], at_x, quotient):
+                continue
+            numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
+            decided = ("exact over the family's function field (a substitution, then "
+                       "ranks modulo its irreducible polynomial)")
+        if numbers == base:
+            continue
+        comp = _component(ctx, equations + [_text(ctx, h), _text(ctx, k)], numbers, None,
+                          "subvariety", {"Q"}, depth, parent, decided)
+        if comp is None:
+            continue
+        _family_witness(ctx, comp, k, y, inner, numbers)
+
+
+def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
+                    parent, charts) -> None:
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    quotient = Quotient(h, kx)
+    common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
+    if len(common) > 2:
+        note = (f"depth {depth}: where {_text(ctx, h)} = 0, {len(common) - 1} values of "
+                f"{y} share each point: not solved")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
+    if len(common) < 2:
+        return
+    c0, c1 = common
+    if _off_charts([*charts, c1], lambda c: _substitute(c, ky, c0, c1, c.degrees()[ky]),
+                   quotient):
+        return
+    rows = _substitute_rows(q_rows, ky, c0, c1)
+    numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+    if numbers == base:
+        return
+    y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
+    comp = _component(ctx, equations + [_text(ctx, h), _text(ctx, y_eq)], numbers, None,
+                      "subvariety", {"Q"}, depth, parent,
+                      "exact over the family's function field (ranks modulo its "
+                      "irreducible polynomial)")
+    if comp is None:
+        return
+    inner = dict(point_so_far)
+    inner[y] = (c0, c1)
+    _family_witness(ctx, comp, h, x, inner, numbers)
+
+
+def _family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Numbers) -> None:
+    """A witness on a family ``f(x, params) = 0`` (the other coordinates given by
+    ``inner``): nice values for the parameters, then a rational root of what is left
+    in ``x`` if there is one, else a real algebraic one."""
+    k = ctx.ring_names.index(x)
+    params = [n for n in _vars_of(ctx, f) if n != x]
+    zctx = ctx.ring.zctx
+    for values in itertools.islice(itertools.product(_NICE, repeat=len(params)), 12):
+        point = dict(zip(params, values, strict=True))
+        g = f
+        for n, v in point.items():
+            j = ctx.ring_names.index(n)
+            g = _substitute(g, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+                            g.degrees()[j])
+        if g.is_zero() or g.degrees()[k] == 0:
+            continue
+        rational, curved = _roots(ctx, g, x)
+        for x0 in rational:
+            full = _complete_point(ctx, inner, {**point, x: x0})
+            if full is not None and _numbers_at_values(ctx, full) == numbers:
+                _attach_witness(ctx, comp, _to_at(ctx, full), numbers)
+                return
+        for g1 in curved:
+            _attach_algebraic_witness(ctx, comp, x, g1, point, inner, numbers)
+            if comp.algebraic_witness is not None:
+                return
 
 
 def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,

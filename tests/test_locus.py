@@ -255,3 +255,30 @@ def test_three_finger_components_are_where_an_independent_jacobian_drops(three_f
     basis = sp.groebner([sp.sympify(e, locals={"t_f1_2": t2, "t_f1_3": t3})
                          for e in comp.equations], t2, t3, order="lex")
     assert all(basis.reduce(sp.expand(m))[1] == 0 for m in minors)
+
+
+def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
+    """Codimension 2 in four variables, not inside any hypersurface: the two fingertips
+    at one point (any point both reach). Solved over the field of two of the angles;
+    checked independently at its irrational witness (radicals)."""
+    locus = compute_locus(coopkin_sym.load(TWO_FINGERS), max_depth=0)
+    (tips,) = [c for c in locus.components if c.kind == "subvariety"]
+    assert tips.depth == 0 and len(tips.equations) == 2
+    assert tips.changes == {"Nm": (4, 5), "Nc": (4, 5), "Ni": (1, 3), "Ng": (1, 3),
+                            "Nh": (0, 1)}
+    assert tips.witness is None and tips.witness_checked
+    point = tips.algebraic_witness["point"]
+    cs = {}
+    for joint in ("a1", "a2", "b1", "b2"):
+        t = sp.tan(sp.sympify(point[joint]) / 2)
+        cs[joint] = (sp.radsimp((1 - t**2) / (1 + t**2)), sp.radsimp(2 * t / (1 + t**2)))
+    ref = reference_analysis(TWO_FINGERS, {**cs, "L": 1})
+    assert sp.simplify(ref["points"]["c1"] - ref["points"]["c2"]) == sp.zeros(3, 1)
+    rq, rg, _ = _ranks_over_the_algebraic_numbers(ref["Q"])
+    assert 6 - rg == tips.numbers["Ni"] == 3 and 10 - rq == tips.numbers["Nm"]
+    # the equations vanish there, exactly
+    syms = {f"t_{j}": sp.tan(sp.sympify(point[j]) / 2) for j in cs}
+    for eq in tips.equations:
+        expr = sp.sympify(eq, locals={n: sp.Symbol(n) for n in syms}).subs(
+            {sp.Symbol(n): v for n, v in syms.items()})
+        assert sp.simplify(sp.radsimp(expr)) == 0

@@ -138,4 +138,56 @@ def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) 
     return pivots
 
 
-__all__ = ["Quotient", "eliminate_modulo", "rank_modulo"]
+def coefficients_in(p: Poly, j: int) -> list[Poly]:
+    """``p`` as a polynomial in variable ``j``: its coefficients (free of ``x_j``),
+    lowest degree first."""
+    top = p.degrees()[j]
+    return [_coefficient(p, j, e) for e in range(top + 1)]
+
+
+def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly]:
+    """The gcd, over the fraction field of ``quotient``, of polynomials in a further
+    variable given by their coefficient lists (lowest degree first), up to a nonzero
+    factor; ``[]`` when all are zero.
+
+    Euclid's algorithm with pseudo-remainders; the coefficients are reduced modulo
+    ``f`` (one multiplier for the whole list) and made primitive after every step.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "p", "y"), "degrevlex")
+    >>> x, p, y = ctx.gens()
+    >>> q = Quotient(x**2 - p, 0)                  # x = sqrt(p)
+    >>> a = coefficients_in((y - x) * (y + 1), 2)  # (y - x)(y + 1)
+    >>> b = coefficients_in(y**2 - p, 2)           # (y - x)(y + x)
+    >>> g = gcd_modulo([a, b], q)                   # c0 + c1 y, up to a factor
+    >>> len(g), q.is_zero(g[0] + g[1] * x)            # degree 1, root y = x
+    (2, True)
+    """
+    def trim(c: list[Poly]) -> list[Poly]:
+        c = quotient.reduce_row(c)
+        while c and c[-1].is_zero():
+            c.pop()
+        return primitive(c) if c else c
+
+    g: list[Poly] = []
+    for p in polys:
+        b = trim(list(p))
+        while b:
+            if not g:
+                g, b = b, []
+                break
+            a = g
+            while len(a) >= len(b) and a:
+                shift = len(a) - len(b)
+                lead_a, lead_b = a[-1], b[-1]
+                new = [lead_b * c for c in a]
+                for i, c in enumerate(b):
+                    new[shift + i] = new[shift + i] - lead_a * c
+                a = trim(new)
+            g, b = b, a
+    return g
+
+
+__all__ = ["Quotient", "coefficients_in", "eliminate_modulo", "gcd_modulo", "rank_modulo"]
