@@ -19,6 +19,8 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import sympy as sp
 
 from .exact.sympy_bridge import frac_to_sympy
@@ -37,7 +39,11 @@ def _count(n: int, noun: str) -> str:
 
 
 def _is_zero(e: sp.Expr) -> bool:
-    return sp.cancel(e) == 0
+    e = sp.cancel(e)
+    if e == 0:
+        return True
+    radicals = any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+    return radicals and sp.radsimp(sp.expand(e)) == 0
 
 
 def _too_big(vec) -> bool:
@@ -52,24 +58,81 @@ def _direction(d: list[sp.Expr]) -> str:
     return "(" + ", ".join(sp.sstr(sp.factor(e)) for e in d) + ")"
 
 
-def _line_name(p: list[sp.Expr], w: list[sp.Expr], analysis: Analysis) -> str:
+def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
     kin = analysis.kinematics
-    on_line = []
-    for contact, point in zip(analysis.model.contacts, kin.points, strict=True):
-        c = [frac_to_sympy(x, kin.symbols) for x in point]
+    return [(contact.name, [frac_to_sympy(x, kin.symbols) for x in point])
+            for contact, point in zip(analysis.model.contacts, kin.points, strict=True)]
+
+
+def _line_name(p: list[sp.Expr], w: list[sp.Expr],
+               contacts: Sequence[tuple[str, Sequence[sp.Expr]]]) -> str:
+    on_line: list[tuple[str, Sequence[sp.Expr]]] = []
+    for name, c in contacts:
         rel = sp.Matrix([c[i] - p[i] for i in range(3)])
         if all(_is_zero(e) for e in rel.cross(sp.Matrix(w))):
-            on_line.append(contact.name)
-    if len(on_line) >= 2:
-        return f"the line through {' and '.join(on_line[:2])}"
+            on_line.append((name, c))
+    places = _places(on_line)
+    if len(places) >= 2:
+        return f"the line through {' and '.join(places[:2])}"
     point = "(" + ", ".join(sp.sstr(sp.factor(e)) for e in p) + ")"
-    where = f"through {on_line[0]}" if on_line else f"through {point}"
+    where = f"through {places[0]}" if places else f"through {point}"
     return f"the line {where} along {_direction(w)}"
 
 
-def describe_twist(u, analysis: Analysis) -> str:
-    """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
-    c1 and c2", "translation along x")."""
+def _places(contacts: Sequence[tuple[str, Sequence[sp.Expr]]]) -> list[str]:
+    """Contact names grouped by position: ``["c1 (= c2)", "c3"]``."""
+    groups: list[tuple[Sequence[sp.Expr], list[str]]] = []
+    for name, c in contacts:
+        for where, names in groups:
+            if all(_is_zero(a - b) for a, b in zip(where, c, strict=True)):
+                names.append(name)
+                break
+        else:
+            groups.append((c, [name]))
+    return [names[0] + (f" (= {', '.join(names[1:])})" if len(names) > 1 else "")
+            for _, names in groups]
+
+
+def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()
+                         ) -> str:
+    """Several object twists in words; three rotations about axes through one contact
+    point read as turning freely about it.
+
+    Example
+    -------
+    >>> rotations = [[0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]]
+    >>> object_motions_words(rotations, [("c1", [0, 0, 0]), ("c2", [0, 0, 0])])
+    'turn freely about c1 (= c2), in every direction'
+    """
+    vectors = [[sp.sympify(e) for e in v] for v in vectors]
+    if len(vectors) == 3 and not any(_too_big(v) for v in vectors):
+        for place, c in _places_with_points(contacts):
+            # u = (v, w) fixes the point c when v + w x c = 0
+            if all(all(_is_zero(e) for e in sp.Matrix(v[:3]) + sp.Matrix(v[3:]).cross(
+                    sp.Matrix(c))) for v in vectors) and sp.Matrix(
+                    [v[3:] for v in vectors]).rank(simplify=True) == 3:
+                return f"turn freely about {place}, in every direction"
+    return "; ".join(twist_words(v, contacts) for v in vectors)
+
+
+def _places_with_points(contacts):
+    names = _places(contacts)
+    points = []
+    for name in names:
+        first = name.split(" ")[0]
+        points.append(next(c for n, c in contacts if n == first))
+    return list(zip(names, points, strict=True))
+
+
+def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> str:
+    """A rigid-body velocity ``u = (v, w)`` in words; lines are named by the contact
+    points (``(name, point)`` pairs) on them.
+
+    Example
+    -------
+    >>> twist_words([0, 0, 0, 0, 0, 1], [("c1", [0, 0, 0]), ("c2", [0, 0, 5])])
+    'rotate about the line through c1 and c2'
+    """
     u = [sp.sympify(e) for e in u]
     if _too_big(u):
         return "a motion too large to describe in words (see the blocks)"
@@ -79,17 +142,28 @@ def describe_twist(u, analysis: Analysis) -> str:
     wv = sp.Matrix(w)
     vv = sp.Matrix(v)
     ww = wv.dot(wv)
-    p = [sp.cancel(e / ww) for e in wv.cross(vv)]
-    pitch = sp.cancel(wv.dot(vv) / ww)
-    line = _line_name(p, w, analysis)
-    if pitch == 0:
+    p = [sp.radsimp(sp.cancel(e / ww)) for e in wv.cross(vv)]
+    pitch = sp.radsimp(sp.cancel(wv.dot(vv) / ww))
+    line = _line_name(p, w, contacts)
+    if _is_zero(pitch):
         return f"rotate about {line}"
     return f"screw about {line} with pitch {sp.sstr(sp.factor(pitch))}"
 
 
-def describe_joint_motion(qdot, analysis: Analysis) -> str:
-    """Joint velocities in words ("joint q3 alone", "joints q1 and q2 at equal speed")."""
-    names = analysis.model.joint_names
+def describe_twist(u, analysis: Analysis) -> str:
+    """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
+    c1 and c2", "translation along x")."""
+    return twist_words(u, _contact_points(analysis))
+
+
+def joint_motion_words(qdot, names: Sequence[str]) -> str:
+    """Joint velocities in words ("joint q3 alone", "joints q1 and q2 at equal speed").
+
+    Example
+    -------
+    >>> joint_motion_words([1, -1, 0], ["q1", "q2", "q3"])
+    'joints q1 and q2 at opposite speeds'
+    """
     q = [sp.sympify(e) for e in qdot]
     moving = [(n, e) for n, e in zip(names, q, strict=True) if not _is_zero(e)]
     if len(moving) == 1:
@@ -102,6 +176,11 @@ def describe_joint_motion(qdot, analysis: Analysis) -> str:
         return f"joints {', '.join(n for n, _ in moving)} together"
     parts = ", ".join(f"{n}: {sp.sstr(sp.factor(e))}" for n, e in moving)
     return f"joints in the ratio {parts}"
+
+
+def describe_joint_motion(qdot, analysis: Analysis) -> str:
+    """Joint velocities in words ("joint q3 alone", "joints q1 and q2 at equal speed")."""
+    return joint_motion_words(qdot, analysis.model.joint_names)
 
 
 def sentences(analysis: Analysis) -> list[str]:
@@ -134,8 +213,8 @@ def sentences(analysis: Analysis) -> list[str]:
         out.append("Ni = 0: with every joint locked, the object cannot move (no "
                    "indeterminate motion).")
     else:
-        free = "; ".join(describe_twist(analysis.C11.col(k), analysis)
-                         for k in range(n.Ni))
+        free = object_motions_words([list(analysis.C11.col(k)) for k in range(n.Ni)],
+                                    _contact_points(analysis))
         out.append(f"Ni = {n.Ni}: with every joint locked, the object can still {free}.")
     if n.Nr == 0:
         out.append("Nr = 0: no joint can move while the object stays fixed (no "

@@ -55,8 +55,8 @@ from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact import elimination as el
 from .exact.numberfield import NumberField
-from .exact.quotient import Quotient, coefficients_in, gcd_modulo
-from .exact.sympy_bridge import poly_to_sympy
+from .exact.quotient import Quotient, coefficients_in, gcd_modulo, nullspace_modulo
+from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
 from .exactnum import angle_text
 from .locus_types import Component, FloatCheck, Locus
 from .mobility import Numbers, analyze, decompose, numbers_modulo
@@ -89,6 +89,7 @@ class _Context:
     locus: Locus
     rng: random.Random
     rows0: list = None  # the rows of Q with every free variable, for direct checks
+    points: list = None  # the contact points (fractions in the free variables)
 
     def expired(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
@@ -149,7 +150,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         "never wrongly reported, and a miss has probability below degree/2^20 per step.")
     ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
                    generic, None if timeout is None else started + timeout, max_depth,
-                   locus, random.Random(1992), q_rows)
+                   locus, random.Random(1992), q_rows, kin.points)
     reporter = _Progress(progress)
     with reporter:
         _explore(ctx, q_rows, [], {}, depth=0, parent=None, reporter=reporter)
@@ -1228,7 +1229,7 @@ def _attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
                        for k, v in point.items()},
         }
         comp.witness_checked = True
-        comp.meaning = _count_meaning(ctx, numbers, comp.changes)
+        comp.meaning = _algebraic_meaning(ctx, full, x, g, root, numbers, comp.changes)
         if approx_at is not None:
             analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
             comp.float_checks = _float_image_checks(ctx, approx_at, analysis, numbers,
@@ -1271,6 +1272,43 @@ def _fixed_at(ctx) -> dict[str, str]:
     for p, v in config.parameters.items():
         out[p] = sp.sstr(v)
     return out
+
+
+def _algebraic_meaning(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
+                       changes) -> list[str]:
+    """What changes at an irrational witness: for a quadratic field, the object motions
+    with the joints locked (Ni) and the joint motions with the object fixed (Nr) in
+    words, from exact nullspaces over Q(alpha); counts for the rest."""
+    out = _count_meaning(ctx, numbers, changes)
+    if root.degree > 2 or not {"Ni", "Nr"} & set(changes):
+        return out
+    from .interpret import joint_motion_words, object_motions_words
+
+    quotient = Quotient(g, ctx.ring_names.index(x))
+    rows = _substitute_values(ctx, ctx.rows0, full, x)
+    alpha = root.expression()
+    values = {ctx.symbols[n]: (alpha if n == x and n not in full else
+                               _value_expr(full[n], alpha)) for n in ctx.ring_names}
+
+    def exact(e) -> sp.Expr:
+        return sp.radsimp(sp.expand(sp.sympify(e).subs(values)))
+
+    words = {}
+    if "Ni" in changes and numbers.Ni:
+        contacts = [(c.name, [exact(frac_to_sympy(v, ctx.symbols)) for v in point])
+                    for c, point in zip(ctx.model.contacts, ctx.points, strict=True)]
+        twists = [[exact(poly_to_sympy(e, ctx.ring, ctx.symbols)) for e in v]
+                  for v in nullspace_modulo([r[:6] for r in rows], 6, quotient)]
+        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
+                       f"{object_motions_words(twists, contacts)}.")
+    if "Nr" in changes and numbers.Nr:
+        r = len(ctx.model.joints)
+        motions = [joint_motion_words([exact(poly_to_sympy(e, ctx.ring, ctx.symbols))
+                                       for e in v], ctx.model.joint_names)
+                   for v in nullspace_modulo([row[6:] for row in rows], r, quotient)]
+        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
+                       "move: " + "; ".join(motions) + ".")
+    return [words.get(s.split(" ")[0], s) for s in out]
 
 
 def _count_meaning(ctx, numbers: Numbers, changes) -> list[str]:

@@ -56,7 +56,8 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
     w = c.algebraic_witness
     assert w["point"] == {"L": "1", "q1": "-5*pi/6", "q2": "5*pi/6"}
     assert w["root"] == "-2 - sqrt(3)" and w["root_of"] == "alpha**2 + 4*alpha + 1"
-    assert c.meaning[2].startswith("Ni = 3")
+    assert c.meaning[2] == ("Ni = 3: with every joint locked, the object can still turn "
+                            "freely about c1 (= c2), in every direction.")
 
 
 def _ranks_over_the_algebraic_numbers(q: sp.Matrix) -> tuple[int, int, int]:

@@ -130,6 +130,65 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
     return pivots, left
 
 
+def nullspace_modulo(rows: Sequence[Sequence[Poly]], ncols: int,
+                     quotient: Quotient) -> list[list[Poly]]:
+    """A basis of the right nullspace over the fraction field of ``quotient``: one
+    primitive vector per free column (reduced echelon form, fraction free).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> q = Quotient(x**2 - 2, 0)                  # x = sqrt(2)
+    >>> one = ctx.constant(1)
+    >>> (v,) = nullspace_modulo([[x, 2 * one]], 2, q)
+    >>> [str(e) for e in v], q.is_zero(x * v[0] + 2 * v[1])     # (2, -sqrt 2)
+    (['2', '-x'], True)
+    """
+    pivots: list[tuple[int, list[Poly]]] = []
+    left = [quotient.reduce_row(list(r)) for r in rows]
+    left = [primitive(r) for r in left if any(not e.is_zero() for e in r)]
+    for col in range(ncols):
+        candidates = [i for i, r in enumerate(left) if not r[col].is_zero()]
+        if not candidates:
+            continue
+        prow = left.pop(min(candidates, key=lambda i: _size(left[i][col])))
+        left = [r for r in (_clear(r, prow, col, quotient) for r in left)
+                if any(not e.is_zero() for e in r)]
+        pivots = [(c, _clear(r, prow, col, quotient)) for c, r in pivots]
+        pivots.append((col, prow))
+    pivot_cols = {c for c, _ in pivots}
+    zctx = quotient.f.context()
+    basis = []
+    for free in (j for j in range(ncols) if j not in pivot_cols):
+        v = [zctx.constant(0)] * ncols
+        product = zctx.constant(1)
+        for c, r in pivots:
+            product = product * r[c]
+        v[free] = product
+        for c, r in pivots:
+            others = zctx.constant(1)
+            for c2, r2 in pivots:
+                if c2 != c:
+                    others = others * r2[c2]
+            v[c] = -r[free] * others
+        v = quotient.reduce_row(v)
+        basis.append(primitive(v))
+    return basis
+
+
+def _clear(r: list[Poly], prow: list[Poly], col: int, quotient: Quotient) -> list[Poly]:
+    """``r`` with its entry in ``col`` eliminated by the pivot row ``prow``."""
+    a, p = r[col], prow[col]
+    if a.is_zero():
+        return r
+    g = p.gcd(a)
+    out = quotient.reduce_row([(p / g) * u - (a / g) * v
+                               for u, v in zip(r, prow, strict=True)])
+    return primitive(out) if any(not e.is_zero() for e in out) else out
+
+
 def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) -> int:
     """The rank of ``rows`` over the fraction field of ``quotient``."""
     if not rows:
@@ -190,4 +249,5 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
     return g
 
 
-__all__ = ["Quotient", "coefficients_in", "eliminate_modulo", "gcd_modulo", "rank_modulo"]
+__all__ = ["Quotient", "coefficients_in", "eliminate_modulo", "gcd_modulo",
+           "nullspace_modulo", "rank_modulo"]
