@@ -26,6 +26,7 @@ import typer
 
 from .configuration import ConfigurationError
 from .exactnum import NumberError
+from .irrational import IrrationalAnalysis, NotIrrational, analyze_irrational
 from .mobility import Analysis, InfeasibleMotion
 from .model import ModelError
 from .system import load
@@ -62,16 +63,46 @@ def analyze(
     try:
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
-        result = system.analyze(at, generic=generic, free=free_joints)
-        if as_json:
+        try:
+            result = system.analyze(at, generic=generic, free=free_joints)
+        except ConfigurationError as exc:
+            result = _irrational_or_raise(system, at, exc, generic or bool(free_joints))
+        if not isinstance(result, IrrationalAnalysis):
+            text = (json.dumps(result.as_json(), indent=2) if as_json else
+                    render_latex(result) if latex else render_text(result))
+        elif as_json:
             text = json.dumps(result.as_json(), indent=2)
-        elif latex:
-            text = render_latex(result)
         else:
-            text = render_text(result)
+            text = _irrational_text(result)
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
+
+
+def _irrational_or_raise(system, at, error: ConfigurationError, symbolic: bool):
+    """The numbers over a number field when some angle has an irrational but algebraic
+    tan(q/2); otherwise the original error."""
+    if symbolic or at is None:
+        raise error
+    try:
+        return analyze_irrational(system.model, at)
+    except NotIrrational:
+        raise error from None
+
+
+def _irrational_text(result: IrrationalAnalysis) -> str:
+    """The human report of ``coopkin analyze`` at a configuration with irrational
+    coordinates."""
+    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
+    lines = [f"Configuration: {at}",
+             f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
+             f"of {result.minimal_polynomial} (every conjugate point at once)", "",
+             "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()), ""]
+    lines += [f"- {s}" for s in result.meaning]
+    lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
+                  "(the numbers are exact; use a rational configuration for C11..C23)."]
+    return "\n".join(lines)
 
 
 @app.command()

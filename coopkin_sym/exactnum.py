@@ -306,6 +306,36 @@ def _nearest_angles(q: sp.Expr) -> list[str]:
     return out
 
 
+def algebraic_half_angle(text: str, where: str) -> sp.Expr:
+    """``tan(q/2)`` of an angle whose tangent half-angle is a real algebraic number
+    (``-pi/6``: ``-2 + sqrt(3)``), exactly; rational ones are returned too.
+
+    Raises
+    ------
+    NumberError
+        If the text is not an angle, is ``pi`` (infinite tangent), or ``tan(q/2)`` is not
+        algebraic (``q = 1``).
+
+    Example
+    -------
+    >>> algebraic_half_angle("-pi/6", "q1")
+    -2 + sqrt(3)
+    """
+    q = _parse_text(text, {}, where)
+    if q.free_symbols or q.is_real is False:
+        raise NumberError(where, f"{_show(text)} is not a real angle")
+    t = _half_angle_tangent(q)
+    if t is sp.zoo or t.has(sp.zoo, sp.oo, sp.nan):
+        raise NumberError(where, f"{_show(text)}: tan(q/2) is infinite")
+    try:
+        sp.minimal_polynomial(t, sp.Symbol("t"))
+    except (sp.polys.polyerrors.NotAlgebraic, NotImplementedError, ValueError,
+            TypeError):
+        raise NumberError(where, f"angle {_show(text)}: tan(q/2) = {t} is not an "
+                                 "algebraic number") from None
+    return sp.radsimp(t)
+
+
 def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
     """Read an exact angle and return its exact ``(cos q, sin q)``.
 

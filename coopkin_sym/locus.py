@@ -55,9 +55,11 @@ from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact import elimination as el
 from .exact.numberfield import NumberField
-from .exact.quotient import Quotient, coefficients_in, gcd_modulo, nullspace_modulo
-from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
+from .exact.quotient import Quotient, coefficients_in, gcd_modulo
+from .exact.substitution import split_linear, substitute, substitute_rows
+from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
+from .irrational import motion_sentences
 from .locus_types import Component, FloatCheck, Locus
 from .mobility import Numbers, analyze, decompose, numbers_modulo
 from .model import Model
@@ -89,7 +91,7 @@ class _Context:
     locus: Locus
     rng: random.Random
     rows0: list = None  # the rows of Q with every free variable, for direct checks
-    points: list = None  # the contact points (fractions in the free variables)
+    kin: object = None  # the kinematics with every free variable
 
     def expired(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
@@ -150,7 +152,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         "never wrongly reported, and a miss has probability below degree/2^20 per step.")
     ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
                    generic, None if timeout is None else started + timeout, max_depth,
-                   locus, random.Random(1992), q_rows, kin.points)
+                   locus, random.Random(1992), q_rows, kin)
     reporter = _Progress(progress)
     with reporter:
         _explore(ctx, q_rows, [], {}, depth=0, parent=None, reporter=reporter)
@@ -389,7 +391,7 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
         return
     sub_rows, f0, f1 = _substitute_linear(ctx, q_rows, f, linear)
     k = ctx.ring_names.index(linear)
-    sub_charts = [_substitute(c, k, f0, f1, c.degrees()[k]) for c in charts]
+    sub_charts = [substitute(c, k, f0, f1, c.degrees()[k]) for c in charts]
     if any(c.is_zero() for c in sub_charts):
         ctx.locus.unexplored.append(f"{f_text} = 0 inside {'; '.join(equations)}: outside "
                                     "the parametrization of the enclosing component")
@@ -418,58 +420,8 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
 def _substitute_linear(ctx: _Context, q_rows, f, name: str):
     """Rows of Q on ``f = 0`` with ``name = -f0/f1`` (denominators cleared row by row)."""
     k = ctx.ring_names.index(name)
-    f1, f0 = _split_linear(f, k)
-    return _substitute_rows(q_rows, k, f0, f1), f0, f1
-
-
-def _substitute_rows(rows, k: int, f0, f1):
-    """``rows`` with ``x_k = -f0/f1``, each row times the power of ``f1`` that clears
-    it, then divided by the part of its content that divides that power (never by a
-    factor that could vanish where ``f1`` does not: the rank stays right at every point
-    with ``f1 != 0``)."""
-    out = []
-    for row in rows:
-        deg = max((e.degrees()[k] for e in row if not e.is_zero()), default=0)
-        new = [_substitute(e, k, f0, f1, deg) for e in row]
-        nonzero = [e for e in new if not e.is_zero()]
-        if not nonzero:
-            out.append(new)
-            continue
-        content = nonzero[0]
-        for e in nonzero[1:]:
-            content = content.gcd(e)
-        common = content.gcd(f1 ** deg) if not f1.is_constant() else \
-            content.context().constant(content.content())
-        if not common.is_one():
-            new = [e / common for e in new]
-        out.append(new)
-    return out
-
-
-def _split_linear(f, k: int):
-    zctx = f.context()
-    parts: dict[int, dict] = {0: {}, 1: {}}
-    for mon, c in f.to_dict().items():
-        e = mon[k]
-        rest = tuple(0 if i == k else x for i, x in enumerate(mon))
-        parts[e][rest] = c
-    return zctx.from_dict(parts[1]), zctx.from_dict(parts[0])
-
-
-def _substitute(p, k: int, f0, f1, deg: int):
-    """``p(x_k = -f0/f1) * f1^deg``."""
-    if p.is_zero():
-        return p
-    zctx = p.context()
-    by_power: dict[int, dict] = {}
-    for mon, c in p.to_dict().items():
-        e = mon[k]
-        rest = tuple(0 if i == k else x for i, x in enumerate(mon))
-        by_power.setdefault(e, {})[rest] = c
-    acc = zctx.constant(0)
-    for e, terms in by_power.items():
-        acc = acc + zctx.from_dict(terms) * (-f0) ** e * f1 ** (deg - e)
-    return acc
+    f1, f0 = split_linear(f, k)
+    return substitute_rows(q_rows, k, f0, f1), f0, f1
 
 
 def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, base, depth,
@@ -655,15 +607,15 @@ def _off_charts(charts, substitute, quotient=None) -> bool:
 def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
                     parent, charts) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
-    h1, h0 = _split_linear(h, kx)
-    moved = [_substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
+    h1, h0 = split_linear(h, kx)
+    moved = [substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
     common = None
     for p in moved:
         if not p.is_zero():
             common = p if common is None else common.gcd(p)
     if common is None or common.degrees()[ky] == 0:
         return
-    rows_x = _substitute_rows(q_rows, kx, h0, h1)
+    rows_x = substitute_rows(q_rows, kx, h0, h1)
     inner = dict(point_so_far)
     inner[x] = (h0, h1)
     _, factors = common.factor()
@@ -675,18 +627,18 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             continue
 
         def at_x(c):
-            return _substitute(c, kx, h0, h1, c.degrees()[kx])
+            return substitute(c, kx, h0, h1, c.degrees()[kx])
 
         if k.degrees()[ky] == 1:
-            k1, k0 = _split_linear(k, ky)
+            k1, k0 = split_linear(k, ky)
 
             def at_xy(c, k0=k0, k1=k1):
                 c = at_x(c)
-                return _substitute(c, ky, k0, k1, c.degrees()[ky])
+                return substitute(c, ky, k0, k1, c.degrees()[ky])
 
             if _off_charts([*charts, h1], at_xy):
                 continue
-            rows = _substitute_rows(rows_x, ky, k0, k1)
+            rows = substitute_rows(rows_x, ky, k0, k1)
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
             decided = "exact over the family's function field (two substitutions)"
         else:
@@ -719,10 +671,10 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     if len(common) < 2:
         return
     c0, c1 = common
-    if _off_charts([*charts, c1], lambda c: _substitute(c, ky, c0, c1, c.degrees()[ky]),
+    if _off_charts([*charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
                    quotient):
         return
-    rows = _substitute_rows(q_rows, ky, c0, c1)
+    rows = substitute_rows(q_rows, ky, c0, c1)
     numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
     if numbers == base:
         return
@@ -750,7 +702,7 @@ def _family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Numbe
         g = f
         for n, v in point.items():
             j = ctx.ring_names.index(n)
-            g = _substitute(g, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+            g = substitute(g, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
                             g.degrees()[j])
         if g.is_zero() or g.degrees()[k] == 0:
             continue
@@ -846,7 +798,7 @@ def _substitute_values(ctx, rows, values: dict, x: str | None = None):
     ordered = sorted(values.items(), key=lambda nv: nv[0] != x)
     for n, v in ordered:
         num, den = _as_poly(ctx, v, x)
-        rows = _substitute_rows(rows, ctx.ring_names.index(n), -num,
+        rows = substitute_rows(rows, ctx.ring_names.index(n), -num,
                                 ctx.ring.zctx.constant(den))
     return rows
 
@@ -890,7 +842,7 @@ def _solve_two(ctx, polys, names: list[str]):
         f0, f1 = zctx.constant(-x0.numerator), zctx.constant(x0.denominator)
         uni = None
         for p in polys:
-            q = _substitute(p, k, f0, f1, p.degrees()[k])
+            q = substitute(p, k, f0, f1, p.degrees()[k])
             uni = q if uni is None else uni.gcd(q)
         ys, curved_y = _roots(ctx, uni, y)
         points += [{x: x0, y: y0} for y0 in ys]
@@ -923,7 +875,7 @@ def _sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     gx, gy = zctx.gens()[kx], zctx.gens()[ky]
     for c in tries:
-        moved = [_substitute(p, ky, c * gx - gy, zctx.constant(1), p.degrees()[ky])
+        moved = [substitute(p, ky, c * gx - gy, zctx.constant(1), p.degrees()[ky])
                  for p in polys]
         elim = None
         for p in moved[1:]:
@@ -950,9 +902,9 @@ def _sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
             z = flint.fmpq_poly([0, 1])
             values = {y: field.element(z - c * r), x: r}
             back = gy + c * gx
-            m_back = _substitute(_normalize(m), ky, -back, zctx.constant(1), m.degrees()[ky])
+            m_back = substitute(_normalize(m), ky, -back, zctx.constant(1), m.degrees()[ky])
             num, den = _as_poly(ctx, r, y)
-            x_eq = zctx.constant(den) * gx - _substitute(num, ky, -back, zctx.constant(1),
+            x_eq = zctx.constant(den) * gx - substitute(num, ky, -back, zctx.constant(1),
                                                          num.degrees()[ky])
             out.append((y, _normalize(m), values, [_normalize(m_back), x_eq],
                         f"{y} {'+' if c > 0 else '-'} {abs(c) if abs(c) != 1 else ''}"
@@ -1009,7 +961,7 @@ def _roots(ctx, g, name: str):
     roots, curved = [], []
     for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
         if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
-            f1, f0 = _split_linear(f, k)
+            f1, f0 = split_linear(f, k)
             roots.append(Fraction(-int(f0.leading_coefficient()) if not f0.is_zero() else 0,
                                   int(f1.leading_coefficient())))
         elif sum(f.degrees()) == f.degrees()[k]:
@@ -1249,7 +1201,7 @@ def _algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
         h = f
         for n, v in point.items():
             j = ctx.ring_names.index(n)
-            h = _substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+            h = substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
                             h.degrees()[j])
         if h.is_zero() or h.degrees()[k] == 0:
             continue
@@ -1276,39 +1228,13 @@ def _fixed_at(ctx) -> dict[str, str]:
 
 def _algebraic_meaning(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
                        changes) -> list[str]:
-    """What changes at an irrational witness: for a quadratic field, the object motions
-    with the joints locked (Ni) and the joint motions with the object fixed (Nr) in
-    words, from exact nullspaces over Q(alpha); counts for the rest."""
-    out = _count_meaning(ctx, numbers, changes)
-    if root.degree > 2 or not {"Ni", "Nr"} & set(changes):
-        return out
-    from .interpret import joint_motion_words, object_motions_words
-
-    quotient = Quotient(g, ctx.ring_names.index(x))
+    """What changes at an irrational witness (motions in words for a quadratic field)."""
     rows = _substitute_values(ctx, ctx.rows0, full, x)
     alpha = root.expression()
     values = {ctx.symbols[n]: (alpha if n == x and n not in full else
                                _value_expr(full[n], alpha)) for n in ctx.ring_names}
-
-    def exact(e) -> sp.Expr:
-        return sp.radsimp(sp.expand(sp.sympify(e).subs(values)))
-
-    words = {}
-    if "Ni" in changes and numbers.Ni:
-        contacts = [(c.name, [exact(frac_to_sympy(v, ctx.symbols)) for v in point])
-                    for c, point in zip(ctx.model.contacts, ctx.points, strict=True)]
-        twists = [[exact(poly_to_sympy(e, ctx.ring, ctx.symbols)) for e in v]
-                  for v in nullspace_modulo([r[:6] for r in rows], 6, quotient)]
-        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
-                       f"{object_motions_words(twists, contacts)}.")
-    if "Nr" in changes and numbers.Nr:
-        r = len(ctx.model.joints)
-        motions = [joint_motion_words([exact(poly_to_sympy(e, ctx.ring, ctx.symbols))
-                                       for e in v], ctx.model.joint_names)
-                   for v in nullspace_modulo([row[6:] for row in rows], r, quotient)]
-        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
-                       "move: " + "; ".join(motions) + ".")
-    return [words.get(s.split(" ")[0], s) for s in out]
+    return motion_sentences(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
+                            ctx.kin, values, root.degree, changed=set(changes))
 
 
 def _count_meaning(ctx, numbers: Numbers, changes) -> list[str]:

@@ -79,7 +79,7 @@ def test_examples_lists_the_paper_cases():
 
 @pytest.mark.parametrize("args, fragment", [
     (["analyze", "no-such-model.yaml"], "no-such-model.yaml"),
-    (["analyze", "paper-case1-hard", "--at", "q1=pi/3"], "nearest exact"),
+    (["analyze", "paper-case1-hard", "--at", "q1=1/2"], "nearest exact"),
     (["analyze", "paper-case1-hard", "--at", "q9=0"], "unknown name 'q9'"),
     (["analyze", "paper-case1-hard", "--at", "L=-1"], "positive"),
     (["analyze", "paper-case1-hard", "--at", "q1"], "expected NAME=VALUE"),

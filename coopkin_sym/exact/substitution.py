@@ -1,0 +1,72 @@
+"""Substituting a variable by a quotient of polynomials, denominators cleared.
+
+On a component ``f1 x_k + f0 = 0`` (or at a point) a matrix of integer polynomials is
+replaced by the same matrix with ``x_k = -f0/f1``, each row multiplied by the power of
+``f1`` that keeps it polynomial. ``f0`` may involve ``x_k`` itself (a polynomial in
+the same variable): the substitution is then a composition.
+
+Example
+-------
+>>> import flint
+>>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+>>> x, y = ctx.gens()
+>>> str(substitute(x**2 + y, 0, -y, 2 * ctx.constant(1), 2))     # (y/2)^2 + y, times 4
+'y^2 + 4*y'
+"""
+
+from __future__ import annotations
+
+
+def substitute_rows(rows, k: int, f0, f1):
+    """``rows`` with ``x_k = -f0/f1``, each row times the power of ``f1`` that clears
+    it, then divided by the part of its content that divides that power (never by a
+    factor that could vanish where ``f1`` does not: the rank stays right at every point
+    with ``f1 != 0``)."""
+    out = []
+    for row in rows:
+        deg = max((e.degrees()[k] for e in row if not e.is_zero()), default=0)
+        new = [substitute(e, k, f0, f1, deg) for e in row]
+        nonzero = [e for e in new if not e.is_zero()]
+        if not nonzero:
+            out.append(new)
+            continue
+        content = nonzero[0]
+        for e in nonzero[1:]:
+            content = content.gcd(e)
+        common = content.gcd(f1 ** deg) if not f1.is_constant() else \
+            content.context().constant(content.content())
+        if not common.is_one():
+            new = [e / common for e in new]
+        out.append(new)
+    return out
+
+
+def split_linear(f, k: int):
+    """``(f1, f0)`` with ``f = f1 x_k + f0`` for ``f`` of degree one in ``x_k``."""
+    zctx = f.context()
+    parts: dict[int, dict] = {0: {}, 1: {}}
+    for mon, c in f.to_dict().items():
+        e = mon[k]
+        rest = tuple(0 if i == k else x for i, x in enumerate(mon))
+        parts[e][rest] = c
+    return zctx.from_dict(parts[1]), zctx.from_dict(parts[0])
+
+
+def substitute(p, k: int, f0, f1, deg: int):
+    """``p(x_k = -f0/f1) * f1^deg``."""
+    if p.is_zero():
+        return p
+    zctx = p.context()
+    by_power: dict[int, dict] = {}
+    for mon, c in p.to_dict().items():
+        e = mon[k]
+        rest = tuple(0 if i == k else x for i, x in enumerate(mon))
+        by_power.setdefault(e, {})[rest] = c
+    acc = zctx.constant(0)
+    for e, terms in by_power.items():
+        acc = acc + zctx.from_dict(terms) * (-f0) ** e * f1 ** (deg - e)
+    return acc
+
+
+
+__all__ = ["split_linear", "substitute", "substitute_rows"]

@@ -1,0 +1,197 @@
+"""Numbers at configurations with irrational coordinates, exactly.
+
+An angle such as ``q1 = -pi/6`` has the irrational tangent half-angle
+``t = -2 + sqrt(3)``: the rational pipeline cannot evaluate there. Every such value is
+algebraic, so the configuration lives in a number field ``Q(alpha)``: SymPy finds one
+generator ``alpha`` for all the irrational values (a primitive element) and writes each
+value as a polynomial in it; the rows of ``Q`` (built with those joints free) get the
+values substituted, and their ranks are computed modulo the minimal polynomial of
+``alpha`` (:mod:`coopkin_sym.exact.quotient`). The numbers are then exact at every
+conjugate point at once (the ranks are the same at each). For a quadratic field the
+subspaces that make the numbers (object motions with the joints locked, joint motions
+with the object fixed) are also computed exactly and told in words.
+
+Example
+-------
+>>> from coopkin_sym.model import load_model
+>>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6,L=1")
+>>> a.numbers.as_dict()                     # the two contacts at one point
+{'Nm': 3, 'Nc': 3, 'Ni': 3, 'Nr': 0, 'Ng': 3, 'Nd': 4, 'Nh': 1}
+>>> a.minimal_polynomial, a.alpha
+('alpha**2 + 4*alpha + 1', '-2 + sqrt(3)')
+>>> print(a.meaning[2].split(": ")[1])
+with every joint locked, the object can still turn freely about c1 (= c2), in every direction.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.polys.numberfields.subfield import primitive_element
+
+from . import kinematics
+from .configuration import Configuration, ConfigurationError, split_assignments
+from .exact.quotient import Quotient, nullspace_modulo
+from .exact.substitution import substitute_rows
+from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
+from .exactnum import NumberError, algebraic_half_angle, parse_angle
+from .mobility import Numbers, numbers_modulo
+from .model import Model
+
+_ALPHA = sp.Symbol("alpha")
+
+
+class NotIrrational(ValueError):
+    """Every value of the configuration is rational: use the rational analysis."""
+
+
+@dataclass(frozen=True)
+class IrrationalAnalysis:
+    """The numbers at a configuration with irrational coordinates.
+
+    ``alpha`` generates the number field of the configuration, a root of
+    ``minimal_polynomial``; ``tangents`` gives each irrational ``tan(q/2)`` exactly;
+    ``meaning`` has one plain sentence per number.
+    """
+
+    at: dict[str, str]
+    numbers: Numbers
+    minimal_polynomial: str
+    alpha: str
+    tangents: dict[str, str]
+    meaning: list[str]
+
+    def as_json(self) -> dict:
+        return {"numbers": self.numbers.as_dict(), "blocks": {},
+                "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
+                          "tangents": self.tangents},
+                "omitted": {"blocks": "at a configuration with irrational coordinates only "
+                                      "the numbers (and their motions in words) are "
+                                      "computed"},
+                "meaning": self.meaning}
+
+
+def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
+    """The ``--at`` items split into the rational ones and the revolute joints whose
+    ``tan(q/2)`` is irrational but algebraic (joint -> exact tangent). Values that are
+    neither (``q1=1``: ``tan(1/2)`` is transcendental) raise the usual error."""
+    joints = {j.name: j for j in model.joints}
+    rational, irrational = [], {}
+    for name, value in split_assignments(at, "--at"):
+        joint = joints.get(name)
+        if joint is None or joint.type != "revolute" or isinstance(value, tuple):
+            rational.append((name, value))
+            continue
+        text = value if not isinstance(value, sp.Basic) else sp.sstr(value)
+        try:
+            parse_angle(str(text), f"--at {name}")
+            rational.append((name, value))
+        except NumberError as exc:
+            try:
+                irrational[name] = algebraic_half_angle(str(text), f"--at {name}")
+            except NumberError:
+                raise ConfigurationError(str(exc)) from None
+    return rational, irrational
+
+
+def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
+    """The numbers of ``model`` at ``at``, where some angles have an irrational (but
+    algebraic) ``tan(q/2)``, exactly over the number field they generate.
+
+    Raises :class:`NotIrrational` when every value is rational.
+    """
+    rational, irrational = irrational_values(model, at)
+    if not irrational:
+        raise NotIrrational("every value is rational")
+    config = Configuration.parse(model, dict(rational), free=list(irrational))
+    kin = kinematics.build(model, config)
+    rows = [kin.ring.clear_row(r) for r in kin.Q]
+    names = list(irrational)
+    minimal, coeffs, reps = primitive_element([irrational[n] for n in names], _ALPHA,
+                                              ex=True)
+    alpha = sp.radsimp(sum(c * irrational[n] for c, n in zip(coeffs, names, strict=True)))
+    x = f"t_{names[0]}"
+    kx = kin.ring.names.index(x)
+    coeffs_g = [sp.Rational(c) for c in sp.Poly(minimal, _ALPHA).all_coeffs()[::-1]]
+    scale = sp.ilcm(*[c.q for c in coeffs_g])
+    g = _in_slot(kin.ring.zctx, [c * scale for c in coeffs_g], kx)
+    # alpha lives in the slot of the first irrational joint: that joint's own value goes
+    # first, then the others (polynomials in alpha) are put in
+    order = sorted(range(len(names)), key=lambda i: i != 0)
+    for i in order:
+        k = kin.ring.names.index(f"t_{names[i]}")
+        rep = [sp.Rational(c) for c in reps[i]][::-1]
+        den = sp.ilcm(*[c.q for c in rep]) if rep else 1
+        num = _in_slot(kin.ring.zctx, [c * den for c in rep], kx)
+        rows = substitute_rows(rows, k, -num, kin.ring.zctx.constant(int(den)))
+    quotient = Quotient(g, kx)
+    numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
+    values = {kin.symbols[f"t_{n}"]: irrational[n] for n in names}
+    meaning = motion_sentences(model, numbers, rows, quotient, kin, values,
+                               degree=sp.degree(minimal, _ALPHA))
+    given = {**{n: str(v) for n, v in rational}, **{n: str(dict(split_assignments(
+        at, "--at"))[n]) for n in names}}
+    order_names = [j.name for j in model.joints] + [p.name for p in model.parameters]
+    return IrrationalAnalysis(
+        at={k: given[k] for k in order_names if k in given}, numbers=numbers,
+        minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
+        tangents={n: sp.sstr(irrational[n]) for n in names}, meaning=meaning)
+
+
+def _in_slot(zctx, coeffs: Sequence, k: int):
+    """The integer polynomial ``sum c_i x_k^i`` (``coeffs`` lowest degree first)."""
+    n = len(zctx.gens())
+    terms = {}
+    for i, c in enumerate(coeffs):
+        c = sp.Rational(c)
+        if c:
+            if c.q != 1:
+                raise ValueError("integer coefficients expected")
+            mon = [0] * n
+            mon[k] = i
+            terms[tuple(mon)] = int(c)
+    return zctx.from_dict(terms)
+
+
+def motion_sentences(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
+                     values: Mapping[sp.Symbol, sp.Expr], degree: int,
+                     changed: set[str] | None = None) -> list[str]:
+    """One sentence per number (those in ``changed`` when given) at a point over
+    ``Q(alpha)``: the rows of ``Q`` there (``rows``, modulo ``quotient``) and the exact
+    value of every remaining variable (``values``, SymPy). For a quadratic field, Ni
+    and Nr name their motions in words."""
+    from .interpret import count_sentences, joint_motion_words, object_motions_words
+
+    out = [s for s in count_sentences(numbers, len(model.joints))
+           if changed is None or s.split(" ")[0] in changed]
+    keys = {"Ni", "Nr"} if changed is None else {"Ni", "Nr"} & changed
+    if degree > 2 or not keys:
+        return out
+
+    def exact(e) -> sp.Expr:
+        return sp.radsimp(sp.expand(sp.sympify(e).subs(values)))
+
+    def vectors(block, ncols):
+        return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]
+                for v in nullspace_modulo(block, ncols, quotient)]
+
+    words = {}
+    if "Ni" in keys and numbers.Ni:
+        contacts = [(c.name, [exact(frac_to_sympy(v, kin.symbols)) for v in point])
+                    for c, point in zip(model.contacts, kin.points, strict=True)]
+        twists = vectors([r[:6] for r in rows], 6)
+        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
+                       f"{object_motions_words(twists, contacts)}.")
+    if "Nr" in keys and numbers.Nr:
+        motions = [joint_motion_words(v, model.joint_names)
+                   for v in vectors([r[6:] for r in rows], len(model.joints))]
+        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
+                       "move: " + "; ".join(motions) + ".")
+    return [words.get(s.split(" ")[0], s) for s in out]
+
+
+__all__ = ["IrrationalAnalysis", "NotIrrational", "analyze_irrational", "irrational_values",
+           "motion_sentences"]
+

@@ -1,0 +1,107 @@
+"""Numbers at configurations with irrational tan(q/2), exact over a number field,
+against the independent reference (4x4 transforms, SymPy) ranked over the same field."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from independent import reference_jacobians
+from sympy.polys.matrices import DomainMatrix
+from typer.testing import CliRunner
+
+import coopkin_sym.examples
+from coopkin_sym.cli import app
+from coopkin_sym.configuration import ConfigurationError
+from coopkin_sym.irrational import NotIrrational, analyze_irrational
+from coopkin_sym.model import load_model
+
+runner = CliRunner()
+
+
+def reference_numbers(name: str, angles: dict[str, sp.Expr], L: int = 1) -> dict:
+    """The seven numbers from the reference H G^T and H D, ranked exactly in the
+    number field of their entries."""
+    model = yaml.safe_load(coopkin_sym.examples.example_path(name).read_text())
+    at = {j: (sp.cos(q), sp.sin(q)) for j, q in angles.items()}
+    ref = reference_jacobians(model, {**at, "L": L})
+    gt, hd = ref["HGt"], ref["HD"]
+    m, r = gt.rows, hd.cols
+
+    def rank(a: sp.Matrix) -> int:
+        if 0 in a.shape:
+            return 0
+        return DomainMatrix.from_Matrix(a.applyfunc(sp.radsimp), extension=True
+                                        ).to_dense().rank()
+
+    rq, rg, rd = rank(gt.row_join(-hd)), rank(gt), rank(hd)
+    nm, nr = 6 + r - rq, r - rd
+    return {"Nm": nm, "Nc": nm - nr, "Ni": 6 - rg, "Nr": nr, "Ng": m - rg, "Nd": m - rd,
+            "Nh": m - rq}
+
+
+def test_coincident_contacts_of_case1_in_radicals():
+    a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6")
+    assert a.numbers.as_dict() == reference_numbers(
+        "paper-case1-hard", {"q1": -sp.pi / 6, "q2": sp.pi / 6}) == {
+        "Nm": 3, "Nc": 3, "Ni": 3, "Nr": 0, "Ng": 3, "Nd": 4, "Nh": 1}
+    assert a.tangents == {"q1": "-2 + sqrt(3)", "q2": "2 - sqrt(3)"}
+    assert a.minimal_polynomial == "alpha**2 + 4*alpha + 1"
+    assert a.meaning[2] == ("Ni = 3: with every joint locked, the object can still turn "
+                            "freely about c1 (= c2), in every direction.")
+
+
+def test_two_independent_radicals_give_a_degree_four_field():
+    a = analyze_irrational(load_model("paper-case1-hard"), "q1=pi/4,q2=pi/3,L=2")
+    assert sp.degree(sp.sympify(a.minimal_polynomial), sp.Symbol("alpha")) == 4
+    assert a.numbers.as_dict() == reference_numbers(
+        "paper-case1-hard", {"q1": sp.pi / 4, "q2": sp.pi / 3}, L=2)
+
+
+ANGLES = [k * sp.pi / 12 for k in range(-11, 12)]
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.sampled_from(["paper-case1-hard", "paper-case1-soft", "paper-case2-hard"]),
+       st.lists(st.sampled_from(ANGLES), min_size=2, max_size=2))
+def test_random_multiples_of_pi_over_12_match_the_reference(name, angles):
+    model = load_model(name)
+    joints = [j.name for j in model.joints if j.type == "revolute"][:2]
+    chosen = dict(zip(joints, angles, strict=True))
+    at = ",".join(f"{j}={sp.sstr(q)}" for j, q in chosen.items())
+    try:
+        a = analyze_irrational(model, at + ",L=1")
+    except NotIrrational:
+        return  # every tangent rational (0, +-pi/2): the rational path's business
+    assert a.numbers.as_dict() == reference_numbers(name, chosen)
+
+
+def test_rational_configurations_and_transcendental_angles_are_refused():
+    model = load_model("paper-case1-hard")
+    with pytest.raises(NotIrrational):
+        analyze_irrational(model, "q1=pi/2,q2=0")
+    with pytest.raises(ConfigurationError, match="not exact"):
+        analyze_irrational(model, "q1=1")
+
+
+def test_cli_analyze_at_an_irrational_witness():
+    result = runner.invoke(app, ["analyze", "paper-case1-hard", "--at",
+                                 "q1=-5*pi/6,q2=5*pi/6,L=1"])
+    assert result.exit_code == 0, result.output
+    assert "Nm = 3  Nc = 3  Ni = 3  Nr = 0  Ng = 3  Nd = 4  Nh = 1" in result.stdout
+    assert "alpha = -2 - sqrt(3), a root of alpha**2 + 4*alpha + 1" in result.stdout
+    data = json.loads(runner.invoke(app, ["analyze", "paper-case1-hard", "--at",
+                                          "q1=-5*pi/6,q2=5*pi/6", "--json"]).stdout)
+    assert data["numbers"]["Ni"] == 3 and data["blocks"] == {}
+    assert data["field"]["tangents"] == {"q1": "-2 - sqrt(3)", "q2": "sqrt(3) + 2"}
+
+
+def test_cli_transcendental_angle_is_one_clear_error():
+    result = runner.invoke(app, ["analyze", "paper-case1-hard", "--at", "q1=1"])
+    assert result.exit_code == 2
+    assert result.stderr.startswith("coopkin: error: --at q1: angle '1' is not exact")
+    assert result.stderr.count("\n") == 1
