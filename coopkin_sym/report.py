@@ -127,6 +127,35 @@ def _condition(c: Component) -> str:
     return c.condition or " and ".join(f"{e} = 0" for e in c.equations) or "(no equations)"
 
 
+# a clause of a condition longer than this is named, not written out, in tables/titles
+_LONG_CLAUSE = 48
+
+
+def _short_condition(c: Component) -> str:
+    """The condition with every long polynomial clause replaced by ``P<k>(vars) = 0``,
+    ``k`` its place among the component's equations (written out in the details).
+
+    Example
+    -------
+    >>> c = Component(["t_a2", "3*t_a1**2*t_b1**2 + 8*t_a1*t_b1 + 3*t_a1**2 - 7*t_b1 + 1"],
+    ...               {}, None, True, condition="a2 = 0, 3*t_a1**2*t_b1**2 + 8*t_a1*t_b1"
+    ...               " + 3*t_a1**2 - 7*t_b1 + 1 = 0")
+    >>> _short_condition(c)
+    'a2 = 0, P2(t_a1, t_b1) = 0'
+    """
+    text = _condition(c)
+    out = []
+    for clause in text.split(", "):
+        if len(clause) > _LONG_CLAUSE and clause.endswith(" = 0"):
+            poly = clause[:-4]
+            k = next((i + 1 for i, e in enumerate(c.equations) if e == poly), None)
+            names = sorted(set(re.findall(r"\bt_[A-Za-z0-9_]+|\b[A-Za-z]\w*", poly)))
+            label = f"P{k}" if k else "P"
+            clause = f"{label}({', '.join(names)}) = 0"
+        out.append(clause)
+    return ", ".join(out)
+
+
 # ------------------------------------------------------------------ document model
 #
 # The report is built once as a list of blocks; each format renders the blocks.
@@ -223,7 +252,7 @@ def _components_table(locus: Locus) -> _Table:
         name = _component_name(k)
         if c.parent is not None:
             name += f" (in #{c.parent + 1})"
-        where = [("cond", _condition(c))]
+        where = [("cond", _short_condition(c))]
         if not c.real:
             where.append(_t(" (no real points)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
@@ -253,8 +282,8 @@ def _equation_parts(equations: Sequence[str]) -> list[tuple[str, str]]:
 
 def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     name = f"Component {_component_name(k)}: "
-    out: list = [_H(3, name + _condition(c), f"component-{k + 1}",
-                    [_t(name), ("cond" if c.condition else "text", _condition(c))])]
+    out: list = [_H(3, name + _short_condition(c), f"component-{k + 1}",
+                    [_t(name), ("cond" if c.condition else "text", _short_condition(c))])]
     items: list[list[tuple[str, str]]] = []
     items.append([("strong", "Equations:"), _t(" "), *_equation_parts(c.equations)])
     if c.condition:
@@ -356,7 +385,7 @@ def _float_summary_blocks(locus: Locus) -> list:
         if not c.float_checks:
             continue
         v = [_verdict(f, locus.generic) for f in c.float_checks]
-        rows.append([[_t(_component_name(k))], [("cond", _condition(c))],
+        rows.append([[_t(_component_name(k))], [("cond", _short_condition(c))],
                      [_t(str(len(v)))], [_t(str(v.count("agree")))],
                      [_t(str(v.count("missed")))], [_t(str(v.count("false")))]])
     out.append(_Table(["#", "where", "tests", "agree", "missed singular",
@@ -682,13 +711,18 @@ def _tex_at(text: str) -> str:
     return ", ".join(out)
 
 
+# names in conditions that are SymPy's, not variables
+_FUNCTIONS = {"pi", "atan", "sqrt", "sin", "cos", "tan", "CRootOf"}
+
+
 def _tex_side(text: str) -> str | None:
     text = text.strip()
     sign = ""
     if text.startswith("\u00b1"):
         sign, text = r"\pm ", text[1:]
     names = re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)
-    local = {n: sp.Symbol(n) for n in names if n != "pi" and n.isidentifier()}
+    local = {n: sp.Symbol(n) for n in names
+             if n not in _FUNCTIONS and n.isidentifier()}
     try:
         expr = sp.parse_expr(text, local_dict=local)
     except Exception:  # noqa: BLE001
