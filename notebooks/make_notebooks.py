@@ -461,6 +461,7 @@ NB03 = [
 
     import coopkin_sym
     from coopkin_sym.draw import draw_system
+    from coopkin_sym.irrational import analyze_irrational
     from coopkin_sym.locus import compute_locus
     from coopkin_sym.locus_plot import plot_components
     from coopkin_sym.report import write_report
@@ -610,6 +611,11 @@ NB03 = [
         case1.analyze("q1=-pi/6,q2=pi/6")
     except coopkin_sym.ConfigurationError as exc:
         print("direct analysis over Q:", exc)
+    # a separate path (fresh kinematics, a primitive element of the field), the one
+    # `coopkin analyze --at q1=-pi/6,q2=pi/6` takes
+    again = analyze_irrational(case1.model, "q1=-pi/6,q2=pi/6")
+    print("over Q(alpha):", again.numbers.as_dict(), "| alpha =", again.alpha)
+    assert again.numbers.as_dict() == coincident.numbers
     print("decided:", coincident.decided)
     print("witness:", coincident.algebraic_witness["point"],
           "| alpha =", coincident.algebraic_witness["root"])
