@@ -184,6 +184,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
             _pi_chart(ctx, reporter)
         else:
             locus.unexplored.append("q = pi (second chart): not checked, time bound reached")
+    if any(c.algebraic_witness for c in locus.components):
+        locus.notes.append(
+            "A witness with irrational coordinates is decided over Q(alpha); its float "
+            "checks use a rational point within 1e-40 of it (the same float64 image), "
+            "with the witness's own exact numbers at distance 0.")
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 
