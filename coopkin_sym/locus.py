@@ -21,9 +21,16 @@ irreducible polynomial (:mod:`coopkin_sym.exact.quotient`: over the function fie
 curved hypersurface, or over a number field ``Q(alpha)`` for points with irrational
 coordinates, every conjugate point at once). Points of two variables come from
 resultants, a gcd over ``Q(alpha)`` and, when one coordinate does not separate them,
-the coordinate ``y + c x``. Every reported component gets an exact witness checked by a
-direct analysis: rational where one exists, else a real algebraic point (radicals or
-``CRootOf``). ``q = pi`` (``t = oo``) is checked joint by joint in the second chart.
+the coordinate ``y + c x``; families of codimension 2 in three or four variables are
+solved for two of them over the field of the others. Every reported component gets
+an exact witness checked by a direct analysis: rational where one exists, else a real
+algebraic point (radicals or ``CRootOf``). ``q = pi`` (``t = oo``) is checked joint
+by joint in the second chart.
+
+This module runs the search and decides the components; the polynomial systems are
+solved in :mod:`coopkin_sym.locus_algebra`, witnesses and float checks are made in
+:mod:`coopkin_sym.locus_witness`, and the results are the plain data of
+:mod:`coopkin_sym.locus_types`.
 
 Example
 -------
@@ -45,31 +52,48 @@ import random
 import time
 from dataclasses import dataclass
 from fractions import Fraction
-from math import atan, pi, tan
 
 import flint
 import sympy as sp
 
 from . import kinematics
-from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact import elimination as el
-from .exact.numberfield import NumberField
 from .exact.quotient import Quotient, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
-from .irrational import motion_sentences
-from .locus_types import Component, FloatCheck, Locus
+from .locus_algebra import (
+    has_real_point,
+    linear_equation,
+    name_of,
+    normalize,
+    poly_text,
+    rational_point,
+    solve_small,
+    substitute_values,
+    vars_of,
+)
+from .locus_types import Component, Locus
+from .locus_witness import (
+    algebraic_condition,
+    algebraic_witness_on,
+    attach_algebraic_witness,
+    attach_witness,
+    complete_point,
+    family_witness,
+    numbers_at_values,
+    to_at,
+    witness_linear,
+)
 from .mobility import Numbers, analyze, decompose, numbers_modulo
 from .model import Model
-from .numeric import float_numbers
 
 # values tried, in order, for the free coordinates of a witness
-_NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
+NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
          Fraction(1, 3), Fraction(-1, 2), Fraction(2, 3), Fraction(5, 2), Fraction(-3, 4),
          Fraction(1), Fraction(-1), Fraction(0), Fraction(7, 5), Fraction(-5, 3)]
-_FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
+FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 
 
 class LocusError(ValueError):
@@ -160,6 +184,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
             _pi_chart(ctx, reporter)
         else:
             locus.unexplored.append("q = pi (second chart): not checked, time bound reached")
+    if any(c.algebraic_witness for c in locus.components):
+        locus.notes.append(
+            "A witness with irrational coordinates is decided over Q(alpha); its float "
+            "checks use a rational point within 1e-40 of it (the same float64 image), "
+            "with the witness's own exact numbers at distance 0.")
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 
@@ -229,7 +258,7 @@ def _minor_combinations(rows, ctx: _Context) -> list:
     rank = ncols - len(el.nullspace_rref(rows, ncols, zctx)[0])
     if rank == 0:
         return []
-    nvars = len({n for r in rows for e in r for n in _vars_of(ctx, e)})
+    nvars = len({n for r in rows for e in r for n in vars_of(ctx, e)})
     if nvars > 4 and not _common_factor_on_a_line(ctx, rows, rank):
         # no hypersurface part (the lower-dimensional part is solved only in up to two
         # variables, so nothing here needs the full determinants)
@@ -327,7 +356,7 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
         if not g.is_constant():
             _, fs = g.factor()
             for f, _e in fs:
-                f = _normalize(f)
+                f = normalize(f)
                 key = str(f)
                 drops = factors.get(key, (f, set()))[1]
                 drops.add(name.split(":")[0])
@@ -346,7 +375,7 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             continue
         if any(not c.gcd(f).is_constant() for c in charts):
             ctx.locus.unexplored.append(
-                f"inside {'; '.join(equations)}: the points where {_text(ctx, f)} = 0 lie "
+                f"inside {'; '.join(equations)}: the points where {poly_text(ctx, f)} = 0 lie "
                 "outside its parametrization; not explored")
             continue
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
@@ -355,29 +384,15 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
         _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts)
 
 
-def _normalize(f):
-    f = f if int(f.leading_coefficient()) > 0 else -f
-    c = f.content()
-    return f / f.context().constant(c) if c != 1 else f
-
-
-def _vars_of(ctx: _Context, f) -> list[str]:
-    return [n for n, d in zip(ctx.ring_names, f.degrees(), strict=True) if d > 0]
-
-
 def _drops_text(drops: set[str]) -> list[str]:
     names = {"HG^T": "HG^T", "HD": "HD", "Y": "Q", "A": "Q", "Q": "Q"}
     return sorted({names[d] for d in drops})
 
 
-def _text(ctx: _Context, f) -> str:
-    return sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
-
-
 def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, base, depth,
                    parent, reporter, charts=()) -> None:
-    names = _vars_of(ctx, f)
-    f_text = _text(ctx, f)
+    names = vars_of(ctx, f)
+    f_text = poly_text(ctx, f)
     if all(ctx.kinds[n][0] == "parameter" for n in names):
         text = f"{f_text} = 0"
         if text not in ctx.locus.parameter_conditions:
@@ -401,7 +416,7 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
     if numbers == base:
         return
     eqs = equations + [f_text]
-    witness = _witness_linear(ctx, sub_rows, linear, f0, f1, point_so_far, numbers)
+    witness = witness_linear(ctx, sub_rows, linear, f0, f1, point_so_far, numbers)
     comp = _component(ctx, eqs, numbers, witness, "hypersurface" if depth == 0 else
                       "subvariety", drops, depth, parent,
                       "exact over the component's function field")
@@ -428,8 +443,8 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
                       parent) -> None:
     """A factor linear in no variable: its numbers over its function field (rank modulo
     ``f``), a witness on it (rational, else a real algebraic point)."""
-    names = _vars_of(ctx, f)
-    real = _has_real_point(ctx, f, names)
+    names = vars_of(ctx, f)
+    real = has_real_point(ctx, f, names)
     if real is False:
         text = f"{f_text} = 0 (no real points)"
         if text not in ctx.locus.dropped:
@@ -446,57 +461,15 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
                       "irreducible polynomial)", real=real is True)
     if comp is None:
         return
-    point = _rational_point(ctx, f, names)
+    point = rational_point(ctx, f, names)
     if point is not None:
-        values = _complete_point(ctx, point_so_far, point)
-        if values is not None and _numbers_at_values(ctx, values) == numbers:
-            _attach_witness(ctx, comp, _to_at(ctx, values), numbers)
+        values = complete_point(ctx, point_so_far, point)
+        if values is not None and numbers_at_values(ctx, values) == numbers:
+            attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
-        _algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
+        algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
     ctx.locus.unexplored.append(
         f"inside {f_text} = 0: deeper drops not explored (no rational parametrization)")
-
-
-def _has_real_point(ctx, f, names) -> bool | None:
-    expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
-    syms = [ctx.symbols[n] for n in names]
-    for _ in range(12):
-        others = {s: sp.Rational(ctx.rng.randint(-9, 9), ctx.rng.randint(1, 5))
-                  for s in syms[1:]}
-        uni = sp.Poly(expr.subs(others), syms[0])
-        if uni.degree() > 0 and uni.count_roots() > 0:
-            return True
-        if len(syms) == 1:
-            return False
-    return None
-
-
-def _rational_point(ctx, f, names) -> dict[str, Fraction] | None:
-    expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
-    syms = [ctx.symbols[n] for n in names]
-    for x_idx in range(len(syms)):
-        x = syms[x_idx]
-        others_syms = [s for i, s in enumerate(syms) if i != x_idx]
-        for values in itertools.islice(itertools.product(_NICE, repeat=len(others_syms)),
-                                       60):
-            sub = {s: sp.Rational(v.numerator, v.denominator)
-                   for s, v in zip(others_syms, values, strict=True)}
-            uni = sp.Poly(expr.subs(sub), x)
-            if uni.degree() <= 0:
-                continue
-            roots = [r for r in sp.roots(uni, filter="Q") if r.is_Rational]
-            if roots:
-                point = {str(s): Fraction(int(v.p), int(v.q)) for s, v in sub.items()}
-                point[str(x)] = Fraction(int(roots[0].p), int(roots[0].q))
-                return {_name_of(ctx, k): v for k, v in point.items()}
-    return None
-
-
-def _name_of(ctx, symbol_name: str) -> str:
-    for n, s in ctx.symbols.items():
-        if str(s) == symbol_name:
-            return n
-    return symbol_name
 
 
 def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
@@ -506,7 +479,7 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
     rational_points: list[dict] = []
     algebraic_points: list[tuple] = []
     for polys in rests:
-        names_used = sorted({n for p in polys for n in _vars_of(ctx, p)},
+        names_used = sorted({n for p in polys for n in vars_of(ctx, p)},
                             key=ctx.ring_names.index)
         if not names_used:
             continue
@@ -522,7 +495,7 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
             if note not in ctx.locus.unexplored:
                 ctx.locus.unexplored.append(note)
             continue
-        points, algebraic, unresolved = _solve_small(ctx, polys, names_used)
+        points, algebraic, unresolved = solve_small(ctx, polys, names_used)
         for text in unresolved:
             note = f"real points {text}: numbers not decided"
             if note not in ctx.locus.unexplored:
@@ -566,11 +539,11 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
             continue
         _, factors = res.factor()
         for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
-            h = _normalize(h)
+            h = normalize(h)
             if _no_real_points(ctx, h):
                 continue
             if h.degrees()[kx] == 0:
-                note = (f"depth {depth}: the family where {_text(ctx, h)} = 0 (codimension "
+                note = (f"depth {depth}: the family where {poly_text(ctx, h)} = 0 (codimension "
                         "2 or more) not solved")
                 if note not in ctx.locus.unexplored:
                     ctx.locus.unexplored.append(note)
@@ -587,9 +560,9 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
 
 def _no_real_points(ctx, f) -> bool:
     """Whether ``f = 0`` has no real points (then it is listed as dropped)."""
-    if _has_real_point(ctx, f, _vars_of(ctx, f)) is not False:
+    if has_real_point(ctx, f, vars_of(ctx, f)) is not False:
         return False
-    text = f"{_text(ctx, f)} = 0 (no real points)"
+    text = f"{poly_text(ctx, f)} = 0 (no real points)"
     if text not in ctx.locus.dropped:
         ctx.locus.dropped.append(text)
     return True
@@ -622,7 +595,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
         if k.degrees()[ky] == 0:
             continue
-        k = _normalize(k)
+        k = normalize(k)
         if _no_real_points(ctx, k):
             continue
 
@@ -650,11 +623,11 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
                        "ranks modulo its irreducible polynomial)")
         if numbers == base:
             continue
-        comp = _component(ctx, equations + [_text(ctx, h), _text(ctx, k)], numbers, None,
+        comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, k)], numbers, None,
                           "subvariety", {"Q"}, depth, parent, decided)
         if comp is None:
             continue
-        _family_witness(ctx, comp, k, y, inner, numbers)
+        family_witness(ctx, comp, k, y, inner, numbers)
 
 
 def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
@@ -663,7 +636,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
     if len(common) > 2:
-        note = (f"depth {depth}: where {_text(ctx, h)} = 0, {len(common) - 1} values of "
+        note = (f"depth {depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} values of "
                 f"{y} share each point: not solved")
         if note not in ctx.locus.unexplored:
             ctx.locus.unexplored.append(note)
@@ -679,7 +652,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     if numbers == base:
         return
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
-    comp = _component(ctx, equations + [_text(ctx, h), _text(ctx, y_eq)], numbers, None,
+    comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)], numbers, None,
                       "subvariety", {"Q"}, depth, parent,
                       "exact over the family's function field (ranks modulo its "
                       "irreducible polynomial)")
@@ -687,35 +660,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         return
     inner = dict(point_so_far)
     inner[y] = (c0, c1)
-    _family_witness(ctx, comp, h, x, inner, numbers)
-
-
-def _family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Numbers) -> None:
-    """A witness on a family ``f(x, params) = 0`` (the other coordinates given by
-    ``inner``): nice values for the parameters, then a rational root of what is left
-    in ``x`` if there is one, else a real algebraic one."""
-    k = ctx.ring_names.index(x)
-    params = [n for n in _vars_of(ctx, f) if n != x]
-    zctx = ctx.ring.zctx
-    for values in itertools.islice(itertools.product(_NICE, repeat=len(params)), 12):
-        point = dict(zip(params, values, strict=True))
-        g = f
-        for n, v in point.items():
-            j = ctx.ring_names.index(n)
-            g = substitute(g, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
-                            g.degrees()[j])
-        if g.is_zero() or g.degrees()[k] == 0:
-            continue
-        rational, curved = _roots(ctx, g, x)
-        for x0 in rational:
-            full = _complete_point(ctx, inner, {**point, x: x0})
-            if full is not None and _numbers_at_values(ctx, full) == numbers:
-                _attach_witness(ctx, comp, _to_at(ctx, full), numbers)
-                return
-        for g1 in curved:
-            _attach_algebraic_witness(ctx, comp, x, g1, point, inner, numbers)
-            if comp.algebraic_witness is not None:
-                return
+    family_witness(ctx, comp, h, x, inner, numbers)
 
 
 def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,
@@ -730,10 +675,10 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         quotient = Quotient(g, ctx.ring_names.index(x))
     x = algebraic[0] if algebraic is not None else None
     for c in charts:
-        c_here = _substitute_values(ctx, [[c]], values, x)[0][0]
+        c_here = substitute_values(ctx, [[c]], values, x)[0][0]
         if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
             return  # outside the enclosing parametrization
-    rows = _substitute_values(ctx, q_rows, values, x)
+    rows = substitute_values(ctx, q_rows, values, x)
     if quotient is None:
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     else:
@@ -742,9 +687,9 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         return
     eqs = list(equations)
     if algebraic is not None:
-        eqs += [_text(ctx, e) for e in algebraic[2]]
+        eqs += [poly_text(ctx, e) for e in algebraic[2]]
     else:
-        eqs += [_text(ctx, _linear_equation(ctx, n, v)) for n, v in values.items()]
+        eqs += [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
     dims = set(values) | ({x} if x is not None else set())
     kind = "isolated" if len(dims) == len(free) else "subvariety"
     if algebraic is None:
@@ -754,13 +699,13 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         if comp is None:
             return
         for offset in range(6):
-            full = _complete_point(ctx, point_so_far, values, offset)
-            if full is not None and _numbers_at_values(ctx, full) == numbers:
-                _attach_witness(ctx, comp, _to_at(ctx, full), numbers)
+            full = complete_point(ctx, point_so_far, values, offset)
+            if full is not None and numbers_at_values(ctx, full) == numbers:
+                attach_witness(ctx, comp, to_at(ctx, full), numbers)
                 break
         return
     x, g, eq_polys, alpha = algebraic
-    condition = _algebraic_condition(ctx, x, g, values)
+    condition = algebraic_condition(ctx, x, g, values)
     if equations:
         inside = _condition(ctx, equations)
         condition = " or ".join(f"{inside}, {part}" for part in condition.split(" or "))
@@ -770,495 +715,7 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
                       f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
                       "conjugate point at once)", condition=condition)
     if comp is not None:
-        _attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
-
-
-def _as_poly(ctx, v, x: str | None):
-    """A coordinate value (``Fraction``, or ``fmpq_poly`` in ``x``) as ``(P, c)``:
-    an integer polynomial in the ring and a positive integer with ``v = P/c``."""
-    zctx = ctx.ring.zctx
-    if isinstance(v, Fraction):
-        return zctx.constant(v.numerator), v.denominator
-    k = ctx.ring_names.index(x)
-    num, den = v.numer(), int(v.denom())
-    terms = {}
-    for e, c in enumerate(num.coeffs()):
-        if c:
-            mon = [0] * len(ctx.ring_names)
-            mon[k] = e
-            terms[tuple(mon)] = int(c)
-    return zctx.from_dict(terms), den
-
-
-def _substitute_values(ctx, rows, values: dict, x: str | None = None):
-    """``rows`` with each variable in ``values`` replaced (rationals, or polynomials in
-    the algebraic variable ``x``), rows scaled by the cleared denominators. A value for
-    ``x`` itself (a polynomial in its own slot) goes first, so the others' values,
-    which are polynomials in ``x``, are not substituted again."""
-    ordered = sorted(values.items(), key=lambda nv: nv[0] != x)
-    for n, v in ordered:
-        num, den = _as_poly(ctx, v, x)
-        rows = substitute_rows(rows, ctx.ring_names.index(n), -num,
-                                ctx.ring.zctx.constant(den))
-    return rows
-
-
-def _solve_small(ctx, polys, names: list[str]):
-    """Common zeros of ``polys`` in one or two variables, exactly: the rational points,
-    the real algebraic ones as ``(x, g, {y: r(x)}, equations, alpha)`` (``g``
-    irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
-    and descriptions of what could not be resolved. Resultants and factorization over
-    Z (python-flint)."""
-    x = names[0]
-    if len(names) == 1:
-        g = polys[0]
-        for p in polys[1:]:
-            g = g.gcd(p)
-        rational, curved = _roots(ctx, g, x)
-        return [{x: r} for r in rational], [(x, f, {}, [f], x) for f in curved], []
-    return _solve_two(ctx, polys, names)
-
-
-def _solve_two(ctx, polys, names: list[str]):
-    """:func:`_solve_small` for two variables, eliminating the second: ``x`` must
-    generate each point's field (else the point is left unresolved)."""
-    zctx = ctx.ring.zctx
-    x, y = names
-    combo = polys[1] if len(polys) == 2 else sum(
-        (p * zctx.constant(ctx.rng.randint(1, 9)) for p in polys[1:]), zctx.constant(0))
-    g = polys[0].resultant(combo, y)
-    for p in polys[1:]:
-        if g.is_constant():
-            break
-        g = g.gcd(polys[0].resultant(p, y))
-    points: list[dict] = []
-    algebraic: list[tuple] = []
-    unresolved: list[str] = []
-    if g.is_zero() or g.is_constant():
-        return points, algebraic, unresolved
-    k = ctx.ring_names.index(x)
-    rational, curved = _roots(ctx, g, x)
-    for x0 in rational:
-        f0, f1 = zctx.constant(-x0.numerator), zctx.constant(x0.denominator)
-        uni = None
-        for p in polys:
-            q = substitute(p, k, f0, f1, p.degrees()[k])
-            uni = q if uni is None else uni.gcd(q)
-        ys, curved_y = _roots(ctx, uni, y)
-        points += [{x: x0, y: y0} for y0 in ys]
-        algebraic += [(y, h, {x: x0}, [h, _linear_equation(ctx, x, x0)], y)
-                      for h in curved_y]
-    for h in curved:
-        field = NumberField(_univariate(ctx, h, x))
-        ky = ctx.ring_names.index(y)
-        common = field.squarefree(field.gcd([_coefficients_in(ctx, p, k, ky)
-                                             for p in polys]))
-        if len(common) == 2:
-            value = field.element(-common[0])
-            algebraic.append((x, h, {y: value}, [h, _value_equation(ctx, y, value, x)], x))
-        elif len(common) > 2:
-            sheared = _sheared(ctx, [*polys, h], x, y)
-            if sheared:
-                algebraic += sheared
-            else:
-                unresolved.append(f"where {_text(ctx, h)} = 0 and {len(common) - 1} values "
-                                  f"of {y} share each {x}")
-    return points, algebraic, unresolved
-
-
-def _sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
-    """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
-    (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
-    point's field. Returns ``(y, m(z), {y: z - c r(z), x: r(z)}, equations)`` with the
-    equations in the original coordinates (``m(y + c x)``, ``x - r(y + c x)``)."""
-    zctx = ctx.ring.zctx
-    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
-    gx, gy = zctx.gens()[kx], zctx.gens()[ky]
-    for c in tries:
-        moved = [substitute(p, ky, c * gx - gy, zctx.constant(1), p.degrees()[ky])
-                 for p in polys]
-        elim = None
-        for p in moved[1:]:
-            r = moved[0].resultant(p, x) if moved[0].degrees()[kx] else moved[0]
-            elim = r if elim is None else elim.gcd(r)
-        if elim is None or elim.is_zero() or elim.is_constant():
-            continue
-        _, factors = elim.factor()
-        out, separated = [], True
-        for m, _e in factors:
-            if m.degrees()[kx] or m.is_constant():
-                continue
-            if not RealRoot.all_of(_univariate(ctx, m, y).coeffs()):
-                continue
-            field = NumberField(_univariate(ctx, m, y))
-            common = field.squarefree(field.gcd([_coefficients_in(ctx, p, ky, kx)
-                                                 for p in moved]))
-            if len(common) == 1:
-                continue
-            if len(common) > 2:
-                separated = False
-                break
-            r = field.element(-common[0])
-            z = flint.fmpq_poly([0, 1])
-            values = {y: field.element(z - c * r), x: r}
-            back = gy + c * gx
-            m_back = substitute(_normalize(m), ky, -back, zctx.constant(1), m.degrees()[ky])
-            num, den = _as_poly(ctx, r, y)
-            x_eq = zctx.constant(den) * gx - substitute(num, ky, -back, zctx.constant(1),
-                                                         num.degrees()[ky])
-            out.append((y, _normalize(m), values, [_normalize(m_back), x_eq],
-                        f"{y} {'+' if c > 0 else '-'} {abs(c) if abs(c) != 1 else ''}"
-                        f"{'*' if abs(c) != 1 else ''}{x}"))
-        if separated and out:
-            return out
-    return []
-
-
-def _linear_equation(ctx, name: str, value: Fraction):
-    zctx = ctx.ring.zctx
-    return zctx.constant(value.denominator) * zctx.gens()[ctx.ring_names.index(name)] - \
-        zctx.constant(value.numerator)
-
-
-def _value_equation(ctx, name: str, value, x: str):
-    """``den * name - P(x)`` for ``name = P(x)/den``."""
-    zctx = ctx.ring.zctx
-    num, den = _as_poly(ctx, value, x)
-    return zctx.constant(den) * zctx.gens()[ctx.ring_names.index(name)] - num
-
-
-def _univariate(ctx, g, x: str) -> flint.fmpq_poly:
-    k = ctx.ring_names.index(x)
-    coeffs = [0] * (g.degrees()[k] + 1)
-    for mon, c in g.to_dict().items():
-        coeffs[mon[k]] = int(c)
-    return flint.fmpq_poly(coeffs)
-
-
-def _coefficients_in(ctx, p, kx: int, ky: int) -> list:
-    """``p(x, y)`` as a list of polynomials in ``x`` (``fmpq_poly``), by power of y."""
-    by_y: dict[int, dict[int, int]] = {}
-    for mon, c in p.to_dict().items():
-        by_y.setdefault(mon[ky], {})[mon[kx]] = int(c)
-    out = []
-    for e in range(max(by_y) + 1):
-        terms = by_y.get(e, {})
-        coeffs = [0] * (max(terms, default=0) + 1)
-        for d, c in terms.items():
-            coeffs[d] = c
-        out.append(flint.fmpq_poly(coeffs))
-    return out
-
-
-def _roots(ctx, g, name: str):
-    """Rational roots of a univariate polynomial ``g`` (in ``name``), and its
-    irreducible factors of higher degree that have real roots (those without are
-    listed as dropped)."""
-    if g.is_zero() or g.is_constant():
-        return [], []
-    k = ctx.ring_names.index(name)
-    _, factors = g.factor()
-    roots, curved = [], []
-    for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
-        if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
-            f1, f0 = split_linear(f, k)
-            roots.append(Fraction(-int(f0.leading_coefficient()) if not f0.is_zero() else 0,
-                                  int(f1.leading_coefficient())))
-        elif sum(f.degrees()) == f.degrees()[k]:
-            if RealRoot.all_of(_univariate(ctx, f, name).coeffs()):
-                curved.append(_normalize(f))
-            else:
-                text = f"{_text(ctx, f)} = 0 (no real points)"
-                if text not in ctx.locus.dropped:
-                    ctx.locus.dropped.append(text)
-    return roots, curved
-
-
-# --- points and witnesses ---------------------------------------------------------------
-def _complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: int = 0):
-    """A full point: the given coordinates, nice values for the others, then the
-    parametrized coordinates of enclosing components (``x = -f0/f1``)."""
-    values = dict(point)
-    for n in ctx.ring_names:
-        if n not in values and n not in point_so_far:
-            values[n] = _NICE[(len(values) + offset) % len(_NICE)]
-    for n, (f0, f1) in reversed(list(point_so_far.items())):
-        args = [values.get(k, Fraction(0)) for k in ctx.ring_names]
-        den = _eval(f1, args)
-        if den == 0:
-            return None
-        values[n] = -_eval(f0, args) / den
-    return values
-
-
-def _eval(p, args: list[Fraction]) -> Fraction:
-    total = Fraction(0)
-    for mon, c in p.to_dict().items():
-        term = Fraction(int(c))
-        for a, e in zip(args, mon, strict=True):
-            if e:
-                term *= a ** int(e)
-        total += term
-    return total
-
-
-def _witness_linear(ctx, sub_rows, name, f0, f1, point_so_far, numbers):
-    """A rational point of the component where the numbers are the component's."""
-    others = [n for n in ctx.ring_names if n != name and n not in point_so_far]
-    tries = itertools.islice(itertools.product(_NICE, repeat=len(others)), 200)
-    for values in tries:
-        point = dict(zip(others, values, strict=True))
-        inner = dict(point_so_far)
-        inner[name] = (f0, f1)
-        full = _complete_point(ctx, inner, point)
-        if full is None:
-            continue
-        if _numbers_at_values(ctx, full) == numbers:
-            return _to_at(ctx, full)
-    return None
-
-
-def _numbers_at_values(ctx, values: dict[str, Fraction]) -> Numbers | None:
-    at = _to_at(ctx, values)
-    if at is None:
-        return None
-    return analyze(ctx.model, Configuration.parse(ctx.model, at)).numbers
-
-
-def _to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
-    """A full point in ``--at`` syntax (joints set by the caller and fixed values
-    included)."""
-    out: dict[str, str] = {}
-    config = ctx.config
-    for j in ctx.model.joints:
-        if j.name in config.revolute:
-            out[j.name] = angle_text(*config.revolute[j.name])
-        elif j.name in config.prismatic:
-            out[j.name] = sp.sstr(config.prismatic[j.name])
-    for n, (kind, name) in ctx.kinds.items():
-        v = values.get(n)
-        if v is None:
-            return None
-        if kind == "revolute":
-            t = sp.Rational(v.numerator, v.denominator)
-            out[name] = angle_text((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
-        else:
-            out[name] = f"{v.numerator}" if v.denominator == 1 else f"{v.numerator}/" \
-                f"{v.denominator}"
-    for p, v in config.parameters.items():
-        out[p] = sp.sstr(v)
-    return out
-
-
-# --- real algebraic witnesses -----------------------------------------------------------
-def _complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, values: dict,
-                        offset: int = 0) -> dict | None:
-    """A full point over ``Q(alpha)``: every variable but ``x`` as an element (a
-    polynomial in ``x`` of degree below ``deg g``); nice rationals for the free ones."""
-    full = {n: field.element(v if not isinstance(v, Fraction) else
-                             flint.fmpq(v.numerator, v.denominator))
-            for n, v in values.items()}
-    for n in ctx.ring_names:
-        if n != x and n not in full and n not in point_so_far:
-            v = _NICE[(len(full) + offset) % len(_NICE)]
-            full[n] = field.element(flint.fmpq(v.numerator, v.denominator))
-    for n, (f0, f1) in reversed(list(point_so_far.items())):
-        den = _eval_in(ctx, f1, full, x, field)
-        if den.is_zero():
-            return None
-        full[n] = field.element(-_eval_in(ctx, f0, full, x, field) * field.inverse(den))
-    return full
-
-
-def _eval_in(ctx, p, values: dict, x: str, field: NumberField):
-    """``p`` at a point over ``Q(alpha)`` (``x`` is alpha itself)."""
-    args = [flint.fmpq_poly([0, 1]) if n == x and n not in values else
-            values.get(n, flint.fmpq_poly(0))
-            for n in ctx.ring_names]
-    total = flint.fmpq_poly(0)
-    for mon, c in p.to_dict().items():
-        term = flint.fmpq_poly(int(c))
-        for a, e in zip(args, mon, strict=True):
-            if e:
-                term = field.element(term * a ** int(e))
-        total += term
-    return field.element(total)
-
-
-def _numbers_at_algebraic(ctx, x: str, g, full: dict) -> Numbers:
-    """The numbers at a point over ``Q(alpha)``, by a direct exact analysis: the rows of
-    ``Q`` with every free variable (nothing from the locus search) evaluated there."""
-    rows = _substitute_values(ctx, ctx.rows0, full, x)
-    return numbers_modulo(rows, ctx.model, ctx.row_contacts,
-                          Quotient(g, ctx.ring_names.index(x)))
-
-
-def _value_expr(v, root: sp.Expr) -> sp.Expr:
-    """An element of ``Q(alpha)`` (polynomial in alpha) at the real root ``root``."""
-    if isinstance(v, Fraction):
-        return sp.Rational(v.numerator, v.denominator)
-    coeffs = [sp.Rational(int(c.p), int(c.q)) for c in v.coeffs()]
-    return sp.radsimp(sp.expand(sum(c * root**i for i, c in enumerate(coeffs))))
-
-
-def _value_near(v, a: Fraction) -> Fraction:
-    if isinstance(v, Fraction):
-        return v
-    return sum((Fraction(int(c.p), int(c.q)) * a**i for i, c in enumerate(v.coeffs())),
-               Fraction(0))
-
-
-def _algebraic_point_text(ctx, values: dict, root: RealRoot, x: str,
-                          only: set[str] | None = None) -> dict[str, str]:
-    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf)."""
-    expr = root.expression()
-    out: dict[str, str] = {}
-    for n, (kind, name) in ctx.kinds.items():
-        if only is not None and n not in only:
-            continue
-        v = expr if n == x and n not in values else _value_expr(values[n], expr)
-        out[name] = sp.sstr(angle_of(v)) if kind == "revolute" else sp.sstr(v)
-    return out
-
-
-def _algebraic_condition(ctx, x: str, g, values: dict) -> str:
-    """The real points of an algebraic component, in angles where they read simply."""
-    names = {x, *values}
-    roots = RealRoot.all_of(_univariate(ctx, g, x).coeffs())
-    kinds = {name: kind for kind, name in ctx.kinds.values()}
-    parts = []
-    for root in roots:
-        text = _algebraic_point_text(ctx, values, root, x, only=names)
-        parts.append(", ".join(_readable(k, v, kinds[k]) for k, v in text.items()))
-    return " or ".join(parts)
-
-
-def _readable(name: str, exact: str, kind: str) -> str:
-    """``name = exact`` when short, else its value to 4 significant digits (in degrees
-    for an angle); the exact value stays in the witness."""
-    if len(exact) <= 32 and "CRootOf" not in exact:
-        return f"{name} = {exact}"
-    value = float(sp.sympify(exact).evalf(30))  # float-ok: display only
-    if kind == "revolute":
-        return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
-    return f"{name} \u2248 {value:.4g}"
-
-
-def _attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
-                              point_so_far: dict, numbers: Numbers,
-                              alpha: str | None = None) -> None:
-    """A witness at a real root of ``g``: exact coordinates (radicals or ``CRootOf``),
-    its numbers from a direct analysis over ``Q(alpha)``, and float checks on its float
-    image."""
-    field = NumberField(_univariate(ctx, g, x))
-    roots = RealRoot.all_of(field.g.coeffs())
-    if not roots:
-        return
-    for offset in range(6):
-        full = _complete_algebraic(ctx, point_so_far, x, field, values, offset)
-        if full is None:
-            continue
-        direct = _numbers_at_algebraic(ctx, x, g, full)
-        if direct != numbers:
-            continue
-        root = roots[0]
-        point = _algebraic_point_text(ctx, full, root, x)
-        given = {**_fixed_at(ctx), **point}
-        order = [j.name for j in ctx.model.joints] + [p.name for p in ctx.model.parameters]
-        at = {k: given[k] for k in order if k in given}
-        a = root.approximation()
-        near = {n: (a if n == x and n not in full else _value_near(full[n], a))
-                for n in ctx.ring_names}
-        approx_at = _to_at(ctx, near)
-        comp.algebraic_witness = {
-            "point": at,
-            "alpha": alpha or x,
-            "root_of": sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(
-                ctx.symbols[x], sp.Symbol("alpha"))),
-            "root": sp.sstr(root.expression()),
-            "interval": [str(root.lo), str(root.hi)],
-            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
-                       for k, v in point.items()},
-        }
-        comp.witness_checked = True
-        comp.meaning = _algebraic_meaning(ctx, full, x, g, root, numbers, comp.changes)
-        if approx_at is not None:
-            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
-            comp.float_checks = _float_image_checks(ctx, approx_at, analysis, numbers,
-                                                    comp.equations)
-        return
-
-
-def _algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
-                          numbers: Numbers) -> None:
-    """A real algebraic witness on the hypersurface ``f = 0``: nice rationals for the
-    other variables, ``x_k`` a real root of an irreducible factor of what is left."""
-    x = ctx.ring_names[k]
-    others = [n for n in _vars_of(ctx, f) if n != x]
-    zctx = ctx.ring.zctx
-    for values in itertools.islice(itertools.product(_NICE, repeat=len(others)), 30):
-        point = dict(zip(others, values, strict=True))
-        h = f
-        for n, v in point.items():
-            j = ctx.ring_names.index(n)
-            h = substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
-                            h.degrees()[j])
-        if h.is_zero() or h.degrees()[k] == 0:
-            continue
-        _, curved = _roots(ctx, h, x)
-        for g in curved:
-            _attach_algebraic_witness(ctx, comp, x, g, point, point_so_far, numbers)
-            if comp.algebraic_witness is not None:
-                return
-
-
-def _fixed_at(ctx) -> dict[str, str]:
-    """The joints and parameters the locus was asked to hold fixed, in ``--at`` syntax."""
-    out: dict[str, str] = {}
-    config = ctx.config
-    for j in ctx.model.joints:
-        if j.name in config.revolute:
-            out[j.name] = angle_text(*config.revolute[j.name])
-        elif j.name in config.prismatic:
-            out[j.name] = sp.sstr(config.prismatic[j.name])
-    for p, v in config.parameters.items():
-        out[p] = sp.sstr(v)
-    return out
-
-
-def _algebraic_meaning(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
-                       changes) -> list[str]:
-    """What changes at an irrational witness (motions in words for a quadratic field)."""
-    rows = _substitute_values(ctx, ctx.rows0, full, x)
-    alpha = root.expression()
-    values = {ctx.symbols[n]: (alpha if n == x and n not in full else
-                               _value_expr(full[n], alpha)) for n in ctx.ring_names}
-    return motion_sentences(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
-                            ctx.kin, values, root.degree, changed=set(changes))
-
-
-def _count_meaning(ctx, numbers: Numbers, changes) -> list[str]:
-    from .interpret import count_sentences
-
-    return [s for s in count_sentences(numbers, len(ctx.model.joints))
-            if s.split(" ")[0] in changes]
-
-
-def _float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Numbers,
-                        comp_equations: list[str]):
-    """Float checks at the float image of an irrational witness (a rational point
-    within 1e-40 of it stands in for it; its float64 image is the same), where the
-    exact numbers are the witness's own."""
-    checks = _float_checks(ctx, approx_at, analysis, comp_equations)
-    uniform = len(ctx.model.parameters) <= 1
-    out = []
-    for c in checks:
-        if c.distance == 0:
-            if c.scale != checks[0].scale and not uniform:
-                continue
-            c.exact = numbers.as_dict()
-        out.append(c)
-    return out
+        attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
 
 
 # --- components -------------------------------------------------------------------------
@@ -1276,25 +733,9 @@ def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, pa
                          drops), changes=changes, decided=decided, depth=depth,
                      parent=parent)
     if witness is not None:
-        _attach_witness(ctx, comp, witness, numbers)
+        attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
     return comp
-
-
-def _attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbers) -> None:
-    """A rational witness, checked by a direct exact analysis, with its float checks."""
-    analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
-    comp.witness = witness
-    comp.witness_checked = analysis.numbers == numbers
-    comp.meaning = _meaning(analysis, {k: tuple(v) for k, v in comp.changes.items()})
-    comp.float_checks = _float_checks(ctx, witness, analysis, comp.equations)
-
-
-def _meaning(analysis, changes) -> list[str]:
-    from .interpret import sentences
-
-    keys = {k for k in changes}
-    return [s for s in sentences(analysis) if s.split(" ")[0] in keys]
 
 
 def _condition(ctx, equations: list[str]) -> str:
@@ -1308,7 +749,7 @@ def _read_equation(ctx, eq: str) -> str:
     syms = {str(s): s for s in ctx.symbols.values()}
     expr = sp.sympify(eq, locals=syms)
     free = sorted(expr.free_symbols, key=str)
-    joint = {s: ctx.kinds[_name_of(ctx, str(s))] for s in free}
+    joint = {s: ctx.kinds[name_of(ctx, str(s))] for s in free}
     rev = [s for s in free if joint[s][0] == "revolute"]
     if len(free) == 1 and rev:
         (s,) = rev
@@ -1331,57 +772,6 @@ def _read_equation(ctx, eq: str) -> str:
     return f"{eq} = 0"
 
 
-def _float_checks(ctx, witness: dict[str, str], analysis,
-                  equations: list[str] = ()) -> list[FloatCheck]:
-    """Float ranks at the witness, at points near it, and with lengths rescaled. The
-    nearby points move a revolute joint of the component's last equation (so they leave
-    the component, and stay in its parent)."""
-    checks = []
-    scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
-    checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
-                             float_numbers(analysis)))
-    local = {str(v): v for v in ctx.symbols.values()}
-    used = [{str(s) for s in sp.sympify(eq, locals=local).free_symbols}
-            for eq in reversed(equations)]
-    revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
-    joint = next((name for names in used for n, name in revolute
-                  if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
-    for distance in _FLOAT_DISTANCES:
-        if joint is None:
-            break
-        point = dict(witness)
-        point[joint] = _nudged_angle(point[joint], distance)
-        near = analyze(ctx.model, Configuration.parse(ctx.model, point))
-        checks.append(FloatCheck(distance, scale, point, near.numbers.as_dict(),
-                                 float_numbers(near)))
-    for p in ctx.model.parameters:
-        for value in ("1/1000", "1000"):
-            for distance in (0.0, *_FLOAT_DISTANCES):
-                point = dict(witness)
-                point[p.name] = value
-                if distance and joint is not None:
-                    point[joint] = _nudged_angle(point[joint], distance)
-                elif distance:
-                    continue
-                a = analyze(ctx.model, Configuration.parse(ctx.model, point))
-                checks.append(FloatCheck(distance, f"{p.name}={value}", point,
-                                         a.numbers.as_dict(), float_numbers(a)))
-    return checks
-
-
-def _nudged_angle(text: str, distance: float) -> str:
-    """An exact angle about ``distance`` radians above ``text`` (a rational tangent
-    half-angle; the float only chooses it)."""
-    from .exactnum import parse_angle
-
-    c, s = parse_angle(text, "witness")
-    q = float(sp.atan2(s, c)) + distance  # float-ok: choosing a nearby exact angle
-    t = Fraction(tan(q / 2))  # float-ok: the binary float is itself an exact rational
-    if abs(2 * atan(float(t)) - q) > pi:  # float-ok
-        t = -t
-    return f"2*atan({t.numerator}/{t.denominator})"
-
-
 def _pi_chart(ctx: _Context, reporter) -> None:
     """Joints at q = pi, where t = tan(q/2) is infinite: decided in the second chart."""
     rev = [name for kind, name in ctx.kinds.values() if kind == "revolute"]
@@ -1402,10 +792,10 @@ def _pi_chart(ctx: _Context, reporter) -> None:
             continue
         witness = None
         for values in itertools.islice(itertools.product(
-                _NICE, repeat=len(ctx.ring_names) - 1), 100):
+                NICE, repeat=len(ctx.ring_names) - 1), 100):
             names = [n for n in ctx.ring_names if n != f"t_{name}"]
             point = dict(zip(names, values, strict=True))
-            at = _to_at(ctx, {**point, f"t_{name}": Fraction(0)})
+            at = to_at(ctx, {**point, f"t_{name}": Fraction(0)})
             if at is None:
                 continue
             at[name] = "pi"

@@ -1,0 +1,290 @@
+"""Polynomial systems of the singularity locus, exactly (see :mod:`coopkin_sym.locus`).
+
+Helpers on the polynomials of a locus search (``fmpz_mpoly`` in the ring of the free
+variables, held by the search context ``ctx``): normal forms and texts, real and
+rational points of a hypersurface, substitution of values (rationals, or elements of
+``Q(alpha)`` written as polynomials in the variable that carries ``alpha``), and the
+common zeros of a few polynomials in one or two variables (resultants, factorization
+over Z, a gcd over ``Q(alpha)``, sheared coordinates when one variable does not
+separate the points).
+
+Example
+-------
+>>> NICE[:3]
+[Fraction(1, 2), Fraction(2, 1), Fraction(-1, 3)]
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+
+import flint
+import sympy as sp
+
+from .algebraic import RealRoot
+from .exact.numberfield import NumberField
+from .exact.substitution import split_linear, substitute, substitute_rows
+from .exact.sympy_bridge import poly_to_sympy
+
+# values tried, in order, for the free coordinates of a witness
+NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
+        Fraction(1, 3), Fraction(-1, 2), Fraction(2, 3), Fraction(5, 2), Fraction(-3, 4),
+        Fraction(1), Fraction(-1), Fraction(0), Fraction(7, 5), Fraction(-5, 3)]
+
+
+def normalize(f):
+    f = f if int(f.leading_coefficient()) > 0 else -f
+    c = f.content()
+    return f / f.context().constant(c) if c != 1 else f
+
+
+def vars_of(ctx, f) -> list[str]:
+    return [n for n, d in zip(ctx.ring_names, f.degrees(), strict=True) if d > 0]
+
+
+def poly_text(ctx, f) -> str:
+    return sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+
+
+def has_real_point(ctx, f, names) -> bool | None:
+    expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
+    syms = [ctx.symbols[n] for n in names]
+    for _ in range(12):
+        others = {s: sp.Rational(ctx.rng.randint(-9, 9), ctx.rng.randint(1, 5))
+                  for s in syms[1:]}
+        uni = sp.Poly(expr.subs(others), syms[0])
+        if uni.degree() > 0 and uni.count_roots() > 0:
+            return True
+        if len(syms) == 1:
+            return False
+    return None
+
+
+def rational_point(ctx, f, names) -> dict[str, Fraction] | None:
+    expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
+    syms = [ctx.symbols[n] for n in names]
+    for x_idx in range(len(syms)):
+        x = syms[x_idx]
+        others_syms = [s for i, s in enumerate(syms) if i != x_idx]
+        for values in itertools.islice(itertools.product(NICE, repeat=len(others_syms)),
+                                       60):
+            sub = {s: sp.Rational(v.numerator, v.denominator)
+                   for s, v in zip(others_syms, values, strict=True)}
+            uni = sp.Poly(expr.subs(sub), x)
+            if uni.degree() <= 0:
+                continue
+            roots = [r for r in sp.roots(uni, filter="Q") if r.is_Rational]
+            if roots:
+                point = {str(s): Fraction(int(v.p), int(v.q)) for s, v in sub.items()}
+                point[str(x)] = Fraction(int(roots[0].p), int(roots[0].q))
+                return {name_of(ctx, k): v for k, v in point.items()}
+    return None
+
+
+def name_of(ctx, symbol_name: str) -> str:
+    for n, s in ctx.symbols.items():
+        if str(s) == symbol_name:
+            return n
+    return symbol_name
+
+
+def as_poly(ctx, v, x: str | None):
+    """A coordinate value (``Fraction``, or ``fmpq_poly`` in ``x``) as ``(P, c)``:
+    an integer polynomial in the ring and a positive integer with ``v = P/c``."""
+    zctx = ctx.ring.zctx
+    if isinstance(v, Fraction):
+        return zctx.constant(v.numerator), v.denominator
+    k = ctx.ring_names.index(x)
+    num, den = v.numer(), int(v.denom())
+    terms = {}
+    for e, c in enumerate(num.coeffs()):
+        if c:
+            mon = [0] * len(ctx.ring_names)
+            mon[k] = e
+            terms[tuple(mon)] = int(c)
+    return zctx.from_dict(terms), den
+
+
+def substitute_values(ctx, rows, values: dict, x: str | None = None):
+    """``rows`` with each variable in ``values`` replaced (rationals, or polynomials in
+    the algebraic variable ``x``), rows scaled by the cleared denominators. A value for
+    ``x`` itself (a polynomial in its own slot) goes first, so the others' values,
+    which are polynomials in ``x``, are not substituted again."""
+    ordered = sorted(values.items(), key=lambda nv: nv[0] != x)
+    for n, v in ordered:
+        num, den = as_poly(ctx, v, x)
+        rows = substitute_rows(rows, ctx.ring_names.index(n), -num,
+                                ctx.ring.zctx.constant(den))
+    return rows
+
+
+def solve_small(ctx, polys, names: list[str]):
+    """Common zeros of ``polys`` in one or two variables, exactly: the rational points,
+    the real algebraic ones as ``(x, g, {y: r(x)}, equations, alpha)`` (``g``
+    irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
+    and descriptions of what could not be resolved. Resultants and factorization over
+    Z (python-flint)."""
+    x = names[0]
+    if len(names) == 1:
+        g = polys[0]
+        for p in polys[1:]:
+            g = g.gcd(p)
+        rational, curved = roots(ctx, g, x)
+        return [{x: r} for r in rational], [(x, f, {}, [f], x) for f in curved], []
+    return solve_two(ctx, polys, names)
+
+
+def solve_two(ctx, polys, names: list[str]):
+    """:func:`solve_small` for two variables, eliminating the second: ``x`` must
+    generate each point's field (else the point is left unresolved)."""
+    zctx = ctx.ring.zctx
+    x, y = names
+    combo = polys[1] if len(polys) == 2 else sum(
+        (p * zctx.constant(ctx.rng.randint(1, 9)) for p in polys[1:]), zctx.constant(0))
+    g = polys[0].resultant(combo, y)
+    for p in polys[1:]:
+        if g.is_constant():
+            break
+        g = g.gcd(polys[0].resultant(p, y))
+    points: list[dict] = []
+    algebraic: list[tuple] = []
+    unresolved: list[str] = []
+    if g.is_zero() or g.is_constant():
+        return points, algebraic, unresolved
+    k = ctx.ring_names.index(x)
+    rational, curved = roots(ctx, g, x)
+    for x0 in rational:
+        f0, f1 = zctx.constant(-x0.numerator), zctx.constant(x0.denominator)
+        uni = None
+        for p in polys:
+            q = substitute(p, k, f0, f1, p.degrees()[k])
+            uni = q if uni is None else uni.gcd(q)
+        ys, curved_y = roots(ctx, uni, y)
+        points += [{x: x0, y: y0} for y0 in ys]
+        algebraic += [(y, h, {x: x0}, [h, linear_equation(ctx, x, x0)], y)
+                      for h in curved_y]
+    for h in curved:
+        field = NumberField(univariate(ctx, h, x))
+        ky = ctx.ring_names.index(y)
+        common = field.squarefree(field.gcd([coefficients_in(ctx, p, k, ky)
+                                             for p in polys]))
+        if len(common) == 2:
+            value = field.element(-common[0])
+            algebraic.append((x, h, {y: value}, [h, value_equation(ctx, y, value, x)], x))
+        elif len(common) > 2:
+            sheared = solve_sheared(ctx, [*polys, h], x, y)
+            if sheared:
+                algebraic += sheared
+            else:
+                unresolved.append(f"where {poly_text(ctx, h)} = 0 and {len(common) - 1} values "
+                                  f"of {y} share each {x}")
+    return points, algebraic, unresolved
+
+
+def solve_sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
+    """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
+    (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
+    point's field. Returns ``(y, m(z), {y: z - c r(z), x: r(z)}, equations)`` with the
+    equations in the original coordinates (``m(y + c x)``, ``x - r(y + c x)``)."""
+    zctx = ctx.ring.zctx
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    gx, gy = zctx.gens()[kx], zctx.gens()[ky]
+    for c in tries:
+        moved = [substitute(p, ky, c * gx - gy, zctx.constant(1), p.degrees()[ky])
+                 for p in polys]
+        elim = None
+        for p in moved[1:]:
+            r = moved[0].resultant(p, x) if moved[0].degrees()[kx] else moved[0]
+            elim = r if elim is None else elim.gcd(r)
+        if elim is None or elim.is_zero() or elim.is_constant():
+            continue
+        _, factors = elim.factor()
+        out, separated = [], True
+        for m, _e in factors:
+            if m.degrees()[kx] or m.is_constant():
+                continue
+            if not RealRoot.all_of(univariate(ctx, m, y).coeffs()):
+                continue
+            field = NumberField(univariate(ctx, m, y))
+            common = field.squarefree(field.gcd([coefficients_in(ctx, p, ky, kx)
+                                                 for p in moved]))
+            if len(common) == 1:
+                continue
+            if len(common) > 2:
+                separated = False
+                break
+            r = field.element(-common[0])
+            z = flint.fmpq_poly([0, 1])
+            values = {y: field.element(z - c * r), x: r}
+            back = gy + c * gx
+            m_back = substitute(normalize(m), ky, -back, zctx.constant(1), m.degrees()[ky])
+            num, den = as_poly(ctx, r, y)
+            x_eq = zctx.constant(den) * gx - substitute(num, ky, -back, zctx.constant(1),
+                                                         num.degrees()[ky])
+            out.append((y, normalize(m), values, [normalize(m_back), x_eq],
+                        f"{y} {'+' if c > 0 else '-'} {abs(c) if abs(c) != 1 else ''}"
+                        f"{'*' if abs(c) != 1 else ''}{x}"))
+        if separated and out:
+            return out
+    return []
+
+
+def linear_equation(ctx, name: str, value: Fraction):
+    zctx = ctx.ring.zctx
+    return zctx.constant(value.denominator) * zctx.gens()[ctx.ring_names.index(name)] - \
+        zctx.constant(value.numerator)
+
+
+def value_equation(ctx, name: str, value, x: str):
+    """``den * name - P(x)`` for ``name = P(x)/den``."""
+    zctx = ctx.ring.zctx
+    num, den = as_poly(ctx, value, x)
+    return zctx.constant(den) * zctx.gens()[ctx.ring_names.index(name)] - num
+
+
+def univariate(ctx, g, x: str) -> flint.fmpq_poly:
+    k = ctx.ring_names.index(x)
+    coeffs = [0] * (g.degrees()[k] + 1)
+    for mon, c in g.to_dict().items():
+        coeffs[mon[k]] = int(c)
+    return flint.fmpq_poly(coeffs)
+
+
+def coefficients_in(ctx, p, kx: int, ky: int) -> list:
+    """``p(x, y)`` as a list of polynomials in ``x`` (``fmpq_poly``), by power of y."""
+    by_y: dict[int, dict[int, int]] = {}
+    for mon, c in p.to_dict().items():
+        by_y.setdefault(mon[ky], {})[mon[kx]] = int(c)
+    out = []
+    for e in range(max(by_y) + 1):
+        terms = by_y.get(e, {})
+        coeffs = [0] * (max(terms, default=0) + 1)
+        for d, c in terms.items():
+            coeffs[d] = c
+        out.append(flint.fmpq_poly(coeffs))
+    return out
+
+
+def roots(ctx, g, name: str):
+    """Rational roots of a univariate polynomial ``g`` (in ``name``), and its
+    irreducible factors of higher degree that have real roots (those without are
+    listed as dropped)."""
+    if g.is_zero() or g.is_constant():
+        return [], []
+    k = ctx.ring_names.index(name)
+    _, factors = g.factor()
+    roots, curved = [], []
+    for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
+        if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
+            f1, f0 = split_linear(f, k)
+            roots.append(Fraction(-int(f0.leading_coefficient()) if not f0.is_zero() else 0,
+                                  int(f1.leading_coefficient())))
+        elif sum(f.degrees()) == f.degrees()[k]:
+            if RealRoot.all_of(univariate(ctx, f, name).coeffs()):
+                curved.append(normalize(f))
+            else:
+                text = f"{poly_text(ctx, f)} = 0 (no real points)"
+                if text not in ctx.locus.dropped:
+                    ctx.locus.dropped.append(text)
+    return roots, curved

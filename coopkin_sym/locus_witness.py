@@ -1,0 +1,419 @@
+"""Witnesses of locus components, and what floats say there (see
+:mod:`coopkin_sym.locus`).
+
+A witness is an exact point of a component where a direct analysis gives the
+component's numbers: rational coordinates where they exist (completed from nice values
+and the parametrization of enclosing components), else a real point with algebraic
+coordinates, handled in ``Q(alpha)`` and written in radicals or ``CRootOf``. Each
+witness also gets the motions that change there, in words, and float rank tests at,
+near (1e-6, 1e-9, 1e-12 rad) and with lengths rescaled.
+
+Example
+-------
+>>> nudged_angle("pi/2", 1e-6).startswith("2*atan(")
+True
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+from math import atan, pi, tan
+
+import flint
+import sympy as sp
+
+from .algebraic import RealRoot, angle_of
+from .configuration import Configuration
+from .exact.numberfield import NumberField
+from .exact.quotient import Quotient
+from .exact.substitution import substitute
+from .exact.sympy_bridge import poly_to_sympy
+from .exactnum import angle_text
+from .irrational import motion_sentences
+from .locus_algebra import NICE, roots, substitute_values, univariate, vars_of
+from .locus_types import Component, FloatCheck
+from .mobility import Numbers, analyze, numbers_modulo
+from .numeric import float_numbers
+
+FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
+
+
+def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: int = 0):
+    """A full point: the given coordinates, nice values for the others, then the
+    parametrized coordinates of enclosing components (``x = -f0/f1``)."""
+    values = dict(point)
+    for n in ctx.ring_names:
+        if n not in values and n not in point_so_far:
+            values[n] = NICE[(len(values) + offset) % len(NICE)]
+    for n, (f0, f1) in reversed(list(point_so_far.items())):
+        args = [values.get(k, Fraction(0)) for k in ctx.ring_names]
+        den = eval_at(f1, args)
+        if den == 0:
+            return None
+        values[n] = -eval_at(f0, args) / den
+    return values
+
+
+def eval_at(p, args: list[Fraction]) -> Fraction:
+    total = Fraction(0)
+    for mon, c in p.to_dict().items():
+        term = Fraction(int(c))
+        for a, e in zip(args, mon, strict=True):
+            if e:
+                term *= a ** int(e)
+        total += term
+    return total
+
+
+def witness_linear(ctx, sub_rows, name, f0, f1, point_so_far, numbers):
+    """A rational point of the component where the numbers are the component's."""
+    others = [n for n in ctx.ring_names if n != name and n not in point_so_far]
+    tries = itertools.islice(itertools.product(NICE, repeat=len(others)), 200)
+    for values in tries:
+        point = dict(zip(others, values, strict=True))
+        inner = dict(point_so_far)
+        inner[name] = (f0, f1)
+        full = complete_point(ctx, inner, point)
+        if full is None:
+            continue
+        if numbers_at_values(ctx, full) == numbers:
+            return to_at(ctx, full)
+    return None
+
+
+def numbers_at_values(ctx, values: dict[str, Fraction]) -> Numbers | None:
+    at = to_at(ctx, values)
+    if at is None:
+        return None
+    return analyze(ctx.model, Configuration.parse(ctx.model, at)).numbers
+
+
+def to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
+    """A full point in ``--at`` syntax (joints set by the caller and fixed values
+    included)."""
+    out: dict[str, str] = {}
+    config = ctx.config
+    for j in ctx.model.joints:
+        if j.name in config.revolute:
+            out[j.name] = angle_text(*config.revolute[j.name])
+        elif j.name in config.prismatic:
+            out[j.name] = sp.sstr(config.prismatic[j.name])
+    for n, (kind, name) in ctx.kinds.items():
+        v = values.get(n)
+        if v is None:
+            return None
+        if kind == "revolute":
+            t = sp.Rational(v.numerator, v.denominator)
+            out[name] = angle_text((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
+        else:
+            out[name] = f"{v.numerator}" if v.denominator == 1 else f"{v.numerator}/" \
+                f"{v.denominator}"
+    for p, v in config.parameters.items():
+        out[p] = sp.sstr(v)
+    return out
+
+
+def complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, values: dict,
+                        offset: int = 0) -> dict | None:
+    """A full point over ``Q(alpha)``: every variable but ``x`` as an element (a
+    polynomial in ``x`` of degree below ``deg g``); nice rationals for the free ones."""
+    full = {n: field.element(v if not isinstance(v, Fraction) else
+                             flint.fmpq(v.numerator, v.denominator))
+            for n, v in values.items()}
+    for n in ctx.ring_names:
+        if n != x and n not in full and n not in point_so_far:
+            v = NICE[(len(full) + offset) % len(NICE)]
+            full[n] = field.element(flint.fmpq(v.numerator, v.denominator))
+    for n, (f0, f1) in reversed(list(point_so_far.items())):
+        den = eval_in(ctx, f1, full, x, field)
+        if den.is_zero():
+            return None
+        full[n] = field.element(-eval_in(ctx, f0, full, x, field) * field.inverse(den))
+    return full
+
+
+def eval_in(ctx, p, values: dict, x: str, field: NumberField):
+    """``p`` at a point over ``Q(alpha)`` (``x`` is alpha itself)."""
+    args = [flint.fmpq_poly([0, 1]) if n == x and n not in values else
+            values.get(n, flint.fmpq_poly(0))
+            for n in ctx.ring_names]
+    total = flint.fmpq_poly(0)
+    for mon, c in p.to_dict().items():
+        term = flint.fmpq_poly(int(c))
+        for a, e in zip(args, mon, strict=True):
+            if e:
+                term = field.element(term * a ** int(e))
+        total += term
+    return field.element(total)
+
+
+def numbers_at_algebraic(ctx, x: str, g, full: dict) -> Numbers:
+    """The numbers at a point over ``Q(alpha)``, by a direct exact analysis: the rows of
+    ``Q`` with every free variable (nothing from the locus search) evaluated there."""
+    rows = substitute_values(ctx, ctx.rows0, full, x)
+    return numbers_modulo(rows, ctx.model, ctx.row_contacts,
+                          Quotient(g, ctx.ring_names.index(x)))
+
+
+def value_expr(v, root: sp.Expr) -> sp.Expr:
+    """An element of ``Q(alpha)`` (polynomial in alpha) at the real root ``root``."""
+    if isinstance(v, Fraction):
+        return sp.Rational(v.numerator, v.denominator)
+    coeffs = [sp.Rational(int(c.p), int(c.q)) for c in v.coeffs()]
+    return sp.radsimp(sp.expand(sum(c * root**i for i, c in enumerate(coeffs))))
+
+
+def value_near(v, a: Fraction) -> Fraction:
+    if isinstance(v, Fraction):
+        return v
+    return sum((Fraction(int(c.p), int(c.q)) * a**i for i, c in enumerate(v.coeffs())),
+               Fraction(0))
+
+
+def algebraic_point_text(ctx, values: dict, root: RealRoot, x: str,
+                          only: set[str] | None = None) -> dict[str, str]:
+    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf)."""
+    expr = root.expression()
+    out: dict[str, str] = {}
+    for n, (kind, name) in ctx.kinds.items():
+        if only is not None and n not in only:
+            continue
+        v = expr if n == x and n not in values else value_expr(values[n], expr)
+        out[name] = sp.sstr(angle_of(v)) if kind == "revolute" else sp.sstr(v)
+    return out
+
+
+def algebraic_condition(ctx, x: str, g, values: dict) -> str:
+    """The real points of an algebraic component, in angles where they read simply."""
+    names = {x, *values}
+    roots = RealRoot.all_of(univariate(ctx, g, x).coeffs())
+    kinds = {name: kind for kind, name in ctx.kinds.values()}
+    parts = []
+    for root in roots:
+        text = algebraic_point_text(ctx, values, root, x, only=names)
+        parts.append(", ".join(readable(k, v, kinds[k]) for k, v in text.items()))
+    return " or ".join(parts)
+
+
+def readable(name: str, exact: str, kind: str) -> str:
+    """``name = exact`` when short, else its value to 4 significant digits (in degrees
+    for an angle); the exact value stays in the witness."""
+    if len(exact) <= 32 and "CRootOf" not in exact:
+        return f"{name} = {exact}"
+    value = float(sp.sympify(exact).evalf(30))  # float-ok: display only
+    if kind == "revolute":
+        return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
+    return f"{name} \u2248 {value:.4g}"
+
+
+def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
+                              point_so_far: dict, numbers: Numbers,
+                              alpha: str | None = None) -> None:
+    """A witness at a real root of ``g``: exact coordinates (radicals or ``CRootOf``),
+    its numbers from a direct analysis over ``Q(alpha)``, and float checks on its float
+    image."""
+    field = NumberField(univariate(ctx, g, x))
+    roots = RealRoot.all_of(field.g.coeffs())
+    if not roots:
+        return
+    for offset in range(6):
+        full = complete_algebraic(ctx, point_so_far, x, field, values, offset)
+        if full is None:
+            continue
+        direct = numbers_at_algebraic(ctx, x, g, full)
+        if direct != numbers:
+            continue
+        root = roots[0]
+        point = algebraic_point_text(ctx, full, root, x)
+        given = {**fixed_at(ctx), **point}
+        order = [j.name for j in ctx.model.joints] + [p.name for p in ctx.model.parameters]
+        at = {k: given[k] for k in order if k in given}
+        a = root.approximation()
+        near = {n: (a if n == x and n not in full else value_near(full[n], a))
+                for n in ctx.ring_names}
+        approx_at = to_at(ctx, near)
+        comp.algebraic_witness = {
+            "point": at,
+            "alpha": alpha or x,
+            "root_of": sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(
+                ctx.symbols[x], sp.Symbol("alpha"))),
+            "root": sp.sstr(root.expression()),
+            "interval": [str(root.lo), str(root.hi)],
+            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+                       for k, v in point.items()},
+        }
+        comp.witness_checked = True
+        comp.meaning = algebraic_meaning(ctx, full, x, g, root, numbers, comp.changes)
+        if approx_at is not None:
+            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
+            comp.float_checks = float_image_checks(ctx, approx_at, analysis, numbers,
+                                                    comp.equations)
+        return
+
+
+def algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
+                          numbers: Numbers) -> None:
+    """A real algebraic witness on the hypersurface ``f = 0``: nice rationals for the
+    other variables, ``x_k`` a real root of an irreducible factor of what is left."""
+    x = ctx.ring_names[k]
+    others = [n for n in vars_of(ctx, f) if n != x]
+    zctx = ctx.ring.zctx
+    for values in itertools.islice(itertools.product(NICE, repeat=len(others)), 30):
+        point = dict(zip(others, values, strict=True))
+        h = f
+        for n, v in point.items():
+            j = ctx.ring_names.index(n)
+            h = substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+                            h.degrees()[j])
+        if h.is_zero() or h.degrees()[k] == 0:
+            continue
+        _, curved = roots(ctx, h, x)
+        for g in curved:
+            attach_algebraic_witness(ctx, comp, x, g, point, point_so_far, numbers)
+            if comp.algebraic_witness is not None:
+                return
+
+
+def fixed_at(ctx) -> dict[str, str]:
+    """The joints and parameters the locus was asked to hold fixed, in ``--at`` syntax."""
+    out: dict[str, str] = {}
+    config = ctx.config
+    for j in ctx.model.joints:
+        if j.name in config.revolute:
+            out[j.name] = angle_text(*config.revolute[j.name])
+        elif j.name in config.prismatic:
+            out[j.name] = sp.sstr(config.prismatic[j.name])
+    for p, v in config.parameters.items():
+        out[p] = sp.sstr(v)
+    return out
+
+
+def algebraic_meaning(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
+                       changes) -> list[str]:
+    """What changes at an irrational witness (motions in words for a quadratic field)."""
+    rows = substitute_values(ctx, ctx.rows0, full, x)
+    alpha = root.expression()
+    values = {ctx.symbols[n]: (alpha if n == x and n not in full else
+                               value_expr(full[n], alpha)) for n in ctx.ring_names}
+    return motion_sentences(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
+                            ctx.kin, values, root.degree, changed=set(changes))
+
+
+def count_meaning(ctx, numbers: Numbers, changes) -> list[str]:
+    from .interpret import count_sentences
+
+    return [s for s in count_sentences(numbers, len(ctx.model.joints))
+            if s.split(" ")[0] in changes]
+
+
+def float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Numbers,
+                        comp_equations: list[str]):
+    """Float checks at the float image of an irrational witness (a rational point
+    within 1e-40 of it stands in for it; its float64 image is the same), where the
+    exact numbers are the witness's own."""
+    checks = float_checks(ctx, approx_at, analysis, comp_equations)
+    uniform = len(ctx.model.parameters) <= 1
+    out = []
+    for c in checks:
+        if c.distance == 0:
+            if c.scale != checks[0].scale and not uniform:
+                continue
+            c.exact = numbers.as_dict()
+        out.append(c)
+    return out
+
+
+def attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbers) -> None:
+    """A rational witness, checked by a direct exact analysis, with its float checks."""
+    analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
+    comp.witness = witness
+    comp.witness_checked = analysis.numbers == numbers
+    comp.meaning = meaning(analysis, {k: tuple(v) for k, v in comp.changes.items()})
+    comp.float_checks = float_checks(ctx, witness, analysis, comp.equations)
+
+
+def meaning(analysis, changes) -> list[str]:
+    from .interpret import sentences
+
+    keys = {k for k in changes}
+    return [s for s in sentences(analysis) if s.split(" ")[0] in keys]
+
+
+def float_checks(ctx, witness: dict[str, str], analysis,
+                  equations: list[str] = ()) -> list[FloatCheck]:
+    """Float ranks at the witness, at points near it, and with lengths rescaled. The
+    nearby points move a revolute joint of the component's last equation (so they leave
+    the component, and stay in its parent)."""
+    checks = []
+    scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
+    checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
+                             float_numbers(analysis)))
+    local = {str(v): v for v in ctx.symbols.values()}
+    used = [{str(s) for s in sp.sympify(eq, locals=local).free_symbols}
+            for eq in reversed(equations)]
+    revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
+    joint = next((name for names in used for n, name in revolute
+                  if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
+    for distance in FLOAT_DISTANCES:
+        if joint is None:
+            break
+        point = dict(witness)
+        point[joint] = nudged_angle(point[joint], distance)
+        near = analyze(ctx.model, Configuration.parse(ctx.model, point))
+        checks.append(FloatCheck(distance, scale, point, near.numbers.as_dict(),
+                                 float_numbers(near)))
+    for p in ctx.model.parameters:
+        for value in ("1/1000", "1000"):
+            for distance in (0.0, *FLOAT_DISTANCES):
+                point = dict(witness)
+                point[p.name] = value
+                if distance and joint is not None:
+                    point[joint] = nudged_angle(point[joint], distance)
+                elif distance:
+                    continue
+                a = analyze(ctx.model, Configuration.parse(ctx.model, point))
+                checks.append(FloatCheck(distance, f"{p.name}={value}", point,
+                                         a.numbers.as_dict(), float_numbers(a)))
+    return checks
+
+
+def nudged_angle(text: str, distance: float) -> str:
+    """An exact angle about ``distance`` radians above ``text`` (a rational tangent
+    half-angle; the float only chooses it)."""
+    from .exactnum import parse_angle
+
+    c, s = parse_angle(text, "witness")
+    q = float(sp.atan2(s, c)) + distance  # float-ok: choosing a nearby exact angle
+    t = Fraction(tan(q / 2))  # float-ok: the binary float is itself an exact rational
+    if abs(2 * atan(float(t)) - q) > pi:  # float-ok
+        t = -t
+    return f"2*atan({t.numerator}/{t.denominator})"
+
+
+def family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Numbers) -> None:
+    """A witness on a family ``f(x, params) = 0`` (the other coordinates given by
+    ``inner``): nice values for the parameters, then a rational root of what is left
+    in ``x`` if there is one, else a real algebraic one."""
+    k = ctx.ring_names.index(x)
+    params = [n for n in vars_of(ctx, f) if n != x]
+    zctx = ctx.ring.zctx
+    for values in itertools.islice(itertools.product(NICE, repeat=len(params)), 12):
+        point = dict(zip(params, values, strict=True))
+        g = f
+        for n, v in point.items():
+            j = ctx.ring_names.index(n)
+            g = substitute(g, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
+                            g.degrees()[j])
+        if g.is_zero() or g.degrees()[k] == 0:
+            continue
+        rational, curved = roots(ctx, g, x)
+        for x0 in rational:
+            full = complete_point(ctx, inner, {**point, x: x0})
+            if full is not None and numbers_at_values(ctx, full) == numbers:
+                attach_witness(ctx, comp, to_at(ctx, full), numbers)
+                return
+        for g1 in curved:
+            attach_algebraic_witness(ctx, comp, x, g1, point, inner, numbers)
+            if comp.algebraic_witness is not None:
+                return
