@@ -59,13 +59,15 @@ import sympy as sp
 from . import kinematics
 from .configuration import Configuration
 from .exact import elimination as el
-from .exact.quotient import Quotient, coefficients_in, gcd_modulo
+from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
 from .locus_algebra import (
+    NICE,
     has_real_point,
     linear_equation,
+    linearly_disjoint,
     name_of,
     normalize,
     poly_text,
@@ -79,6 +81,7 @@ from .locus_witness import (
     algebraic_condition,
     algebraic_witness_on,
     attach_algebraic_witness,
+    attach_two_root_witness,
     attach_witness,
     complete_point,
     family_witness,
@@ -88,12 +91,6 @@ from .locus_witness import (
 )
 from .mobility import Numbers, analyze, decompose, numbers_modulo
 from .model import Model
-
-# values tried, in order, for the free coordinates of a witness
-NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
-         Fraction(1, 3), Fraction(-1, 2), Fraction(2, 3), Fraction(5, 2), Fraction(-3, 4),
-         Fraction(1), Fraction(-1), Fraction(0), Fraction(7, 5), Fraction(-5, 3)]
-FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 
 
 class LocusError(ValueError):
@@ -381,7 +378,8 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
                        reporter, charts)
     if rests:
-        _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts)
+        _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts,
+                  reporter)
 
 
 def _drops_text(drops: set[str]) -> list[str]:
@@ -420,16 +418,9 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
     comp = _component(ctx, eqs, numbers, witness, "hypersurface" if depth == 0 else
                       "subvariety", drops, depth, parent,
                       "exact over the component's function field")
-    if comp is None:
-        return
-    index = len(ctx.locus.components) - 1
-    if depth < ctx.max_depth and comp is not None:
-        sub_point = dict(point_so_far)
-        sub_point[linear] = (f0, f1)
-        _explore(ctx, sub_rows, eqs, sub_point, depth + 1, index, reporter, sub_charts)
-    elif comp is not None and depth >= ctx.max_depth:
-        ctx.locus.unexplored.append(f"inside component {index} ({comp.condition}): deeper "
-                                    f"drops not explored (max depth {ctx.max_depth})")
+    sub_point = dict(point_so_far)
+    sub_point[linear] = (f0, f1)
+    _go_deeper(ctx, comp, sub_rows, eqs, sub_point, depth, reporter, sub_charts)
 
 
 def _substitute_linear(ctx: _Context, q_rows, f, name: str):
@@ -468,12 +459,11 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
         algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
-    ctx.locus.unexplored.append(
-        f"inside {f_text} = 0: deeper drops not explored (no rational parametrization)")
+    _go_deeper(ctx, comp, None, None, None, depth, None, (), "no rational parametrization")
 
 
 def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
-              charts=()) -> None:
+              charts=(), reporter=None) -> None:
     """Common zeros of the remaining minor combinations (codimension 2 or more)."""
     free = [n for n in ctx.ring_names if n not in point_so_far]
     rational_points: list[dict] = []
@@ -486,7 +476,7 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
         if len(names_used) > 2:
             if len(names_used) <= 4 and _solve_with_parameters(
                     ctx, q_rows, polys, names_used, equations, point_so_far, base, depth,
-                    parent, charts):
+                    parent, charts, reporter):
                 continue
             note = (f"depth {depth}: lower-dimensional drops in {len(names_used)} variables "
                     f"({', '.join(names_used)}) not solved (solved: up to two variables, "
@@ -502,12 +492,85 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
                 ctx.locus.unexplored.append(note)
         rational_points += points
         algebraic_points += algebraic
+    created = []
     for point in rational_points:
-        _decide_point(ctx, q_rows, point, None, equations, point_so_far, base, depth,
-                      parent, charts, free)
+        created.append(_decide_point(ctx, q_rows, point, None, equations, point_so_far,
+                                     base, depth, parent, charts, free, reporter))
     for x, g, values, eqs, alpha in algebraic_points:
-        _decide_point(ctx, q_rows, values, (x, g, eqs, alpha), equations, point_so_far,
-                      base, depth, parent, charts, free)
+        created.append(_decide_point(ctx, q_rows, values, (x, g, eqs, alpha), equations,
+                                     point_so_far, base, depth, parent, charts, free,
+                                     reporter))
+    _intersections(ctx, q_rows, [c for c in created if c is not None], point_so_far,
+                   depth, charts, free)
+
+
+def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> None:
+    """Intersections of two families found together, in disjoint variables (two
+    fingers stretched at once): the numbers where both hold, exactly (over the compositum
+    of their fields when both are irrational and their fields are linearly disjoint)."""
+    families = [c for c in created if c[0].kind == "subvariety"]
+    for (ci, vi, ai), (cj, vj, aj) in itertools.combinations(families, 2):
+        dims_i = set(vi) | ({ai[0]} if ai else set())
+        dims_j = set(vj) | ({aj[0]} if aj else set())
+        if dims_i & dims_j or ctx.expired():
+            continue
+        if ai and aj and not linearly_disjoint(ctx, ai[1], ai[0], aj[1], aj[0]):
+            ctx.locus.unexplored.append(
+                f"where components #{ctx.locus.components.index(ci) + 1} and "
+                f"#{ctx.locus.components.index(cj) + 1} meet: not decided (their fields "
+                "are not linearly disjoint)")
+            continue
+        if depth >= ctx.max_depth:
+            continue
+        rows = substitute_values(ctx, q_rows, vi, ai[0] if ai else None)
+        rows = substitute_values(ctx, rows, vj, aj[0] if aj else None)
+        moduli = [Quotient(a[1], ctx.ring_names.index(a[0])) for a in (ai, aj) if a]
+        if not moduli:
+            numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+        else:
+            numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts,
+                                     moduli[0] if len(moduli) == 1 else Tower(moduli))
+        if numbers.as_dict() in (ci.numbers, cj.numbers):
+            continue
+        eqs = ci.equations + [e for e in cj.equations if e not in ci.equations]
+        kind = "isolated" if len(dims_i | dims_j) == len(free) else "subvariety"
+        fields = ("Q(alpha, beta), two linearly disjoint fields" if len(moduli) == 2 else
+                  "Q(alpha)" if moduli else "the function field of the free variables")
+        comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth + 1,
+                          ctx.locus.components.index(ci), f"exact over {fields}",
+                          condition=f"{ci.condition}; and {cj.condition}")
+        if comp is None:
+            continue
+        values = {**vi, **vj}
+        if not moduli:
+            full = complete_point(ctx, point_so_far, values)
+            if full is not None and numbers_at_values(ctx, full) == numbers:
+                attach_witness(ctx, comp, to_at(ctx, full), numbers)
+        elif len(moduli) == 1:
+            (x, g) = (ai or aj)[:2]
+            attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers)
+        elif not point_so_far:
+            attach_two_root_witness(ctx, comp, (ai[0], ai[1], vi), (aj[0], aj[1], vj),
+                                    numbers)
+
+
+def _go_deeper(ctx, comp: Component | None, rows, equations, sub_point, depth, reporter,
+               charts, why_not: str | None = None) -> None:
+    """Search inside a new component for deeper drops, or say why it was not done."""
+    if comp is None or comp.kind == "isolated":
+        return
+    index = ctx.locus.components.index(comp)
+    where = f"inside component #{index + 1} ({comp.condition})"
+    if len(where) > 160:
+        where = f"inside component #{index + 1}"
+    if depth >= ctx.max_depth:
+        ctx.locus.unexplored.append(f"{where}: deeper drops not explored (max depth "
+                                    f"{ctx.max_depth})")
+    elif why_not is not None:
+        ctx.locus.unexplored.append(f"{where}: deeper drops not explored ({why_not})")
+    else:
+        _explore(ctx, rows, equations, sub_point, depth + 1, index,
+                 reporter or _Progress(False), charts)
 
 
 # the largest minor combination (in terms) solved with parameters
@@ -515,7 +578,7 @@ _PARAMETER_SOLVE_TERMS = 400
 
 
 def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, point_so_far,
-                           base, depth, parent, charts) -> bool:
+                           base, depth, parent, charts, reporter=None) -> bool:
     """Codimension-2 families in three or four variables, decided exactly.
 
     Two variables ``x, y`` are solved over the field of the others (the parameters):
@@ -550,10 +613,10 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
                 continue
             if h.degrees()[kx] == 1:
                 _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
-                                depth, parent, charts)
+                                depth, parent, charts, reporter)
             else:
                 _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
-                                depth, parent, charts)
+                                depth, parent, charts, reporter)
         return True
     return False
 
@@ -578,7 +641,7 @@ def _off_charts(charts, substitute, quotient=None) -> bool:
 
 
 def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
-                    parent, charts) -> None:
+                    parent, charts, reporter=None) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     h1, h0 = split_linear(h, kx)
     moved = [substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
@@ -623,15 +686,25 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
                        "ranks modulo its irreducible polynomial)")
         if numbers == base:
             continue
-        comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, k)], numbers, None,
-                          "subvariety", {"Q"}, depth, parent, decided)
+        eqs = equations + [poly_text(ctx, h), poly_text(ctx, k)]
+        comp = _component(ctx, eqs, numbers, None, "subvariety", {"Q"}, depth, parent,
+                          decided)
         if comp is None:
             continue
         family_witness(ctx, comp, k, y, inner, numbers)
+        if k.degrees()[ky] == 1:
+            sub_point = dict(inner)
+            sub_point[y] = (k0, k1)
+            sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
+                               not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
+            _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, sub_charts)
+        else:
+            _go_deeper(ctx, comp, None, eqs, None, depth, reporter, charts,
+                       "no rational parametrization")
 
 
 def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
-                    parent, charts) -> None:
+                    parent, charts, reporter=None) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
@@ -661,10 +734,12 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     inner = dict(point_so_far)
     inner[y] = (c0, c1)
     family_witness(ctx, comp, h, x, inner, numbers)
+    _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
+               "no rational parametrization")
 
 
 def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,
-                  depth, parent, charts, free) -> None:
+                  depth, parent, charts, free, reporter=None) -> tuple | None:
     """The numbers on the set where some coordinates are fixed (rationals, or
     polynomials over Q in a root ``x`` of ``g`` when ``algebraic = (x, g, equations,
     alpha)``, ``alpha`` naming what ``x`` stands for), every
@@ -677,14 +752,14 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
     for c in charts:
         c_here = substitute_values(ctx, [[c]], values, x)[0][0]
         if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
-            return  # outside the enclosing parametrization
+            return None  # outside the enclosing parametrization
     rows = substitute_values(ctx, q_rows, values, x)
     if quotient is None:
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     else:
         numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
     if numbers == base:
-        return
+        return None
     eqs = list(equations)
     if algebraic is not None:
         eqs += [poly_text(ctx, e) for e in algebraic[2]]
@@ -697,13 +772,18 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
                           "exact at the point" if kind == "isolated" else
                           "exact over the function field of the free variables")
         if comp is None:
-            return
+            return None
         for offset in range(6):
             full = complete_point(ctx, point_so_far, values, offset)
             if full is not None and numbers_at_values(ctx, full) == numbers:
                 attach_witness(ctx, comp, to_at(ctx, full), numbers)
                 break
-        return
+        sub_point = dict(point_so_far)
+        zctx = ctx.ring.zctx
+        for n, v in values.items():
+            sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
+        _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, charts)
+        return comp, values, None
     x, g, eq_polys, alpha = algebraic
     condition = algebraic_condition(ctx, x, g, values)
     if equations:
@@ -714,8 +794,13 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
     comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
                       f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
                       "conjugate point at once)", condition=condition)
-    if comp is not None:
-        attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
+    if comp is None:
+        return None
+    attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
+    _go_deeper(ctx, comp, rows, eqs, None, depth, reporter, charts,
+               "a family with irrational coordinates; only its intersections with the "
+               "families found with it")
+    return comp, values, (x, g)
 
 
 # --- components -------------------------------------------------------------------------

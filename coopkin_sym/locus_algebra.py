@@ -288,3 +288,30 @@ def roots(ctx, g, name: str):
                 if text not in ctx.locus.dropped:
                     ctx.locus.dropped.append(text)
     return roots, curved
+
+
+def linearly_disjoint(ctx, g1, x1: str, g2, x2: str) -> bool:
+    """Whether the roots of the irreducible univariate ``g1`` (in ``x1``) and ``g2`` (in
+    ``x2``) generate linearly disjoint fields: some ``alpha + c beta`` (small ``c``)
+    has degree ``deg g1 * deg g2`` over Q (its minimal polynomial, a resultant, is
+    irreducible)."""
+    d1 = g1.degrees()[ctx.ring_names.index(x1)]
+    d2 = g2.degrees()[ctx.ring_names.index(x2)]
+    zy = flint.fmpz_mpoly_ctx.get(("z", "y"), "degrevlex")
+    z, y = zy.gens()
+    p1 = univariate(ctx, g1, x1)
+    p2 = univariate(ctx, g2, x2)
+    den1, den2 = int(p1.denom()), int(p2.denom())
+    c1 = [int(c * den1) for c in p1.coeffs()]
+    c2 = [int(c * den2) for c in p2.coeffs()]
+    second = sum((c * y**i for i, c in enumerate(c2)), zy.constant(0))
+    for c in (1, 2, 3):
+        shifted = z - c * y
+        first = sum((k * shifted**i for i, k in enumerate(c1)), zy.constant(0))
+        res = first.resultant(second, "y")
+        if res.is_zero():
+            continue
+        _, factors = res.factor()
+        if len(factors) == 1 and factors[0][1] == 1 and res.total_degree() == d1 * d2:
+            return True
+    return False

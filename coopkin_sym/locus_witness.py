@@ -26,7 +26,7 @@ import sympy as sp
 from .algebraic import RealRoot, angle_of
 from .configuration import Configuration
 from .exact.numberfield import NumberField
-from .exact.quotient import Quotient
+from .exact.quotient import Quotient, Tower
 from .exact.substitution import substitute
 from .exact.sympy_bridge import poly_to_sympy
 from .exactnum import angle_text
@@ -417,3 +417,57 @@ def family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Number
             attach_algebraic_witness(ctx, comp, x, g1, point, inner, numbers)
             if comp.algebraic_witness is not None:
                 return
+
+
+def attach_two_root_witness(ctx, comp: Component, first: tuple, second: tuple,
+                            numbers: Numbers) -> None:
+    """A witness of the intersection of two families with irrational coordinates in
+    disjoint variables: ``first`` and ``second`` are ``(x, g, values)`` (values
+    polynomials in the root ``x`` of ``g``, or rationals). The other variables get nice
+    values; the numbers there come from a direct analysis over ``Q(alpha, beta)``."""
+    (x1, g1, v1), (x2, g2, v2) = first, second
+    field1 = NumberField(univariate(ctx, g1, x1))
+    roots1 = RealRoot.all_of(field1.g.coeffs())
+    roots2 = RealRoot.all_of(univariate(ctx, g2, x2).coeffs())
+    if not roots1 or not roots2:
+        return
+    dims2 = {x2, *v2}
+    for offset in range(6):
+        full1 = complete_algebraic(ctx, {}, x1, field1, v1, offset)
+        if full1 is None:
+            continue
+        part1 = {n: v for n, v in full1.items() if n not in dims2}
+        rows = substitute_values(ctx, ctx.rows0, part1, x1)
+        rows = substitute_values(ctx, rows, v2, x2)
+        tower = Tower([Quotient(g1, ctx.ring_names.index(x1)),
+                       Quotient(g2, ctx.ring_names.index(x2))])
+        if numbers_modulo(rows, ctx.model, ctx.row_contacts, tower) != numbers:
+            continue
+        root1, root2 = roots1[0], roots2[0]
+        point = {**algebraic_point_text(ctx, part1, root1, x1,
+                                        only=set(ctx.ring_names) - dims2),
+                 **algebraic_point_text(ctx, v2, root2, x2, only=dims2)}
+        given = {**fixed_at(ctx), **point}
+        order = [j.name for j in ctx.model.joints] + [p.name for p in ctx.model.parameters]
+        a1, a2 = root1.approximation(), root2.approximation()
+        near = {n: (a1 if n == x1 else a2 if n == x2 else
+                    value_near(part1[n], a1) if n in part1 else value_near(v2[n], a2))
+                for n in ctx.ring_names}
+        comp.algebraic_witness = {
+            "point": {k: given[k] for k in order if k in given},
+            "alpha": f"{x1}, {x2}",
+            "root_of": "; ".join(sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols))
+                                 for g in (g1, g2)),
+            "root": f"{sp.sstr(root1.expression())}; {sp.sstr(root2.expression())}",
+            "interval": [f"{root1.lo}; {root2.lo}", f"{root1.hi}; {root2.hi}"],
+            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+                       for k, v in point.items()},
+        }
+        comp.witness_checked = True
+        comp.meaning = count_meaning(ctx, numbers, comp.changes)
+        approx_at = to_at(ctx, near)
+        if approx_at is not None:
+            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
+            comp.float_checks = float_image_checks(ctx, approx_at, analysis, numbers,
+                                                   comp.equations)
+        return

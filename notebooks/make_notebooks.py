@@ -749,14 +749,16 @@ NB03 = [
     code("""
     for item in locus2.unexplored:
         print("-", item)
-    assert len(locus2.unexplored) == 5
-    assert all("not solved" in item for item in locus2.unexplored)
+    assert len(locus2.unexplored) == 8
+    assert all("not solved" in item or "deeper drops not explored" in item
+               for item in locus2.unexplored)
     """),
     md("""
     Here too the report lists what it left out: a few families where one angle does
     not determine the other (two values share each point), factors free of the
-    solved variable, and one block whose equations in four variables were too large
-    to solve with parameters.
+    solved variable, one block whose equations in four variables were too large to
+    solve with parameters, and the curved families (no rational parametrization)
+    inside which it did not search for deeper drops.
 
     ## 3. Paper case 2, all eight joints free
 
@@ -811,8 +813,9 @@ NB03 = [
     code("""
     for item in locus3.unexplored:
         print("-", item)
-    assert len(locus3.unexplored) == 3
-    assert all("not solved" in u for u in locus3.unexplored)
+    assert len(locus3.unexplored) == 9
+    assert sum("not solved" in u for u in locus3.unexplored) == 3
+    assert sum("deeper drops not explored" in u for u in locus3.unexplored) == 6
     assert sorted(2 * sp.atan(r) for r in sp.solve(t**2 + 2 * t - 1, t)) == [
         -3 * sp.pi / 4, sp.pi / 4]
     """),
@@ -821,8 +824,9 @@ NB03 = [
     rank drops of codimension 2 or more of three blocks (in 8 and 7 variables) were
     not solved directly (they have no real hypersurface part, so they are at most
     lower-dimensional families; the recursion inside each hypersurface is what finds
-    such families there). A reader gets the boundary of what was checked along with
-    the result.
+    such families there), and that inside the families at irrational angles (and at
+    the depth bound) it did not search deeper. A reader gets the boundary of what was
+    checked along with the result.
 
     ## 4. What a float rank test says near the locus
 

@@ -85,6 +85,44 @@ class Quotient:
         return self.reduce(p).is_zero()
 
 
+class Tower:
+    """``Z[x]/(g_1, ..., g_n)`` for univariate polynomials ``g_i`` in distinct
+    variables, each with a constant leading coefficient, whose roots generate linearly
+    disjoint fields (the caller checks it: then the quotient by all of them is a field,
+    ``Q(alpha_1, ..., alpha_n)`` over the other variables, and reduction by each in turn
+    gives a unique normal form). Same interface as :class:`Quotient` for ranks.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> t = Tower([Quotient(x**2 - 2, 0), Quotient(y**2 - 3, 1)])     # sqrt 2, sqrt 3
+    >>> t.is_zero((x * y)**2 - 6), t.is_zero(x * y - 6)
+    (True, False)
+    """
+
+    def __init__(self, moduli: Sequence[Quotient]):
+        for q in moduli:
+            if not q.lead.is_constant() or any(
+                    d and i != q.k for i, d in enumerate(q.f.degrees())):
+                raise ValueError(f"{q.f} is not univariate with a constant leading "
+                                 "coefficient")
+        self.moduli = list(moduli)
+
+    def reduce_row(self, row: Sequence[Poly]) -> list[Poly]:
+        row = list(row)
+        for q in self.moduli:
+            row = q.reduce_row(row)
+        return row
+
+    def reduce(self, p: Poly) -> Poly:
+        return self.reduce_row([p])[0]
+
+    def is_zero(self, p: Poly) -> bool:
+        return self.reduce(p).is_zero()
+
+
 def _coefficient(p: Poly, k: int, e: int) -> Poly:
     """The coefficient of ``x_k^e`` in ``p`` (a polynomial free of ``x_k``)."""
     terms = {m[:k] + (0,) + m[k + 1:]: c for m, c in p.to_dict().items() if m[k] == e}
@@ -249,5 +287,5 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
     return g
 
 
-__all__ = ["Quotient", "coefficients_in", "eliminate_modulo", "gcd_modulo",
+__all__ = ["Quotient", "Tower", "coefficients_in", "eliminate_modulo", "gcd_modulo",
            "nullspace_modulo", "rank_modulo"]
