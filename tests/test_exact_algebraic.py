@@ -643,3 +643,35 @@ def test_angle_of_leaves_other_tangents_alone():
     assert angle_of(sp.Rational(1, 2)) == 2 * sp.atan(sp.Rational(1, 2))
     t = sp.CRootOf(ST**3 - 3 * ST + 1, 1)
     assert angle_of(t) == 2 * sp.atan(t)
+
+
+# ------------------------------------------------------------------ towers
+
+
+_xy_small = st.lists(st.integers(-2, 2), min_size=1, max_size=4).map(
+    lambda c: sp.Add(*[k * m for k, m in zip(c, [1, SX, SY, SX * SY], strict=False)]))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 3), st.integers(1, 3), st.data())
+def test_random_rank_over_q_sqrt2_sqrt3_matches_sympy(n, m, data):
+    from coopkin_sym.exact.quotient import Tower
+
+    matrix = data.draw(st.lists(st.lists(_xy_small, min_size=m, max_size=m),
+                                min_size=n, max_size=n))
+    if data.draw(st.booleans()):           # a low-rank product, singular on purpose
+        a = sp.Matrix(data.draw(st.lists(st.lists(_xy_small, min_size=1, max_size=1),
+                                         min_size=n, max_size=n)))
+        b = sp.Matrix(data.draw(st.lists(st.lists(_xy_small, min_size=m, max_size=m),
+                                         min_size=1, max_size=1)))
+        matrix = (a * b).applyfunc(sp.expand).tolist()
+    tower = Tower([Quotient(X**2 - 2, 0), Quotient(Y**2 - 3, 1)])
+    got = rank_modulo(flint_rows(matrix), m, tower)
+    assert got == reference_rank(matrix, {SX: sp.sqrt(2), SY: sp.sqrt(3)})
+
+
+def test_tower_refuses_moduli_that_are_not_univariate():
+    from coopkin_sym.exact.quotient import Tower
+
+    with pytest.raises(ValueError, match="univariate"):
+        Tower([Quotient(X**2 + Y**2 - 1, 0)])
