@@ -21,6 +21,8 @@ reference_analysis(model, at=None) -> dict
     Exact numbers and matrices (see its docstring for the keys).
 reference_jacobians(model, at=None) -> dict
     ``H G^T`` and ``H D`` only, also at symbolic angles.
+reference_numbers_algebraic(model, at) -> dict
+    The numbers at ``(cos, sin)`` pairs in radicals, ranked over their number field.
 reference_numbers_float(model, at=None, tol=None) -> dict
     The same seven numbers decided by numpy float SVD ranks (the only float code here).
 at_from_text(model, text) -> dict
@@ -338,6 +340,32 @@ def reference_jacobians(
     ``(cos, sin)`` pairs, e.g. rational functions of a tangent half-angle."""
     built = _build(model, at)
     return {"HGt": built["H"] * built["G"].T, "HD": built["H"] * built["D"]}
+
+
+def reference_numbers_algebraic(model: Mapping[str, Any], at: Mapping[str, Any]) -> dict:
+    """The seven numbers from :func:`reference_jacobians` at a configuration whose
+    ``(cos, sin)`` pairs are algebraic numbers (radicals), ranked exactly by SymPy's
+    ``DomainMatrix`` over the number field the entries generate."""
+    from sympy.polys.matrices import DomainMatrix
+
+    ref = reference_jacobians(model, at)
+    gt, hd = ref["HGt"], ref["HD"]
+    m, r = gt.rows, hd.cols
+    if any(e.has(sp.sin, sp.cos, sp.tan, sp.atan) for e in (*gt, *hd)):
+        # DomainMatrix would take cos(2*atan(2)) for a new transcendental generator
+        raise ValueError("give (cos, sin) as radicals or rationals, not trigonometric "
+                         "expressions")
+
+    def rank(a: sp.Matrix) -> int:
+        if 0 in a.shape:
+            return 0
+        return DomainMatrix.from_Matrix(a.applyfunc(sp.radsimp), extension=True
+                                        ).to_dense().rank()
+
+    rq, rg, rd = rank(gt.row_join(-hd)), rank(gt), rank(hd)
+    nm, nr = 6 + r - rq, r - rd
+    return {"Nm": nm, "Nc": nm - nr, "Ni": 6 - rg, "Nr": nr, "Ng": m - rg, "Nd": m - rd,
+            "Nh": m - rq}
 
 
 def reference_analysis(

@@ -10,8 +10,7 @@ import sympy as sp
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from independent import reference_jacobians
-from sympy.polys.matrices import DomainMatrix
+from independent import reference_numbers_algebraic
 from typer.testing import CliRunner
 
 import coopkin_sym.examples
@@ -24,24 +23,9 @@ runner = CliRunner()
 
 
 def reference_numbers(name: str, angles: dict[str, sp.Expr], L: int = 1) -> dict:
-    """The seven numbers from the reference H G^T and H D, ranked exactly in the
-    number field of their entries."""
     model = yaml.safe_load(coopkin_sym.examples.example_path(name).read_text())
     at = {j: (sp.cos(q), sp.sin(q)) for j, q in angles.items()}
-    ref = reference_jacobians(model, {**at, "L": L})
-    gt, hd = ref["HGt"], ref["HD"]
-    m, r = gt.rows, hd.cols
-
-    def rank(a: sp.Matrix) -> int:
-        if 0 in a.shape:
-            return 0
-        return DomainMatrix.from_Matrix(a.applyfunc(sp.radsimp), extension=True
-                                        ).to_dense().rank()
-
-    rq, rg, rd = rank(gt.row_join(-hd)), rank(gt), rank(hd)
-    nm, nr = 6 + r - rq, r - rd
-    return {"Nm": nm, "Nc": nm - nr, "Ni": 6 - rg, "Nr": nr, "Ng": m - rg, "Nd": m - rd,
-            "Nh": m - rq}
+    return reference_numbers_algebraic(model, {**at, "L": L})
 
 
 def test_coincident_contacts_of_case1_in_radicals():

@@ -8,7 +8,12 @@ import json
 import pytest
 import sympy as sp
 import yaml
-from independent import at_from_text, reference_analysis, reference_jacobians
+from independent import (
+    at_from_text,
+    reference_analysis,
+    reference_jacobians,
+    reference_numbers_algebraic,
+)
 from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
@@ -311,3 +316,45 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
             assert again.numbers.as_dict() == c.numbers, c.condition
             checked += 1
         assert checked >= 1
+
+
+def test_case2_all_eight_joints_hand_checked():
+    """Paper case 2, every joint free (one level of recursion).
+
+    Robot s1 (axes along z): the contact lies on the axis of q3, so s1 is singular when
+    the axes of q1, q2, q3 meet the plane in three collinear points: q2 = +-pi/2
+    (hypersurfaces). Robot s2 (axes along x) works in the (y, z) plane with its axes at
+    A = (L, L) (q6), B = (L, 2L) (q7), C = (0, 2L) (q8) and the contact at P = (L, L):
+    A, B, C collinear needs C - B = (-L, 0) turned by q7 = +-pi/2, and P on that line
+    needs P - C = (L, -L) (at -pi/4) turned by q7 + q8 to +-pi/2: q8 = pi/4 or -3pi/4,
+    where tan(q8/2) = -1 +- sqrt(2) is irrational. Inside q2 = +-pi/2 both meet.
+    """
+    model = yaml.safe_load(coopkin_sym.examples.example_path(
+        "paper-case2-hard").read_text())
+    locus = compute_locus(coopkin_sym.load("paper-case2-hard"), max_depth=1)
+    one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
+    by_depth = {d: [c for c in locus.components if c.depth == d] for d in (0, 1)}
+    assert sorted((c.kind, tuple(c.equations)) for c in by_depth[0]) == [
+        ("hypersurface", ("t_q2 + 1",)), ("hypersurface", ("t_q2 - 1",)),
+        ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 + 1")),
+        ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 - 1"))]
+    assert all(c.changes == one for c in by_depth[0])
+    assert len(by_depth[1]) == 4
+    assert all(c.changes == {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)} for c in by_depth[1])
+    for c in locus.components:
+        assert c.witness_checked
+        if c.witness is None:        # irrational: checked again by the reference
+            point = c.algebraic_witness["point"]
+            at = {j: _cos_sin(v) for j, v in point.items()
+                  if j.startswith("q") and j not in ("q4", "q5")}
+            at.update({j: sp.Rational(point[j]) for j in ("q4", "q5")})
+            assert reference_numbers_algebraic(model, {**at, "L": 1}) == c.numbers
+    assert {c.condition for c in by_depth[0] if c.kind == "subvariety"} == {
+        "q7 = -pi/2, q8 = -3*pi/4 or q7 = -pi/2, q8 = pi/4",
+        "q7 = pi/2, q8 = -3*pi/4 or q7 = pi/2, q8 = pi/4"}
+
+
+def _cos_sin(angle: str) -> tuple[sp.Expr, sp.Expr]:
+    """Exact ``(cos q, sin q)`` from the tangent half-angle (radicals stay radicals)."""
+    t = sp.radsimp(sp.tan(sp.sympify(angle) / 2))
+    return sp.radsimp((1 - t**2) / (1 + t**2)), sp.radsimp(2 * t / (1 + t**2))
