@@ -144,6 +144,10 @@ def _short_condition(c: Component) -> str:
     'a2 = 0, P2(t_a1, t_b1) = 0'
     """
     text = _condition(c)
+    alternatives = text.split(" or ")
+    if len(alternatives) > 2:
+        # several real points of one family: the first, and how many more
+        text = f"{alternatives[0]} or ..."
     out = []
     for clause in text.split(", "):
         if len(clause) > _LONG_CLAUSE and clause.endswith(" = 0"):
@@ -235,14 +239,23 @@ def _float_cell(c: Component, generic: Mapping[str, int]) -> list[tuple[str, str
     return [("strong", f"{wrong}/{len(verdicts)} wrong"), _t(": " + ", ".join(kinds))]
 
 
-def _algebraic_witness_cell(w: Mapping) -> list:
+def _algebraic_witness_cell(w: Mapping, equations: Sequence[str] = (),
+                            compact: bool = False) -> list:
     """An algebraic witness: exact in ``--at`` syntax when short, else its value to 12
-    digits (the exact point is in the component's details)."""
+    digits (the exact point is in the component's details); ``compact`` (tables) keeps
+    only the joints of the equations, to 4 digits."""
     point = w["point"]
     if all(len(str(v)) <= 32 and "CRootOf" not in str(v) for v in point.values()):
         return [("at", witness_text(point))]
     approx = dict(point)
     approx.update({k: v for k, v in w.get("approx", {}).items()})
+    if compact:
+        used = {n[2:] if n.startswith("t_") else n
+                for e in equations for n in re.findall(r"[A-Za-z_]\w*", e)}
+        shown = {k: f"{float(v):.4g}" for k, v in w.get("approx", {}).items()  # float-ok
+                 if k in used}
+        if shown:
+            return [_t("\u2248 "), ("at", witness_text(shown)), _t(" (exact: below)")]
     return [_t("\u2248 "), ("at", witness_text(approx))]
 
 
@@ -257,7 +270,8 @@ def _components_table(locus: Locus) -> _Table:
             where.append(_t(" (no real points)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
         if not c.witness and c.algebraic_witness:
-            witness = _algebraic_witness_cell(c.algebraic_witness)
+            witness = _algebraic_witness_cell(c.algebraic_witness, c.equations,
+                                              compact=True)
         rows.append([[_t(name)], where, [_t(KIND_WORDS.get(c.kind, c.kind))],
                      *_numbers_cells(c, locus.generic), witness,
                      _float_cell(c, locus.generic)])
@@ -584,6 +598,7 @@ figcaption { color: #57606a; font-size: .9em; }
 details { margin: .3em 0 1em; }
 details summary { cursor: pointer; color: #0969da; }
 table.checks code { word-break: break-all; font-size: .85em; }
+table.components code, li code { overflow-wrap: anywhere; }
 .nums { white-space: nowrap; }
 """
 
