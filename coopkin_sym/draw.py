@@ -739,6 +739,7 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     os.close(handle)
     try:
         fig.savefig(tmp, dpi=dpi, format=suffix[1:])
+        os.chmod(tmp, 0o666 & ~_umask())      # as a plain open() would create it
         os.replace(tmp, target)
     except OSError as exc:
         raise DrawError(f"{target}: cannot write: {exc.strerror}") from None
@@ -746,3 +747,9 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
         if os.path.exists(tmp):
             os.unlink(tmp)
     return target
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask

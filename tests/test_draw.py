@@ -279,3 +279,13 @@ def test_cli_draw_errors(tmp_path, args, message):
     assert "Traceback" not in result.stderr
     assert result.stderr.startswith(message)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_pictures_get_the_permissions_of_a_plain_file(tmp_path):
+    import os
+    import stat
+
+    plain = tmp_path / "plain.txt"
+    plain.write_text("x")
+    out = save_picture(load("paper-case1-hard"), tmp_path / "case1.png")
+    assert stat.S_IMODE(os.stat(out).st_mode) == stat.S_IMODE(os.stat(plain).st_mode)
