@@ -522,14 +522,21 @@ def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> N
             continue
         if depth >= ctx.max_depth:
             continue
-        rows = substitute_values(ctx, q_rows, vi, ai[0] if ai else None)
-        rows = substitute_values(ctx, rows, vj, aj[0] if aj else None)
         moduli = [Quotient(a[1], ctx.ring_names.index(a[0])) for a in (ai, aj) if a]
-        if not moduli:
+        reducer = (moduli[0] if len(moduli) == 1 else Tower(moduli)) if moduli else None
+
+        def here(rows, vi=vi, ai=ai, vj=vj, aj=aj):
+            rows = substitute_values(ctx, rows, vi, ai[0] if ai else None)
+            return substitute_values(ctx, rows, vj, aj[0] if aj else None)
+
+        if any(c.is_zero() or (reducer is not None and reducer.is_zero(c))
+               for c in (here([[c]])[0][0] for c in charts)):
+            continue  # outside the enclosing parametrization
+        rows = here(q_rows)
+        if reducer is None:
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
         else:
-            numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts,
-                                     moduli[0] if len(moduli) == 1 else Tower(moduli))
+            numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, reducer)
         if numbers.as_dict() in (ci.numbers, cj.numbers):
             continue
         eqs = ci.equations + [e for e in cj.equations if e not in ci.equations]
