@@ -183,19 +183,26 @@ def describe_joint_motion(qdot, analysis: Analysis) -> str:
     return joint_motion_words(qdot, analysis.model.joint_names)
 
 
+def _mobility_sentence(n) -> str:
+    keep = "keeps" if n.Nm == 1 else "keep"
+    return (f"Nm = {n.Nm}: the object and the joints together have "
+            f"{_count(n.Nm, 'independent motion')} that {keep} every contact.")
+
+
+def _connectivity_words(n) -> str:
+    if n.Nc == 6:
+        return "the object can move in every direction (full connectivity)"
+    if n.Nc == 0:
+        return "the object cannot move at all"
+    return f"the object can move in {_count(n.Nc, 'independent direction')} only"
+
+
 def sentences(analysis: Analysis) -> list[str]:
     """One plain sentence per number of ``analysis``."""
     n = analysis.numbers
     r = analysis.r
-    keep = "keeps" if n.Nm == 1 else "keep"
-    out = [f"Nm = {n.Nm}: the object and the joints together have "
-           f"{_count(n.Nm, 'independent motion')} that {keep} every contact."]
-    if n.Nc == 6:
-        conn = "the object can move in every direction (full connectivity)"
-    elif n.Nc == 0:
-        conn = "the object cannot move at all"
-    else:
-        conn = f"the object can move in {_count(n.Nc, 'independent direction')} only"
+    out = [_mobility_sentence(n)]
+    conn = _connectivity_words(n)
     driven = n.Nc - n.Ni
     blocks, _ = analysis.available_blocks()
     c12, c22 = blocks["C12"], blocks["C22"]
@@ -247,15 +254,8 @@ def count_sentences(numbers, r: int) -> list[str]:
     Ni = 1: with every joint locked, the object can still make one independent motion.
     """
     n = numbers
-    out = [f"Nm = {n.Nm}: the object and the joints together have "
-           f"{_count(n.Nm, 'independent motion')} that {'keeps' if n.Nm == 1 else 'keep'} "
-           "every contact."]
-    if n.Nc == 6:
-        conn = "the object can move in every direction (full connectivity)"
-    elif n.Nc == 0:
-        conn = "the object cannot move at all"
-    else:
-        conn = f"the object can move in {_count(n.Nc, 'independent direction')} only"
+    out = [_mobility_sentence(n)]
+    conn = _connectivity_words(n)
     parts = []
     driven = n.Nc - n.Ni
     if driven and n.Nc:

@@ -253,26 +253,10 @@ def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
 
 
 def algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
-                          numbers: Numbers) -> None:
-    """A real algebraic witness on the hypersurface ``f = 0``: nice rationals for the
-    other variables, ``x_k`` a real root of an irreducible factor of what is left."""
-    x = ctx.ring_names[k]
-    others = [n for n in vars_of(ctx, f) if n != x]
-    zctx = ctx.ring.zctx
-    for values in itertools.islice(itertools.product(NICE, repeat=len(others)), 30):
-        point = dict(zip(others, values, strict=True))
-        h = f
-        for n, v in point.items():
-            j = ctx.ring_names.index(n)
-            h = substitute(h, j, zctx.constant(-v.numerator), zctx.constant(v.denominator),
-                            h.degrees()[j])
-        if h.is_zero() or h.degrees()[k] == 0:
-            continue
-        _, curved = roots(ctx, h, x)
-        for g in curved:
-            attach_algebraic_witness(ctx, comp, x, g, point, point_so_far, numbers)
-            if comp.algebraic_witness is not None:
-                return
+                         numbers: Numbers) -> None:
+    """A witness on the hypersurface ``f = 0``: nice rationals for the other variables,
+    ``x_k`` a root of what is left (see :func:`family_witness`)."""
+    family_witness(ctx, comp, f, ctx.ring_names[k], point_so_far, numbers)
 
 
 def fixed_at(ctx) -> dict[str, str]:
