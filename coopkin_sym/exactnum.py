@@ -36,7 +36,7 @@ from fractions import Fraction
 import sympy as sp
 from sympy.parsing.sympy_parser import auto_number, convert_xor, parse_expr, rationalize
 
-__all__ = ["NumberError", "angle_text", "parse_angle", "parse_number"]
+__all__ = ["NumberError", "angle_text", "parse_angle", "parse_number", "parse_polynomial"]
 
 #: Functions and constants allowed in number text besides the declared parameters.
 ALLOWED_NAMES: dict[str, object] = {
@@ -425,3 +425,144 @@ def angle_text(cos: object, sin: object) -> str:
     if (c, s) in named:
         return named[(c, s)]
     return f"2*atan({s / (1 + c)})"
+
+
+# --- polynomial equations (locus components) -----------------------------------------
+_POLY_TOKEN = re.compile(r"\s*(?:(\d+)|([A-Za-z_][A-Za-z_0-9]*)|(\*\*|\^|[-+*/()]))")
+_MAX_POLY_TEXT = 200_000   # characters in one equation
+_MAX_NESTING = 100
+
+
+def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
+                     where: str) -> dict[tuple[int, ...], Fraction]:
+    """Read a polynomial with rational coefficients in the variables ``names``.
+
+    The grammar is small and read by hand (integers, the given names, ``+ - * /``,
+    ``**`` or ``^`` with an integer exponent, parentheses; division only by a nonzero
+    constant), so no code runs and no other name is accepted.
+
+    Returns
+    -------
+    dict
+        Exponent tuples (in the order of ``names``) to nonzero ``Fraction`` coefficients.
+
+    Raises
+    ------
+    NumberError
+        On anything else, naming ``where``.
+
+    Example
+    -------
+    >>> parse_polynomial("t_q1**2 + 4*t_q1 + 1/2", ["t_q1", "t_q2"], "eq")
+    {(2, 0): Fraction(1, 1), (1, 0): Fraction(4, 1), (0, 0): Fraction(1, 2)}
+    """
+    import flint
+
+    if not isinstance(text, str):
+        raise NumberError(where, f"{_show(text)} is not a polynomial (text expected)")
+    if len(text) > _MAX_POLY_TEXT:
+        raise NumberError(where, f"{_show(text)} is too long ({len(text)} characters)")
+    tokens: list[tuple[str, str]] = []
+    pos, stripped = 0, text.rstrip()
+    while pos < len(stripped):
+        match = _POLY_TOKEN.match(stripped, pos)
+        if match is None or match.end() == pos:
+            raise NumberError(where, f"{_show(text)} cannot be parsed as a polynomial")
+        number, name, op = match.groups()
+        if name is not None and name not in names:
+            raise NumberError(where, f"{_show(text)} uses unknown variable {name} "
+                                     f"(known: {', '.join(names)})")
+        tokens.append(("n", number) if number else ("v", name) if name else ("o", op))
+        pos = match.end()
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(names) or ("_",), "lex")
+    index = 0
+    budget = [_MAX_POWER_PRODUCT]
+
+    def peek() -> tuple[str, str] | None:
+        return tokens[index] if index < len(tokens) else None
+
+    def take() -> tuple[str, str]:
+        nonlocal index
+        if index >= len(tokens):
+            raise NumberError(where, f"{_show(text)} ends too early")
+        index += 1
+        return tokens[index - 1]
+
+    def expression(depth: int):
+        if depth > _MAX_NESTING:
+            raise NumberError(where, f"{_show(text)} is nested too deeply")
+        acc = None
+        sign = 1
+        while peek() in (("o", "+"), ("o", "-")):
+            sign = -sign if take()[1] == "-" else sign
+        acc = sign * term(depth)
+        while peek() in (("o", "+"), ("o", "-")):
+            op = take()[1]
+            value = term(depth)
+            acc = acc + value if op == "+" else acc - value
+        return acc
+
+    def term(depth: int):
+        acc = power(depth)
+        while peek() in (("o", "*"), ("o", "/")):
+            op = take()[1]
+            if peek() in (("o", "+"), ("o", "-")):
+                sign = -1 if take()[1] == "-" else 1
+                value = sign * power(depth)
+            else:
+                value = power(depth)
+            if op == "*":
+                acc = acc * value
+            else:
+                if not value.is_constant() or value.is_zero():
+                    raise NumberError(where, f"{_show(text)}: division by a nonconstant "
+                                             f"or zero")
+                acc = acc * (1 / value.leading_coefficient())
+        return acc
+
+    def power(depth: int):
+        base = atom(depth)
+        if peek() in (("o", "**"), ("o", "^")):
+            take()
+            kind, value = take()
+            if kind != "n":
+                raise NumberError(where, f"{_show(text)}: an exponent must be an integer "
+                                         f"literal")
+            e = int(value)
+            if e > _MAX_EXPONENT:
+                raise NumberError(where, f"{_show(text)} has an exponent that is too "
+                                         f"large")
+            budget[0] //= max(e, 1)
+            if budget[0] <= 0:
+                raise NumberError(where, f"{_show(text)} has exponents that are too large")
+            if peek() in (("o", "**"), ("o", "^")):
+                raise NumberError(where, f"{_show(text)}: chained powers are not accepted")
+            return base ** e
+        return base
+
+    def atom(depth: int):
+        kind, value = take()
+        if kind == "n":
+            return ctx.constant(int(value))
+        if kind == "v":
+            return ctx.gens()[list(names).index(value)]
+        if value == "(":
+            inner = expression(depth + 1)
+            if take() != ("o", ")"):
+                raise NumberError(where, f"{_show(text)}: unbalanced parentheses")
+            return inner
+        if value in ("+", "-"):
+            inner = atom(depth)
+            return -inner if value == "-" else inner
+        raise NumberError(where, f"{_show(text)} cannot be parsed as a polynomial")
+
+    if not tokens:
+        raise NumberError(where, "empty text is not a polynomial")
+    poly = expression(0)
+    if index != len(tokens):
+        raise NumberError(where, f"{_show(text)} cannot be parsed as a polynomial")
+    out = {}
+    for monom, c in poly.to_dict().items():
+        key = tuple(int(e) for e in monom)[: len(names)]
+        out[key] = Fraction(int(c.p), int(c.q))
+    return out
