@@ -280,6 +280,18 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
         cert.depths = {0: {"certified": False, "why": why, "tests": 0, "failed": 0}}
         cert.seconds = round(time.monotonic() - started, 3)
         return cert
+    for i, comp in enumerate(setup.components):
+        if comp is None:
+            continue
+        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_KEYS}
+        ranks = {"Q": 6 + r - comp[1]["Nm"], "HG^T": 6 - comp[1]["Ni"],
+                 "HD": r - comp[1]["Nr"]}
+        implied = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
+        if given != implied:
+            cert.notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) "
+                              f"do not fit one another (from Nm, Ni, Nr: "
+                              f"{_numbers_text(implied)}): the component is not used")
+            setup.components[i] = None
     runner = _Runner(cert, setup, locus, timeout, backend,
                      None if budget is None else started + budget, first_failure)
     for size in range(len(revolute) + 1):

@@ -71,6 +71,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from importlib import metadata
+from math import comb
 
 import flint
 
@@ -82,6 +83,8 @@ BACKENDS = ("auto", "singular", "flint", "sympy", "msolve")
 #: Seconds of the first, short exact attempt of :func:`covers` (most true inclusions
 #: are proved within it).
 QUICK_SECONDS = 0.5
+#: Largest covering system (in terms) written with the product of the components.
+MAX_PRODUCT_TERMS = 20_000
 EXTRA_HINT = "pip install coopkin_sym[certify]"
 
 
@@ -291,9 +294,7 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
         whole = any(not as_dicts(c, 0)[0] for c in list(components) + list(allowed))
         return done(whole, True, "none")
     for c in list(components) + list(allowed):
-        gens, n2 = as_dicts(c, n)
-        if n2 != n:
-            raise GroebnerError("components and ideal in different numbers of variables")
+        gens, _ = as_dicts(c, n)
         if not gens:  # the zero ideal: its zero set is everything
             return done(True, True, "none", "a component is the whole space")
         comps.append(gens)
@@ -315,10 +316,32 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
         return done(None, False, "msolve", f"msolve not installed ({EXTRA_HINT})")
     # 2. a short exact attempt
     if prover is not None:
-        system, m = covering_system(polys, comps, n, separate=prover == "singular")
-        quick = _prove(system, m, min(timeout, QUICK_SECONDS), prover)
+        quick = _prove_cover(polys, comps, n, min(timeout, QUICK_SECONDS), prover)
         if quick.holds is not None:
             return done(quick.holds, True, prover)
+    # components that do not meet V(I) play no part (dropping one can only make the
+    # inclusion harder to prove, so a screen may decide it)
+    meeting = []
+    dropped_exactly = True
+    for c, c_f in zip(comps, comps_f, strict=True):
+        bound = min(left(), 0.2)
+        apart = (_screen(polys + c, n, bound) if screen else
+                 _prove(polys + c, n, bound, prover)) if bound > 0 else None
+        if apart is None or apart.holds is not True:
+            meeting.append((c, c_f))
+        else:
+            dropped_exactly = dropped_exactly and apart.exact
+    if len(meeting) < len(comps):
+        comps, comps_f = [c for c, _ in meeting], [c for _, c in meeting]
+        if prover is not None and left() > 0:
+            quick = _prove_cover(polys, comps, n, min(left(), QUICK_SECONDS), prover)
+            if quick.holds is not None:
+                # without the components that miss V(I) (proved so, or found so
+                # modulo a prime) the answer is the same
+                exact = quick.holds or dropped_exactly
+                return done(quick.holds, exact, prover,
+                            "" if exact else "after leaving out components that miss "
+                                             "the drop set modulo a prime")
     # 3. missing points on random affine subspaces, then modulo a prime
     rng = random.Random(seed)
     for k in range(1, min(sections, n - 1) + 1):
@@ -328,19 +351,22 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
         if cut is None:
             continue        # a component contains the whole subspace: nothing to learn
         cut_gens, cut_comps = cut
-        system, m = covering_system(cut_gens, cut_comps, k,
-                                    separate=not screen and prover == "singular")
         bound = min(left(), max(1.0, timeout / 10))
-        verdict = _screen(system, m, bound) if screen else _prove(system, m, bound, prover)
+        if bound <= 0:
+            break
+        if screen:
+            verdict = _screen_cover(cut_gens, cut_comps, k, bound)
+        else:
+            verdict = _prove_cover(cut_gens, cut_comps, k, bound, prover)
         if verdict.holds is False:
             how = "modulo a prime, " if not verdict.exact else ""
             return done(False, verdict.exact, verdict.backend,
                         f"{how}on a random affine subspace of dimension {k}")
-        if verdict.holds is None and not screen:
+        if verdict.holds is None:
             break
     if screen and left() > 0:
-        system, m = covering_system(polys, comps, n)
-        verdict = _screen(system, m, min(left(), timeout / 2) if prover else left())
+        verdict = _screen_cover(polys, comps, n, min(left(), timeout / 2) if prover
+                                else left())
         if verdict.holds is False:
             return done(False, False, "msolve", "modulo a prime")
         if prover is None:
@@ -348,11 +374,68 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
     # 4. the exact attempt with the time left
     if left() <= 0:
         return done(None, False, prover or "msolve", f"timed out after {timeout:g} s")
-    system, m = covering_system(polys, comps, n, separate=prover == "singular")
-    verdict = _prove(system, m, left(), prover)
+    verdict = _prove_cover(polys, comps, n, left(), prover)
     if verdict.holds is None and verdict.detail.startswith("timed out"):
         return done(None, False, prover, f"timed out after {timeout:g} s")
     return done(verdict.holds, verdict.exact, prover, verdict.detail)
+
+
+def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
+    """The covering system on the exact ``prover``, in both forms (one ``z`` for the
+    product of the components, then one ``z`` per component), sharing the time: which
+    one a Gröbner basis finds easier varies from system to system."""
+    started = time.monotonic()
+    comps = _merge_hypersurfaces(comps, n)
+    forms = [True] if _product_too_large(comps) else [False, True] if len(comps) > 1 \
+        else [False]
+    systems = [covering_system(polys, comps, n, separate=separate) for separate in forms]
+    if len(systems) == 2:
+        sizes = [sum(len(p) for p in system) for system, _ in systems]
+        if sizes[0] > MAX_PRODUCT_TERMS:
+            systems = systems[1:]
+        elif sizes[0] > 20 * sizes[1]:
+            systems = systems[::-1]
+    for k, (system, m) in enumerate(systems):
+        left = timeout - (time.monotonic() - started)
+        if left <= 0:
+            break
+        verdict = _prove(system, m, left / (len(systems) - k), prover)
+        if verdict.holds is not None:
+            return verdict
+    return Verdict(None, False, prover, time.monotonic() - started,
+                   f"timed out after {timeout:g} s")
+
+
+def _screen_cover(polys, comps, n: int, timeout: float) -> Verdict:
+    comps = _merge_hypersurfaces(comps, n)
+    system, m = covering_system(polys, comps, n, separate=_product_too_large(comps))
+    if sum(len(p) for p in system) > MAX_PRODUCT_TERMS:
+        system, m = covering_system(polys, comps, n, separate=True)
+    return _screen(system, m, timeout)
+
+
+def _product_too_large(comps) -> bool:
+    """Whether the product of the combined components may exceed the term budget:
+    bounded by the product of their term counts, and by the number of monomials of
+    its degree in its variables."""
+    bound, degree = 1, 0
+    nvars = len(next(iter(comps[0][0]))) + 1 if comps and comps[0] and comps[0][0] else 1
+    for c in comps:
+        bound *= max(1, sum(len(g) for g in c))
+        degree += max(sum(k) for g in c for k in g) + len(c) - 1
+    return min(bound, comb(degree + nvars, nvars)) > MAX_PRODUCT_TERMS
+
+
+def _merge_hypersurfaces(comps: list[list[PolyDict]], n: int) -> list[list[PolyDict]]:
+    """The one-generator components as one: ``V(f) + V(g) = V(f g)``."""
+    single = [c[0] for c in comps if len(c) == 1]
+    if len(single) < 2:
+        return comps
+    ctx = _ctx(n)
+    product = ctx.constant(1)
+    for f in single:
+        product = product * ctx.from_dict(f)
+    return [c for c in comps if len(c) > 1] + [[_plain(product)]]
 
 
 def _normal(f: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
@@ -572,7 +655,9 @@ def polynomial_text(p: PolyDict, names: Sequence[str]) -> str:
     def term(k, c):
         mono = "*".join(f"{v}^{e}" if e > 1 else v for v, e in zip(names, k, strict=True)
                         if e)
-        return f"{c:+d}" + (f"*{mono}" if mono else "")
+        if not mono:
+            return f"{c:+d}"
+        return ("+" if c == 1 else "-" if c == -1 else f"{c:+d}*") + mono
 
     return "".join(term(k, c) for k, c in sorted(p.items(), reverse=True)).lstrip("+")
 
