@@ -204,7 +204,8 @@ class Certificate:
 # --- the certificate ---------------------------------------------------------------------
 def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
                   backend: str = "auto", budget: float | None = None,
-                  first_failure: bool = False) -> Certificate:
+                  first_failure: bool = False, max_depth: int | None = None
+                  ) -> Certificate:
     """Prove that ``locus`` lists every configuration where the numbers change, with
     the right numbers, or say why that is not proved, chart by chart and depth by depth.
 
@@ -229,6 +230,9 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     first_failure
         Stop at the first test that is not certified (the answer is then only "not
         certified" and why; the tests after it are not run).
+    max_depth
+        Test only depths up to this one (``0``: the generic drop sets alone); the
+        certificate then says that the deeper ones were not tested.
 
     Returns
     -------
@@ -280,20 +284,9 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
         cert.depths = {0: {"certified": False, "why": why, "tests": 0, "failed": 0}}
         cert.seconds = round(time.monotonic() - started, 3)
         return cert
-    for i, comp in enumerate(setup.components):
-        if comp is None:
-            continue
-        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_KEYS}
-        ranks = {"Q": 6 + r - comp[1]["Nm"], "HG^T": 6 - comp[1]["Ni"],
-                 "HD": r - comp[1]["Nr"]}
-        implied = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
-        if given != implied:
-            cert.notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) "
-                              f"do not fit one another (from Nm, Ni, Nr: "
-                              f"{_numbers_text(implied)}): the component is not used")
-            setup.components[i] = None
+    _refuse_inconsistent_numbers(setup, locus, m, r, cert.notes)
     runner = _Runner(cert, setup, locus, timeout, backend,
-                     None if budget is None else started + budget, first_failure)
+                     None if budget is None else started + budget, first_failure, max_depth)
     for size in range(len(revolute) + 1):
         for pi_joints in itertools.combinations(revolute, size):
             if runner.stopped:
@@ -303,16 +296,36 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     if runner.stopped:
         cert.notes.append("Stopped at the first test not certified; the tests after it "
                           "were not run.")
-    _summarize(cert, locus)
-    if backend == "auto":
-        missing = [name for name, path in (("Singular", singular_path()),
-                                           ("msolve", msolve_path())) if path is None]
-        if missing:
-            cert.notes.append(f"{' and '.join(missing)} not installed ({EXTRA_HINT}): "
-                              "tests ran on flint's exact Buchberger algorithm, which is "
-                              "slow beyond small systems")
+    if runner.skipped_depth:
+        cert.notes.append(f"Only depths up to {max_depth} were tested: the drops inside "
+                          f"the components of depth {max_depth} and deeper were not tested.")
+    _summarize(cert, locus, max_depth if runner.skipped_depth else None)
+    if backend == "auto" and singular_path() is None:
+        cert.notes.append(f"Singular is not installed ({EXTRA_HINT}): the proofs ran on "
+                          "flint's exact Buchberger algorithm, which is slow beyond small "
+                          "systems.")
+    if backend == "auto" and msolve_path() is None:
+        cert.notes.append(f"msolve is not installed ({EXTRA_HINT}): what is missing was "
+                          "looked for exactly on small subspaces only.")
     cert.seconds = round(time.monotonic() - started, 3)
     return cert
+
+
+def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
+                                 notes: list[str]) -> None:
+    """Components whose seven numbers do not follow from their Nm, Ni, Nr are not
+    used (and a note says so)."""
+    for i, comp in enumerate(setup.components):
+        if comp is None:
+            continue
+        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_KEYS}
+        implied = _numbers(m, r, 6 + r - comp[1]["Nm"], 6 - comp[1]["Ni"],
+                           r - comp[1]["Nr"])
+        if given != implied:
+            notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) do not "
+                         f"fit one another (from Nm, Ni, Nr: {_numbers_text(implied)}): "
+                         "the component is not used")
+            setup.components[i] = None
 
 
 # --- setting up --------------------------------------------------------------------------
@@ -707,9 +720,12 @@ def _order(component) -> tuple[int, int]:
 
 class _Runner:
     def __init__(self, cert: Certificate, setup: _Setup, locus: Locus, timeout: float,
-                 backend: str, deadline: float | None, first_failure: bool):
+                 backend: str, deadline: float | None, first_failure: bool,
+                 max_depth: int | None):
         self.cert, self.setup, self.locus = cert, setup, locus
+        self.max_depth = max_depth
         self.first_failure, self.stopped = first_failure, False
+        self.skipped_depth = False
         self.timeout, self.backend, self.deadline = timeout, backend, deadline
         self.rng = random.Random(1992)
         r = len(setup.model.joints)
@@ -742,6 +758,9 @@ class _Runner:
                      everything, conditions)
         for i in sorted(here):
             comp = self.locus.components[i]
+            if self.max_depth is not None and comp.depth > self.max_depth:
+                self.skipped_depth = True
+                continue
             later = [(j, p) for j, p in here.items()
                      if _order(self.locus.components[j]) > _order(comp)]
             ranks = self.component_ranks[i]
@@ -749,6 +768,10 @@ class _Runner:
                 for kind, target in (("numbers", ranks[name] + 1), ("drops", ranks[name])):
                     if self.stopped:
                         return
+                    depth = comp.depth + (1 if kind == "drops" else 0)
+                    if self.max_depth is not None and depth > self.max_depth:
+                        self.skipped_depth = True
+                        continue
                     if name == "HD":
                         gens = _cached(cache, ("HD", target), lambda t=target: _dt_generators(
                             chart, t, setup, real, self.rng, cache))
@@ -756,7 +779,6 @@ class _Runner:
                         gens = _cached(cache, (name, target), lambda n=name, t=target:
                                        _drop_generators(chart.matrices[n], t, chart, real,
                                                         self.rng))
-                    depth = comp.depth + (1 if kind == "drops" else 0)
                     check = Check(chart.name, depth, i, name, kind)
                     if kind == "numbers":
                         self.bound(check, chart, here[i], gens, conditions)
@@ -838,7 +860,7 @@ class _Runner:
             self.stopped = True
 
 
-def _summarize(cert: Certificate, locus: Locus) -> None:
+def _summarize(cert: Certificate, locus: Locus, max_depth: int | None) -> None:
     def tally(table: dict, key, check: Check) -> None:
         entry = table.setdefault(key, {"certified": True, "why": "", "tests": 0,
                                        "failed": 0})
@@ -855,12 +877,17 @@ def _summarize(cert: Certificate, locus: Locus) -> None:
         tally(charts, c.chart, c)
     top = max((c.depth for c in locus.components), default=-1) + 1
     for d in range(top + 1):
-        depths.setdefault(d, {"certified": True, "why": "", "tests": 0, "failed": 0})
+        untested = max_depth is not None and d > max_depth
+        depths.setdefault(d, {"certified": not untested,
+                              "why": "not tested (max_depth)" if untested else
+                              "nothing to test", "tests": 0, "failed": 0})
     cert.depths = dict(sorted(depths.items()))
     cert.charts = charts
     failing = [f"{c.where()}: {c.why}" for c in sorted(
         (c for c in cert.checks if not c.certified), key=lambda c: c.depth)]
     failing = [n for n in cert.notes if n.endswith("is not used")] + failing
+    if max_depth is not None:
+        failing.append(f"depths beyond {max_depth} were not tested")
     cert.certified = not failing
     if cert.certified:
         cert.summary = "complete (certified)"

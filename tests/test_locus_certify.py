@@ -203,6 +203,15 @@ def test_case1_hard_complete_locus_is_certified():
             "seconds"} <= set(data["checks"][0])
 
 
+def test_max_depth():
+    cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
+                         timeout=60, max_depth=0)
+    assert cert.summary == "not certified: depths beyond 0 were not tested"
+    assert cert.depths[0] == {"certified": True, "why": "", "tests": 46 - 15, "failed": 0}
+    assert cert.depths[1] == {"certified": False, "why": "not tested (max_depth)",
+                              "tests": 0, "failed": 0}
+
+
 @pytest.mark.parametrize("missing", range(5))
 def test_case1_hard_without_one_component_fails(missing):
     comps = case1_hard_components()
@@ -381,9 +390,11 @@ def test_without_the_extra_flint_alone(monkeypatch):
                          timeout=60)
     assert cert.summary == "complete (certified)"
     assert {c.backend for c in cert.checks} <= {"flint", "none"}
-    assert cert.notes == ["Singular and msolve not installed (pip install "
-                          "coopkin_sym[certify]): tests ran on flint's exact Buchberger "
-                          "algorithm, which is slow beyond small systems"]
+    assert cert.notes == [
+        "Singular is not installed (pip install coopkin_sym[certify]): the proofs ran on "
+        "flint's exact Buchberger algorithm, which is slow beyond small systems.",
+        "msolve is not installed (pip install coopkin_sym[certify]): what is missing was "
+        "looked for exactly on small subspaces only."]
 
 
 @needs_msolve

@@ -83,6 +83,8 @@ BACKENDS = ("auto", "singular", "flint", "sympy", "msolve")
 #: Seconds of the first, short exact attempt of :func:`covers` (most true inclusions
 #: are proved within it).
 QUICK_SECONDS = 0.5
+#: Systems this small go to flint first (backend "auto"), for this many seconds.
+SMALL_VARIABLES, SMALL_TERMS, SMALL_SECONDS = 6, 400, 0.1
 #: Largest covering system (in terms) written with the product of the components.
 MAX_PRODUCT_TERMS = 20_000
 EXTRA_HINT = "pip install coopkin_sym[certify]"
@@ -261,6 +263,8 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
        constant proves the inclusion). Components whose generators include all of
        another's lie inside it and are dropped.
     2. A short exact attempt on the covering system (most true inclusions end here).
+       Then components that miss ``V(I)`` (``I`` plus their generators is the unit
+       ideal, by msolve or the prover) are left out, and the attempt is repeated.
     3. The same question on random affine subspaces ``x = a + B y`` of dimension
        ``1, 2, ..., sections`` (small random integers): an inclusion that fails on a
        subspace fails everywhere, and a missing family shows up on a subspace of the
@@ -318,7 +322,7 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
     if prover is not None:
         quick = _prove_cover(polys, comps, n, min(timeout, QUICK_SECONDS), prover)
         if quick.holds is not None:
-            return done(quick.holds, True, prover)
+            return done(quick.holds, True, quick.backend)
     # components that do not meet V(I) play no part (dropping one can only make the
     # inclusion harder to prove, so a screen may decide it)
     meeting = []
@@ -339,7 +343,7 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
                 # without the components that miss V(I) (proved so, or found so
                 # modulo a prime) the answer is the same
                 exact = quick.holds or dropped_exactly
-                return done(quick.holds, exact, prover,
+                return done(quick.holds, exact, quick.backend,
                             "" if exact else "after leaving out components that miss "
                                              "the drop set modulo a prime")
     # 3. missing points on random affine subspaces, then modulo a prime
@@ -373,11 +377,12 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
             return done(verdict.holds, False, "msolve", verdict.detail)
     # 4. the exact attempt with the time left
     if left() <= 0:
-        return done(None, False, prover or "msolve", f"timed out after {timeout:g} s")
+        return done(None, False, "singular" if prover == "auto" else prover or "msolve",
+                    f"timed out after {timeout:g} s")
     verdict = _prove_cover(polys, comps, n, left(), prover)
     if verdict.holds is None and verdict.detail.startswith("timed out"):
-        return done(None, False, prover, f"timed out after {timeout:g} s")
-    return done(verdict.holds, verdict.exact, prover, verdict.detail)
+        return done(None, False, verdict.backend, f"timed out after {timeout:g} s")
+    return done(verdict.holds, verdict.exact, verdict.backend, verdict.detail)
 
 
 def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
@@ -402,7 +407,8 @@ def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
         verdict = _prove(system, m, left / (len(systems) - k), prover)
         if verdict.holds is not None:
             return verdict
-    return Verdict(None, False, prover, time.monotonic() - started,
+    return Verdict(None, False, "singular" if prover == "auto" else prover,
+                   time.monotonic() - started,
                    f"timed out after {timeout:g} s")
 
 
@@ -512,9 +518,15 @@ def _section(gens, comps, k: int, rng: random.Random):
 
 # --- engines --------------------------------------------------------------------------
 def _prover(backend: str) -> str | None:
+    """The exact engine of a backend: ``"auto"`` is flint on small systems and Singular
+    (else flint) on the others."""
     if backend == "auto":
-        return "singular" if singular_path() else "flint"
+        return "auto" if singular_path() else "flint"
     return None if backend == "msolve" else backend
+
+
+def _small(polys: list[PolyDict], n: int) -> bool:
+    return n <= SMALL_VARIABLES and sum(len(p) for p in polys) <= SMALL_TERMS
 
 
 def _decide_unit(polys: list[PolyDict], n: int, timeout: float, backend: str) -> Verdict:
@@ -542,6 +554,15 @@ def _prove(polys: list[PolyDict], n: int, timeout: float, engine: str) -> Verdic
         return Verdict(trivial, True, "none", 0.0)
     if timeout <= 0:
         return Verdict(None, False, engine, 0.0, "timed out after 0 s")
+    if engine == "auto":
+        started = time.monotonic()
+        if _small(polys, n):   # no process to start: flint answers these at once
+            quick = _prove(polys, n, min(timeout, SMALL_SECONDS), "flint")
+            if quick.holds is not None:
+                return quick
+        verdict = _prove(polys, n, timeout - (time.monotonic() - started), "singular")
+        return Verdict(verdict.holds, verdict.exact, verdict.backend,
+                       time.monotonic() - started, verdict.detail)
     if engine == "singular":
         if not singular_path():
             return Verdict(None, False, "singular", 0.0,
