@@ -431,6 +431,8 @@ def angle_text(cos: object, sin: object) -> str:
 _POLY_TOKEN = re.compile(r"\s*(?:(\d+)|([A-Za-z_][A-Za-z_0-9]*)|(\*\*|\^|[-+*/()]))")
 _MAX_POLY_TEXT = 200_000   # characters in one equation
 _MAX_NESTING = 100
+_MAX_POLY_DEGREE = 10_000  # total degree of a power
+_MAX_POLY_TERMS = 200_000  # terms a product or power may reach
 
 
 def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
@@ -476,7 +478,6 @@ def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
         pos = match.end()
     ctx = flint.fmpq_mpoly_ctx.get(tuple(names) or ("_",), "lex")
     index = 0
-    budget = [_MAX_POWER_PRODUCT]
 
     def peek() -> tuple[str, str] | None:
         return tokens[index] if index < len(tokens) else None
@@ -512,6 +513,7 @@ def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
             else:
                 value = power(depth)
             if op == "*":
+                _check_product_size(acc, value, names, text, where)
                 acc = acc * value
             else:
                 if not value.is_constant() or value.is_zero():
@@ -532,11 +534,10 @@ def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
             if e > _MAX_EXPONENT:
                 raise NumberError(where, f"{_show(text)} has an exponent that is too "
                                          f"large")
-            budget[0] //= max(e, 1)
-            if budget[0] <= 0:
-                raise NumberError(where, f"{_show(text)} has exponents that are too large")
             if peek() in (("o", "**"), ("o", "^")):
                 raise NumberError(where, f"{_show(text)}: chained powers are not accepted")
+            degree = base.total_degree() * e if not base.is_zero() else 0
+            _check_size(len(base) ** e if len(base) > 1 else 1, degree, names, text, where)
             return base ** e
         return base
 
@@ -566,3 +567,16 @@ def parse_polynomial(text: str, names: list[str] | tuple[str, ...],
         key = tuple(int(e) for e in monom)[: len(names)]
         out[key] = Fraction(int(c.p), int(c.q))
     return out
+
+
+def _check_size(terms_bound: int, degree: int, names, text: str, where: str) -> None:
+    """Refuse a product or power whose result may exceed the size limits."""
+    if degree > _MAX_POLY_DEGREE or min(terms_bound, math.comb(
+            degree + len(names), len(names))) > _MAX_POLY_TERMS:
+        raise NumberError(where, f"{_show(text)} expands to a polynomial that is too large")
+
+
+def _check_product_size(a, b, names, text: str, where: str) -> None:
+    if a.is_zero() or b.is_zero():
+        return
+    _check_size(len(a) * len(b), a.total_degree() + b.total_degree(), names, text, where)

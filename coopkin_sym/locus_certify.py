@@ -49,23 +49,38 @@ contains the drop set and a proof with them is a proof.
 Backends and measurements
 -------------------------
 One covering test is an ideal that must be the unit ideal. Measured on this 2-core
-machine (``benchmarks/bench_certify.py``) on the tests of paper case 2, hard contacts,
-t chart, rank of ``Gt^T`` (the drop set ``c1 = c2``, 5-dimensional in 8 variables):
+machine (``benchmarks/bench_certify.py``) on one test of paper case 2 with hard contacts
+(t chart, ``rank Gt^T``, whose drop set ``c1 = c2`` is 5-dimensional in 8 variables),
+cap 60 s:
 
-* when a component ``c1 = c2`` is listed (the test is true): Singular 0.01-0.3 s,
-  msolve 0.3 s (modulo p), flint's Buchberger 3.3 s (one ``z``) to 37 s (one ``z`` per
-  component);
-* when it is missing (false): the whole system is out of reach of every backend
-  (msolve and Singular over 60 s); on a random affine subspace of dimension 3 msolve
-  finds the missing points in 0.1 s, flint and SymPy time out at 60 s already from
-  dimension 2.
+================================  =========  =======  =======  ==================
+covering system                   Singular   flint    SymPy    msolve (modulo p)
+================================  =========  =======  =======  ==================
+true, one z (10 vars, 273k terms)  3.6 s      3.6 s    > 60 s   20 s
+true, z per component (17 vars)    0.03 s     > 60 s   0.43 s   > 60 s
+false, whole space (either form)   > 60 s     > 60 s   > 60 s   > 60 s
+false, random 3-dim subspace       > 60 s     > 60 s   > 60 s   0.36 s
+================================  =========  =======  =======  ==================
 
-So Singular proves (exact ``std`` over Q), msolve screens (modulo a prime, on random
-subspaces first), flint and SymPy are exact fallbacks for small systems; Singular and
-msolve come with the ``certify`` extra (``pip install coopkin_sym[certify]``).
-Certifying a locus (all charts, all depths): paper case 1 under 1 s; paper case 2 with
-complete contacts, all eight joints free, 1024 tests, about 15 s; with hard contacts
-about 45 s (to find that ``c1 = c2`` is missing in every chart).
+So Singular proves (exact ``std`` over Q; both forms of the covering system are tried,
+sharing the time), flint proves the small systems (no process to start: paper case 1
+certifies in 0.05 s on flint alone, 0.3 s through Singular), msolve finds what is
+missing on random subspaces (a screen: it never certifies), SymPy is a last exact
+fallback. Singular and msolve come with the ``certify`` extra
+(``pip install coopkin_sym[certify]``); without them flint does everything, and the
+large tests time out (the certificate then says so).
+
+Whole certificates of the current search's loci (every joint free, 30 s per test):
+paper case 1 (4 charts, 46-82 tests) 0.1-0.2 s; paper case 2 with complete contacts
+(8 joints, 64 charts, 1792 tests) complete (certified) in 9 s, depth 0 alone 1.3 s,
+flint alone 10 s; with hard contacts (1024 tests) not certified in 31 s (depth 0
+alone 18 s; flint alone unfinished after 300 s): the search misses the family where
+the contact points meet (``Ni`` 1 -> 3), in every chart. What makes case 2 feasible is
+the structure: per-arm blocks and the six object columns, pivots without real zeros
+(which leave one row of 9 polynomials of ``Q``), hypersurface components divided out of
+the generators, components that miss the drop set left out, and random subspaces that
+expose a missing family in 3 variables. The number of charts is ``2^r`` for ``r`` free
+revolute joints.
 
 What the certificate takes from the locus: the components' equations and numbers, and
 the parameter conditions. It needs no witness and trusts no claim: a wrong number on a
@@ -93,6 +108,7 @@ import itertools
 import random
 import time
 from dataclasses import asdict, dataclass, field
+from functools import partial
 from math import comb
 
 import flint
@@ -110,6 +126,8 @@ Poly = flint.fmpz_mpoly
 
 #: Largest number of minors listed one by one; above it, random combinations.
 MAX_MINORS = 400
+#: Largest size (terms) a minor may reach by the product of its largest entries.
+MAX_MINOR_TERMS = 2_000_000
 NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
 
@@ -509,6 +527,13 @@ class _Everywhere:
     """Marker: the rank is at least the target at every real point (no drop)."""
 
 
+@dataclass
+class _TooLarge:
+    """The drop ideal is too large to write down; ``why`` says how large."""
+
+    why: str
+
+
 def _is_real_unit(p: Poly, units: list[Poly]) -> bool:
     """A nonzero constant times powers of ``1 + t_j^2``: no real zeros."""
     if p.is_zero():
@@ -623,7 +648,7 @@ class _RealZeros:
 
 
 def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
-                     ) -> list[Poly] | type[_Everywhere]:
+                     ) -> list[Poly] | type[_Everywhere] | _TooLarge:
     """Generators of an ideal whose zeros contain the real points where
     ``rank(rows) < rho`` and no other real point: the ``rho``-minors after the
     real-unit reduction, stripped of factors without real zeros. ``[]`` when the rank
@@ -635,6 +660,14 @@ def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
     if not reduced or k > min(len(reduced), len(reduced[0])):
         return []
     nr, nc = len(reduced), len(reduced[0])
+    sizes = sorted((len(e) for r in reduced for e in r), reverse=True)
+    estimate = 1
+    for size in sizes[:k]:
+        estimate *= size
+    if estimate > MAX_MINOR_TERMS:
+        return _TooLarge(f"the {k} x {k} minors of the {nr} x {nc} matrix left after "
+                         f"the pivots without real zeros may have {estimate:.2g} terms "
+                         f"(largest entry {sizes[0]} terms): too large to write")
     dets = []
     if comb(nr, k) * comb(nc, k) <= MAX_MINORS:
         for rs in itertools.combinations(range(nr), k):
@@ -673,7 +706,7 @@ def _clean(polys: list[Poly], real: _RealZeros) -> list[Poly] | type[_Everywhere
 
 
 def _dt_generators(chart: _Chart, total: int, setup: _Setup, real: _RealZeros, rng,
-                   cache: dict) -> list[Poly] | type[_Everywhere]:
+                   cache: dict) -> list[Poly] | type[_Everywhere] | _TooLarge:
     """The points where the ranks of the arm blocks of ``Dt`` add up to less than
     ``total``: for every split ``k_1 + ... = total`` (each ``k_a`` at most the arm's
     generic rank) some arm has rank below ``k_a``; the ideal is the sum over splits of
@@ -691,6 +724,9 @@ def _dt_generators(chart: _Chart, total: int, setup: _Setup, real: _RealZeros, r
         if sum(split) != total:
             continue
         parts = [per_arm[a][k] for a, k in enumerate(split)]
+        too_large = next((p for p in parts if isinstance(p, _TooLarge)), None)
+        if too_large is not None:
+            return too_large
         lists = [p for p in parts if p is not _Everywhere]
         if not lists:
             return _Everywhere                 # these ranks hold at every real point
@@ -747,13 +783,11 @@ class _Runner:
         conditions = [p for p in (_in_chart(setup, [c], chart) for c in setup.conditions)
                       if p]
         everything = list(here.items())
-        for name, rows in chart.matrices.items():
+        for name in chart.matrices:
             if self.stopped:
                 return
-            rho = setup.generic_ranks[name]
-            gens = _cached(cache, (name, rho),
-                           lambda rows=rows, rho=rho: _drop_generators(rows, rho, chart,
-                                                                       real, self.rng))
+            gens = partial(self.generators, chart, real, cache, name,
+                           setup.generic_ranks[name])
             self.run(Check(chart.name, 0, None, name, "drops"), chart, [], gens,
                      everything, conditions)
         for i in sorted(here):
@@ -772,18 +806,25 @@ class _Runner:
                     if self.max_depth is not None and depth > self.max_depth:
                         self.skipped_depth = True
                         continue
-                    if name == "HD":
-                        gens = _cached(cache, ("HD", target), lambda t=target: _dt_generators(
-                            chart, t, setup, real, self.rng, cache))
-                    else:
-                        gens = _cached(cache, (name, target), lambda n=name, t=target:
-                                       _drop_generators(chart.matrices[n], t, chart, real,
-                                                        self.rng))
+                    gens = partial(self.generators, chart, real, cache, name, target)
                     check = Check(chart.name, depth, i, name, kind)
                     if kind == "numbers":
                         self.bound(check, chart, here[i], gens, conditions)
                     else:
                         self.run(check, chart, here[i], gens, later, conditions)
+
+    def generators(self, chart: _Chart, real: _RealZeros, cache: dict, name: str,
+                   target: int):
+        """The drop ideal of matrix ``name`` below rank ``target`` (cached)."""
+        key = (name, target)
+        if key not in cache:
+            if name == "HD":
+                cache[key] = _dt_generators(chart, target, self.setup, real, self.rng,
+                                            cache)
+            else:
+                cache[key] = _drop_generators(chart.matrices[name], target, chart, real,
+                                              self.rng)
+        return cache[key]
 
     def _over_budget(self, check: Check) -> bool:
         if self.deadline is not None and time.monotonic() > self.deadline:
@@ -795,7 +836,14 @@ class _Runner:
     def bound(self, check: Check, chart: _Chart, own: list[Poly], gens, conditions
               ) -> None:
         """The rank on the component never exceeds its value: the ``(rho + 1)``-minors
-        vanish on it."""
+        vanish on it. ``gens`` makes their generators."""
+        if self._over_budget(check):
+            return
+        gens = gens()
+        if isinstance(gens, _TooLarge):
+            check.why = gens.why
+            self._add(check)
+            return
         if gens == []:
             check.certified, check.backend = True, "none"
             check.why = "no larger rank at any point"
@@ -806,8 +854,6 @@ class _Runner:
                          "real point")
             self._add(check)
             return
-        if self._over_budget(check):
-            return
         verdict = covers(own, [gens], timeout=self.timeout, backend=self.backend,
                          nvars=len(chart.names),
                          allowed=[[u] for u in chart.units] + conditions)
@@ -816,7 +862,15 @@ class _Runner:
 
     def run(self, check: Check, chart: _Chart, own: list[Poly], gens, covering,
             conditions) -> None:
-        """The drop set (within ``own``) lies in the ``covering`` components."""
+        """The drop set (within ``own``) lies in the ``covering`` components. ``gens``
+        makes the generators of the drop ideal."""
+        if self._over_budget(check):
+            return
+        gens = gens()
+        if isinstance(gens, _TooLarge):
+            check.why = gens.why
+            self._add(check)
+            return
         if gens is _Everywhere:
             check.certified, check.backend = True, "none"
             check.why = "the rank never drops at a real point"
@@ -827,8 +881,6 @@ class _Runner:
             check.certified, check.backend = True, "none"
             check.why = f"the whole slice lies in component #{whole + 1}"
             self._add(check)
-            return
-        if self._over_budget(check):
             return
         verdict = covers(list(own) + list(gens), [p for _, p in covering],
                          timeout=self.timeout, backend=self.backend,

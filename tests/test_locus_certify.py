@@ -162,6 +162,9 @@ def test_parse_polynomial():
     assert {k: str(v) for k, v in got.items()} == {(3,): "-1/3", (2,): "-1/3", (1,): "1/3",
                                                    (0,): "-5/3"}
     assert parse_polynomial("s_q1", ["t_q2", "s_q1"], "eq") == {(0, 1): 1}
+    # many powered terms are fine (the size of the result is what is bounded)
+    long = " + ".join(f"{k}*t_q1**{k % 7}*t_q2**4" for k in range(1, 400))
+    assert len(parse_polynomial(long, ["t_q1", "t_q2"], "eq")) == 7
     for bad, message in [("t_q1 + x", "unknown variable x"),
                          ("__import__('os')", "unknown variable __import__"),
                          ("t_q1**t_q1", "exponent must be an integer"),
@@ -169,9 +172,11 @@ def test_parse_polynomial():
                          ("(t_q1 + 1", "ends too early"),
                          ("t_q1**2**3", "chained powers"),
                          ("t_q1**1001", "too large"),
+                         ("(t_q1 + t_q2 + 1)**2000", "exponent that is too large"),
+                         ("(t_q1 + t_q2 + 7)**999*(t_q1 - t_q2)**999", "too large"),
                          ("1.5*t_q1", "cannot be parsed")]:
         with pytest.raises(NumberError, match=message):
-            parse_polynomial(bad, ["t_q1"], "eq")
+            parse_polynomial(bad, ["t_q1", "t_q2"], "eq")
 
 
 # --- certificates -------------------------------------------------------------------------
