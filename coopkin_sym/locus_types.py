@@ -49,7 +49,8 @@ class Component:
     witness
         An exact point on it, in ``--at`` syntax (``{"q1": "pi/2", ...}``), or None.
     real
-        Whether the component has real points.
+        Whether the component has real points: True only with a real witness
+        (rational, or algebraic in a certified isolating interval).
     kind
         ``"hypersurface"``, ``"subvariety"`` (codimension 2 or more), ``"isolated"``
         (a point), or ``"chart"`` (a joint at q = pi, outside the t chart).
@@ -73,6 +74,9 @@ class Component:
         component.
     parent
         Index (in :attr:`Locus.components`) of the component this one lies in.
+    real_points
+        ``"witness"`` (real, a witness is given) or ``"undecided"`` (no real witness
+        found and no proof that there is none: never reported as real).
     algebraic_witness
         When no rational witness exists: a real point with algebraic coordinates,
         ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
@@ -95,6 +99,7 @@ class Component:
     depth: int = 0
     parent: int | None = None
     algebraic_witness: dict | None = None
+    real_points: str = ""
 
     def to_json(self) -> dict:
         out = asdict(self)

@@ -267,7 +267,7 @@ def _components_table(locus: Locus) -> _Table:
             name += f" (in #{c.parent + 1})"
         where = [("cond", _short_condition(c))]
         if not c.real:
-            where.append(_t(" (no real points)"))
+            where.append(_t(" (real points: undecided)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
         if not c.witness and c.algebraic_witness:
             witness = _algebraic_witness_cell(c.algebraic_witness, c.equations,
@@ -307,7 +307,8 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     if c.parent is not None:
         where += f", inside component #{c.parent + 1}"
     items.append([("strong", "Kind:"), _t(" "), _t(f"{kind} ({where}); "
-                                           + ("real points" if c.real else "no real points"))])
+                                           + ("real points" if c.real
+                                              else "real points: undecided"))])
     changes = _changes(c, locus.generic)
     numbers = [("strong", "Numbers:"), _t(f" {_numbers_tuple(c.numbers)} for "
                                           f"({', '.join(NUMBER_NAMES)})")]

@@ -128,7 +128,8 @@ def test_markdown_generic_numbers_and_components_table():
         in lines
     assert ("| #1 | `q1 = q2 = -pi/2` | isolated point | **3** | **3** | 1 | 0 | 1 | 4 | "
             "**1** | `q1=-pi/2,q2=-pi/2` | **2/3 wrong**: 1 missed, 1 false alarm |") in lines
-    assert ("| #3 | `t_q1**2 + 1 = 0` (no real points) | hypersurface | **3** | **3** | 1 | "
+    assert ("| #3 | `t_q1**2 + 1 = 0` (real points: undecided) | hypersurface | **3** | **3** | "
+            "1 | "
             "0 | 1 | 4 | **1** | none | not run |") in lines
 
 
