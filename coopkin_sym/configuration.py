@@ -22,11 +22,12 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from .errors import CoopkinError
 from .exactnum import NumberError, angle_text, parse_angle, parse_number
 from .model import Model
 
 
-class ConfigurationError(ValueError):
+class ConfigurationError(ValueError, CoopkinError):
     """A configuration that names an unknown variable or has an inexact value."""
 
 

@@ -47,6 +47,7 @@ import flint
 import numpy as np  # float-ok: drawing coordinates
 import sympy as sp
 
+from .errors import CoopkinError
 from .exact.ring import Frac
 from .exact.sympy_bridge import rational_to_sympy
 from .mobility import Analysis
@@ -77,7 +78,7 @@ _LABEL_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
               "edgecolor": "none"}
 
 
-class DrawError(ValueError):
+class DrawError(ValueError, CoopkinError):
     """A picture that cannot be drawn: a bad motion request, an unknown file format,
     matplotlib missing, or an output file that cannot be written."""
 

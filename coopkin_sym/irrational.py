@@ -33,6 +33,7 @@ from sympy.polys.numberfields.subfield import primitive_element
 
 from . import kinematics
 from .configuration import Configuration, ConfigurationError, split_assignments
+from .errors import CoopkinError
 from .exact.quotient import Quotient, nullspace_modulo
 from .exact.substitution import substitute_rows
 from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
@@ -43,7 +44,7 @@ from .model import Model
 _ALPHA = sp.Symbol("alpha")
 
 
-class NotIrrational(ValueError):
+class NotIrrational(ValueError, CoopkinError):
     """Every value of the configuration is rational: use the rational analysis."""
 
 

@@ -58,6 +58,7 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError
 from .exact import elimination as el
 from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
@@ -93,7 +94,7 @@ from .mobility import Numbers, analyze, decompose, numbers_modulo
 from .model import Model
 
 
-class LocusError(ValueError):
+class LocusError(ValueError, CoopkinError):
     """A locus that cannot be computed for this input."""
 
 

@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np  # float-ok: plotting grids only
 import sympy as sp
 
+from .errors import CoopkinError
 from .exactnum import NumberError, parse_angle, parse_number
 from .locus_types import Component, Locus
 
@@ -64,7 +65,7 @@ COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:b
 INFINITY = "oo"  # a revolute joint at q = pi: t = tan(q/2) is infinite
 
 
-class PlotError(ValueError):
+class PlotError(ValueError, CoopkinError):
     """A pair of joints that cannot be plotted (unknown, the same twice, or not
     among the locus's variables), or matplotlib missing."""
 

@@ -41,6 +41,7 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError
 from .exact import elimination as el
 from .exact.quotient import eliminate_modulo, rank_modulo
 from .exact.ratfunc import RatFunc
@@ -59,11 +60,11 @@ NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 DEFAULT_TERM_BUDGET = 20_000
 
 
-class BlockTooLarge(ValueError):
+class BlockTooLarge(ValueError, CoopkinError):
     """A symbolic block whose entries would exceed the analysis's term budget."""
 
 
-class InfeasibleMotion(ValueError):
+class InfeasibleMotion(ValueError, CoopkinError):
     """A requested velocity that the system cannot realize without breaking a contact."""
 
 

@@ -35,6 +35,7 @@ import sympy as sp
 import yaml
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
+from .errors import CoopkinError
 from .exactnum import NumberError, parse_number
 
 JointType = Literal["revolute", "prismatic"]
@@ -45,7 +46,7 @@ JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic")
 Vector = tuple[sp.Expr, sp.Expr, sp.Expr]
 
 
-class ModelError(ValueError):
+class ModelError(ValueError, CoopkinError):
     """A model that cannot be accepted.
 
     ``problems`` lists one line per problem, each naming the entry

@@ -37,6 +37,7 @@ from typing import Any
 
 import sympy as sp
 
+from .errors import CoopkinError
 from .locus_types import Component, FloatCheck, Locus
 from .output import check_output_path
 
@@ -69,7 +70,7 @@ MAX_EQUATION = 1500
 LATEX_ROWS = 30
 
 
-class ReportError(ValueError):
+class ReportError(ValueError, CoopkinError):
     """A report that cannot be written: unknown format, missing directory, a bad plot
     request, or an I/O error."""
 

@@ -48,11 +48,11 @@ import flint
 import numpy as np
 import sympy as sp
 
-from . import kinematics
+from . import kinematics, limits
 from .configuration import Configuration, ConfigurationError, split_assignments
 from .exact import elimination as el
 from .exact import modular
-from .exactnum import NumberError, _parse_text, parse_angle
+from .exactnum import NumberError, parse_angle, parse_expression
 from .mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
 from .model import Model
 
@@ -698,7 +698,8 @@ def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
             raise SweepError(f"{where}: zero points (the count must be at least 1, "
                              f"got {count})")
         try:
-            ends = [_parse_text(str(x), {}, where) for x in (lo, hi)]
+            ends = [parse_expression(str(x), {}, where, max_length=limits.MAX_NUMBER_TEXT,
+                                     kind="parameters") for x in (lo, hi)]
         except NumberError as exc:
             raise SweepError(str(exc)) from None
         if kinds[name] == "revolute":
