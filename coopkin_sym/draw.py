@@ -194,7 +194,7 @@ class _Values:
 
     def column(self, mat: sp.Matrix, k: int) -> list[sp.Rational]:
         """Column ``k`` (from 0) of a block at the drawing values, exactly."""
-        return [sp.cancel(sp.sympify(e).xreplace(self.sympy)) for e in mat.col(k)]
+        return [sp.cancel(e.xreplace(self.sympy)) for e in mat.col(k)]
 
     def note(self, a: Analysis) -> str:
         parts = []

@@ -189,6 +189,9 @@ class _Reader:
         return _RF(self.ctx.constant(value.numerator), self.ctx.constant(value.denominator))
 
     def symbol(self, name: str) -> _RF:
+        if name not in self.symbols:
+            raise self.fail(f"uses undeclared symbol {name} (declared {self.kind}: "
+                            f"{_declared(self.names)})")
         return _RF(self.ctx.gens()[self.names.index(name)], self.one)
 
     def _check_int(self, value: int) -> None:
@@ -561,6 +564,8 @@ class _Parser:
         if kind == "num":
             return self.reader.constant(_decimal(text, self.reader))
         if kind == "name":
+            if text == "CRootOf":
+                return self.root()
             if text in FUNCTIONS:
                 return self.reader.call(text, self.arguments())
             if text == "pi":
@@ -573,6 +578,53 @@ class _Parser:
             self.take()
             return value
         raise self.syntax()
+
+    def root(self) -> _Sym:
+        """``CRootOf(p, k)``: the ``k``-th root of a polynomial ``p`` in one variable (as
+        SymPy orders them: real roots first, increasing)."""
+        span = _root_argument(self.tokens, self.i)
+        if self.peek() != "(":
+            raise self.syntax()
+        names = {self.tokens[k][1] for k in span if self.tokens[k][0] == "name"
+                 and self.tokens[k][1] not in self.reader.symbols
+                 and self.tokens[k][1] not in FUNCTIONS
+                 and self.tokens[k][1] not in ("pi", "CRootOf")}
+        outer = self.reader
+        variable = next(iter(names), "x")
+        inner = _Reader({variable: sp.Symbol(variable)}, outer.where, outer.shown,
+                        outer.kind)
+        self.take()
+        self.reader = inner
+        try:
+            poly = self.sum()
+        finally:
+            self.reader = outer
+        if self.peek() != ",":
+            raise outer.fail("cannot be parsed (CRootOf takes a polynomial and an index)")
+        self.take()
+        index = self.sum()
+        if self.peek() != ")":
+            raise self.syntax()
+        self.take()
+        if not isinstance(poly, _RF) or not poly.den.is_constant() or \
+                poly.num.is_constant():
+            raise outer.fail("cannot be parsed (CRootOf takes a polynomial with rational "
+                             "coefficients)")
+        degree = poly.num.total_degree()
+        if degree > limits.MAX_FIELD_DEGREE:
+            raise outer.too_large(f"a root of a polynomial of degree over "
+                                  f"{limits.MAX_FIELD_DEGREE}")
+        if not isinstance(index, _RF) or not index.is_constant() or \
+                index.rational().denominator != 1 or \
+                not -degree <= int(index.rational()) < degree:
+            raise outer.fail(f"cannot be parsed (the index of a root of a polynomial of "
+                             f"degree {degree} is an integer from {-degree} to "
+                             f"{degree - 1})")
+        expr = inner.to_sympy(poly)
+        try:
+            return _Sym(sp.CRootOf(expr, int(index.rational())))
+        except (sp.PolynomialError, ValueError, IndexError) as exc:
+            raise outer.fail(f"cannot be parsed ({exc})") from None
 
     def arguments(self) -> list:
         if self.peek() != "(":
@@ -602,10 +654,13 @@ def _check_tokens(tokens: list[tuple[str, str]], reader: _Reader) -> None:
                                    f"{limits.MAX_PARENTHESES} deep")
     if depth:
         raise reader.fail("cannot be parsed")
+    bound = _bound_names(tokens, reader)
     for i, (kind, text) in enumerate(tokens):
         following = tokens[i + 1][1] if i + 1 < len(tokens) else ""
         if kind == "name":
-            if text in FUNCTIONS:
+            if i in bound:
+                continue
+            if text in FUNCTIONS or text == "CRootOf":
                 if following != "(":
                     raise reader.fail(f"cannot be parsed ({text} is a function)")
             elif text in reader.symbols or text == "pi":
@@ -617,6 +672,38 @@ def _check_tokens(tokens: list[tuple[str, str]], reader: _Reader) -> None:
                                   f" {_declared(reader.names)})")
         elif kind == "other":
             raise reader.fail("cannot be parsed")
+
+
+def _root_argument(tokens: list[tuple[str, str]], start: int) -> range:
+    """Token positions of the first argument of ``CRootOf(`` opening at ``start``."""
+    depth, i = 0, start
+    while i < len(tokens):
+        text = tokens[i][1]
+        depth += text == "("
+        depth -= text == ")"
+        if depth == 1 and text == "," or depth == 0:
+            break
+        i += 1
+    return range(start + 1, i)
+
+
+def _bound_names(tokens: list[tuple[str, str]], reader: _Reader) -> set[int]:
+    """Positions of the variable of each ``CRootOf(polynomial, k)``: one name, not a
+    declared one, may be the polynomial's variable there."""
+    out: set[int] = set()
+    for i, (kind, text) in enumerate(tokens):
+        if kind != "name" or text != "CRootOf" or i + 1 >= len(tokens) or \
+                tokens[i + 1][1] != "(":
+            continue
+        span = _root_argument(tokens, i + 1)
+        names = {tokens[k][1] for k in span if tokens[k][0] == "name"
+                 and tokens[k][1] not in reader.symbols and tokens[k][1] not in FUNCTIONS
+                 and tokens[k][1] not in ("pi", "CRootOf")}
+        if len(names) > 1:
+            raise reader.fail("cannot be parsed (CRootOf takes a polynomial in one "
+                              "variable)")
+        out.update(k for k in span if tokens[k][1] in names)
+    return out
 
 
 def _symbols(symbols: Mapping[str, sp.Symbol] | Iterable[str]) -> dict[str, sp.Symbol]:
@@ -641,7 +728,10 @@ def _read(text: str, symbols: Mapping[str, sp.Symbol], where: str, *,
         raise reader.fail("cannot be parsed (one line expected)")
     tokens = _tokens(stripped)
     _check_tokens(tokens, reader)
-    return _Parser(tokens, reader).parse(), reader
+    try:
+        return _Parser(tokens, reader).parse(), reader
+    except RecursionError:
+        raise reader.too_large("nested too deeply") from None
 
 
 def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str],
@@ -742,22 +832,25 @@ def _small(expr: sp.Basic) -> bool:
     return True
 
 
-def exact_expr(value: object, symbols: Mapping[str, sp.Symbol] | Iterable[str] = (),
+def exact_expr(value: object, symbols: Mapping[str, sp.Symbol] | Iterable[str] | None = None,
                where: str = "value") -> sp.Expr:
     """An exact SymPy value from a number, an exact SymPy expression or text.
 
-    Text goes through :func:`parse_expression`; a SymPy expression is kept (its
-    symbols matched by name to ``symbols``); ``int``, ``Fraction``, numpy integers and
-    ``Decimal`` are exact; a Python float is the decimal it prints as. Nothing is ever
-    evaluated as code.
+    Text goes through :func:`parse_expression` (the names it may use: ``symbols``);
+    a SymPy expression is kept as it is (with ``symbols`` given, its symbols are
+    matched to them by name); ``int``, ``Fraction``, numpy integers and ``Decimal``
+    are exact; a Python float is the decimal it prints as. Nothing is ever evaluated
+    as code.
 
     Example
     -------
     >>> exact_expr("1/2"), exact_expr(3), exact_expr(0.25)
     (1/2, 3, 1/4)
     """
-    syms = _symbols(symbols)
+    syms = _symbols(symbols if symbols is not None else ())
     if isinstance(value, sp.Expr):
+        if symbols is None:
+            return value
         mapping = {}
         for s in value.free_symbols:
             if s.name not in syms:

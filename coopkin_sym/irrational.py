@@ -37,7 +37,7 @@ from .errors import CoopkinError
 from .exact.quotient import Quotient, nullspace_modulo
 from .exact.substitution import substitute_rows
 from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
-from .exactnum import NumberError, algebraic_half_angle, parse_angle
+from .exactnum import NumberError, algebraic_half_angle, exact_expr, parse_angle
 from .mobility import Numbers, numbers_modulo
 from .model import Model
 
@@ -172,7 +172,7 @@ def motion_sentences(model: Model, numbers: Numbers, rows, quotient: Quotient, k
         return out
 
     def exact(e) -> sp.Expr:
-        return sp.radsimp(sp.expand(sp.sympify(e).subs(values)))
+        return sp.radsimp(sp.expand(exact_expr(e, None, "value").subs(values)))
 
     def vectors(block, ncols):
         return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]

@@ -33,6 +33,7 @@ import sympy as sp
 from .configuration import Configuration
 from .exact.ring import Frac, Ring
 from .exact.sympy_bridge import poly_from_sympy
+from .exactnum import exact_expr
 from .model import Model
 
 Vec = list[Frac]
@@ -108,7 +109,8 @@ class _Builder:
 
     # exact numbers of the model, as fractions of the ring
     def num(self, expr) -> Frac:
-        e = sp.sympify(expr).subs(self.param_subs) if self.param_subs else expr
+        e = exact_expr(expr, None, "value")
+        e = e.subs(self.param_subs) if self.param_subs else e
         return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
 
     def vec(self, v: Sequence) -> Vec:

@@ -45,7 +45,7 @@ import numpy as np  # float-ok: plotting grids only
 import sympy as sp
 
 from .errors import CoopkinError
-from .exactnum import NumberError, parse_angle, parse_number
+from .exactnum import NumberError, parse_angle, parse_expression, parse_number
 from .locus_types import Component, Locus
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -131,8 +131,10 @@ def _kinds(locus: Locus, system: Any) -> _Kinds:
 
 @functools.lru_cache(maxsize=4096)
 def _parse(text: str, names: tuple[str, ...]) -> sp.Expr:
-    local = {n: sp.Symbol(n) for n in names}
-    return sp.parse_expr(text, local_dict=local)
+    try:
+        return parse_expression(text, names, "equation")
+    except NumberError as exc:
+        raise PlotError(str(exc)) from None
 
 
 def _names(locus: Locus, kinds: _Kinds) -> tuple[str, ...]:

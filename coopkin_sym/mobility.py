@@ -52,6 +52,7 @@ from .exact.sympy_bridge import (
     poly_to_sympy,
     ratio_to_sympy,
 )
+from .exactnum import exact_expr
 from .model import Model
 
 NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
@@ -359,12 +360,17 @@ class Analysis:
         """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent), as
         (numerator, denominator) pairs of integer polynomials."""
         ring, syms = self.ring, self.kinematics.symbols
+        symbols = {**{p.name: p for p in self.model.parameters}, **syms}
+        if isinstance(rhs, str) or not isinstance(rhs, Sequence | sp.MatrixBase):
+            raise InfeasibleMotion(f"{what}: expected a list of numbers, got "
+                                   f"{type(rhs).__name__}")
         n = len(columns[0]) if columns else len(rhs)
         if len(rhs) != n:
             raise InfeasibleMotion(f"{what}: expected {n} components, got {len(rhs)}")
         rows = []
         for i in range(n):
-            num, den = sp.fraction(sp.together(sp.sympify(rhs[i])))
+            value = exact_expr(rhs[i], symbols, f"{what}[{i}]")
+            num, den = sp.fraction(sp.together(value))
             try:
                 pn = ring.to_zpoly(poly_from_sympy(num, ring, syms))
                 pd = ring.to_zpoly(poly_from_sympy(den, ring, syms))

@@ -38,6 +38,7 @@ from typing import Any
 import sympy as sp
 
 from .errors import CoopkinError
+from .exactnum import FUNCTIONS, NumberError, parse_expression
 from .locus_types import Component, FloatCheck, Locus
 from .output import check_output_path
 
@@ -64,6 +65,8 @@ KIND_WORDS = {"hypersurface": "hypersurface", "subvariety": "subvariety (codimen
               "isolated": "isolated point", "chart": "at q = pi (second chart)"}
 KIND_PLURALS = {"hypersurface": "hypersurfaces", "subvariety": "subvarieties",
                 "isolated": "isolated points", "chart": "at q = pi (second chart)"}
+# names the parser reads itself (functions and constants), never variables
+_PARSER_NAMES = {*FUNCTIONS, "pi", "CRootOf"}
 # longest equation text shown in a report (the JSON always has all of it)
 MAX_EQUATION = 1500
 # rows per LaTeX tabular
@@ -422,12 +425,18 @@ def _formula(text: str) -> list[tuple[str, str]]:
 def _parses(text: str) -> bool:
     if not re.fullmatch(r"[A-Za-z0-9_+\-*/^() .]+", text) or not re.search(r"[A-Za-z]", text):
         return False
+    return _read(text) is not None
+
+
+def _read(text: str) -> sp.Expr | None:
+    """``text`` read by the package's parser, every name in it a variable (but the
+    parser's own functions and ``pi``), or ``None`` when it is not a formula."""
+    names = [n for n in dict.fromkeys(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text))
+             if n not in _PARSER_NAMES]
     try:
-        sp.parse_expr(text, local_dict={n: sp.Symbol(n) for n in
-                                        re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)})
-    except Exception:  # noqa: BLE001 - not a formula
-        return False
-    return True
+        return parse_expression(text, names, "formula", max_length=MAX_EQUATION)
+    except NumberError:
+        return None
 
 
 def _list_or(items: Sequence[str], none: str, formulas: bool = False) -> list:
@@ -693,23 +702,17 @@ def _latex(expr: sp.Expr) -> str:
     return re.sub(r"\\operatorname\{(\w+)\}", r"\\mathrm{\1}", text)
 
 
-def _tex_symbols(names: Sequence[str]) -> dict[str, sp.Symbol]:
-    return {n: sp.Symbol(n) for n in names if n.isidentifier()}
-
-
 def _tex_eq(text: str, tail: str = "") -> str:
-    names = re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)
-    try:
-        expr = sp.parse_expr(text, local_dict=_tex_symbols(names))
-    except Exception:  # noqa: BLE001
+    expr = _read(text)
+    if expr is None:
         return _tex_code(text + tail)
     return f"${_latex(expr)}{tail}$"
 
 
 def _tex_value(text: str) -> str | None:
     try:
-        expr = sp.parse_expr(text, local_dict={})
-    except Exception:  # noqa: BLE001
+        expr = parse_expression(text, [], "value", max_length=MAX_EQUATION)
+    except NumberError:
         return None
     return _latex(expr)
 
@@ -727,23 +730,13 @@ def _tex_at(text: str) -> str:
     return ", ".join(out)
 
 
-# names in conditions that are SymPy's, not variables
-_FUNCTIONS = {"pi", "atan", "sqrt", "sin", "cos", "tan", "CRootOf"}
-
-
 def _tex_side(text: str) -> str | None:
     text = text.strip()
     sign = ""
     if text.startswith("\u00b1"):
         sign, text = r"\pm ", text[1:]
-    names = re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)
-    local = {n: sp.Symbol(n) for n in names
-             if n not in _FUNCTIONS and n.isidentifier()}
-    try:
-        expr = sp.parse_expr(text, local_dict=local)
-    except Exception:  # noqa: BLE001
-        return None
-    return sign + _latex(expr)
+    expr = _read(text) if text else None
+    return None if expr is None else sign + _latex(expr)
 
 
 def _tex_cond(text: str) -> str:
