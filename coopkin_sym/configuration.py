@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .errors import CoopkinError
-from .exactnum import NumberError, angle_text, parse_angle, parse_number
+from .exactnum import NumberError, angle_text, brief, parse_angle, parse_number
 from .model import Model
 
 
@@ -84,7 +84,7 @@ class Configuration:
                 values[name] = v
             else:
                 known = ", ".join(list(joints) + list(params))
-                raise ConfigurationError(f"{where}: unknown name {name!r} (known: {known})")
+                raise ConfigurationError(f"{where}: unknown name {brief(name)} (known: {known})")
         # a prismatic displacement may use parameters; substitute the given values
         subs = {params[n]: v for n, v in values.items()}
         prismatic = {n: sp.expand(e.subs(subs)) for n, e in prismatic.items()}
@@ -110,12 +110,12 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     if isinstance(text, Mapping):
         return [(str(k), v) for k, v in text.items()]
     items = []
-    for part in str(text).split(","):
+    for part in _top_level(str(text)):
         part = part.strip()
         if not part:
             continue
         if "=" not in part:
-            raise ConfigurationError(f"{context}: expected NAME=VALUE, got {part!r}")
+            raise ConfigurationError(f"{context}: expected NAME=VALUE, got {brief(part)}")
         name, value = part.split("=", 1)
         items.append((name.strip(), value.strip()))
     names = [n for n, _ in items]
@@ -123,6 +123,19 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     if dups:
         raise ConfigurationError(f"{context}: {', '.join(dups)} given more than once")
     return items
+
+
+def _top_level(text: str) -> list[str]:
+    """``text`` split at the commas outside parentheses (``L=Rational(1, 3),q1=0``)."""
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        depth += ch == "("
+        depth -= ch == ")"
+        if ch == "," and depth <= 0:
+            parts.append(text[start:i])
+            start = i + 1
+    parts.append(text[start:])
+    return parts
 
 
 def _angle(value, where: str) -> tuple[sp.Rational, sp.Rational]:

@@ -50,6 +50,7 @@ import sympy as sp
 from .errors import CoopkinError
 from .exact.ring import Frac
 from .exact.sympy_bridge import rational_to_sympy
+from .exactnum import brief
 from .mobility import Analysis
 from .output import check_output_path
 
@@ -108,19 +109,19 @@ def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str
     if isinstance(motion, str):
         kind, sep, index = motion.partition(":")
         if not sep:
-            raise DrawError(f"motion: expected KIND:K (e.g. coordinated:1), got {motion!r}")
+            raise DrawError(f"motion: expected KIND:K (e.g. coordinated:1), got {brief(motion)}")
     elif isinstance(motion, Sequence) and len(motion) == 2:
         kind, index = motion
     else:
-        raise DrawError(f"motion: expected (kind, k) or 'kind:k', got {motion!r}")
+        raise DrawError(f"motion: expected (kind, k) or 'kind:k', got {brief(motion)}")
     kind = str(kind).strip()
     if kind not in MOTION_KINDS:
-        raise DrawError(f"motion: unknown kind {kind!r} (expected "
+        raise DrawError(f"motion: unknown kind {brief(kind)} (expected "
                         f"{', '.join(MOTION_KINDS)})")
     try:
         k = int(str(index).strip())
     except ValueError:
-        raise DrawError(f"motion: the index must be a whole number, got {index!r}") from None
+        raise DrawError(f"motion: the index must be a whole number, got {brief(index)}") from None
     count = _motion_count(kind, analysis)
     if not 1 <= k <= count:
         if count == 0:

@@ -46,7 +46,7 @@ import sympy as sp
 from . import limits
 from .errors import CoopkinError
 
-__all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text",
+__all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
            "exact_expr", "parse_angle", "parse_expression", "parse_number"]
 
 #: Functions allowed in text, besides the declared names and ``pi``.
@@ -77,6 +77,18 @@ class NumberError(ValueError, CoopkinError):
         self.where = where
         self.message = message
         super().__init__(f"{where}: {message}" if where else message)
+
+
+def brief(value: object) -> str:
+    """The value as the user wrote it, quoted and shortened (for error messages: one
+    short line, never the repr of a whole large object).
+
+    Example
+    -------
+    >>> brief("q1=" + "9" * 100)
+    "'q1=999999999999999999999999999999999999999999999999999999...'"
+    """
+    return _show(value)
 
 
 def _show(value: object) -> str:

@@ -38,7 +38,7 @@ from typing import Any
 import sympy as sp
 
 from .errors import CoopkinError
-from .exactnum import FUNCTIONS, NumberError, parse_expression
+from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
 from .locus_types import Component, FloatCheck, Locus
 from .output import check_output_path
 
@@ -923,12 +923,12 @@ def parse_pairs(pairs: Sequence[str | Sequence[str]] | None, system: Any = None
     for p in pairs:
         names = [s.strip() for s in p.split(",")] if isinstance(p, str) else list(p)
         if len(names) != 2 or not all(names):
-            raise ReportError(f"pair {p!r}: expected two joints, e.g. q1,q2")
+            raise ReportError(f"pair {brief(p)}: expected two joints, e.g. q1,q2")
         if names[0] == names[1]:
-            raise ReportError(f"pair {p!r}: the two joints must differ")
+            raise ReportError(f"pair {brief(p)}: the two joints must differ")
         for n in names:
             if joints is not None and n not in joints:
-                raise ReportError(f"pair {p!r}: unknown joint {n!r} (joints: "
+                raise ReportError(f"pair {brief(p)}: unknown joint {brief(n)} (joints: "
                                   f"{', '.join(joints)})")
         out.append((names[0], names[1]))
     return out

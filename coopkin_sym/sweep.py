@@ -52,7 +52,7 @@ from . import kinematics, limits
 from .configuration import Configuration, ConfigurationError, split_assignments
 from .exact import elimination as el
 from .exact import modular
-from .exactnum import NumberError, parse_angle, parse_expression
+from .exactnum import NumberError, brief, parse_angle, parse_expression
 from .mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
 from .model import Model
 
@@ -556,7 +556,7 @@ def compile_system(system: System | Model, joints: Sequence[str],
 
 def _split_point(point) -> list[tuple[str, object]]:
     try:
-        return split_assignments(point, f"point {point!r}")
+        return split_assignments(point, f"point {brief(point)}")
     except ConfigurationError as exc:
         raise SweepError(str(exc)) from None
 
@@ -629,7 +629,7 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
         part = part.strip()
         if not part:
             continue
-        shape = f"--grid {part!r}: expected NAME=LO..HI:COUNT (e.g. q1=-pi..pi:181)"
+        shape = f"--grid {brief(part)}: expected NAME=LO..HI:COUNT (e.g. q1=-pi..pi:181)"
         if "=" not in part:
             raise SweepError(shape)
         name, spec = (s.strip() for s in part.split("=", 1))
@@ -642,7 +642,7 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
         try:
             n = int(count.strip())
         except ValueError:
-            raise SweepError(f"--grid {part!r}: the count {count.strip()!r} is not an "
+            raise SweepError(f"--grid {brief(part)}: the count {brief(count.strip())} is not an "
                              f"integer") from None
         if name in axes:
             raise SweepError(f"--grid: {name} given more than once")
@@ -688,14 +688,14 @@ def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
         where = f"--grid {name}"
         if name not in kinds:
             what = (f"{name} is a parameter, not a joint (set it with --at)" if name in params
-                    else f"unknown joint {name!r} (joints: {', '.join(model.joint_names)})")
+                    else f"unknown joint {brief(name)} (joints: {', '.join(model.joint_names)})")
             raise SweepError(f"{where}: {what}")
         try:
             lo, hi, count = axis
         except (TypeError, ValueError):
             raise SweepError(f"{where}: expected (lo, hi, count)") from None
         if isinstance(count, bool) or not isinstance(count, int | np.integer):
-            raise SweepError(f"{where}: the count must be an integer, got {count!r}")
+            raise SweepError(f"{where}: the count must be an integer, got {brief(count)}")
         if count < 1:
             raise SweepError(f"{where}: zero points (the count must be at least 1, "
                              f"got {count})")
@@ -995,7 +995,7 @@ def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
             params = {p.name for p in model.parameters}
             bad = unknown[0]
             what = (f"{bad} is a parameter: set it with at=" if bad in params
-                    else f"unknown joint {bad!r} (joints: {', '.join(model.joint_names)})")
+                    else f"unknown joint {brief(bad)} (joints: {', '.join(model.joint_names)})")
             raise SweepError(f"points: {what}")
         compiled = compile_system(model, joints, at, prime)
         table: list[dict] = [{} for _ in joints]
