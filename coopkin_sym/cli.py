@@ -18,6 +18,7 @@ Example
 from __future__ import annotations
 
 import json
+import re
 import sys
 from typing import Annotated
 
@@ -306,7 +307,8 @@ def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
 
 def render_latex(a: Analysis) -> str:
     """The blocks and numbers as LaTeX."""
-    out = [r"% " + a.model.name + " at " + (a.configuration.at_text() or "home")]
+    head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
+    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
     blocks, omitted = a.available_blocks()
     for name, mat in blocks.items():

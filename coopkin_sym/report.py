@@ -519,14 +519,27 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
 # ------------------------------------------------------------------ Markdown
 
 
+def _one_line(text: str) -> str:
+    """Line breaks and other control characters as spaces: user text cannot start a
+    new line (a heading, a table row, a LaTeX line outside a comment)."""
+    return _CONTROL.sub(" ", text)
+
+
+_CONTROL = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+
+
 def _md_escape(text: str) -> str:
-    return re.sub(r"([\\`*_\[\]|<>])", r"\\\1", text)
+    return re.sub(r"([\\`*_\[\]|<>])", r"\\\1", _one_line(text))
 
 
 def _md_code(text: str) -> str:
-    text = text.replace("|", "\\|")
-    ticks = "``" if "`" in text else "`"
-    return f"{ticks}{text}{ticks}"
+    """A code span that no text can leave: its fence is longer than any run of
+    backticks inside, and pipes are escaped for tables."""
+    text = _one_line(text).replace("|", "\\|")
+    longest = max((len(run) for run in re.findall(r"`+", text)), default=0)
+    fence = "`" * (longest + 1)
+    pad = " " if text.startswith("`") or text.endswith("`") or longest else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
 
 
 def _md_inline(parts: Sequence[tuple[str, str]]) -> str:
@@ -573,7 +586,7 @@ def render_markdown(locus: Locus, plots: Mapping[tuple[str, str], str] | None = 
                 lines.append("| " + " | ".join(_md_inline(c) for c in row) + " |")
             lines.append("")
         elif isinstance(b, _Plot):
-            lines += [f"![{_caption(b.pair)}]({b.ref})", ""]
+            lines += [f"![{_md_escape(_caption(b.pair))}]({b.ref})", ""]
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -688,7 +701,12 @@ _TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "
 
 
 def _tex_escape(text: str) -> str:
-    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in text)
+    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in _one_line(text))
+
+
+def _tex_comment(text: str) -> str:
+    """Text inside a ``%`` comment: on one line, so nothing can leave the comment."""
+    return " ".join(_one_line(text).split())
 
 
 def _tex_code(text: str) -> str:
@@ -811,7 +829,8 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
     >>> print(render_latex(Locus("demo", [], "", {"Nm": 1})).splitlines()[1])
     \\section*{Singularity locus of demo}
     """
-    out = [f"% Singularity-locus report of {locus.system} (coopkin locus); \\input this "
+    out = [f"% Singularity-locus report of {_tex_comment(locus.system)} (coopkin locus); "
+           f"\\input this "
            f"file in a document."]
     heads = {1: "section*", 2: "subsection*", 3: "subsubsection*"}
     for b in _blocks(locus, None, False):
@@ -832,7 +851,7 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
         out.append("% Plots of the components (need \\usepackage{graphicx}):")
         for pair, name in plots.items():
             out.append(f"% \\includegraphics[width=0.8\\textwidth]{{{name}}}"
-                       f"  % {_caption(pair)}")
+                       f"  % {_tex_comment(_caption(pair))}")
     return "\n".join(out).rstrip() + "\n"
 
 
@@ -852,7 +871,14 @@ def render_json(locus: Locus) -> str:
 
 
 def locus_from_json(data: Mapping | str) -> Locus:
-    """A :class:`Locus` back from :func:`render_json` (text or parsed).
+    """A :class:`Locus` back from :func:`render_json` (text or parsed), validated like
+    a model file: structure, names, and every expression read by the package's parser
+    (see :mod:`coopkin_sym.report_input`). Nothing in it is ever evaluated.
+
+    Raises
+    ------
+    ReportError
+        One line per problem, each naming the entry.
 
     Example
     -------
@@ -861,27 +887,12 @@ def locus_from_json(data: Mapping | str) -> Locus:
     >>> locus_from_json(render_json(locus)) == locus
     True
     """
-    if isinstance(data, str):
-        data = json.loads(data)
+    from .report_input import ReportInputError, validate_report
+
     try:
-        comps = []
-        for c in data["components"]:
-            c = dict(c)
-            c["changes"] = {k: tuple(v) for k, v in c.get("changes", {}).items()}
-            checks = []
-            for f in c.get("float_checks", []):
-                f = {k: v for k, v in f.items() if k != "agree"}
-                checks.append(FloatCheck(**f))
-            c["float_checks"] = checks
-            comps.append(Component(**c))
-        return Locus(system=data["system"], variables=list(data["variables"]),
-                     fixed=data["fixed"], generic=dict(data["generic"]), components=comps,
-                     parameter_conditions=list(data.get("parameter_conditions", [])),
-                     dropped=list(data.get("dropped", [])),
-                     unexplored=list(data.get("unexplored", [])),
-                     notes=list(data.get("notes", [])), seconds=data.get("seconds", 0.0))
-    except (KeyError, TypeError) as exc:
-        raise ReportError(f"not a locus report: {exc}") from None
+        return validate_report(data)
+    except ReportInputError as exc:
+        raise ReportError(str(exc)) from None
 
 
 # ------------------------------------------------------------------ files

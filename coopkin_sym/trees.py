@@ -97,13 +97,15 @@ def read_file(path: str | os.PathLike) -> object:
     return read_text(text, path.suffix)
 
 
-def read_text(text: str, suffix: str = ".yaml") -> object:
+def read_text(text: str, suffix: str = ".yaml", *, exact_floats: bool = True) -> object:
     """Read YAML or JSON text (JSON when ``suffix`` is ``.json``) into a plain tree,
-    within the budgets of :mod:`coopkin_sym.limits` (see the module docstring)."""
+    within the budgets of :mod:`coopkin_sym.limits` (see the module docstring).
+    Floats stay text (read exactly later) unless ``exact_floats`` is false (JSON only:
+    reports hold measured seconds and distances as floats)."""
     if len(text) > limits.MAX_FILE_BYTES:
         raise TreeError(f"the text is longer than {_size_text(limits.MAX_FILE_BYTES)}")
     if suffix.lower() == ".json":
-        tree = _read_json(text)
+        tree = _read_json(text, exact_floats)
         check_tree(tree)
         return tree
     return _read_yaml(text)
@@ -135,9 +137,10 @@ class _TooLong(ValueError):
     pass
 
 
-def _read_json(text: str) -> object:
+def _read_json(text: str, exact_floats: bool = True) -> object:
     try:
-        return json.loads(text, parse_float=str, parse_constant=str, parse_int=_json_int,
+        return json.loads(text, parse_float=str if exact_floats else float,
+                          parse_constant=str, parse_int=_json_int,
                           object_pairs_hook=_json_pairs)
     except json.JSONDecodeError as exc:
         raise TreeError(f"line {exc.lineno}, column {exc.colno}: not valid JSON: "
