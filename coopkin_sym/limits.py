@@ -49,7 +49,11 @@ MAX_ANGLE_ORDER = 360
 MAX_ANGLE_DEGREE = 16
 #: Degree of the number field of one configuration with irrational coordinates.
 MAX_FIELD_DEGREE = 64
+#: Largest end of a range of angles in a sweep grid (radians).
+MAX_ANGLE_RADIANS = 10**6
 #: Values on one axis of a sweep grid.
 MAX_GRID_COUNT = 1_000_000
 #: Points of a sweep (all axes together, or a list of points).
 MAX_GRID_POINTS = 2_000_000
+#: Largest coordinate (in length units) a picture draws.
+MAX_DRAWN_COORDINATE = 1e12  # float-ok: a bound on what is drawn, not a decision

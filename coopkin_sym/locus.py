@@ -58,7 +58,8 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
-from .errors import CoopkinError
+from .errors import CoopkinError, TimeLimitReached
+from .exact import deadline
 from .exact import elimination as el
 from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
@@ -77,7 +78,7 @@ from .locus_algebra import (
     substitute_values,
     vars_of,
 )
-from .locus_types import Component, Locus
+from .locus_types import Component, Locus, cut_short
 from .locus_witness import (
     algebraic_condition,
     algebraic_witness_on,
@@ -139,6 +140,12 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     progress
         Show a progress bar on standard error.
     """
+    if timeout is not None and not deadline.active():  # a bound inside long eliminations
+        with deadline.time_limit(timeout) as bound:
+            try:
+                return compute_locus(system, at, max_depth, timeout, progress)
+            except TimeLimitReached as exc:
+                return cut_short(bound, exc)
     started = time.monotonic()
     model: Model = system.model
     fixed = Configuration.parse(model, at)
@@ -168,6 +175,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     generic = decompose(q_rows, model, kin.row_contacts, ring.zctx).numbers
     locus = Locus(system=model.name, variables=list(ring.names), fixed=config.at_text(),
                   generic=generic.as_dict(), notes=notes)
+    deadline.keep(locus)
     locus.notes.append(
         "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
         "component reported is then decided exactly, so a candidate can only be missed, "

@@ -43,6 +43,7 @@ from . import kinematics
 from .configuration import Configuration
 from .errors import CoopkinError
 from .exact import elimination as el
+from .exact.deadline import check
 from .exact.quotient import eliminate_modulo, rank_modulo
 from .exact.ratfunc import RatFunc
 from .exact.sympy_bridge import (
@@ -498,6 +499,7 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     arm_maps: list[_ArmMap] = []
     zero = zctx.constant(0)
     for a, arm in enumerate(model.arms):
+        check("the decomposition of the nullspace, arm by arm")
         off = model.joint_offset(a)
         arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
                                 6 + off, len(arm.joints), zctx)

@@ -40,7 +40,7 @@ import sympy as sp
 from .errors import CoopkinError
 from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
 from .locus_types import Component, FloatCheck, Locus
-from .output import check_output_path
+from .output import check_output_path, write_files
 
 __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_pairs",
            "render_html", "render_json", "render_latex", "render_markdown",
@@ -1055,19 +1055,5 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
 
 
 def _write_all(files: Mapping[Path, bytes]) -> None:
-    """Write every file to a temporary name, then rename them all."""
-    temps: list[tuple[Path, Path]] = []
-    try:
-        for path, data in files.items():
-            tmp = path.with_name(f".{path.name}.{os.getpid()}.partial")
-            with open(tmp, "xb") as fh:
-                temps.append((tmp, path))
-                fh.write(data)
-        for tmp, path in temps:
-            os.replace(tmp, path)
-    except OSError as exc:
-        raise ReportError(f"{next(iter(files))}: cannot write: "
-                          f"{exc.strerror or exc}") from None
-    finally:
-        for tmp, _ in temps:
-            tmp.unlink(missing_ok=True)
+    """Write every file whole, or none (see :func:`coopkin_sym.output.write_files`)."""
+    write_files(files, ReportError)

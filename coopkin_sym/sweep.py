@@ -639,8 +639,13 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
         lo, _, hi = rng.partition("..")
         if not name or not lo.strip() or not hi.strip():
             raise SweepError(shape)
+        if len(count.strip()) > 12 and count.strip().isdigit():
+            raise SweepError(f"--grid {brief(part)}: the count is over the limit of "
+                             f"{limits.MAX_GRID_COUNT:,} points per joint")
         try:
-            n = int(count.strip())
+            n = int(count.strip()) if len(count.strip()) <= 12 else None
+            if n is None:
+                raise ValueError(count)
         except ValueError:
             raise SweepError(f"--grid {brief(part)}: the count {brief(count.strip())} is not an "
                              f"integer") from None
@@ -699,12 +704,22 @@ def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
         if count < 1:
             raise SweepError(f"{where}: zero points (the count must be at least 1, "
                              f"got {count})")
+        if count > limits.MAX_GRID_COUNT:
+            raise SweepError(f"{where}: {count:,} points is over the limit of "
+                             f"{limits.MAX_GRID_COUNT:,} per joint")
+        total = math.prod(len(v) for v in levels) * int(count)
+        if total > limits.MAX_GRID_POINTS:
+            raise SweepError(f"{where}: the grid would have {total:,} points, over the "
+                             f"limit of {limits.MAX_GRID_POINTS:,}")
         try:
             ends = [parse_expression(str(x), {}, where, max_length=limits.MAX_NUMBER_TEXT,
                                      kind="parameters") for x in (lo, hi)]
         except NumberError as exc:
             raise SweepError(str(exc)) from None
         if kinds[name] == "revolute":
+            if any(abs(e) > limits.MAX_ANGLE_RADIANS for e in ends):
+                raise SweepError(f"{where}: an end beyond {limits.MAX_ANGLE_RADIANS:,} "
+                                 "radians (use an angle in [-pi, pi])")
             levels.append(tuple(_angle_levels(ends[0], ends[1], int(count), bound, where)))
         else:
             if not all(e.is_Rational for e in ends):
@@ -985,7 +1000,12 @@ def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
         index = points.index()
         compiled = compile_system(model, joints, at, prime)
     else:
-        parsed = [_split_point(pt) for pt in points]
+        parsed = []
+        for pt in points:
+            parsed.append(_split_point(pt))
+            if len(parsed) > limits.MAX_GRID_POINTS:
+                raise SweepError(f"points: more than {limits.MAX_GRID_POINTS:,} points "
+                                 "(the limit of one sweep)")
         if not parsed:
             raise SweepError("no points to sweep")
         names = {n for items in parsed for n, _ in items}
