@@ -140,14 +140,26 @@ def _top_level(text: str) -> list[str]:
 
 def _angle(value, where: str) -> tuple[sp.Rational, sp.Rational]:
     if isinstance(value, tuple) and len(value) == 2:
-        c, s = (sp.Rational(v) for v in value)
+        try:
+            c, s = (parse_number(v, {}, f"{where} (cos, sin)") for v in value)
+        except NumberError as exc:
+            raise ConfigurationError(str(exc)) from None
         if c**2 + s**2 != 1:
             raise ConfigurationError(f"{where}: (cos, sin) = ({c}, {s}) is not on the unit "
                                      "circle")
         return c, s
     try:
-        return parse_angle(str(value) if not isinstance(value, sp.Basic) else sp.sstr(value),
-                           where)
+        return parse_angle(value if isinstance(value, str | sp.Basic | int) else
+                           _angle_text(value, where), where)
+    except NumberError as exc:
+        raise ConfigurationError(str(exc)) from None
+
+
+def _angle_text(value, where: str) -> str:
+    """A non-text angle value: exact numbers are read as numbers (radians), anything
+    else is refused (a float angle is never exact but 0)."""
+    try:
+        return sp.sstr(parse_number(value, {}, where))
     except NumberError as exc:
         raise ConfigurationError(str(exc)) from None
 

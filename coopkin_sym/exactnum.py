@@ -802,7 +802,8 @@ def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,
     """Any accepted input as a value of the reader (the common front of
     :func:`parse_number`, :func:`parse_angle` and :func:`exact_expr`)."""
     reader = _Reader(parameters, where, _show(value), kind)
-    if isinstance(value, bool) or type(value).__name__ == "bool_":
+    if isinstance(value, bool) or (type(value).__module__ == "numpy"
+                                   and type(value).__name__ in ("bool", "bool_")):
         raise reader.fail("is a truth value, not a number")
     if isinstance(value, str):
         return _read(value, parameters, where, max_length=max_length, kind=kind)
@@ -1016,15 +1017,16 @@ def _angle_point(parts: _AngleParts, where: str, shown: str) -> tuple[Fraction, 
             return None                         # Niven: tan(a pi/2) is irrational
         return [(Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)),
                 (Fraction(-1), Fraction(0)), (Fraction(0), Fraction(-1))][int(2 * a) % 4]
-    # exp(i q) = exp(i a pi) * prod w_r^(b/2), w_r = exp(2 i atan r) in Q(i)
-    n = math.lcm(a.denominator, *((b / 2).denominator for b in parts.atans.values()))
+    # exp(i q) = i^(2a) * prod w_r^(b/2), w_r = exp(2 i atan r) in Q(i)
+    n = math.lcm((2 * a).denominator, *((b / 2).denominator for b in parts.atans.values()))
     if n > limits.MAX_ANGLE_ORDER:
         raise _Undecided(f"deciding it needs an {n}-th root (at most "
                          f"{limits.MAX_ANGLE_ORDER})")
     cost = sum(abs(b / 2 * n) * _rotation(r).z.bit_length() for r, b in parts.atans.items())
     if cost > 4 * _MAX_BITS:
         raise _Undecided("its exact rotation has too many digits")
-    w = _Gauss(-1 if (a * n).numerator % 2 else 1, 0, 1)
+    w = [_Gauss(1, 0, 1), _Gauss(0, 1, 1), _Gauss(-1, 0, 1), _Gauss(0, -1, 1)][
+        int(2 * a * n) % 4]
     for r, b in parts.atans.items():
         w = w * _rotation(r) ** int(b / 2 * n)
     if n == 1:
@@ -1232,7 +1234,7 @@ def _degree_bound(parts: _AngleParts) -> int | None:
     if not parts.atans:
         m = half.denominator
         return int(sp.totient(m)) if m <= limits.MAX_ANGLE_ORDER else m
-    n = math.lcm(parts.pi_coeff.denominator,
+    n = math.lcm((2 * parts.pi_coeff).denominator,
                  *((b / 2).denominator for b in parts.atans.values()))
     # exp(i q) is a root of z^n = w in Q(i): degree at most 2n over Q
     return 2 * n

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
 
-from . import kinematics
+from . import kinematics, limits
 from .configuration import Configuration, ConfigurationError, split_assignments
 from .errors import CoopkinError
 from .exact.quotient import Quotient, nullspace_modulo
@@ -110,6 +110,13 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     kin = kinematics.build(model, config)
     rows = [kin.ring.clear_row(r) for r in kin.Q]
     names = list(irrational)
+    degree = 1
+    for n in names:
+        degree *= sp.degree(sp.minimal_polynomial(irrational[n], _ALPHA), _ALPHA)
+    if degree > limits.MAX_FIELD_DEGREE:
+        raise ConfigurationError(
+            f"--at: the irrational values ({', '.join(names)}) may generate a number "
+            f"field of degree up to {degree}, over the limit of {limits.MAX_FIELD_DEGREE}")
     minimal, coeffs, reps = primitive_element([irrational[n] for n in names], _ALPHA,
                                               ex=True)
     alpha = sp.radsimp(sum(c * irrational[n] for c, n in zip(coeffs, names, strict=True)))
