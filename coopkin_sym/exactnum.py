@@ -623,16 +623,19 @@ class _Parser:
             raise outer.fail("cannot be parsed (CRootOf takes a polynomial with rational "
                              "coefficients)")
         degree = poly.num.total_degree()
-        if degree > limits.MAX_FIELD_DEGREE:
+        if degree > limits.MAX_ROOT_DEGREE:
             raise outer.too_large(f"a root of a polynomial of degree over "
-                                  f"{limits.MAX_FIELD_DEGREE}")
+                                  f"{limits.MAX_ROOT_DEGREE}")
+        if max(_height(poly.num), _height(poly.den)) > 64 * degree + 256:
+            raise outer.too_large("a root of a polynomial with very large coefficients")
+        expr = inner.to_sympy(poly)
+        real = sp.Poly(expr, inner.symbols[inner.names[0]]).count_roots()
         if not isinstance(index, _RF) or not index.is_constant() or \
                 index.rational().denominator != 1 or \
-                not -degree <= int(index.rational()) < degree:
-            raise outer.fail(f"cannot be parsed (the index of a root of a polynomial of "
-                             f"degree {degree} is an integer from {-degree} to "
-                             f"{degree - 1})")
-        expr = inner.to_sympy(poly)
+                not 0 <= int(index.rational()) < real:
+            raise outer.fail(f"cannot be parsed (CRootOf here names a real root: its index "
+                             f"is an integer from 0 to {real - 1}, the polynomial having "
+                             f"{real} real roots)")
         try:
             return _Sym(sp.CRootOf(expr, int(index.rational())))
         except (sp.PolynomialError, ValueError, IndexError) as exc:
@@ -1134,16 +1137,19 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
     """
     q, shown = _angle_value(text, where)
     parts = _angle_parts(q)
+    direct = _direct_tangent(parts)
     try:
-        point = _angle_point(parts, where, shown)
+        if direct is not None:
+            point, tangent = _tangent_point(direct)
+        else:
+            point = _angle_point(parts, where, shown)
+            tangent = _tangent_text(q, parts)
     except _Undecided as exc:
         if not _small_angle(parts):
             raise NumberError(where, f"angle {shown} cannot be decided: {exc} (write "
                                      "angles as sums of multiples of pi/2 and "
                                      "2*atan(p/q))") from None
         point, tangent = _sympy_point(q)
-    else:
-        tangent = _tangent_text(q, parts)
     if point is not None:
         c, s = point
         return sp.Rational(c.numerator, c.denominator), sp.Rational(s.numerator,
@@ -1157,23 +1163,39 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
 
 
 def _small_angle(parts: _AngleParts) -> bool:
-    """Whether the few parts this module does not decide itself are small enough for
-    SymPy's trigonometric simplification (two terms, short)."""
+    """Whether the part this module does not decide itself is small enough for SymPy's
+    trigonometric simplification: one short term, such as ``2*atan(sqrt(2))``."""
     terms = len(parts.other) + len(parts.atans) + bool(parts.pi_coeff) + \
         bool(parts.radians)
-    return terms <= 2 and all(sp.count_ops(t) <= 20 for t in parts.other) and \
-        all(len(t.atoms(sp.atan)) <= 1 for t in parts.other)
+    return terms == 1 and all(sp.count_ops(t) <= 20 and len(t.atoms(sp.atan)) <= 1
+                              and not t.has(sp.CRootOf) for t in parts.other)
 
 
-def _sympy_point(q: sp.Expr) -> tuple[tuple[Fraction, Fraction] | None, str]:
-    """The exact point and ``tan(q/2)`` as text, by SymPy (small angles only)."""
-    t = _half_angle_tangent(q)
+def _direct_tangent(parts: _AngleParts) -> sp.Expr | None:
+    """``x`` when the angle is ``2*atan(x)`` alone (``-x`` for ``-2*atan(x)``), for an
+    ``x`` this module does not split further (``sqrt(2)``, a ``CRootOf``): then
+    ``tan(q/2)`` is ``x`` itself, with no simplification to do."""
+    if len(parts.other) != 1 or parts.atans or parts.pi_coeff or parts.radians:
+        return None
+    coeff, rest = parts.other[0].as_coeff_Mul()
+    if isinstance(rest, sp.atan) and coeff in (2, -2):
+        return rest.args[0] if coeff == 2 else -rest.args[0]
+    return None
+
+
+def _tangent_point(t: sp.Expr) -> tuple[tuple[Fraction, Fraction] | None, str]:
+    """The exact point of the angle with ``tan(q/2) = t``, when ``t`` is rational."""
     if t is sp.zoo:
         return (Fraction(-1), Fraction(0)), "zoo"
     if not t.is_Rational:
         return None, _sympy_text(t)[:80]
     r = Fraction(int(t.p), int(t.q))
     return ((1 - r * r) / (1 + r * r), 2 * r / (1 + r * r)), sp.sstr(t)
+
+
+def _sympy_point(q: sp.Expr) -> tuple[tuple[Fraction, Fraction] | None, str]:
+    """The exact point and ``tan(q/2)`` as text, by SymPy (small angles only)."""
+    return _tangent_point(_half_angle_tangent(q))
 
 
 def _tangent_text(q: sp.Expr, parts: _AngleParts) -> str:
@@ -1264,13 +1286,14 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
     if parts.radians:
         raise NumberError(where, f"angle {shown}: tan(q/2) is not an algebraic number "
                                  "(a nonzero rational number of radians)")
+    direct = _direct_tangent(parts)
     try:
-        point = _angle_point(parts, where, shown)
+        point = "direct" if direct is not None else _angle_point(parts, where, shown)
     except _Undecided as exc:
         if not _small_angle(parts):
             raise NumberError(where, f"angle {shown} cannot be decided: {exc}") from None
         point = "sympy"
-    if point is not None and point != "sympy":
+    if point is not None and point not in ("sympy", "direct"):
         c, s = point
         if c == -1:
             raise NumberError(where, f"{shown}: tan(q/2) is infinite")
@@ -1284,7 +1307,7 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
     if len(parts.atans) > 3:
         raise NumberError(where, f"angle {shown}: more than 3 atan terms in an angle with "
                                  "an irrational tan(q/2)")
-    t = _half_angle_tangent(q)
+    t = direct if direct is not None else _half_angle_tangent(q)
     if t is sp.zoo or t.has(sp.zoo, sp.oo, sp.nan):
         raise NumberError(where, f"{shown}: tan(q/2) is infinite")
     try:

@@ -47,6 +47,8 @@ MAX_ANGLE_ORDER = 360
 #: Degree over Q that an angle with an irrational ``tan(q/2)`` may bring (``pi/6``
 #: brings 2, ``pi/12`` brings 4).
 MAX_ANGLE_DEGREE = 16
+#: Degree of a polynomial whose real root ``CRootOf(p, k)`` names (witnesses).
+MAX_ROOT_DEGREE = 32
 #: Degree of the number field of one configuration with irrational coordinates.
 MAX_FIELD_DEGREE = 64
 #: Largest end of a range of angles in a sweep grid (radians).

@@ -61,8 +61,14 @@ def test_parse_expression_uses_the_given_symbols():
 def test_parse_expression_roots_of_polynomials():
     root = parse_expression("CRootOf(x**3 - x - 1, 0)", [], "w")
     assert root == sp.CRootOf(sp.Symbol("x") ** 3 - sp.Symbol("x") - 1, 0)
-    with pytest.raises(NumberError, match="degree over 64"):
+    with pytest.raises(NumberError, match="degree over 32"):
         parse_expression("CRootOf(x**100 - 2, 0)", [], "w")
+    start = time.monotonic()          # a complex root would need a slow isolation
+    with pytest.raises(NumberError, match="names a real root: its index is an integer "
+                                          "from 0 to 1"):
+        parse_expression("CRootOf(x**30 - 3*x - 1, 3)", [], "w")
+    assert time.monotonic() - start < 1
+    assert algebraic_half_angle("2*atan(CRootOf(x**3 - x - 1, 0))", "q1") == root
     with pytest.raises(NumberError, match="one variable"):
         parse_expression("CRootOf(x*y - 2, 0)", [], "w")
 
