@@ -54,12 +54,13 @@ def _shown(path: Path) -> str:
 
 
 def check_output_path(path: str | os.PathLike, formats: Iterable[str],
-                      error: type[Exception], what: str) -> tuple[Path, str]:
+                      error: type[Exception], what: str, *,
+                      note: bool = True) -> tuple[Path, str]:
     """The target and its lower-case suffix, or ``error`` naming the file when the
     suffix is not one of ``formats``, its directory does not exist or cannot be
-    written, or the target is a directory. Call it before any work; it also notes the
-    target's state, so that :func:`write_files` can tell when another run wrote it
-    meanwhile."""
+    written, or the target is a directory. Call it before any work; with ``note`` it
+    also notes the target's state, so that :func:`write_files` can tell when another
+    run wrote it meanwhile."""
     target = Path(path)
     suffix = target.suffix.lower()
     formats = list(formats)
@@ -67,7 +68,8 @@ def check_output_path(path: str | os.PathLike, formats: Iterable[str],
         raise error(f"{_shown(target)}: unknown {what} format {suffix or '(no suffix)'!r} "
                     f"(expected {', '.join(formats)})")
     check_writable(target, error)
-    _SEEN[str(target.absolute())] = _signature(target)
+    if note:
+        _SEEN[str(target.absolute())] = _signature(target)
     return target, suffix
 
 

@@ -898,9 +898,11 @@ def locus_from_json(data: Mapping | str) -> Locus:
 # ------------------------------------------------------------------ files
 
 
-def check_target(path: str | os.PathLike) -> str:
+def check_target(path: str | os.PathLike, note: bool = True) -> str:
     """Check a report path before any work: a known suffix (``.md``, ``.html``,
-    ``.tex``, ``.json``) in an existing directory. Returns the format.
+    ``.tex``, ``.json``) in an existing writable directory. Returns the format. With
+    ``note``, the file's state is noted, so that writing it later notices another run
+    that wrote it meanwhile (see :func:`coopkin_sym.output.write_files`).
 
     Example
     -------
@@ -911,7 +913,7 @@ def check_target(path: str | os.PathLike) -> str:
     ...
     coopkin_sym.report.ReportError: report.txt: unknown report format '.txt' ...
     """
-    _, suffix = check_output_path(path, FORMATS, ReportError, "report")
+    _, suffix = check_output_path(path, FORMATS, ReportError, "report", note=note)
     return FORMATS[suffix]
 
 
@@ -1031,7 +1033,7 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     ['r.json']
     """
     target = Path(path)
-    fmt = check_target(target)
+    fmt = check_target(target, note=False)
     chosen = parse_pairs(pairs, system)
     files: dict[Path, bytes] = {}
     if fmt == "json":

@@ -169,3 +169,22 @@ def test_analysis_pickles_and_comes_back_from_a_worker():
     generic = pickle.loads(pickle.dumps(load("paper-case1-hard").analyze(generic=True)))
     assert generic.check() and generic.variables == load("paper-case1-hard").analyze(
         generic=True).variables
+
+
+def test_a_report_written_by_another_run_meanwhile_is_not_lost(tmp_path, monkeypatch):
+    import coopkin_sym.locus as locus_module
+
+    target = tmp_path / "r.json"
+    generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+
+    def another_run_meanwhile(system, **kwargs):
+        target.write_text("the other run's report")
+        return Locus(system.name, ["t_q1", "t_q2"], "", generic)
+
+    monkeypatch.setattr(locus_module, "compute_locus", another_run_meanwhile)
+    result = runner.invoke(app, ["locus", "paper-case1-hard", "-o", str(target),
+                                 "--no-progress"])
+    assert result.exit_code == 2
+    assert "another run wrote this file" in result.stderr
+    assert target.read_text() == "the other run's report"
+    assert '"system": "paper case 1' in (tmp_path / "r.1.json").read_text()
