@@ -240,3 +240,45 @@ def test_every_refusal_is_the_package_error():
     for text in ["1/0", "(", "x", "sqrt(L)", "atan(L)", "L**L", "2L", "a.b", "1,2"]:
         with pytest.raises(CoopkinError):
             parse_number(text, PARAMS, "x")
+
+
+# ------------------------------------------------------------------ the commands
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["analyze", "paper-case1-hard", "--at", "L=" + "*".join(["1e1000"] * 5)],
+     "more than 1000 digits"),
+    (["analyze", "paper-case1-hard", "--at", "L=1e999*1e999*1e999*1e999*1e999"],
+     "more than 1000 digits"),
+    (["analyze", "paper-case1-hard", "--at", "L=Rational(1,2,3)"],
+     "Rational takes one or two numbers"),
+    (["analyze", "paper-case1-hard", "--at", "L=Integer(0.9999)"], "not an integer"),
+    (["analyze", "paper-case1-hard", "--at", "L=" + "9" * 5000], "too long"),
+    (["analyze", "paper-case1-hard", "--at", "q1=pi/99991"], "is irrational"),
+    (["analyze", "paper-case1-hard", "--at", "q1=" + "+".join(
+        f"atan(1/{k})" for k in range(2, 14))], "more than 8 terms"),
+    (["sweep", "paper-case1-hard", "--grid", "q1=0..1:1000000000"],
+     "over the limit of 1,000,000 per joint"),
+    (["sweep", "paper-case1-hard", "--grid", "q1=0..1:2000,q2=0..1:2000"],
+     "over the limit of 2,000,000"),
+    (["sweep", "paper-case1-hard", "--grid", "q1=0..1:" + "9" * 5000],
+     "over the limit of 1,000,000 points per joint"),
+    (["sweep", "paper-case1-hard", "--grid", "q2=0..1e1000:3"], "more than 1000 digits"),
+    (["sweep", "paper-case1-hard", "--grid", "q2=0..1e999:3"], "beyond 1,000,000 radians"),
+    (["draw", "paper-case2-hard", "-o", "/tmp/coopkin-never.png", "--at", "L=1e999"],
+     "beyond what a picture can show"),
+    (["draw", "paper-case2-hard", "-o", "/tmp/coopkin-never.png", "--at", "q4=1e300"],
+     "beyond what a picture can show"),
+])
+def test_issue_commands_are_one_line_errors(args, message):
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    start = time.monotonic()
+    result = CliRunner().invoke(app, args)
+    assert time.monotonic() - start < 10
+    assert result.exit_code == 2, result.output
+    assert result.stderr.startswith("coopkin: error: ")
+    assert result.stderr.count("\n") == 1
+    assert message in result.stderr, result.stderr
