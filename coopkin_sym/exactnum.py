@@ -57,8 +57,6 @@ _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d|\.\d)(?:[\w.]|(?<=[eE])[+-])*)"
     r"|(?P<name>[A-Za-z_]\w*)|(?P<op>\*\*|[-+*/^(),])|(?P<other>\S))", re.ASCII)
 _DECIMAL = re.compile(r"(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?", re.ASCII)
-_DIGIT_BOUND = 10 ** limits.MAX_DIGITS
-_MAX_BITS = math.ceil(limits.MAX_DIGITS * math.log2(10)) + 1
 
 
 class NumberError(ValueError, CoopkinError):
@@ -112,7 +110,7 @@ def _int_text(value: int | Fraction) -> str:
         if value.denominator == 1:
             return _int_text(value.numerator)
         return f"{_int_text(value.numerator)}/{_int_text(value.denominator)}"
-    if abs(value) >= _DIGIT_BOUND:
+    if abs(value) >= limits.integer_bound():
         return f"{'-' if value < 0 else ''}<an integer of about {_digits(value)} digits>"
     return str(value)
 
@@ -133,7 +131,7 @@ def _safe_str(value: object) -> str:
 def _sympy_text(expr: sp.Basic) -> str:
     """``sstr`` of a SymPy object, or a placeholder when it holds a huge integer."""
     for atom in expr.atoms(sp.Rational):
-        if abs(atom.p) >= _DIGIT_BOUND or atom.q >= _DIGIT_BOUND:
+        if abs(atom.p) >= limits.integer_bound() or atom.q >= limits.integer_bound():
             return "<an expression with a number of more than "\
                    f"{limits.MAX_DIGITS} digits>"
     return sp.sstr(expr)[:200]
@@ -207,7 +205,7 @@ class _Reader:
         return _RF(self.ctx.gens()[self.names.index(name)], self.one)
 
     def _check_int(self, value: int) -> None:
-        if abs(value) >= _DIGIT_BOUND:
+        if abs(value) >= limits.integer_bound():
             raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
 
     def _check_poly(self, p: flint.fmpz_mpoly) -> None:
@@ -216,14 +214,14 @@ class _Reader:
         if p.total_degree() > limits.MAX_DEGREE:
             raise self.too_large(f"degree over {limits.MAX_DEGREE}")
         for c in p.coeffs():
-            if abs(int(c)) >= _DIGIT_BOUND:
+            if abs(int(c)) >= limits.integer_bound():
                 raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
 
     def _product(self, a: flint.fmpz_mpoly, b: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
         """``a * b`` after checking what it would cost and how large it would be."""
         if a.is_constant() and b.is_constant():
             bits = _height(a) + _height(b)
-            if bits > 4 * _MAX_BITS:
+            if bits > 4 * limits.max_bits():
                 raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
             return a * b
         if len(a) * len(b) > limits.MAX_PRODUCT:
@@ -231,7 +229,7 @@ class _Reader:
         if max(a.total_degree(), 0) + max(b.total_degree(), 0) > limits.MAX_DEGREE:
             raise self.too_large(f"degree over {limits.MAX_DEGREE}")
         bits = _height(a) + _height(b) + min(len(a), len(b)).bit_length()
-        if bits > 2 * _MAX_BITS:
+        if bits > 2 * limits.max_bits():
             raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
         return a * b
 
@@ -276,7 +274,7 @@ class _Reader:
             return self.power(self.inverse(a), -n)
         if a.is_constant():
             bits = max(_height(a.num), _height(a.den))
-            if (bits - 1) * n > _MAX_BITS:
+            if (bits - 1) * n > limits.max_bits():
                 raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
         degree = max(a.num.total_degree(), a.den.total_degree(), 0)
         if degree * n > limits.MAX_DEGREE:
@@ -393,7 +391,7 @@ class _Reader:
             return self.power(a, n)
         bits = max((max(abs(int(r.p)).bit_length(), int(r.q).bit_length())
                     for r in a.expr.atoms(sp.Rational)), default=1)
-        if (bits - 1) * abs(n) > _MAX_BITS:
+        if (bits - 1) * abs(n) > limits.max_bits():
             raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
         if n < 0 and a.expr.is_zero:
             raise self.fail("is not a finite number (division by zero)")
@@ -750,7 +748,7 @@ def _read(text: str, symbols: Mapping[str, sp.Symbol], where: str, *,
 
 
 def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str],
-                     where: str, *, max_length: int = limits.MAX_EXPRESSION_TEXT,
+                     where: str, *, max_length: int | None = None,
                      kind: str = "variables") -> sp.Expr:
     """Read an exact expression from text: the one parser of the package.
 
@@ -769,8 +767,8 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
         The names the text may use (plain symbols are made for bare names).
     where : str
         The entry being read, for error messages.
-    max_length : int
-        Longest text accepted.
+    max_length : int, optional
+        Longest text accepted (default :data:`~coopkin_sym.limits.MAX_EXPRESSION_TEXT`).
     kind : str
         What the names are, for error messages (``"parameters"``, ``"variables"``).
 
@@ -796,12 +794,13 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     """
     if not isinstance(text, str):
         raise NumberError(where, f"{_show(text)} is not text (got {type(text).__name__})")
-    value, reader = _read(text, _symbols(symbols), where, max_length=max_length, kind=kind)
+    value, reader = _read(text, _symbols(symbols), where, kind=kind,
+                          max_length=max_length or limits.MAX_EXPRESSION_TEXT)
     return reader.as_sympy(value) if isinstance(value, _Sym) else reader.to_sympy(value)
 
 
 def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,
-           kind: str, max_length: int = limits.MAX_NUMBER_TEXT) -> tuple[object, _Reader]:
+           kind: str, max_length: int | None = None) -> tuple[object, _Reader]:
     """Any accepted input as a value of the reader (the common front of
     :func:`parse_number`, :func:`parse_angle` and :func:`exact_expr`)."""
     reader = _Reader(parameters, where, _show(value), kind)
@@ -809,7 +808,8 @@ def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,
                                    and type(value).__name__ in ("bool", "bool_")):
         raise reader.fail("is a truth value, not a number")
     if isinstance(value, str):
-        return _read(value, parameters, where, max_length=max_length, kind=kind)
+        return _read(value, parameters, where, kind=kind,
+                     max_length=max_length or limits.MAX_NUMBER_TEXT)
     if isinstance(value, sp.Basic):
         if not isinstance(value, sp.Expr):
             raise reader.fail("is not a number")
@@ -1026,7 +1026,7 @@ def _angle_point(parts: _AngleParts, where: str, shown: str) -> tuple[Fraction, 
         raise _Undecided(f"deciding it needs an {n}-th root (at most "
                          f"{limits.MAX_ANGLE_ORDER})")
     cost = sum(abs(b / 2 * n) * _rotation(r).z.bit_length() for r, b in parts.atans.items())
-    if cost > 4 * _MAX_BITS:
+    if cost > 4 * limits.max_bits():
         raise _Undecided("its exact rotation has too many digits")
     w = [_Gauss(1, 0, 1), _Gauss(0, 1, 1), _Gauss(-1, 0, 1), _Gauss(0, -1, 1)][
         int(2 * a * n) % 4]

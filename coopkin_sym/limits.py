@@ -14,6 +14,9 @@ Example
 
 from __future__ import annotations
 
+import functools
+import math
+
 #: Bytes in a model file or a report read back.
 MAX_FILE_BYTES = 8 * 1024 * 1024
 #: Entries (mappings, lists, scalars) in one file or tree, counting every use of a
@@ -59,3 +62,18 @@ MAX_GRID_COUNT = 1_000_000
 MAX_GRID_POINTS = 2_000_000
 #: Largest coordinate (in length units) a picture draws.
 MAX_DRAWN_COORDINATE = 1e12  # float-ok: a bound on what is drawn, not a decision
+
+
+@functools.lru_cache(maxsize=4)
+def _power_of_ten(n: int) -> int:
+    return 10**n
+
+
+def integer_bound() -> int:
+    """``10**MAX_DIGITS``: every integer read must be below it in absolute value."""
+    return _power_of_ten(MAX_DIGITS)
+
+
+def max_bits() -> int:
+    """Bits of the largest integer of at most :data:`MAX_DIGITS` digits, plus one."""
+    return math.ceil(MAX_DIGITS * math.log2(10)) + 1

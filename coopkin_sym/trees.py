@@ -315,7 +315,7 @@ def check_tree(tree: object) -> None:
                 else list(node)
             todo.extend((child, depth + 1, False) for child in children)
         elif isinstance(node, int) and not isinstance(node, bool):
-            if abs(node) >= 10 ** limits.MAX_DIGITS:
+            if abs(node) >= limits.integer_bound():
                 raise TreeError(f"an integer of more than {limits.MAX_DIGITS} digits "
                                 "(too large)")
         elif isinstance(node, str) and len(node) > limits.MAX_EXPRESSION_TEXT:
