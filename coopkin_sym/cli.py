@@ -207,8 +207,9 @@ def locus(
         "--max-depth", min=0, help="How deep to look inside components for further "
                                    "drops (0: the generic locus only).")] = 2,
     timeout: Annotated[float | None, typer.Option(
-        "--timeout", min=0, help="Seconds after which nothing new is explored; the report "
-                                 "says what was left out.")] = None,
+        "--timeout", min=0, help="Wall-clock bound in seconds for the whole run (the "
+                                 "generic step included, checked inside long "
+                                 "eliminations); the report says what was cut.")] = None,
     no_progress: Annotated[bool, typer.Option(
         "--no-progress", help="No progress bar (none is shown when stderr is not a "
                               "terminal).")] = False,

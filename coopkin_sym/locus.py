@@ -140,8 +140,8 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     progress
         Show a progress bar on standard error.
     """
-    if timeout is not None and not deadline.active():  # a bound inside long eliminations
-        with deadline.time_limit(timeout) as bound:
+    if timeout is not None and not deadline.active("locus"):  # checked inside eliminations
+        with deadline.time_limit(timeout, "locus") as bound:
             try:
                 return compute_locus(system, at, max_depth, timeout, progress)
             except TimeLimitReached as exc:

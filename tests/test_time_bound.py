@@ -39,6 +39,8 @@ def test_the_deadline_is_cheap_nested_and_keeps_partial_results():
             assert bound.kept == "partial"
     assert not deadline.active()
     assert issubclass(TimeLimitReached, CoopkinError)
+    with deadline.time_limit(50, "outer"), deadline.time_limit(60):
+        assert deadline.active("outer") and not deadline.active("locus")
 
 
 def _hard_matrix(n: int = 9):
@@ -67,6 +69,15 @@ def test_locus_timeout_bounds_the_whole_run_and_keeps_what_was_found():
     cut = [u for u in result.unexplored if "time bound of 1 s reached" in u]
     assert cut and "not explored" in cut[0]
     assert result.generic["Nm"] >= 0
+
+
+def test_locus_timeout_is_enforced_inside_another_bound():
+    system = load(spatial_hand(10, 3))
+    start = time.monotonic()
+    with deadline.time_limit(600, "caller"):
+        result = compute_locus(system, timeout=1.0)
+    assert time.monotonic() - start < 6
+    assert any("time bound of 1 s reached" in u for u in result.unexplored)
 
 
 def test_locus_timeout_before_the_generic_numbers_is_an_error():

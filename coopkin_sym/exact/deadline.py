@@ -46,6 +46,8 @@ class Bound:
     seconds: float
     started: float
     kept: object = None
+    owner: str = ""
+    outer: Bound | None = None
 
 
 _CURRENT: contextvars.ContextVar[Bound | None] = contextvars.ContextVar(
@@ -53,15 +55,17 @@ _CURRENT: contextvars.ContextVar[Bound | None] = contextvars.ContextVar(
 
 
 @contextmanager
-def time_limit(seconds: float | None) -> Iterator[Bound | None]:
-    """Run the body under a bound of ``seconds`` (``None``: no new bound). Inside an
-    outer bound the tighter of the two applies."""
+def time_limit(seconds: float | None, owner: str = "") -> Iterator[Bound | None]:
+    """Run the body under a bound of ``seconds`` (``None``: no new bound), set by
+    ``owner`` (see :func:`active`). Inside an outer bound the tighter of the two
+    applies."""
     if seconds is None:
         yield _CURRENT.get()
         return
     now = time.monotonic()
-    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now)
     outer = _CURRENT.get()
+    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now, owner=owner,
+                  outer=outer)
     if outer is not None and outer.end < bound.end:
         bound.end, bound.seconds = outer.end, outer.seconds
     token = _CURRENT.set(bound)
@@ -79,9 +83,17 @@ def check(where: str = "") -> None:
         raise TimeLimitReached(bound.seconds, where)
 
 
-def active() -> bool:
-    """Whether a bound applies here."""
-    return _CURRENT.get() is not None
+def active(owner: str | None = None) -> bool:
+    """Whether a bound applies here (with ``owner``: a bound set by that owner, in
+    this bound or an enclosing one)."""
+    bound = _CURRENT.get()
+    if owner is None:
+        return bound is not None
+    while bound is not None:
+        if bound.owner == owner:
+            return True
+        bound = bound.outer
+    return False
 
 
 def remaining() -> float | None:
