@@ -57,6 +57,8 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError, TimeLimitReached
+from .exact import deadline
 from .exact import elimination as el
 from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
@@ -72,7 +74,7 @@ from .locus_algebra import (
     substitute_values,
     vars_of,
 )
-from .locus_types import Component, Locus
+from .locus_types import Component, Locus, cut_short
 from .locus_witness import (
     algebraic_condition,
     algebraic_witness_on,
@@ -89,7 +91,7 @@ from .mobility import Numbers, decompose, numbers_modulo
 from .model import Model
 
 
-class LocusError(ValueError):
+class LocusError(ValueError, CoopkinError):
     """A locus that cannot be computed for this input."""
 
 
@@ -147,6 +149,12 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         every set for up to four free revolute joints, two for up to six, one for up
         to eight, else none (the numbers of every set are always decided).
     """
+    if timeout is not None and not deadline.active("locus"):  # checked inside eliminations
+        with deadline.time_limit(timeout, "locus") as bound:
+            try:
+                return compute_locus(system, at, max_depth, timeout, progress, free, pi_size)
+            except TimeLimitReached as exc:
+                return cut_short(bound, exc)
     started = time.monotonic()
     model: Model = system.model
     fixed = Configuration.parse(model, at)
@@ -175,6 +183,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     config = Configuration(revolute, prismatic, params, frozenset(free_joints))
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=notes)
+    deadline.keep(locus)
     ctx, q_rows = _context(model, config, locus, None, max_depth, random.Random(1992),
                            None if timeout is None else started + timeout, {}, {})
     locus.variables = list(ctx.ring_names)

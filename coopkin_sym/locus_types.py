@@ -13,7 +13,10 @@ Example
 
 from __future__ import annotations
 
+import time
 from dataclasses import asdict, dataclass, field
+
+from .errors import TimeLimitReached
 
 
 @dataclass
@@ -176,3 +179,23 @@ class Locus:
             "float_summary": self.float_summary(),
             "seconds": self.seconds,
         }
+
+
+def cut_short(bound, exc: TimeLimitReached) -> Locus:
+    """The locus as far as it got when the wall-clock bound ran out inside a long
+    computation (``bound`` is the :class:`~coopkin_sym.exact.deadline.Bound` the
+    locus was registered with): what was cut is said in :attr:`Locus.unexplored`.
+
+    Raises ``exc`` again, saying so, when the bound ran out before the generic
+    numbers were known (there is no locus to report yet).
+    """
+    locus = bound.kept if bound is not None else None
+    if not isinstance(locus, Locus):
+        raise TimeLimitReached(exc.seconds, (exc.where + ", " if exc.where else "")
+                               + "before the generic numbers were known: no locus "
+                               "to report") from None
+    locus.unexplored.append(
+        f"{exc} (wall-clock bound of the whole run): the rest of the search was not "
+        "explored (remaining candidates, deeper components, the q = pi chart)")
+    locus.seconds = round(time.monotonic() - bound.started, 3)
+    return locus

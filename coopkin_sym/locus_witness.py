@@ -17,6 +17,7 @@ True
 from __future__ import annotations
 
 import itertools
+import re
 from fractions import Fraction
 from math import atan, pi, tan
 
@@ -29,7 +30,7 @@ from .exact.numberfield import NumberField
 from .exact.quotient import Quotient, Tower
 from .exact.substitution import substitute
 from .exact.sympy_bridge import poly_to_sympy
-from .exactnum import angle_text
+from .exactnum import angle_text, parse_expression
 from .irrational import motion_sentences
 from .locus_algebra import NICE, roots, substitute_values, univariate, vars_of
 from .locus_types import Component, FloatCheck
@@ -201,7 +202,7 @@ def readable(name: str, exact: str, kind: str) -> str:
     for an angle); the exact value stays in the witness."""
     if len(exact) <= 32 and "CRootOf" not in exact:
         return f"{name} = {exact}"
-    value = float(sp.sympify(exact).evalf(30))  # float-ok: display only
+    value = float(parse_expression(exact, [], name).evalf(30))  # float-ok: display only
     if kind == "revolute":
         return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
     return f"{name} \u2248 {value:.4g}"
@@ -240,7 +241,7 @@ def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
                 ctx.symbols[x], sp.Symbol("alpha"))),
             "root": sp.sstr(root.expression()),
             "interval": [str(root.lo), str(root.hi)],
-            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
                        for k, v in point.items()},
         }
         comp.witness_checked = True
@@ -334,8 +335,7 @@ def float_checks(ctx, witness: dict[str, str], analysis,
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
                              float_numbers(analysis)))
     local = {str(v): v for v in ctx.symbols.values()}
-    used = [{str(s) for s in sp.sympify(eq, locals=local).free_symbols}
-            for eq in reversed(equations)]
+    used = [set(re.findall(r"[A-Za-z_]\w*", eq)) & set(local) for eq in reversed(equations)]
     revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
     joint = next((name for names in used for n, name in revolute
                   if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
@@ -444,7 +444,7 @@ def attach_two_root_witness(ctx, comp: Component, first: tuple, second: tuple,
                                  for g in (g1, g2)),
             "root": f"{sp.sstr(root1.expression())}; {sp.sstr(root2.expression())}",
             "interval": [f"{root1.lo}; {root2.lo}", f"{root1.hi}; {root2.hi}"],
-            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
                        for k, v in point.items()},
         }
         comp.witness_checked = True

@@ -431,9 +431,9 @@ def test_write_errors_leave_nothing(tmp_path):
     with pytest.raises(ReportError, match="unknown joint 'q7'"):
         write_report(hand_made(), tmp_path / "r.md", load("paper-case1-hard"),
                      pairs=["q1,q7"])
-    # the report's name is taken by a directory: the write fails after rendering
+    # the report's name is taken by a directory: refused before anything is written
     (tmp_path / "taken.html").mkdir()
-    with pytest.raises(ReportError, match="cannot write"):
+    with pytest.raises(ReportError, match="taken.html: is a directory"):
         write_report(hand_made(), tmp_path / "taken.html")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["taken.html"]
     assert list((tmp_path / "taken.html").iterdir()) == []
