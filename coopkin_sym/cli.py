@@ -216,6 +216,13 @@ def locus(
     pair: Annotated[list[str] | None, typer.Option(
         "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
                        "default: the pairs that occur together in a component).")] = None,
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep free, as for `coopkin analyze`; "
+                       "the others not set with --at stay at home (q = 0).")] = None,
+    pi_size: Annotated[int | None, typer.Option(
+        "--pi-size", min=0, help="Sets of joints at q = pi are searched inside up to this "
+                                 "many joints at once (default: all for up to four "
+                                 "revolute joints, then fewer).")] = None,
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
@@ -234,8 +241,10 @@ def locus(
     show = not no_progress and sys.stderr.isatty()
     try:
         with _alarm(timeout):
+            free_joints = [f.strip() for f in free.split(",") if f.strip()] if free \
+                else None
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
-                                   progress=show)
+                                   progress=show, free=free_joints, pi_size=pi_size)
         written = write_report(result, output, system, pairs=pairs)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))

@@ -183,11 +183,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     config = Configuration(revolute, prismatic, params, frozenset(free_joints))
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=notes)
-    deadline.keep(locus)
     ctx, q_rows = _context(model, config, locus, None, max_depth, random.Random(1992),
                            None if timeout is None else started + timeout, {}, {})
     locus.variables = list(ctx.ring_names)
     locus.generic = ctx.generic.as_dict()
+    deadline.keep(locus)  # from here on, a time bound returns what was found
     locus.notes.append(
         "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
         "component reported is then decided exactly, so a candidate can only be missed, "

@@ -76,7 +76,8 @@ class Component:
         0 for a component of the generic locus, k for one found inside a depth-(k-1)
         component.
     parent
-        Index (in :attr:`Locus.components`) of the component this one lies in.
+        Index (in :attr:`Locus.components`) of the component this one lies in; in the
+        JSON and the reports, its number there (index + 1: ``#1`` is the first).
     real_points
         ``"witness"`` (real, a witness is given) or ``"undecided"`` (no real witness
         found and no proof that there is none: never reported as real).
@@ -105,7 +106,10 @@ class Component:
     real_points: str = ""
 
     def to_json(self) -> dict:
+        """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1)."""
         out = asdict(self)
+        if self.parent is not None:
+            out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
         return out

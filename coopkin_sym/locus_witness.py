@@ -46,7 +46,7 @@ def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: 
     values = dict(point)
     for n in ctx.ring_names:
         if n not in values and n not in point_so_far:
-            values[n] = NICE[(len(values) + offset) % len(NICE)]
+            values[n] = nice_value(ctx, n, len(values) + offset)
     for n, (f0, f1) in reversed(list(point_so_far.items())):
         args = [values.get(k, Fraction(0)) for k in ctx.ring_names]
         den = eval_at(f1, args)
@@ -54,6 +54,15 @@ def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: 
             return None
         values[n] = -eval_at(f0, args) / den
     return values
+
+
+def nice_value(ctx, name: str, k: int) -> Fraction:
+    """The ``k``-th nice value for variable ``name``: parameters are lengths, so they
+    get positive ones."""
+    v = NICE[k % len(NICE)]
+    if ctx.kinds.get(name, ("",))[0] == "parameter":
+        return abs(v) or Fraction(1)
+    return v
 
 
 def eval_at(p, args: list[Fraction]) -> Fraction:
@@ -102,7 +111,7 @@ def to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
             out[j.name] = sp.sstr(config.prismatic[j.name])
     for n, (kind, name) in ctx.kinds.items():
         v = values.get(n)
-        if v is None:
+        if v is None or (kind == "parameter" and v <= 0):
             return None
         if kind == "revolute":
             t = sp.Rational(v.numerator, v.denominator)
@@ -124,7 +133,7 @@ def complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, valu
             for n, v in values.items()}
     for n in ctx.ring_names:
         if n != x and n not in full and n not in point_so_far:
-            v = NICE[(len(full) + offset) % len(NICE)]
+            v = nice_value(ctx, n, len(full) + offset)
             full[n] = field.element(flint.fmpq(v.numerator, v.denominator))
     for n, (f0, f1) in reversed(list(point_so_far.items())):
         den = eval_in(ctx, f1, full, x, field)

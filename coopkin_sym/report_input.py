@@ -98,7 +98,7 @@ _COMPONENT_TYPES: dict[str, Any] = {
     "changes": dict[StrictStr, tuple[StrictInt, StrictInt]], "meaning": list[StrictStr],
     "decided": StrictStr, "witness_checked": StrictBool,
     "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
-    "algebraic_witness": _AlgebraicIn | None,
+    "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
 }
 _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
@@ -247,8 +247,12 @@ class _Checker:
                 self.add(f"{where}.changes.{key}", "a count cannot be negative")
         if c.depth < 0:
             self.add(f"{where}.depth", f"cannot be negative, got {c.depth}")
-        if c.parent is not None and not 0 <= c.parent < count:
-            self.add(f"{where}.parent", f"no component {c.parent} (there are {count})")
+        if c.parent is not None and not 1 <= c.parent <= count:
+            self.add(f"{where}.parent", f"no component #{c.parent} (there are {count}, "
+                                        "numbered from 1)")
+        if c.real_points not in ("", "witness", "undecided"):
+            self.add(f"{where}.real_points", f"unknown value {brief(c.real_points)} "
+                                             "(expected witness or undecided)")
         for j, f in enumerate(c.float_checks):
             at = f"{where}.float_checks[{j}]"
             if not math.isfinite(f.distance) or f.distance < 0:  # float-ok: a check
@@ -317,6 +321,8 @@ def _to_locus(parsed) -> Locus:
     for c in parsed.components:
         values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)}
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
+        if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
+            values["parent"] = c.parent - 1
         values["float_checks"] = [
             FloatCheck(distance=f.distance, scale=f.scale, point=dict(f.point),
                        exact=dict(f.exact), float=dict(f.float)) for f in c.float_checks]

@@ -89,7 +89,8 @@ def test_round_trip_of_a_full_report():
     ({"variables__1": "t_q1"}, "given twice"),
     ({"generic__Nq": 3}, "generic: unknown number 'Nq'"),
     ({"components__0__numbers__Nm": -1}, "a count cannot be negative"),
-    ({"components__0__parent": 7}, "components[0].parent: no component 7 (there are 1)"),
+    ({"components__0__parent": 7},
+     "components[0].parent: no component #7 (there are 1, numbered from 1)"),
     ({"components__0__kind": "blob"}, "components[0].kind: unknown kind 'blob'"),
     ({"components__0__algebraic_witness__approx__q1": "nan; rm -rf"}, "is not a decimal "
                                                                       "number"),
