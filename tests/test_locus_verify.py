@@ -418,10 +418,21 @@ def random_system(seed: int) -> dict:
             "contacts": contacts}
 
 
-# what the current search misses (or gets wrong) on each random system; the slow ones
-# (the current search takes over ten seconds) run only with COOPKIN_SLOW_TESTS=1
-RANDOM_FAILURES: dict[int, str] = {}
-RANDOM_SLOW: set[int] = set()
+# what the current search misses (or gets wrong) on each random system
+RANDOM_FAILURES: dict[int, str] = {
+    6: "q = pi points missed (q1=0,q2=0,q3=0,q4=pi: Nm 4 Nc 4 Ni 1 Nr 0 Ng 2 Nd 3 Nh 1 and "
+       "more); components 8 and 9 hold at q1=-pi/2,q2=0,q3=pi/2,q4=0, where the ranks are "
+       "above theirs",
+    7: "q = pi points missed (q1=0,q2=pi,q3=0,q4=0: Nm 5 Nc 4 Ni 2 Nr 1 Ng 1 Nd 2 Nh 0 and "
+       "more); component 7 holds at q = 0, where the ranks are above its own",
+    13: "q = pi points missed (q1=pi,q2=0,q3=2,q4=0: Nm 5 Nc 4 Ni 2 Nr 1 Ng 1 Nd 2 Nh 0 "
+        "and more)",
+    14: "q = pi points missed (q1=0,q2=pi,q3=pi,q4=0: Nm 6 Nc 5 Ni 3 Nr 1 Ng 1 Nd 1 Nh 0 "
+        "and more)",
+}
+# the current search does not finish within 300 s on these (one step that does not
+# look at its time bound): run only with COOPKIN_SLOW_TESTS=1
+RANDOM_SLOW = {5, 9, 11}
 SLOW = os.environ.get("COOPKIN_SLOW_TESTS") == "1"
 
 
