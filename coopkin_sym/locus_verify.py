@@ -507,17 +507,16 @@ class _Checker:
         self.generic = self.numbers(self.generic_ranks)
         fixed_values: dict[str, object] = {}
         for j, (c, s) in self.config.revolute.items():
-            fixed_values[j] = None if c == -1 else Fraction(int(sp.Rational(s).p),
-                                                            int(sp.Rational(s).q)) / (
-                1 + Fraction(int(sp.Rational(c).p), int(sp.Rational(c).q)))
+            fixed_values[j] = None if c == -1 else _frac(s) / (1 + _frac(c))
         for j, d in self.config.prismatic.items():
             if not d.is_Rational:
                 raise VerifyError(f"the locus fixes {j} = {d}: not a number")
-            fixed_values[j] = Fraction(int(d.p), int(d.q))
+            fixed_values[j] = _frac(d)
         for p, value in params.items():
-            fixed_values[p] = Fraction(int(value.p), int(value.q))
+            fixed_values[p] = _frac(value)
         self.equations = _Equations(model, self.free, fixed_values)
         self.components = []
+        self.claims: list[dict[str, int]] = []      # each component's seven numbers
         for i, comp in enumerate(locus.components):
             eqs = []
             empty = False
@@ -532,11 +531,14 @@ class _Checker:
             missing = [x for x in NUMBER_NAMES if x not in comp.numbers]
             if missing:
                 raise VerifyError(f"component {i + 1}: numbers {', '.join(missing)} missing")
+            self.claims.append({x: comp.numbers[x] for x in NUMBER_NAMES})
             relevant = sorted({self.equations.role[k][0] for _, used in eqs for k in used})
             self.components.append((eqs, empty, relevant, self.ranks_of(comp.numbers)))
         self._memo: list[dict] = [{} for _ in self.components]
         self.flats = [f for f in (self._flat(eqs) for eqs, empty, _, _ in self.components
-                                  if not empty) if f and len(f) < len(self.free)]
+                                  if not empty)
+                      if f and len(f) < len(self.free)
+                      and all(x > 0 for i, x in f.items() if self.free[i].kind == "parameter")]
         self._compiled: dict[tuple, object] = {}
 
     def _flat(self, eqs) -> dict[int, object] | None:
@@ -682,12 +684,12 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
         reduced=reduced, max_points=max_points, seed=seed,
         components=len(locus.components), notes=list(checker.notes))
     state = _State(checker, result)
-    if dict(locus.generic) != checker.generic:
+    if {k: locus.generic.get(k) for k in NUMBER_NAMES} != checker.generic:
         result.unsound.append(ComponentIssue(-1, "generic", None, dict(locus.generic),
                                              f"exact generic numbers: {checker.generic}"))
-    for i, comp in enumerate(locus.components):
-        if comp.numbers == checker.generic:
-            state.issue(i, "generic-numbers", None, comp.numbers)
+    for i, claim in enumerate(checker.claims):
+        if claim == checker.generic:
+            state.issue(i, "generic-numbers", None, claim)
     _check_witnesses(checker, state)
     _check_grid(checker, state, used)
     rng = random.Random(seed)
@@ -729,7 +731,7 @@ class _State:
             claim = checker.components[i][3]
             if any(a > b for a, b in zip(ranks, claim, strict=True)):
                 self.issue(i, "rank-above", drop.point, numbers)
-            if checker.locus.components[i].numbers == numbers:
+            if checker.claims[i] == numbers:
                 covered = True
         if numbers == checker.generic:
             return False
@@ -812,7 +814,7 @@ def _check_witnesses(checker: _Checker, state: _State) -> None:
             inside = _on_curve(checker, i, curve, modulus)
         if not inside:
             state.issue(i, "witness-off", at, numbers)
-        if numbers != comp.numbers:
+        if numbers != checker.claims[i]:
             state.issue(i, "witness-numbers", at, numbers)
 
 
