@@ -600,12 +600,11 @@ class _Checker:
 
     def at_text(self, point: Sequence) -> dict[str, str]:
         """The point in ``--at`` syntax, fixed values included."""
-        out = {}
+        given = dict(self.fixed_items)
         for v, x in zip(self.free, point, strict=True):
-            out[v.source] = _angle_text(x) if v.kind == "revolute" else str(x)
-        for k, x in self.fixed_items:
-            out.setdefault(k, x)
-        return out
+            given[v.source] = _angle_text(x) if v.kind == "revolute" else str(x)
+        order = [j.name for j in self.model.joints] + [p.name for p in self.model.parameters]
+        return {k: given[k] for k in order if k in given}
 
     # membership
     def contains(self, index: int, point: Sequence, ids: Sequence[int] | None = None) -> bool:
