@@ -973,15 +973,21 @@ def _random_rational(rng: random.Random, nonzero: bool = False, positive: bool =
 
 
 def _make_line(checker: _Checker, sets: list[list], rng: random.Random, k: int) -> _Line:
-    """Line ``k``: every third line is general; the others hold some variables at grid
-    values (q = pi among them), or lie inside a component that fixes variables at
-    rational values (to look for drops inside it), in turn."""
+    """Line ``k``, in turn: a general line; one holding some variables at grid values;
+    one inside a component that fixes variables at rational values (to look for drops
+    inside it; else like the previous kind); one holding some revolute joints at
+    q = pi (the ends of families in the other chart)."""
     free = checker.free
     n = len(free)
     held: dict[int, object] = {}
-    if k % 3 == 2 and checker.flats and n > 1:
-        held = dict(checker.flats[(k // 3) % len(checker.flats)])
-    elif k % 3 and n > 1:
+    revolute = [i for i, v in enumerate(free) if v.kind == "revolute"]
+    kind = k % 4
+    if kind == 2 and checker.flats and n > 1:
+        held = dict(checker.flats[(k // 4) % len(checker.flats)])
+    elif kind == 3 and revolute and n > 1:
+        for i in rng.sample(revolute, rng.randint(1, min(len(revolute), n - 1))):
+            held[i] = None
+    elif kind and n > 1:
         for i in rng.sample(range(n), rng.randint(1, n - 1)):
             held[i] = rng.choice(sets[i])
     coords = []
