@@ -3,9 +3,10 @@
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
 ``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
-[--timeout SECONDS] [--pair q1,q2]``.
+[--timeout SECONDS] [--pair q1,q2] [--verify]``,
+``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``.
 Bad input prints one clear error to stderr and exits 2; no traceback, nothing
-half-written.
+half-written. A verification that finds something uncovered or unsound exits 1.
 
 Example
 -------
@@ -223,6 +224,9 @@ def locus(
         "--pi-size", min=0, help="Sets of joints at q = pi are searched inside up to this "
                                  "many joints at once (default: all for up to four "
                                  "revolute joints, then fewer).")] = None,
+    verify: Annotated[bool, typer.Option(
+        "--verify", help="Check the locus independently afterwards (see `coopkin verify`); "
+                         "exit 1 when something is uncovered or unsound.")] = False,
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
@@ -245,7 +249,9 @@ def locus(
                 else None
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
-        written = write_report(result, output, system, pairs=pairs)
+        checked = _verification(system, result) if verify else None
+        written = write_report(result, output, system, pairs=pairs,
+                               verification=checked.to_json() if checked else None)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)
@@ -253,6 +259,66 @@ def locus(
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
     typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; wrote "
                + ", ".join(str(p) for p in written))
+    if checked is not None:
+        _echo_verification(checked)
+
+
+def _verification(system, locus, **options):
+    from .locus_verify import VerifyError, verify_locus
+
+    try:
+        return verify_locus(system, locus, **options)
+    except VerifyError as exc:
+        _fail(str(exc))
+
+
+def _echo_verification(checked) -> None:
+    from .locus_verify import summary_lines
+
+    typer.echo("\n".join(summary_lines(checked)))
+    if not checked.ok:
+        raise typer.Exit(1)
+
+
+@app.command("verify")
+def verify_report(
+    model: ModelArg,
+    report: Annotated[str, typer.Argument(help="A locus report in JSON (coopkin locus "
+                                                 "MODEL -o REPORT.json).")],
+    max_points: Annotated[int, typer.Option(
+        "--max-points", min=1, help="Largest grid (smaller value sets beyond it).")] = 50_000,
+    lines: Annotated[int, typer.Option(
+        "--lines", min=0, help="Random rational lines to check.")] = 12,
+    seed: Annotated[int, typer.Option("--seed", help="Seed of the lines.")] = 0,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Check a locus report independently: exact numbers on a rational grid (q = pi
+    included) and at every drop point of random rational lines; every point with
+    non-generic numbers must lie on a component with those numbers, and every witness
+    must check. Exit 1 when something is uncovered or unsound."""
+    from pathlib import Path
+
+    from .report import ReportError, locus_from_json
+
+    try:
+        system = load(model)
+        try:
+            text = Path(report).read_text()
+        except OSError as exc:
+            raise ReportError(f"{report}: cannot read: {exc.strerror or exc}") from None
+        try:
+            locus = locus_from_json(text)
+        except ValueError as exc:
+            raise ReportError(f"{report}: not a locus report ({exc})") from None
+    except (*USER_ERRORS, ReportError) as exc:
+        _fail(str(exc))
+    checked = _verification(system, locus, max_points=max_points, lines=lines, seed=seed)
+    if as_json:
+        typer.echo(json.dumps(checked.to_json(), indent=2))
+        if not checked.ok:
+            raise typer.Exit(1)
+        return
+    _echo_verification(checked)
 
 
 def worker_count(requested: int, points: int, cpus: int | None = None) -> int:

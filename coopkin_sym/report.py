@@ -859,8 +859,9 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
 # ------------------------------------------------------------------ JSON
 
 
-def render_json(locus: Locus) -> str:
-    """The locus as JSON (:meth:`Locus.to_json`), for programs.
+def render_json(locus: Locus, verification: Mapping | None = None) -> str:
+    """The locus as JSON (:meth:`Locus.to_json`), for programs; with a
+    ``"verification"`` object when one is given.
 
     Example
     -------
@@ -868,7 +869,10 @@ def render_json(locus: Locus) -> str:
     >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:3]
     ['components', 'dropped', 'fixed']
     """
-    return json.dumps(locus.to_json(), indent=2, ensure_ascii=False) + "\n"
+    data = locus.to_json()
+    if verification is not None:
+        data["verification"] = dict(verification)
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
 def locus_from_json(data: Mapping | str) -> Locus:
@@ -1004,7 +1008,7 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
 
 def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
                  pairs: Sequence[str | Sequence[str]] | None = None,
-                 dpi: int = 110) -> list[Path]:
+                 dpi: int = 110, verification: Mapping | None = None) -> list[Path]:
     """Write the report in the format of ``path``'s suffix (``.md``, ``.html``,
     ``.tex``, ``.json``), with a PNG per joint pair next to it
     (``<stem>_<qi>_<qj>.png``; none for JSON). Everything is rendered first and
@@ -1024,6 +1028,9 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
         together in a real component's equations.
     dpi
         Resolution of the PNGs.
+    verification
+        A verification (:meth:`~coopkin_sym.locus_verify.Verification.to_json`) to
+        add to a JSON report.
 
     Example
     -------
@@ -1038,7 +1045,7 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     chosen = parse_pairs(pairs, system)
     files: dict[Path, bytes] = {}
     if fmt == "json":
-        files[target] = render_json(locus).encode()
+        files[target] = render_json(locus, verification).encode()
     else:
         pngs, problem = _plots(locus, system, chosen, dpi)
         if problem:
