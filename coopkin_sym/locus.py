@@ -60,6 +60,7 @@ from .configuration import Configuration
 from .errors import CoopkinError, TimeLimitReached
 from .exact import deadline
 from .exact import elimination as el
+from .exact.factoring import factor
 from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
@@ -413,7 +414,7 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
     factors: dict[str, tuple] = {}
     rests: list[list] = []
     def add_factors(g, matrix: str) -> None:
-        _, fs = g.factor()
+        _, fs = factor(g)
         for f, _e in fs:
             f = normalize(f)
             key = str(f)
@@ -736,7 +737,7 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
             res = r if res is None else res.gcd(r)
         if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
             continue
-        _, factors = res.factor()
+        _, factors = factor(res)
         for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
             h = normalize(h)
             if _no_real_points(ctx, h):
@@ -790,7 +791,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     rows_x = substitute_rows(q_rows, kx, h0, h1)
     inner = dict(point_so_far)
     inner[x] = (h0, h1)
-    _, factors = common.factor()
+    _, factors = factor(common)
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
         if k.degrees()[ky] == 0:
             continue

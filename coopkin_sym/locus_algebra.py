@@ -23,6 +23,7 @@ import flint
 import sympy as sp
 
 from .algebraic import RealRoot
+from .exact.factoring import factor
 from .exact.numberfield import NumberField
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
@@ -295,7 +296,7 @@ def solve_sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple
             elim = r if elim is None else elim.gcd(r)
         if elim is None or elim.is_zero() or elim.is_constant():
             continue
-        _, factors = elim.factor()
+        _, factors = factor(elim)
         out, separated = [], True
         for m, _e in factors:
             if m.degrees()[kx] or m.is_constant():
@@ -369,7 +370,7 @@ def roots(ctx, g, name: str):
     if g.is_zero() or g.is_constant():
         return [], []
     k = ctx.ring_names.index(name)
-    _, factors = g.factor()
+    _, factors = factor(g)
     roots, curved = [], []
     for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
         if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
@@ -407,7 +408,7 @@ def linearly_disjoint(ctx, g1, x1: str, g2, x2: str) -> bool:
         res = first.resultant(second, "y")
         if res.is_zero():
             continue
-        _, factors = res.factor()
+        _, factors = factor(res)
         if len(factors) == 1 and factors[0][1] == 1 and res.total_degree() == d1 * d2:
             return True
     return False

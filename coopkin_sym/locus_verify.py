@@ -66,6 +66,7 @@ import sympy as sp
 from . import kinematics
 from .configuration import Configuration, ConfigurationError, split_assignments
 from .exact import elimination as el
+from .exact.factoring import factor
 from .exact.quotient import Quotient, rank_modulo
 from .exactnum import NumberError, parse_number
 from .locus_types import Locus
@@ -831,7 +832,7 @@ def _read_witness(checker: _Checker, witness: Mapping):
     primitive element of their field with minimal polynomial ``g``."""
     from sympy.polys.numberfields.subfield import primitive_element
 
-    from .exactnum import _parse_text, algebraic_half_angle, parse_angle
+    from .exactnum import algebraic_half_angle, parse_angle, parse_expression
 
     model = checker.model
     fixed = dict(checker.fixed_items)
@@ -873,7 +874,7 @@ def _read_witness(checker: _Checker, witness: Mapping):
                 x = x.subs({symbols[n]: sp.Rational(given.get(n, fixed.get(n, "0")))
                             for n in map(str, x.free_symbols) if n in symbols})
             except NumberError:
-                x = _parse_text(text, {}, where)
+                x = parse_expression(text, {}, where)
                 sp.minimal_polynomial(x, sp.Symbol("t"))
             if x.free_symbols or x.is_real is False:
                 raise _Unreadable(f"{where}: {text} is not a real number")
@@ -1204,7 +1205,7 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
     for mat, ncols, rank in pieces:
         g = _drop_polynomial(mat, ncols, rank, rng) if mat else None
         if g is not None and not g.is_constant():
-            factors += [f for f, _ in g.factor()[1]]
+            factors += [f for f, _ in factor(g)[1]]
     for (_, c), v in zip(line.coords, checker.free, strict=True):
         if v.kind == "revolute" and c.degree() == 1:
             factors.append(_to_mpoly(c * int(c.denom())))

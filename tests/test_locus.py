@@ -446,3 +446,22 @@ def test_no_real_zeros_is_a_proof_or_nothing():
     # real zeros (a point, a curve, odd degree): never claimed empty
     for g in (a**2 + b**2, a**2 + b**2 - 1, a**3 + b + 5, a * b + 1, ctx.constant(0)):
         assert not no_real_zeros(g)
+
+
+def test_factorization_answers_where_flint_cannot_sort_its_factors():
+    """A random two-arm system whose locus needs a factorization that python-flint's
+    ``factor`` cannot sort (OverflowError in its sort key): the fallback answers, and the
+    factors multiply back to the polynomial."""
+    import flint
+
+    from coopkin_sym.exact.factoring import _factor_with_sympy, factor
+
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+    x, y = ctx.gens()
+    p = 12 * (x**2 - y**2) * (x * y + 3) ** 2
+    for content, factors in (factor(p), _factor_with_sympy(p)):
+        product = ctx.constant(content)
+        for f, e in factors:
+            product *= f**e
+        assert product == p or product == -p
+        assert sorted(str(f) for f, _ in factors) == ["x + y", "x - y", "x*y + 3"]
