@@ -110,7 +110,7 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     if isinstance(text, Mapping):
         return [(str(k), v) for k, v in text.items()]
     items = []
-    for part in _top_level(str(text)):
+    for part in top_level_parts(str(text)):
         part = part.strip()
         if not part:
             continue
@@ -125,8 +125,14 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     return items
 
 
-def _top_level(text: str) -> list[str]:
-    """``text`` split at the commas outside parentheses (``L=Rational(1, 3),q1=0``)."""
+def top_level_parts(text: str) -> list[str]:
+    """``text`` split at the commas outside parentheses (``L=Rational(1, 3),q1=0``).
+
+    Example
+    -------
+    >>> top_level_parts("L=Rational(1, 3),q1=0")
+    ['L=Rational(1, 3)', 'q1=0']
+    """
     parts, depth, start = [], 0, 0
     for i, ch in enumerate(text):
         depth += ch == "("

@@ -42,6 +42,7 @@ from pydantic import (
     create_model,
 )
 
+from .configuration import top_level_parts
 from .errors import CoopkinError
 from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
 from .locus_types import Component, FloatCheck, Locus
@@ -200,15 +201,7 @@ class _Checker:
         """``fixed``: ``NAME=VALUE,...`` (commas inside parentheses belong to values)."""
         if not text.strip():
             return
-        depth, start, parts = 0, 0, []
-        for i, ch in enumerate(text):
-            depth += ch == "("
-            depth -= ch == ")"
-            if ch == "," and depth == 0:
-                parts.append(text[start:i])
-                start = i + 1
-        parts.append(text[start:])
-        for part in parts:
+        for part in top_level_parts(text):
             name, sep, value = part.partition("=")
             if not sep:
                 self.add(where, f"expected NAME=VALUE, got {brief(part)}")

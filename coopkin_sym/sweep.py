@@ -49,7 +49,12 @@ import numpy as np
 import sympy as sp
 
 from . import kinematics, limits
-from .configuration import Configuration, ConfigurationError, split_assignments
+from .configuration import (
+    Configuration,
+    ConfigurationError,
+    split_assignments,
+    top_level_parts,
+)
 from .exact import elimination as el
 from .exact import modular
 from .exactnum import NumberError, brief, parse_angle, parse_expression
@@ -617,15 +622,7 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
     {'q1': ('-pi', 'pi', 181), 'd4': ('0', '1/2', 3)}
     """
     axes: dict[str, tuple[str, str, int]] = {}
-    parts, depth, start = [], 0, 0
-    for i, ch in enumerate(text):
-        depth += ch == "("
-        depth -= ch == ")"
-        if ch == "," and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    parts.append(text[start:])
-    for part in parts:
+    for part in top_level_parts(text):
         part = part.strip()
         if not part:
             continue
