@@ -787,7 +787,7 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     -------
     >>> parse_expression("(t_q1 + 1)**2 / 2", ["t_q1"], "equation")
     t_q1**2/2 + t_q1 + 1/2
-    >>> parse_expression("exec(1)", [], "x")
+    >>> parse_expression("exec(1)", [], "x")  # parse-ok: refused, never run
     Traceback (most recent call last):
     ...
     coopkin_sym.exactnum.NumberError: x: 'exec(1)' uses unknown function exec (allowed: atan, sqrt)
@@ -823,7 +823,8 @@ def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,
     if isinstance(value, float):
         if not math.isfinite(value):  # float-ok: a finiteness test, not a decision
             raise reader.fail("is not a finite number")
-        return reader.constant(Fraction(repr(float(value)))), reader
+        # float-ok: the float's shortest decimal text, read exactly (0.1 is 1/10)
+        return reader.constant(Fraction(repr(float(value)))), reader  # float-ok
     if isinstance(value, Decimal):
         if not value.is_finite():
             raise reader.fail("is not a finite number")

@@ -21,7 +21,7 @@ from .errors import TimeLimitReached
 
 @dataclass
 class FloatCheck:
-    """What a float rank test (numpy's ``matrix_rank``, default tolerance) says near a
+    """What a float rank test (numpy's matrix rank, default tolerance) says near a
     witness: ``distance`` is how far (in radians, on one joint) the point is from the
     witness, ``scale`` the value given to the length parameters; ``exact`` the exact
     numbers there, ``float`` the float ones."""

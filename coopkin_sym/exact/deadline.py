@@ -64,8 +64,8 @@ def time_limit(seconds: float | None, owner: str = "") -> Iterator[Bound | None]
         return
     now = time.monotonic()
     outer = _CURRENT.get()
-    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now, owner=owner,
-                  outer=outer)
+    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now,  # float-ok: time
+                  owner=owner, outer=outer)
     if outer is not None and outer.end < bound.end:
         bound.end, bound.seconds = outer.end, outer.seconds
     token = _CURRENT.set(bound)
