@@ -125,6 +125,7 @@ def _interrupt(args: list[str], after: float, cwd: Path) -> tuple[int, str, floa
                             env=env,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(after)
+    assert proc.poll() is None, "the command finished before it could be interrupted"
     sent = time.monotonic()
     proc.send_signal(signal.SIGINT)
     try:
@@ -145,7 +146,7 @@ def test_ctrl_c_stops_within_a_second_with_one_line(tmp_path, command):
     out.mkdir()
     args = (["locus", str(model), "-o", str(out / "r.md"), "--no-progress"]
             if command == "locus" else
-            ["sweep", str(model), "--grid", "f1_1=-pi..pi:300,f1_2=-pi..pi:300",
+            ["sweep", str(model), "--grid", "f1_1=-pi..pi:1400,f1_2=-pi..pi:1400",
              "-o", str(out / "t.csv"), "--workers", "2"])
     status, err, took = _interrupt(args, 4.0, tmp_path)
     assert status == 130
