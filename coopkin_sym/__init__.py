@@ -16,6 +16,7 @@ Example
 """
 
 from .configuration import Configuration, ConfigurationError
+from .errors import CoopkinError
 from .mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion, Numbers
 from .model import Model, ModelError
 from .system import System, load
@@ -25,6 +26,7 @@ __all__ = [
     "BlockTooLarge",
     "Configuration",
     "ConfigurationError",
+    "CoopkinError",
     "InfeasibleMotion",
     "Model",
     "ModelError",

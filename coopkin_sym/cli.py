@@ -3,9 +3,10 @@
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
 ``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
-[--timeout SECONDS] [--pair q1,q2]``.
+[--timeout SECONDS] [--pair q1,q2] [--verify]``,
+``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``.
 Bad input prints one clear error to stderr and exits 2; no traceback, nothing
-half-written.
+half-written. A verification that finds something uncovered or unsound exits 1.
 
 Example
 -------
@@ -18,13 +19,19 @@ Example
 from __future__ import annotations
 
 import json
+import os
+import re
+import signal
 import sys
+import threading
+from contextlib import contextmanager
 from typing import Annotated
 
 import sympy as sp
 import typer
 
 from .configuration import ConfigurationError
+from .errors import CoopkinError, TimeLimitReached
 from .exactnum import NumberError
 from .irrational import IrrationalAnalysis, NotIrrational, analyze_irrational
 from .mobility import Analysis, InfeasibleMotion
@@ -37,7 +44,8 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
 ModelArg = Annotated[str, typer.Argument(
     help="A model file (YAML/JSON) or a shipped example name (see `coopkin examples`).")]
 
-USER_ERRORS = (ModelError, ConfigurationError, NumberError, InfeasibleMotion)
+#: Every error the package raises on purpose (bad input, budgets, time bounds).
+USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, InfeasibleMotion)
 
 
 def _fail(message: str) -> None:
@@ -159,40 +167,28 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from pathlib import Path
-
+    from .output import check_output_path, write_files
     from .sweep import SweepError, grid
 
     fmt = "json" if as_json else "csv"
-    if output is not None:
-        fmt = Path(output).suffix.lower().lstrip(".")
-        if fmt not in ("csv", "json"):
-            _fail(f"--output {output}: expected a .csv or .json file")
     try:
+        target = None
+        if output is not None:
+            target, suffix = check_output_path(output, (".csv", ".json"), SweepError,
+                                               "table (--output)")
+            fmt = suffix.lstrip(".")
         system = load(model)
         points = grid(system, grid_spec)
         show = not no_progress and sys.stderr.isatty()
-        if workers > 1:
-            from concurrent.futures import ProcessPoolExecutor
-
-            with ProcessPoolExecutor(workers) as pool:
-                result = system.sweep(points, at=at, executor=pool, progress=show)
-        else:
-            result = system.sweep(points, at=at, progress=show)
+        result = _sweep(system, points, at, workers, show)
+        text = result.json_text() if fmt == "json" else result.to_csv()
+        if target is not None:
+            write_files({target: text.encode()}, SweepError)
     except (*USER_ERRORS, SweepError) as exc:
         _fail(str(exc))
-    text = result.json_text() if fmt == "json" else result.to_csv()
-    if output is None:
+    if target is None:
         typer.echo(text, nl=False)
         return
-    target = Path(output)
-    partial = target.with_name(target.name + ".partial")
-    try:
-        partial.write_text(text)
-        partial.replace(target)
-    except OSError as exc:
-        partial.unlink(missing_ok=True)
-        _fail(f"--output {output}: {exc.strerror or exc}")
     c = result.summary()
     typer.echo(f"{c['points']} points: {c['certified_mod_p']} certified modulo "
                f"{result.prime}, {c['rechecked_exact']} rechecked exactly; "
@@ -212,14 +208,25 @@ def locus(
         "--max-depth", min=0, help="How deep to look inside components for further "
                                    "drops (0: the generic locus only).")] = 2,
     timeout: Annotated[float | None, typer.Option(
-        "--timeout", min=0, help="Seconds after which nothing new is explored; the report "
-                                 "says what was left out.")] = None,
+        "--timeout", min=0, help="Wall-clock bound in seconds for the whole run (the "
+                                 "generic step included, checked inside long "
+                                 "eliminations); the report says what was cut.")] = None,
     no_progress: Annotated[bool, typer.Option(
         "--no-progress", help="No progress bar (none is shown when stderr is not a "
                               "terminal).")] = False,
     pair: Annotated[list[str] | None, typer.Option(
         "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
                        "default: the pairs that occur together in a component).")] = None,
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep free, as for `coopkin analyze`; "
+                       "the others not set with --at stay at home (q = 0).")] = None,
+    pi_size: Annotated[int | None, typer.Option(
+        "--pi-size", min=0, help="Sets of joints at q = pi are searched inside up to this "
+                                 "many joints at once (default: all for up to four "
+                                 "revolute joints, then fewer).")] = None,
+    verify: Annotated[bool, typer.Option(
+        "--verify", help="Check the locus independently afterwards (see `coopkin verify`); "
+                         "exit 1 when something is uncovered or unsound.")] = False,
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
@@ -237,9 +244,14 @@ def locus(
         _fail(f"the locus engine is not available: {exc}")
     show = not no_progress and sys.stderr.isatty()
     try:
-        result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
-                               progress=show)
-        written = write_report(result, output, system, pairs=pairs)
+        with _alarm(timeout):
+            free_joints = [f.strip() for f in free.split(",") if f.strip()] if free \
+                else None
+            result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
+                                   progress=show, free=free_joints, pi_size=pi_size)
+        checked = _verification(system, result) if verify else None
+        written = write_report(result, output, system, pairs=pairs,
+                               verification=checked.to_json() if checked else None)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)
@@ -247,6 +259,104 @@ def locus(
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
     typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; wrote "
                + ", ".join(str(p) for p in written))
+    if checked is not None:
+        _echo_verification(checked)
+
+
+def _verification(system, locus, **options):
+    from .locus_verify import VerifyError, verify_locus
+
+    try:
+        return verify_locus(system, locus, **options)
+    except VerifyError as exc:
+        _fail(str(exc))
+
+
+def _echo_verification(checked) -> None:
+    from .locus_verify import summary_lines
+
+    typer.echo("\n".join(summary_lines(checked)))
+    if not checked.ok:
+        raise typer.Exit(1)
+
+
+@app.command("verify")
+def verify_report(
+    model: ModelArg,
+    report: Annotated[str, typer.Argument(help="A locus report in JSON (coopkin locus "
+                                                 "MODEL -o REPORT.json).")],
+    max_points: Annotated[int, typer.Option(
+        "--max-points", min=1, help="Largest grid (smaller value sets beyond it).")] = 50_000,
+    lines: Annotated[int, typer.Option(
+        "--lines", min=0, help="Random rational lines to check.")] = 12,
+    seed: Annotated[int, typer.Option("--seed", help="Seed of the lines.")] = 0,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Check a locus report independently: exact numbers on a rational grid (q = pi
+    included) and at every drop point of random rational lines; every point with
+    non-generic numbers must lie on a component with those numbers, and every witness
+    must check. Exit 1 when something is uncovered or unsound."""
+    from pathlib import Path
+
+    from .report import ReportError, locus_from_json
+
+    try:
+        system = load(model)
+        try:
+            text = Path(report).read_text()
+        except OSError as exc:
+            raise ReportError(f"{report}: cannot read: {exc.strerror or exc}") from None
+        try:
+            locus = locus_from_json(text)
+        except ValueError as exc:
+            raise ReportError(f"{report}: not a locus report ({exc})") from None
+    except (*USER_ERRORS, ReportError) as exc:
+        _fail(str(exc))
+    checked = _verification(system, locus, max_points=max_points, lines=lines, seed=seed)
+    if as_json:
+        typer.echo(json.dumps(checked.to_json(), indent=2))
+        if not checked.ok:
+            raise typer.Exit(1)
+        return
+    _echo_verification(checked)
+
+
+def worker_count(requested: int, points: int, cpus: int | None = None) -> int:
+    """Worker processes actually started: never more than requested, than the
+    machine's processors, or than the points to share out.
+
+    Example
+    -------
+    >>> worker_count(1000, 10, cpus=2)
+    2
+    >>> worker_count(8, 1, cpus=16)
+    1
+    """
+    cpus = cpus if cpus is not None else (os.cpu_count() or 1)
+    return max(1, min(requested, cpus, points))
+
+
+def _sweep(system, points, at, workers: int, show: bool):
+    """The sweep, in ``worker_count`` processes; on Ctrl-C or an error the worker
+    processes are stopped at once (no waiting for their chunks)."""
+    n = len(points)
+    count = worker_count(workers, n)
+    if count == 1:
+        return system.sweep(points, at=at, progress=show)
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    chunk = max(1, min(16384, -(-n // (4 * count))))
+    pool = ProcessPoolExecutor(count)
+    try:
+        result = system.sweep(points, at=at, executor=pool, progress=show, chunk=chunk)
+    except BaseException:
+        pool.shutdown(wait=False, cancel_futures=True)
+        for child in multiprocessing.active_children():
+            child.terminate()
+        raise
+    pool.shutdown()
+    return result
 
 
 def render_text(a: Analysis) -> str:
@@ -306,7 +416,8 @@ def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
 
 def render_latex(a: Analysis) -> str:
     """The blocks and numbers as LaTeX."""
-    out = [r"% " + a.model.name + " at " + (a.configuration.at_text() or "home")]
+    head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
+    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
     blocks, omitted = a.available_blocks()
     for name, mat in blocks.items():
@@ -318,10 +429,43 @@ def render_latex(a: Analysis) -> str:
     return "\n".join(out)
 
 
+@contextmanager
+def _alarm(timeout: float | None):
+    """A backstop for ``--timeout``: the exact layer checks the clock in its loops; a
+    step outside them (a long SymPy simplification) is interrupted by a timer signal
+    a little after the bound (main thread only), raising the same
+    :class:`~coopkin_sym.errors.TimeLimitReached`."""
+    usable = (timeout is not None and hasattr(signal, "setitimer")
+              and threading.current_thread() is threading.main_thread())
+    if not usable:
+        yield
+        return
+
+    def ring(signum, frame):
+        raise TimeLimitReached(timeout, "a step outside the exact layer's checks")
+
+    previous = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, timeout + max(2.0, 0.1 * timeout))
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def _interrupted(signum, frame) -> None:
+    """Ctrl-C: one line on stderr; the KeyboardInterrupt then unwinds (temporary files
+    are removed on the way) and the command exits with 130."""
+    sys.stderr.write("coopkin: interrupted\n")
+    sys.stderr.flush()
+    raise KeyboardInterrupt
+
+
 def main() -> None:
     """Console-script entry point."""
+    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        signal.signal(signal.SIGINT, _interrupted)
     try:
         app()
-    except KeyboardInterrupt:  # pragma: no cover
-        typer.echo("coopkin: interrupted", err=True)
+    except KeyboardInterrupt:  # pragma: no cover - typer turns it into exit 130
         sys.exit(130)

@@ -22,11 +22,12 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .exactnum import NumberError, angle_text, parse_angle, parse_number
+from .errors import CoopkinError
+from .exactnum import NumberError, angle_text, brief, parse_angle, parse_number
 from .model import Model
 
 
-class ConfigurationError(ValueError):
+class ConfigurationError(ValueError, CoopkinError):
     """A configuration that names an unknown variable or has an inexact value."""
 
 
@@ -83,7 +84,7 @@ class Configuration:
                 values[name] = v
             else:
                 known = ", ".join(list(joints) + list(params))
-                raise ConfigurationError(f"{where}: unknown name {name!r} (known: {known})")
+                raise ConfigurationError(f"{where}: unknown name {brief(name)} (known: {known})")
         # a prismatic displacement may use parameters; substitute the given values
         subs = {params[n]: v for n, v in values.items()}
         prismatic = {n: sp.expand(e.subs(subs)) for n, e in prismatic.items()}
@@ -109,12 +110,12 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     if isinstance(text, Mapping):
         return [(str(k), v) for k, v in text.items()]
     items = []
-    for part in str(text).split(","):
+    for part in top_level_parts(str(text)):
         part = part.strip()
         if not part:
             continue
         if "=" not in part:
-            raise ConfigurationError(f"{context}: expected NAME=VALUE, got {part!r}")
+            raise ConfigurationError(f"{context}: expected NAME=VALUE, got {brief(part)}")
         name, value = part.split("=", 1)
         items.append((name.strip(), value.strip()))
     names = [n for n, _ in items]
@@ -124,16 +125,47 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     return items
 
 
+def top_level_parts(text: str) -> list[str]:
+    """``text`` split at the commas outside parentheses (``L=Rational(1, 3),q1=0``).
+
+    Example
+    -------
+    >>> top_level_parts("L=Rational(1, 3),q1=0")
+    ['L=Rational(1, 3)', 'q1=0']
+    """
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        depth += ch == "("
+        depth -= ch == ")"
+        if ch == "," and depth <= 0:
+            parts.append(text[start:i])
+            start = i + 1
+    parts.append(text[start:])
+    return parts
+
+
 def _angle(value, where: str) -> tuple[sp.Rational, sp.Rational]:
     if isinstance(value, tuple) and len(value) == 2:
-        c, s = (sp.Rational(v) for v in value)
+        try:
+            c, s = (parse_number(v, {}, f"{where} (cos, sin)") for v in value)
+        except NumberError as exc:
+            raise ConfigurationError(str(exc)) from None
         if c**2 + s**2 != 1:
             raise ConfigurationError(f"{where}: (cos, sin) = ({c}, {s}) is not on the unit "
                                      "circle")
         return c, s
     try:
-        return parse_angle(str(value) if not isinstance(value, sp.Basic) else sp.sstr(value),
-                           where)
+        return parse_angle(value if isinstance(value, str | sp.Basic | int) else
+                           _angle_text(value, where), where)
+    except NumberError as exc:
+        raise ConfigurationError(str(exc)) from None
+
+
+def _angle_text(value, where: str) -> str:
+    """A non-text angle value: exact numbers are read as numbers (radians), anything
+    else is refused (a float angle is never exact but 0)."""
+    try:
+        return sp.sstr(parse_number(value, {}, where))
     except NumberError as exc:
         raise ConfigurationError(str(exc)) from None
 

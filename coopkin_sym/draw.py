@@ -37,7 +37,6 @@ import functools
 import io
 import itertools
 import os
-import tempfile
 import textwrap
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -47,10 +46,13 @@ import flint
 import numpy as np  # float-ok: drawing coordinates
 import sympy as sp
 
+from . import limits
+from .errors import CoopkinError
 from .exact.ring import Frac
 from .exact.sympy_bridge import rational_to_sympy
+from .exactnum import brief
 from .mobility import Analysis
-from .output import check_output_path
+from .output import check_output_path, write_files
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -77,7 +79,7 @@ _LABEL_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
               "edgecolor": "none"}
 
 
-class DrawError(ValueError):
+class DrawError(ValueError, CoopkinError):
     """A picture that cannot be drawn: a bad motion request, an unknown file format,
     matplotlib missing, or an output file that cannot be written."""
 
@@ -107,19 +109,19 @@ def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str
     if isinstance(motion, str):
         kind, sep, index = motion.partition(":")
         if not sep:
-            raise DrawError(f"motion: expected KIND:K (e.g. coordinated:1), got {motion!r}")
+            raise DrawError(f"motion: expected KIND:K (e.g. coordinated:1), got {brief(motion)}")
     elif isinstance(motion, Sequence) and len(motion) == 2:
         kind, index = motion
     else:
-        raise DrawError(f"motion: expected (kind, k) or 'kind:k', got {motion!r}")
+        raise DrawError(f"motion: expected (kind, k) or 'kind:k', got {brief(motion)}")
     kind = str(kind).strip()
     if kind not in MOTION_KINDS:
-        raise DrawError(f"motion: unknown kind {kind!r} (expected "
+        raise DrawError(f"motion: unknown kind {brief(kind)} (expected "
                         f"{', '.join(MOTION_KINDS)})")
     try:
         k = int(str(index).strip())
     except ValueError:
-        raise DrawError(f"motion: the index must be a whole number, got {index!r}") from None
+        raise DrawError(f"motion: the index must be a whole number, got {brief(index)}") from None
     count = _motion_count(kind, analysis)
     if not 1 <= k <= count:
         if count == 0:
@@ -170,6 +172,12 @@ def _mpl():
 # ------------------------------------------------------------------ exact -> float
 
 
+def _magnitude(value: sp.Rational) -> str:
+    """``1e+300``-style size of a rational too large for a float."""
+    whole = abs(int(value))
+    return f"1e+{int(whole.bit_length() * 0.30103) if whole else 0}"  # float-ok: display
+
+
 class _Values:
     """Rational values for the symbols left in an analysis: free joints at home,
     free parameters at 1."""
@@ -189,11 +197,22 @@ class _Values:
         return rational_to_sympy(num / den)
 
     def vec(self, v: Sequence[Frac] | None) -> list[float] | None:
-        return None if v is None else [float(self.exact(x)) for x in v]  # float-ok
+        if v is None:
+            return None
+        out = []
+        for x in v:
+            value = self.exact(x)
+            if abs(value) > limits.MAX_DRAWN_COORDINATE:
+                raise DrawError(f"cannot draw this configuration: a coordinate of about "
+                                f"{_magnitude(value)} is beyond what a picture can show "
+                                f"(at most {limits.MAX_DRAWN_COORDINATE:.0e}; scale the "
+                                "lengths down)")
+            out.append(float(value))  # float-ok: drawing only
+        return out
 
     def column(self, mat: sp.Matrix, k: int) -> list[sp.Rational]:
         """Column ``k`` (from 0) of a block at the drawing values, exactly."""
-        return [sp.cancel(sp.sympify(e).xreplace(self.sympy)) for e in mat.col(k)]
+        return [sp.cancel(e.xreplace(self.sympy)) for e in mat.col(k)]
 
     def note(self, a: Analysis) -> str:
         parts = []
@@ -327,6 +346,15 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
     elif getattr(ax, "name", "") != "3d":
         raise DrawError("ax: a 3D axes is needed (add_subplot(projection='3d'))")
     fig = ax.figure
+    try:
+        return _draw_into(fig, ax, a, request, title)
+    except (np.linalg.LinAlgError, OverflowError, FloatingPointError,
+            ZeroDivisionError) as exc:
+        raise DrawError(f"cannot draw this configuration ({type(exc).__name__}: "
+                        f"{' '.join(str(exc).split())[:80]})") from None
+
+
+def _draw_into(fig, ax, a: Analysis, request, title: str | None):
     values = _Values(a)
     scene = _Scene(a, values)
     legend: list = []
@@ -732,24 +760,9 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     """
     target, suffix = check_output_path(path, SAVE_FORMATS, DrawError, "picture")
     fig = draw_system(analysis_or_system, at=at, motion=motion, title=title)
-    try:
-        handle, tmp = tempfile.mkstemp(suffix=suffix, dir=target.parent, prefix=".draw-")
-    except OSError as exc:
-        raise DrawError(f"{target}: cannot write: {exc.strerror}") from None
-    os.close(handle)
-    try:
+
+    def save(tmp: str) -> None:
         fig.savefig(tmp, dpi=dpi, format=suffix[1:])
-        os.chmod(tmp, 0o666 & ~_umask())      # as a plain open() would create it
-        os.replace(tmp, target)
-    except OSError as exc:
-        raise DrawError(f"{target}: cannot write: {exc.strerror}") from None
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+
+    write_files({target: save}, DrawError)
     return target
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask

@@ -24,6 +24,7 @@ from collections.abc import Sequence
 import sympy as sp
 
 from .exact.sympy_bridge import frac_to_sympy
+from .exactnum import exact_expr
 from .mobility import Analysis
 
 # entries larger than this (in operations) are not simplified for words
@@ -104,7 +105,7 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
     >>> object_motions_words(rotations, [("c1", [0, 0, 0]), ("c2", [0, 0, 0])])
     'turn freely about c1 (= c2), in every direction'
     """
-    vectors = [[sp.sympify(e) for e in v] for v in vectors]
+    vectors = [[exact_expr(e, None, "twist") for e in v] for v in vectors]
     if len(vectors) == 3 and not any(_too_big(v) for v in vectors):
         for place, c in _places_with_points(contacts):
             # u = (v, w) fixes the point c when v + w x c = 0
@@ -133,7 +134,7 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     >>> twist_words([0, 0, 0, 0, 0, 1], [("c1", [0, 0, 0]), ("c2", [0, 0, 5])])
     'rotate about the line through c1 and c2'
     """
-    u = [sp.sympify(e) for e in u]
+    u = [exact_expr(e, None, "twist") for e in u]
     if _too_big(u):
         return "a motion too large to describe in words (see the blocks)"
     v, w = u[:3], u[3:]
@@ -153,7 +154,9 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
 def describe_twist(u, analysis: Analysis) -> str:
     """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
     c1 and c2", "translation along x")."""
-    return twist_words(u, _contact_points(analysis))
+    symbols = _symbols(analysis)
+    return twist_words([exact_expr(e, symbols, f"u[{i}]") for i, e in enumerate(u)],
+                       _contact_points(analysis))
 
 
 def joint_motion_words(qdot, names: Sequence[str]) -> str:
@@ -164,7 +167,7 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
     >>> joint_motion_words([1, -1, 0], ["q1", "q2", "q3"])
     'joints q1 and q2 at opposite speeds'
     """
-    q = [sp.sympify(e) for e in qdot]
+    q = [exact_expr(e, None, "joint velocity") for e in qdot]
     moving = [(n, e) for n, e in zip(names, q, strict=True) if not _is_zero(e)]
     if len(moving) == 1:
         return f"joint {moving[0][0]} alone"
@@ -180,7 +183,16 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
 
 def describe_joint_motion(qdot, analysis: Analysis) -> str:
     """Joint velocities in words ("joint q3 alone", "joints q1 and q2 at equal speed")."""
-    return joint_motion_words(qdot, analysis.model.joint_names)
+    symbols = _symbols(analysis)
+    return joint_motion_words([exact_expr(e, symbols, f"qdot[{i}]")
+                               for i, e in enumerate(qdot)], analysis.model.joint_names)
+
+
+def _symbols(analysis: Analysis) -> dict[str, sp.Symbol]:
+    """The names a text argument may use: the analysis's variables and parameters."""
+    symbols = dict(analysis.kinematics.symbols)
+    symbols.update({p.name: p for p in analysis.model.parameters})
+    return symbols
 
 
 def _mobility_sentence(n) -> str:

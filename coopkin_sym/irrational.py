@@ -31,19 +31,20 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
 
-from . import kinematics
+from . import kinematics, limits
 from .configuration import Configuration, ConfigurationError, split_assignments
+from .errors import CoopkinError
 from .exact.quotient import Quotient, nullspace_modulo
 from .exact.substitution import substitute_rows
 from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
-from .exactnum import NumberError, algebraic_half_angle, parse_angle
+from .exactnum import NumberError, algebraic_half_angle, exact_expr, parse_angle
 from .mobility import Numbers, numbers_modulo
 from .model import Model
 
 _ALPHA = sp.Symbol("alpha")
 
 
-class NotIrrational(ValueError):
+class NotIrrational(ValueError, CoopkinError):
     """Every value of the configuration is rational: use the rational analysis."""
 
 
@@ -109,6 +110,13 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     kin = kinematics.build(model, config)
     rows = [kin.ring.clear_row(r) for r in kin.Q]
     names = list(irrational)
+    degree = 1
+    for n in names:
+        degree *= sp.degree(sp.minimal_polynomial(irrational[n], _ALPHA), _ALPHA)
+    if degree > limits.MAX_FIELD_DEGREE:
+        raise ConfigurationError(
+            f"--at: the irrational values ({', '.join(names)}) may generate a number "
+            f"field of degree up to {degree}, over the limit of {limits.MAX_FIELD_DEGREE}")
     minimal, coeffs, reps = primitive_element([irrational[n] for n in names], _ALPHA,
                                               ex=True)
     alpha = sp.radsimp(sum(c * irrational[n] for c, n in zip(coeffs, names, strict=True)))
@@ -171,7 +179,7 @@ def motion_sentences(model: Model, numbers: Numbers, rows, quotient: Quotient, k
         return out
 
     def exact(e) -> sp.Expr:
-        return sp.radsimp(sp.expand(sp.sympify(e).subs(values)))
+        return sp.radsimp(sp.expand(exact_expr(e, None, "value").subs(values)))
 
     def vectors(block, ncols):
         return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]

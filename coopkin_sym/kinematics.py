@@ -31,8 +31,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .configuration import Configuration
+from .exact.deadline import check
 from .exact.ring import Frac, Ring
 from .exact.sympy_bridge import poly_from_sympy
+from .exactnum import exact_expr
 from .model import Model
 
 Vec = list[Frac]
@@ -108,7 +110,8 @@ class _Builder:
 
     # exact numbers of the model, as fractions of the ring
     def num(self, expr) -> Frac:
-        e = sp.sympify(expr).subs(self.param_subs) if self.param_subs else expr
+        e = exact_expr(expr, None, "value")
+        e = e.subs(self.param_subs) if self.param_subs else e
         return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
 
     def vec(self, v: Sequence) -> Vec:
@@ -237,6 +240,7 @@ def _normal_row(normal: Vec, start: int, width: int, zero: Frac) -> list[Frac]:
 
 
 def _dot_col(h: list[Frac], m: Mat, j: int) -> Frac:
+    check("the kinematics (Q)")
     acc = None
     for k, hk in enumerate(h):
         if hk.is_zero() or m[k][j].is_zero():
@@ -259,15 +263,18 @@ def skew(v: Vec) -> Mat:
 
 
 def cross(a: Vec, b: Vec) -> Vec:
+    check("the kinematics (link velocities)")
     return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 def matmul(a: Mat, b: Mat) -> Mat:
+    check("the kinematics (link poses)")
     return [[sum((a[i][k] * b[k][j] for k in range(3)), a[0][0].ring.zero()) for j in range(3)]
             for i in range(3)]
 
 
 def matvec(a: Mat, v: Vec) -> Vec:
+    check("the kinematics (link poses)")
     return [sum((a[i][k] * v[k] for k in range(3)), v[0].ring.zero()) for i in range(3)]
 
 

@@ -50,25 +50,24 @@ from __future__ import annotations
 import itertools
 import random
 import time
-from dataclasses import dataclass
-from fractions import Fraction
+from dataclasses import dataclass, field
 
 import flint
 import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError, TimeLimitReached
+from .exact import deadline
 from .exact import elimination as el
+from .exact.factoring import factor
 from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
-from .exactnum import angle_text
 from .locus_algebra import (
-    NICE,
     has_real_point,
     linear_equation,
     linearly_disjoint,
-    name_of,
     normalize,
     poly_text,
     rational_point,
@@ -76,7 +75,7 @@ from .locus_algebra import (
     substitute_values,
     vars_of,
 )
-from .locus_types import Component, Locus
+from .locus_types import Component, Locus, cut_short
 from .locus_witness import (
     algebraic_condition,
     algebraic_witness_on,
@@ -89,11 +88,11 @@ from .locus_witness import (
     to_at,
     witness_linear,
 )
-from .mobility import Numbers, analyze, decompose, numbers_modulo
+from .mobility import Numbers, decompose, numbers_modulo
 from .model import Model
 
 
-class LocusError(ValueError):
+class LocusError(ValueError, CoopkinError):
     """A locus that cannot be computed for this input."""
 
 
@@ -113,13 +112,18 @@ class _Context:
     rng: random.Random
     rows0: list = None  # the rows of Q with every free variable, for direct checks
     kin: object = None  # the kinematics with every free variable
+    readings: dict = None  # equation text -> the equation in angles (shared by charts)
+    chains: dict = None  # id(component) -> (context, its linear parametrization)
+    hidden: int = 0  # how deep inside candidate sets with the enclosing numbers
+    pi: frozenset = frozenset()  # the joints at q = pi in this chart
+    deferred: list = field(default_factory=list)  # per level: searches run after it
 
     def expired(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
 
 
 def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = None,
-                  progress: bool = False) -> Locus:
+                  progress: bool = False, free=None, pi_size: int | None = None) -> Locus:
     """Every family of configurations where the numbers differ from the generic ones.
 
     Parameters
@@ -137,7 +141,21 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         left out).
     progress
         Show a progress bar on standard error.
+    free
+        The joints to keep free (names); the others not set in ``at`` stay at home
+        (q = 0, d = 0). Default: every joint not set in ``at``.
+    pi_size
+        Sets of joints at q = pi (outside the t chart) are searched inside up to this
+        many joints at once; larger sets get their numbers decided and a note. Default:
+        every set for up to four free revolute joints, two for up to six, one for up
+        to eight, else none (the numbers of every set are always decided).
     """
+    if timeout is not None and not deadline.active("locus"):  # checked inside eliminations
+        with deadline.time_limit(timeout, "locus") as bound:
+            try:
+                return compute_locus(system, at, max_depth, timeout, progress, free, pi_size)
+            except TimeLimitReached as exc:
+                return cut_short(bound, exc)
     started = time.monotonic()
     model: Model = system.model
     fixed = Configuration.parse(model, at)
@@ -151,36 +169,35 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
                      f"prismatic displacements are in units of {free_params[0].name}).")
     free_joints = [j.name for j in model.joints
                    if j.name not in fixed.revolute and j.name not in fixed.prismatic]
+    if free is not None:
+        chosen = Configuration.parse(model, None, free).free
+        free_joints = [j for j in free_joints if j in chosen]
+    revolute, prismatic = dict(fixed.revolute), dict(fixed.prismatic)
+    for j in model.joints:  # joints neither set nor free stay at home
+        if j.name not in free_joints and j.name not in revolute | prismatic:
+            if j.type == "revolute":
+                revolute[j.name] = (sp.Integer(1), sp.Integer(0))
+            else:
+                prismatic[j.name] = sp.Integer(0)
     if not free_joints:
         raise LocusError("every joint has a value: a locus needs at least one free joint")
-    config = Configuration(fixed.revolute, fixed.prismatic, params, frozenset(free_joints))
-    kin = kinematics.build(model, config)
-    ring = kin.ring
-    q_rows = [ring.clear_row(row) for row in kin.Q]
-    kinds: dict[str, tuple[str, str]] = {}
-    for j in model.joints:
-        if j.name in config.free:
-            kinds[f"t_{j.name}" if j.type == "revolute" else j.name] = (j.type, j.name)
-    for p in model.parameters:
-        if p.name not in params:
-            kinds[p.name] = ("parameter", p.name)
-    generic = decompose(q_rows, model, kin.row_contacts, ring.zctx).numbers
-    locus = Locus(system=model.name, variables=list(ring.names), fixed=config.at_text(),
-                  generic=generic.as_dict(), notes=notes)
+    config = Configuration(revolute, prismatic, params, frozenset(free_joints))
+    locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
+                  notes=notes)
+    ctx, q_rows = _context(model, config, locus, None, max_depth, random.Random(1992),
+                           None if timeout is None else started + timeout, {}, {})
+    locus.variables = list(ctx.ring_names)
+    locus.generic = ctx.generic.as_dict()
+    deadline.keep(locus)  # from here on, a time bound returns what was found
     locus.notes.append(
         "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
         "component reported is then decided exactly, so a candidate can only be missed, "
         "never wrongly reported, and a miss has probability below degree/2^20 per step.")
-    ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
-                   generic, None if timeout is None else started + timeout, max_depth,
-                   locus, random.Random(1992), q_rows, kin)
     reporter = _Progress(progress)
     with reporter:
         _explore(ctx, q_rows, [], {}, depth=0, parent=None, reporter=reporter)
-        if not ctx.expired():
-            _pi_chart(ctx, reporter)
-        else:
-            locus.unexplored.append("q = pi (second chart): not checked, time bound reached")
+        _pi_slices(ctx, reporter, pi_size if pi_size is not None else _default_pi_size(ctx))
+        _settle_realness(ctx)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(
             "A witness with irrational coordinates is decided over Q(alpha); its float "
@@ -190,10 +207,35 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     return locus
 
 
+def _context(model: Model, config: Configuration, locus: Locus, generic: Numbers | None,
+             max_depth: int, rng: random.Random, deadline: float | None, readings: dict,
+             chains: dict) -> tuple[_Context, list]:
+    """The search context for ``config`` (its free joints and parameters are the
+    variables) and the cleared rows of Q there. ``generic`` is the system's generic
+    numbers (None: they are the numbers of this configuration)."""
+    kin = kinematics.build(model, config)
+    ring = kin.ring
+    q_rows = [ring.clear_row(row) for row in kin.Q]
+    kinds: dict[str, tuple[str, str]] = {}
+    for j in model.joints:
+        if j.name in config.free:
+            kinds[f"t_{j.name}" if j.type == "revolute" else j.name] = (j.type, j.name)
+    for p in model.parameters:
+        if p.name not in config.parameters:
+            kinds[p.name] = ("parameter", p.name)
+    if generic is None:
+        generic = decompose(q_rows, model, kin.row_contacts, ring.zctx).numbers
+    ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
+                   generic, deadline, max_depth, locus, rng, q_rows, kin, readings, chains)
+    return ctx, q_rows
+
+
 # --- candidate polynomials -------------------------------------------------------------
 def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
     """For each matrix whose rank drop changes a number, random combinations of its
-    maximal minors (a few polynomials whose common zeros are the drop set)."""
+    maximal minors (a few polynomials whose common zeros are the drop set); under
+    ``content:<matrix>`` the polynomials rows were divided by (each one's zero set is a
+    candidate on its own)."""
     model, zctx = ctx.model, ctx.ring.zctx
     owners = [model.contacts[c].arm for c in ctx.row_contacts]
     gt = [row[:6] for row in q_rows]
@@ -220,15 +262,22 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
         mats["A"] = a_rows
     out = {}
     for name, rows in mats.items():
-        polys = _minor_combinations(rows, ctx)
+        contents: list = []
+        polys = _minor_combinations(rows, ctx, contents)
+        if contents:
+            out[f"content:{name}"] = contents
         if polys:
             out[name] = polys
     return out
 
 
-def _reduce_constant_pivots(rows):
+def _reduce_constant_pivots(rows, contents: list):
     """Eliminate with every nonzero constant pivot: the rank falls by the number of
-    pivots and the set where it drops stays the same (a constant never vanishes)."""
+    pivots and the set where it drops stays the same (a constant never vanishes).
+
+    Each row is then divided by the gcd of its entries; where that gcd vanishes the
+    rank may drop, so every such non-constant gcd is appended to ``contents``: its
+    zero set is a candidate to decide like the others."""
     rows = [list(r) for r in rows]
     while rows and rows[0]:
         spot = next(((i, j) for i, r in enumerate(rows) for j, e in enumerate(r)
@@ -240,14 +289,31 @@ def _reduce_constant_pivots(rows):
         p = prow[j]
         rows = [[p * x - r[j] * y for x, y in zip(r, prow, strict=True)]
                 if not r[j].is_zero() else r for r in rows]
-        rows = [el.primitive(r[:j] + r[j + 1:]) for r in rows]
+        rows = [_without_content(r[:j] + r[j + 1:], contents) for r in rows]
         rows = [r for r in rows if not all(e.is_zero() for e in r)]
     return rows
 
 
-def _minor_combinations(rows, ctx: _Context) -> list:
+def _without_content(row, contents: list):
+    """``row`` divided by the gcd of its entries; a non-constant gcd goes to
+    ``contents`` (dividing by it must not hide the rank drop at its zeros)."""
+    g = None
+    for e in row:
+        if not e.is_zero():
+            g = e if g is None else g.gcd(e)
+            if g.is_constant():
+                return row
+    if g is None:
+        return row
+    contents.append(g)
+    return [e / g for e in row]
+
+
+def _minor_combinations(rows, ctx: _Context, contents: list) -> list:
+    """Random combinations of the maximal minors of ``rows`` (their common zeros are the
+    set where the rank drops), after a reduction whose divisors go to ``contents``."""
     rows = [r for r in rows if not all(e.is_zero() for e in r)]
-    rows = _reduce_constant_pivots(rows)
+    rows = _reduce_constant_pivots(rows, contents)
     if not rows or not rows[0]:
         return []
     ncols = len(rows[0])
@@ -343,21 +409,29 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             "explored, time bound reached")
         return
     base = decompose(q_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    ctx.deferred.append([])
     cands = _candidates(ctx, q_rows)
     factors: dict[str, tuple] = {}
     rests: list[list] = []
+    def add_factors(g, matrix: str) -> None:
+        _, fs = factor(g)
+        for f, _e in fs:
+            f = normalize(f)
+            key = str(f)
+            drops = factors.get(key, (f, set()))[1]
+            drops.add(matrix)
+            factors[key] = (f, drops)
+
     for name, polys in cands.items():
+        if name.startswith("content:"):
+            for c in polys:
+                add_factors(c, name.split(":")[1])
+            continue
         g = polys[0]
         for p in polys[1:]:
             g = g.gcd(p)
         if not g.is_constant():
-            _, fs = g.factor()
-            for f, _e in fs:
-                f = normalize(f)
-                key = str(f)
-                drops = factors.get(key, (f, set()))[1]
-                drops.add(name.split(":")[0])
-                factors[key] = (f, drops)
+            add_factors(g, name.split(":")[0])
         rest = [p / g for p in polys] if not g.is_constant() else polys
         if len(rest) > 1 or (rest and not rest[0].is_constant()):
             rests.append(rest)
@@ -371,15 +445,16 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
                                         "time bound reached")
             continue
         if any(not c.gcd(f).is_constant() for c in charts):
-            ctx.locus.unexplored.append(
-                f"inside {'; '.join(equations)}: the points where {poly_text(ctx, f)} = 0 lie "
-                "outside its parametrization; not explored")
+            # the image of f = 0 lies where a parametrization's denominator vanishes:
+            # those points are searched from the enclosing variables (_chart_points)
             continue
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
                        reporter, charts)
     if rests:
         _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts,
                   reporter)
+    for search in ctx.deferred.pop():
+        search()
 
 
 def _drops_text(drops: set[str]) -> list[str]:
@@ -410,17 +485,70 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
                                     "the parametrization of the enclosing component")
         return
     sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
+    _chart_points(ctx, q_rows, f0, f1, equations + [f_text], point_so_far, base, depth,
+                  parent, charts, reporter)
     numbers = decompose(sub_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    sub_point = dict(point_so_far)
+    sub_point[linear] = (f0, f1)
     if numbers == base:
+        _inside_candidate(ctx, sub_rows, equations + [f_text], sub_point, depth, parent,
+                          reporter, sub_charts)
+        return
+    wider = _wider_component(ctx, sub_point, numbers)
+    if wider is not None:  # already found, in a chart with fewer joints at pi
+        _inside_candidate(ctx, sub_rows, equations + [f_text], sub_point, wider.depth + 1,
+                          ctx.locus.components.index(wider), reporter, sub_charts)
         return
     eqs = equations + [f_text]
     witness = witness_linear(ctx, sub_rows, linear, f0, f1, point_so_far, numbers)
-    comp = _component(ctx, eqs, numbers, witness, "hypersurface" if depth == 0 else
-                      "subvariety", drops, depth, parent,
-                      "exact over the component's function field")
-    sub_point = dict(point_so_far)
-    sub_point[linear] = (f0, f1)
+    left = [n for n in ctx.ring_names if n not in sub_point]
+    kind = ("isolated" if not left else "hypersurface" if len(eqs) == 1 else "subvariety")
+    comp = _component(ctx, eqs, numbers, witness, kind, drops, depth, parent,
+                      "exact over the component's function field", chain=sub_point)
     _go_deeper(ctx, comp, sub_rows, eqs, sub_point, depth, reporter, sub_charts)
+
+
+def _chart_points(ctx, q_rows, f0, f1, equations, point_so_far, base, depth, parent,
+                  charts, reporter) -> None:
+    """The part of ``f1 x + f0 = 0`` that ``x = -f0/f1`` does not reach: ``f0 = f1 = 0``
+    (codimension 2 when ``f1`` is not constant), searched as a set of its own."""
+    if f1.is_constant():
+        return
+    _isolated(ctx, q_rows, [[f0, f1]], equations, point_so_far, base, depth, parent,
+              charts, reporter)
+
+
+def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, charts,
+                      why_not: str | None = None) -> None:
+    """A candidate set whose numbers are the enclosing ones. Some candidates come from
+    conditions that are sufficient, not necessary (a left nullspace basis losing rank, a
+    row divisor): the enclosing search does not see drops deeper inside them, so they
+    are searched too, without being reported."""
+    if ctx.expired():
+        return
+    if why_not is None and rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
+        why_not = f"more than {_HIDDEN_DEPTH} such set{'s' if _HIDDEN_DEPTH > 1 else ''} deep"
+    if why_not is None and depth > ctx.max_depth:
+        why_not = f"max depth {ctx.max_depth}"
+    if why_not is not None or rows is None:
+        note = (f"inside {', '.join(equations)} (enclosing numbers there): deeper drops not "
+                f"searched ({why_not or 'no rational parametrization'})")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
+    def search() -> None:
+        ctx.hidden += 1
+        try:
+            _explore(ctx, rows, equations, sub_point, depth, parent,
+                     reporter or _Progress(False), charts)
+        finally:
+            ctx.hidden -= 1
+
+    ctx.deferred[-1].append(search)  # after the components of the enclosing level
+
+
+# how many candidate sets with the enclosing numbers are searched inside one another
+_HIDDEN_DEPTH = 1
 
 
 def _substitute_linear(ctx: _Context, q_rows, f, name: str):
@@ -445,6 +573,8 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             key=lambda i: (f.degrees()[i], i))
     numbers = numbers_modulo(q_rows, ctx.model, ctx.row_contacts, Quotient(f, k))
     if numbers == base:
+        if len([n for n in ctx.ring_names if n not in point_so_far]) > 1:
+            _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
         return
     comp = _component(ctx, equations + [f_text], numbers, None, "hypersurface" if depth == 0
                       else "subvariety", drops, depth, parent,
@@ -607,7 +737,7 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
             res = r if res is None else res.gcd(r)
         if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
             continue
-        _, factors = res.factor()
+        _, factors = factor(res)
         for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
             h = normalize(h)
             if _no_real_points(ctx, h):
@@ -661,7 +791,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     rows_x = substitute_rows(q_rows, kx, h0, h1)
     inner = dict(point_so_far)
     inner[x] = (h0, h1)
-    _, factors = common.factor()
+    _, factors = factor(common)
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
         if k.degrees()[ky] == 0:
             continue
@@ -684,6 +814,16 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             rows = substitute_rows(rows_x, ky, k0, k1)
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
             decided = "exact over the family's function field (two substitutions)"
+            if numbers == base:
+                sub_point = dict(inner)
+                sub_point[y] = (k0, k1)
+                sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
+                                   not c.is_constant()) + ((k1,) if not k1.is_constant()
+                                                           else ())
+                _inside_candidate(ctx, rows, equations + [poly_text(ctx, h),
+                                                          poly_text(ctx, k)],
+                                  sub_point, depth, parent, reporter, sub_charts)
+                continue
         else:
             quotient = Quotient(k, ky)
             if _off_charts([*charts, h1], at_x, quotient):
@@ -692,10 +832,16 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             decided = ("exact over the family's function field (a substitution, then "
                        "ranks modulo its irreducible polynomial)")
         if numbers == base:
+            _inside_candidate(ctx, None, equations + [poly_text(ctx, h), poly_text(ctx, k)],
+                              None, depth, parent, None, ())
             continue
         eqs = equations + [poly_text(ctx, h), poly_text(ctx, k)]
+        chain = None
+        if k.degrees()[ky] == 1:
+            chain = dict(inner)
+            chain[y] = (k0, k1)
         comp = _component(ctx, eqs, numbers, None, "subvariety", {"Q"}, depth, parent,
-                          decided)
+                          decided, chain=chain)
         if comp is None:
             continue
         family_witness(ctx, comp, k, y, inner, numbers)
@@ -729,9 +875,11 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         return
     rows = substitute_rows(q_rows, ky, c0, c1)
     numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
-    if numbers == base:
-        return
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
+    if numbers == base:
+        _inside_candidate(ctx, None, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)],
+                          None, depth, parent, None, ())
+        return
     comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)], numbers, None,
                       "subvariety", {"Q"}, depth, parent,
                       "exact over the family's function field (ranks modulo its "
@@ -765,8 +913,6 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     else:
         numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
-    if numbers == base:
-        return None
     eqs = list(equations)
     if algebraic is not None:
         eqs += [poly_text(ctx, e) for e in algebraic[2]]
@@ -774,10 +920,25 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         eqs += [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
     dims = set(values) | ({x} if x is not None else set())
     kind = "isolated" if len(dims) == len(free) else "subvariety"
+    if numbers == base:
+        if kind == "subvariety":
+            sub_point = dict(point_so_far)
+            zctx = ctx.ring.zctx
+            if algebraic is None:
+                for n, v in values.items():
+                    sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
+            _inside_candidate(ctx, rows if algebraic is None else None, eqs, sub_point,
+                              depth, parent, reporter, charts)
+        return None
     if algebraic is None:
+        chain = dict(point_so_far)
+        for n, v in values.items():
+            chain[n] = (ctx.ring.zctx.constant(-v.numerator),
+                        ctx.ring.zctx.constant(v.denominator))
         comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
                           "exact at the point" if kind == "isolated" else
-                          "exact over the function field of the free variables")
+                          "exact over the function field of the free variables",
+                          chain=chain)
         if comp is None:
             return None
         for offset in range(6):
@@ -812,9 +973,15 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
 
 # --- components -------------------------------------------------------------------------
 def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, parent,
-               decided, condition: str | None = None, real: bool = True
-               ) -> Component | None:
+               decided, condition: str | None = None, real: bool = True,
+               chain: dict | None = None) -> Component | None:
+    """Record a component (None when the same set is already recorded). ``chain`` is
+    its parametrization by successive linear substitutions (variable -> ``(f0, f1)``,
+    the variable equals ``-f0/f1``), used to recognize the same set found twice."""
     if any(sorted(c.equations) == sorted(equations) for c in ctx.locus.components):
+        return None
+    if chain is not None and any(_within(ctx, chain, c, numbers)
+                                 for c in ctx.locus.components):
         return None
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
@@ -827,78 +994,175 @@ def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, pa
     if witness is not None:
         attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
+    if chain is not None:
+        ctx.chains[id(comp)] = (ctx, dict(chain))
     return comp
 
 
-def _condition(ctx, equations: list[str]) -> str:
-    parts = []
-    for eq in equations:
-        parts.append(_read_equation(ctx, eq))
-    return ", ".join(parts)
+def _on_chain(p, ctx, chain: dict):
+    """``p`` on the set parametrized by ``chain`` (denominators cleared): zero exactly
+    when ``p`` vanishes on that set."""
+    for name, (f0, f1) in chain.items():
+        k = ctx.ring_names.index(name)
+        if p.degrees()[k]:
+            p = substitute(p, k, f0, f1, p.degrees()[k])
+    return p
 
 
-def _read_equation(ctx, eq: str) -> str:
-    syms = {str(s): s for s in ctx.symbols.values()}
-    expr = sp.sympify(eq, locals=syms)
-    free = sorted(expr.free_symbols, key=str)
-    joint = {s: ctx.kinds[name_of(ctx, str(s))] for s in free}
-    rev = [s for s in free if joint[s][0] == "revolute"]
-    if len(free) == 1 and rev:
-        (s,) = rev
-        poly = sp.Poly(expr, s)
-        if poly.degree() == 1:
-            t = -poly.coeff_monomial(1) / poly.coeff_monomial(s)
-            return f"{joint[s][1]} = {angle_text((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))}"
-    if len(free) == 2 and len(rev) == 2:
-        a, b = rev
-        na, nb = joint[a][1], joint[b][1]
-        for candidate, text in ((a - b, f"{na} = {nb}"), (a + b, f"{na} = -{nb}"),
-                                (a * b + 1, f"{na} = {nb} + pi (mod 2*pi)"),
-                                (a * b - 1, f"{na} + {nb} = pi (mod 2*pi)")):
-            if sp.expand(expr - candidate) == 0 or sp.expand(expr + candidate) == 0:
-                return text
-    if len(free) == 1 and joint[free[0]][0] == "prismatic":
-        sol = sp.solve(expr, free[0])
-        if len(sol) == 1 and sol[0].is_Rational:
-            return f"{joint[free[0]][1]} = {sol[0]}"
-    return f"{eq} = 0"
+def _contained(ctx, inner: dict, outer: dict) -> bool:
+    """Whether the set of chain ``inner`` lies in the set of chain ``outer`` (both in
+    the variables of ``ctx``): every relation ``f1 x + f0`` of ``outer`` vanishes on
+    ``inner``, and no denominator ``f1`` of ``outer`` does."""
+    gens = ctx.ring.zctx.gens()
+    for name, (f0, f1) in outer.items():
+        relation = f1 * gens[ctx.ring_names.index(name)] + f0
+        if not _on_chain(relation, ctx, inner).is_zero():
+            return False
+        if not f1.is_constant() and _on_chain(f1, ctx, inner).is_zero():
+            return False
+    return True
 
 
-def _pi_chart(ctx: _Context, reporter) -> None:
-    """Joints at q = pi, where t = tan(q/2) is infinite: decided in the second chart."""
-    rev = [name for kind, name in ctx.kinds.values() if kind == "revolute"]
-    base = ctx.generic
-    for name in rev:
-        if ctx.expired():
-            ctx.locus.unexplored.append("q = pi for the remaining joints: time bound")
-            return
-        reporter.step(f"{name} = pi")
-        revolute = dict(ctx.config.revolute)
-        revolute[name] = (sp.Integer(-1), sp.Integer(0))
-        free = ctx.config.free - {name}
-        config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters, free)
-        kin = kinematics.build(ctx.model, config)
-        rows = [kin.ring.clear_row(r) for r in kin.Q]
-        numbers = decompose(rows, ctx.model, kin.row_contacts, kin.ring.zctx).numbers
-        if numbers == base:
+def _wider_component(ctx, chain: dict, numbers: Numbers) -> Component | None:
+    """A component with the same numbers, recorded in a chart with fewer joints at pi,
+    that contains the set of ``chain`` (in a chart with joints at pi) because its
+    equations do not involve the joints at pi here (so they hold there as they are);
+    None when there is none."""
+    if not ctx.pi:
+        return None
+    here = numbers.as_dict()
+    for comp in ctx.locus.components:
+        known = ctx.chains.get(id(comp))
+        if known is None or comp.numbers != here:
             continue
-        witness = None
-        for values in itertools.islice(itertools.product(
-                NICE, repeat=len(ctx.ring_names) - 1), 100):
-            names = [n for n in ctx.ring_names if n != f"t_{name}"]
-            point = dict(zip(names, values, strict=True))
-            at = to_at(ctx, {**point, f"t_{name}": Fraction(0)})
-            if at is None:
-                continue
-            at[name] = "pi"
-            if analyze(ctx.model, Configuration.parse(ctx.model, at)).numbers == numbers:
-                witness = at
-                break
-        _component(ctx, [f"s_{name}"], numbers, witness, "chart", {"Q"}, 0, None,
-                   "exact over the function field of the other variables",
-                   condition=f"{name} = pi")
-        ctx.locus.notes.append(f"s_{name} = cot({name}/2): the component s_{name} = 0 is "
-                               f"{name} = pi, outside the chart of t_{name}.")
+        other, other_chain = known
+        if other is ctx or not other.pi < ctx.pi:
+            continue
+        relations = []
+        for name, (f0, f1) in other_chain.items():
+            x = other.ring.zctx.gens()[other.ring_names.index(name)]
+            relations.append((f1 * x + f0, f1))
+        moved = [(_transfer(r, other, ctx), _transfer(d, other, ctx)) for r, d in relations]
+        if any(r is None or d is None for r, d in moved):
+            continue
+        if all(_on_chain(r, ctx, chain).is_zero() and
+               (d.is_constant() or not _on_chain(d, ctx, chain).is_zero())
+               for r, d in moved):
+            return comp
+    return None
+
+
+def _transfer(p, source, target):
+    """``p`` from the ring of context ``source`` to that of ``target`` by variable
+    names (None when it uses a variable ``target`` does not have)."""
+    index = {n: i for i, n in enumerate(target.ring_names)}
+    terms = {}
+    for mon, c in p.to_dict().items():
+        new = [0] * len(target.ring_names)
+        for name, e in zip(source.ring_names, mon, strict=True):
+            if e:
+                if name not in index:
+                    return None
+                new[index[name]] = int(e)
+        terms[tuple(new)] = int(c)
+    return target.ring.zctx.from_dict(terms)
+
+
+def _within(ctx, chain: dict, other: Component, numbers: Numbers) -> bool:
+    """Whether the set of ``chain`` lies in component ``other`` of the same chart with
+    the same numbers (then it adds nothing: drops deeper inside it are deeper inside
+    ``other`` and searched there)."""
+    known = ctx.chains.get(id(other))
+    if known is None or known[0] is not ctx or other.numbers != numbers.as_dict():
+        return False
+    return _contained(ctx, chain, known[1])
+
+
+def _condition(ctx, equations: list[str]) -> str:
+    """The equations in angles where they read simply (see
+    :func:`~coopkin_sym.locus_algebra.read_poly`)."""
+    return ", ".join(ctx.readings.get(eq, f"{eq} = 0") for eq in equations)
+
+
+def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
+    """Every subset of the free revolute joints at q = pi, where t = tan(q/2) is
+    infinite: each slice is a system in the other variables, searched like the t chart
+    (its generic numbers, and every drop inside it, at every depth). A component there
+    has the equations ``s_<joint>`` (``s = cot(q/2) = 0``) for the joints at pi.
+    ``pi_size``: the largest set of joints at pi searched inside (None: all); larger
+    sets get their own numbers decided and a note."""
+    rev = [name for kind, name in ctx.kinds.values() if kind == "revolute"]
+    subsets = [s for size in range(1, len(rev) + 1)
+               for s in itertools.combinations(rev, size)]
+    reporter.add(len(subsets))
+    for subset in subsets:
+        where = ", ".join(f"{n} = pi" for n in subset)
+        if ctx.expired():
+            ctx.locus.unexplored.append(f"{where}: not searched, time bound reached")
+            continue
+        reporter.step(where)
+        revolute = dict(ctx.config.revolute)
+        for n in subset:
+            revolute[n] = (sp.Integer(-1), sp.Integer(0))
+        config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters,
+                               ctx.config.free - set(subset))
+        sub, rows = _context(ctx.model, config, ctx.locus, ctx.generic, ctx.max_depth,
+                             ctx.rng, ctx.deadline, ctx.readings, ctx.chains)
+        sub.pi = frozenset(subset)
+        equations = [f"s_{n}" for n in subset]
+        for n in subset:
+            ctx.readings[f"s_{n}"] = f"{n} = pi"
+        numbers = decompose(rows, ctx.model, sub.row_contacts, sub.ring.zctx).numbers
+        parent, depth = None, 0
+        wider = _wider_component(sub, {}, numbers)
+        if wider is not None:  # the slice lies in a component of a wider chart
+            parent, depth = ctx.locus.components.index(wider), 1
+        elif numbers != ctx.generic:
+            kind = "chart" if sub.ring_names else "isolated"
+            comp = _component(sub, equations, numbers, None, kind, {"Q"}, 0, None,
+                              "exact over the function field of the other variables"
+                              if sub.ring_names else "exact at the point",
+                              condition=where)
+            for offset in range(6):
+                values = complete_point(sub, {}, {}, offset)
+                if values is not None and numbers_at_values(sub, values) == numbers:
+                    attach_witness(sub, comp, to_at(sub, values), numbers)
+                    break
+            ctx.chains[id(comp)] = (sub, {})
+            parent, depth = ctx.locus.components.index(comp), 1
+        if not sub.ring_names:
+            continue
+        if depth > ctx.max_depth:
+            ctx.locus.unexplored.append(f"inside {where}: deeper drops not explored "
+                                        f"(max depth {ctx.max_depth})")
+            continue
+        if pi_size is not None and len(subset) > pi_size:
+            ctx.locus.unexplored.append(
+                f"inside {where}: {'deeper ' if parent is not None else ''}drops not "
+                f"searched (sets of joints at pi are searched inside up to {pi_size} at "
+                "once: pi_size)")
+            continue
+        _explore(sub, rows, equations, {}, depth, parent, reporter)
+    if rev:
+        ctx.locus.notes.append(
+            "s_q = cot(q/2): an equation s_q (= 0) is q = pi, outside the chart of t_q; "
+            "every set of joints at pi is searched like the t chart.")
+
+
+def _default_pi_size(ctx: _Context) -> int | None:
+    """How many joints at pi at once are searched inside by default: every set for up
+    to four free revolute joints, then fewer as the number of sets grows (2^r - 1)."""
+    rev = sum(1 for kind, _ in ctx.kinds.values() if kind == "revolute")
+    return None if rev <= 4 else 2 if rev <= 6 else 1 if rev <= 8 else 0
+
+
+def _settle_realness(ctx: _Context) -> None:
+    """A component is called real only with a real witness (rational, or algebraic in
+    an isolating interval); one without is marked as undecided, never as real (those
+    proved to have no real points were dropped when found)."""
+    for c in ctx.locus.components:
+        c.real = c.witness is not None or c.algebraic_witness is not None
+        c.real_points = "witness" if c.real else "undecided"
 
 
 class _Progress:

@@ -23,9 +23,11 @@ import flint
 import sympy as sp
 
 from .algebraic import RealRoot
+from .exact.factoring import factor
 from .exact.numberfield import NumberField
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
+from .exactnum import angle_text
 
 # values tried, in order, for the free coordinates of a witness
 NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
@@ -44,10 +46,51 @@ def vars_of(ctx, f) -> list[str]:
 
 
 def poly_text(ctx, f) -> str:
-    return sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+    """``f`` as text; its reading in angles is kept in ``ctx.readings`` (when the
+    context has one) so that conditions never parse text back."""
+    text = sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+    readings = getattr(ctx, "readings", None)
+    if readings is not None and text not in readings:
+        readings[text] = read_poly(ctx, f, text)
+    return text
+
+
+def read_poly(ctx, f, text: str) -> str:
+    """The condition ``f = 0`` in angles where it reads simply (``q2 = pi/2``,
+    ``q1 = -q2``, ``q1 + q2 = pi (mod 2*pi)``, ``d4 = 1/2``), else ``"<text> = 0"``.
+
+    Works on the polynomial itself (no text is parsed)."""
+    names = vars_of(ctx, f)
+    kinds = [ctx.kinds[n] for n in names]
+    zctx = ctx.ring.zctx
+    if len(names) == 1:
+        k = ctx.ring_names.index(names[0])
+        if f.degrees()[k] == 1:
+            terms = f.to_dict()
+            one = tuple(1 if i == k else 0 for i in range(len(ctx.ring_names)))
+            zero = tuple(0 for _ in ctx.ring_names)
+            value = sp.Rational(-int(terms.get(zero, 0)), int(terms[one]))
+            kind, joint = kinds[0]
+            if kind == "revolute":
+                return f"{joint} = " + angle_text((1 - value**2) / (1 + value**2),
+                                                  2 * value / (1 + value**2))
+            if kind == "prismatic":
+                return f"{joint} = {value}"
+    if len(names) == 2 and all(k[0] == "revolute" for k in kinds):
+        a, b = (zctx.gens()[ctx.ring_names.index(n)] for n in names)
+        na, nb = kinds[0][1], kinds[1][1]
+        for candidate, reading in ((a - b, f"{na} = {nb}"), (a + b, f"{na} = -{nb}"),
+                                   (a * b + 1, f"{na} = {nb} + pi (mod 2*pi)"),
+                                   (a * b - 1, f"{na} + {nb} = pi (mod 2*pi)")):
+            if f == candidate or f == -candidate:
+                return reading
+    return f"{text} = 0"
 
 
 def has_real_point(ctx, f, names) -> bool | None:
+    """True when a real point of ``f = 0`` is found (a real root of a restriction to
+    rational values of the other variables), False when ``f`` is proved to have no real
+    zero (:func:`no_real_zeros`), None when undecided."""
     expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
     syms = [ctx.symbols[n] for n in names]
     for _ in range(12):
@@ -58,7 +101,61 @@ def has_real_point(ctx, f, names) -> bool | None:
             return True
         if len(syms) == 1:
             return False
-    return None
+    return False if no_real_zeros(f) else None
+
+
+def no_real_zeros(f, depth: int = 0) -> bool:
+    """Whether ``f`` (an integer polynomial) is proved to vanish nowhere on R^n.
+
+    For the last variable ``y`` of ``f``: when neither the leading coefficient nor the
+    discriminant in ``y`` has a real zero (recursively), the number of real roots of
+    ``f(x, y)`` in ``y`` is the same for every real ``x`` (R^(n-1) is connected), so it
+    is counted at one rational point. False means "not proved", not "has zeros".
+
+    Example
+    -------
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+    >>> x, y = ctx.gens()
+    >>> no_real_zeros(x**2 + y**2 + 1), no_real_zeros(x**2 + y**2 - 1)
+    (True, False)
+    """
+    if f.is_zero():
+        return False
+    if f.is_constant():
+        return True
+    if depth > 4:
+        return False
+    degrees = f.degrees()
+    used = [k for k, d in enumerate(degrees) if d > 0]
+    k = max(used, key=lambda i: (degrees[i] > 0, i))
+    zctx = f.context()
+    if len(used) == 1:
+        return _real_root_count(f, k) == 0
+    by_power: dict[int, dict] = {}
+    for mon, c in f.to_dict().items():
+        rest = tuple(0 if i == k else int(e) for i, e in enumerate(mon))
+        by_power.setdefault(int(mon[k]), {})[rest] = int(c)
+    lead = zctx.from_dict(by_power[degrees[k]])
+    if not no_real_zeros(lead, depth + 1):
+        return False
+    if degrees[k] % 2 == 1:
+        return False  # odd degree in y: a real root for every x
+    name = zctx.names()[k]
+    disc = f.discriminant(name)
+    if not disc.is_zero() and not no_real_zeros(disc, depth + 1):
+        return False
+    if disc.is_zero():
+        return False
+    uni = f.subs({zctx.names()[i]: 0 for i in used if i != k})
+    return _real_root_count(uni, k) == 0
+
+
+def _real_root_count(f, k: int) -> int:
+    """The number of distinct real roots of ``f``, a polynomial in variable ``k`` only."""
+    coeffs = [0] * (f.degrees()[k] + 1)
+    for mon, c in f.to_dict().items():
+        coeffs[int(mon[k])] = int(c)
+    return sp.Poly(coeffs[::-1], sp.Symbol("y")).count_roots()
 
 
 def rational_point(ctx, f, names) -> dict[str, Fraction] | None:
@@ -199,7 +296,7 @@ def solve_sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple
             elim = r if elim is None else elim.gcd(r)
         if elim is None or elim.is_zero() or elim.is_constant():
             continue
-        _, factors = elim.factor()
+        _, factors = factor(elim)
         out, separated = [], True
         for m, _e in factors:
             if m.degrees()[kx] or m.is_constant():
@@ -273,7 +370,7 @@ def roots(ctx, g, name: str):
     if g.is_zero() or g.is_constant():
         return [], []
     k = ctx.ring_names.index(name)
-    _, factors = g.factor()
+    _, factors = factor(g)
     roots, curved = [], []
     for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
         if f.degrees()[k] == 1 and sum(f.degrees()) == 1:
@@ -311,7 +408,7 @@ def linearly_disjoint(ctx, g1, x1: str, g2, x2: str) -> bool:
         res = first.resultant(second, "y")
         if res.is_zero():
             continue
-        _, factors = res.factor()
+        _, factors = factor(res)
         if len(factors) == 1 and factors[0][1] == 1 and res.total_degree() == d1 * d2:
             return True
     return False

@@ -116,9 +116,10 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError
 from .exact import elimination as el
 from .exact.groebner import EXTRA_HINT, Verdict, covers, msolve_path, singular_path
-from .exactnum import NumberError, parse_polynomial
+from .exactnum import NumberError, brief, parse_expression
 from .locus_types import Locus
 from .model import Model
 
@@ -131,7 +132,7 @@ MAX_MINOR_TERMS = 2_000_000
 NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
 
-class CertifyError(ValueError):
+class CertifyError(ValueError, CoopkinError):
     """A locus that does not belong to the system (other variables or values)."""
 
 
@@ -427,17 +428,30 @@ def _numbers_text(numbers) -> str:
 
 # --- reading the locus -------------------------------------------------------------------
 def _integer_polynomial(text: str, names: tuple[str, ...], where: str) -> dict:
-    parsed = parse_polynomial(text, names, where)
-    den = 1
-    for c in parsed.values():
-        den = den * c.denominator // _gcd(den, c.denominator)
-    return {k: int(c * den) for k, c in parsed.items()}
-
-
-def _gcd(a: int, b: int) -> int:
-    while b:
-        a, b = b, a % b
-    return abs(a)
+    """An equation read by the package's parser, as a primitive integer exponent map
+    over ``names`` (a polynomial with rational coefficients is scaled)."""
+    expr = parse_expression(text, names, where)
+    num, den = sp.fraction(sp.together(expr))
+    symbols = [sp.Symbol(n) for n in names]
+    if den.free_symbols or not den.is_Rational:
+        raise NumberError(where, f"{brief(text)} is not a polynomial (it divides by "
+                                 f"{brief(str(den))})")
+    try:
+        poly = sp.Poly(num, *symbols, domain=sp.QQ) if symbols else None
+    except (sp.PolynomialError, sp.CoercionFailed):
+        poly = None
+    if poly is None and not symbols and num.is_Rational:
+        terms = [((), sp.Rational(num))]
+    elif poly is None:
+        raise NumberError(where, f"{brief(text)} is not a polynomial with rational "
+                                 "coefficients")
+    else:
+        terms = poly.terms()
+    scale = sp.Integer(1)
+    for _, c in terms:
+        scale = sp.ilcm(scale, sp.Rational(c).q)
+    return {tuple(int(e) for e in monom): int(sp.Rational(c) * scale)
+            for monom, c in terms if c}
 
 
 def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]

@@ -44,7 +44,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np  # float-ok: plotting grids only
 import sympy as sp
 
-from .exactnum import NumberError, parse_angle, parse_number
+from .errors import CoopkinError
+from .exactnum import NumberError, parse_angle, parse_expression, parse_number
 from .locus_types import Component, Locus
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -64,7 +65,7 @@ COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:b
 INFINITY = "oo"  # a revolute joint at q = pi: t = tan(q/2) is infinite
 
 
-class PlotError(ValueError):
+class PlotError(ValueError, CoopkinError):
     """A pair of joints that cannot be plotted (unknown, the same twice, or not
     among the locus's variables), or matplotlib missing."""
 
@@ -130,8 +131,10 @@ def _kinds(locus: Locus, system: Any) -> _Kinds:
 
 @functools.lru_cache(maxsize=4096)
 def _parse(text: str, names: tuple[str, ...]) -> sp.Expr:
-    local = {n: sp.Symbol(n) for n in names}
-    return sp.parse_expr(text, local_dict=local)
+    try:
+        return parse_expression(text, names, "equation")
+    except NumberError as exc:
+        raise PlotError(str(exc)) from None
 
 
 def _names(locus: Locus, kinds: _Kinds) -> tuple[str, ...]:

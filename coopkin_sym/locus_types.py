@@ -13,12 +13,15 @@ Example
 
 from __future__ import annotations
 
+import time
 from dataclasses import asdict, dataclass, field
+
+from .errors import TimeLimitReached
 
 
 @dataclass
 class FloatCheck:
-    """What a float rank test (numpy's ``matrix_rank``, default tolerance) says near a
+    """What a float rank test (numpy's matrix rank, default tolerance) says near a
     witness: ``distance`` is how far (in radians, on one joint) the point is from the
     witness, ``scale`` the value given to the length parameters; ``exact`` the exact
     numbers there, ``float`` the float ones."""
@@ -49,7 +52,8 @@ class Component:
     witness
         An exact point on it, in ``--at`` syntax (``{"q1": "pi/2", ...}``), or None.
     real
-        Whether the component has real points.
+        Whether the component has real points: True only with a real witness
+        (rational, or algebraic in a certified isolating interval).
     kind
         ``"hypersurface"``, ``"subvariety"`` (codimension 2 or more), ``"isolated"``
         (a point), or ``"chart"`` (a joint at q = pi, outside the t chart).
@@ -72,7 +76,11 @@ class Component:
         0 for a component of the generic locus, k for one found inside a depth-(k-1)
         component.
     parent
-        Index (in :attr:`Locus.components`) of the component this one lies in.
+        Index (in :attr:`Locus.components`) of the component this one lies in; in the
+        JSON and the reports, its number there (index + 1: ``#1`` is the first).
+    real_points
+        ``"witness"`` (real, a witness is given) or ``"undecided"`` (no real witness
+        found and no proof that there is none: never reported as real).
     algebraic_witness
         When no rational witness exists: a real point with algebraic coordinates,
         ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
@@ -95,9 +103,13 @@ class Component:
     depth: int = 0
     parent: int | None = None
     algebraic_witness: dict | None = None
+    real_points: str = ""
 
     def to_json(self) -> dict:
+        """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1)."""
         out = asdict(self)
+        if self.parent is not None:
+            out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
         return out
@@ -171,3 +183,23 @@ class Locus:
             "float_summary": self.float_summary(),
             "seconds": self.seconds,
         }
+
+
+def cut_short(bound, exc: TimeLimitReached) -> Locus:
+    """The locus as far as it got when the wall-clock bound ran out inside a long
+    computation (``bound`` is the :class:`~coopkin_sym.exact.deadline.Bound` the
+    locus was registered with): what was cut is said in :attr:`Locus.unexplored`.
+
+    Raises ``exc`` again, saying so, when the bound ran out before the generic
+    numbers were known (there is no locus to report yet).
+    """
+    locus = bound.kept if bound is not None else None
+    if not isinstance(locus, Locus):
+        raise TimeLimitReached(exc.seconds, (exc.where + ", " if exc.where else "")
+                               + "before the generic numbers were known: no locus "
+                               "to report") from None
+    locus.unexplored.append(
+        f"{exc} (wall-clock bound of the whole run): the rest of the search was not "
+        "explored (remaining candidates, deeper components, the q = pi chart)")
+    locus.seconds = round(time.monotonic() - bound.started, 3)
+    return locus

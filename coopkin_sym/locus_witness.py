@@ -17,6 +17,7 @@ True
 from __future__ import annotations
 
 import itertools
+import re
 from fractions import Fraction
 from math import atan, pi, tan
 
@@ -29,7 +30,7 @@ from .exact.numberfield import NumberField
 from .exact.quotient import Quotient, Tower
 from .exact.substitution import substitute
 from .exact.sympy_bridge import poly_to_sympy
-from .exactnum import angle_text
+from .exactnum import angle_text, parse_expression
 from .irrational import motion_sentences
 from .locus_algebra import NICE, roots, substitute_values, univariate, vars_of
 from .locus_types import Component, FloatCheck
@@ -45,7 +46,7 @@ def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: 
     values = dict(point)
     for n in ctx.ring_names:
         if n not in values and n not in point_so_far:
-            values[n] = NICE[(len(values) + offset) % len(NICE)]
+            values[n] = nice_value(ctx, n, len(values) + offset)
     for n, (f0, f1) in reversed(list(point_so_far.items())):
         args = [values.get(k, Fraction(0)) for k in ctx.ring_names]
         den = eval_at(f1, args)
@@ -53,6 +54,15 @@ def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: 
             return None
         values[n] = -eval_at(f0, args) / den
     return values
+
+
+def nice_value(ctx, name: str, k: int) -> Fraction:
+    """The ``k``-th nice value for variable ``name``: parameters are lengths, so they
+    get positive ones."""
+    v = NICE[k % len(NICE)]
+    if ctx.kinds.get(name, ("",))[0] == "parameter":
+        return abs(v) or Fraction(1)
+    return v
 
 
 def eval_at(p, args: list[Fraction]) -> Fraction:
@@ -101,7 +111,7 @@ def to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
             out[j.name] = sp.sstr(config.prismatic[j.name])
     for n, (kind, name) in ctx.kinds.items():
         v = values.get(n)
-        if v is None:
+        if v is None or (kind == "parameter" and v <= 0):
             return None
         if kind == "revolute":
             t = sp.Rational(v.numerator, v.denominator)
@@ -123,7 +133,7 @@ def complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, valu
             for n, v in values.items()}
     for n in ctx.ring_names:
         if n != x and n not in full and n not in point_so_far:
-            v = NICE[(len(full) + offset) % len(NICE)]
+            v = nice_value(ctx, n, len(full) + offset)
             full[n] = field.element(flint.fmpq(v.numerator, v.denominator))
     for n, (f0, f1) in reversed(list(point_so_far.items())):
         den = eval_in(ctx, f1, full, x, field)
@@ -201,7 +211,7 @@ def readable(name: str, exact: str, kind: str) -> str:
     for an angle); the exact value stays in the witness."""
     if len(exact) <= 32 and "CRootOf" not in exact:
         return f"{name} = {exact}"
-    value = float(sp.sympify(exact).evalf(30))  # float-ok: display only
+    value = float(parse_expression(exact, [], name).evalf(30))  # float-ok: display only
     if kind == "revolute":
         return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
     return f"{name} \u2248 {value:.4g}"
@@ -240,7 +250,7 @@ def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
                 ctx.symbols[x], sp.Symbol("alpha"))),
             "root": sp.sstr(root.expression()),
             "interval": [str(root.lo), str(root.hi)],
-            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
                        for k, v in point.items()},
         }
         comp.witness_checked = True
@@ -334,8 +344,7 @@ def float_checks(ctx, witness: dict[str, str], analysis,
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
                              float_numbers(analysis)))
     local = {str(v): v for v in ctx.symbols.values()}
-    used = [{str(s) for s in sp.sympify(eq, locals=local).free_symbols}
-            for eq in reversed(equations)]
+    used = [set(re.findall(r"[A-Za-z_]\w*", eq)) & set(local) for eq in reversed(equations)]
     revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
     joint = next((name for names in used for n, name in revolute
                   if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
@@ -444,7 +453,7 @@ def attach_two_root_witness(ctx, comp: Component, first: tuple, second: tuple,
                                  for g in (g1, g2)),
             "root": f"{sp.sstr(root1.expression())}; {sp.sstr(root2.expression())}",
             "interval": [f"{root1.lo}; {root2.lo}", f"{root1.hi}; {root2.hi}"],
-            "approx": {k: f"{float(sp.sympify(v).evalf(20)):.12g}"  # float-ok: display
+            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
                        for k, v in point.items()},
         }
         comp.witness_checked = True

@@ -41,7 +41,9 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
+from .errors import CoopkinError
 from .exact import elimination as el
+from .exact.deadline import check
 from .exact.quotient import eliminate_modulo, rank_modulo
 from .exact.ratfunc import RatFunc
 from .exact.sympy_bridge import (
@@ -51,6 +53,7 @@ from .exact.sympy_bridge import (
     poly_to_sympy,
     ratio_to_sympy,
 )
+from .exactnum import exact_expr
 from .model import Model
 
 NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
@@ -59,11 +62,11 @@ NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 DEFAULT_TERM_BUDGET = 20_000
 
 
-class BlockTooLarge(ValueError):
+class BlockTooLarge(ValueError, CoopkinError):
     """A symbolic block whose entries would exceed the analysis's term budget."""
 
 
-class InfeasibleMotion(ValueError):
+class InfeasibleMotion(ValueError, CoopkinError):
     """A requested velocity that the system cannot realize without breaking a contact."""
 
 
@@ -358,12 +361,17 @@ class Analysis:
         """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent), as
         (numerator, denominator) pairs of integer polynomials."""
         ring, syms = self.ring, self.kinematics.symbols
+        symbols = {**{p.name: p for p in self.model.parameters}, **syms}
+        if isinstance(rhs, str) or not isinstance(rhs, Sequence | sp.MatrixBase):
+            raise InfeasibleMotion(f"{what}: expected a list of numbers, got "
+                                   f"{type(rhs).__name__}")
         n = len(columns[0]) if columns else len(rhs)
         if len(rhs) != n:
             raise InfeasibleMotion(f"{what}: expected {n} components, got {len(rhs)}")
         rows = []
         for i in range(n):
-            num, den = sp.fraction(sp.together(sp.sympify(rhs[i])))
+            value = exact_expr(rhs[i], symbols, f"{what}[{i}]")
+            num, den = sp.fraction(sp.together(value))
             try:
                 pn = ring.to_zpoly(poly_from_sympy(num, ring, syms))
                 pd = ring.to_zpoly(poly_from_sympy(den, ring, syms))
@@ -491,6 +499,7 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     arm_maps: list[_ArmMap] = []
     zero = zctx.constant(0)
     for a, arm in enumerate(model.arms):
+        check("the decomposition of the nullspace, arm by arm")
         off = model.joint_offset(a)
         arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
                                 6 + off, len(arm.joints), zctx)

@@ -21,21 +21,21 @@ Example
 from __future__ import annotations
 
 import difflib
-import json
 import keyword
 import os
 import re
+import reprlib
 from collections.abc import Mapping
 from dataclasses import dataclass
-from fractions import Fraction
 from pathlib import Path
 from typing import Any, Literal
 
 import sympy as sp
-import yaml
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
-from .exactnum import NumberError, parse_number
+from .errors import CoopkinError
+from .exactnum import NumberError, brief, parse_number
+from .trees import TreeError, check_tree, read_file
 
 JointType = Literal["revolute", "prismatic"]
 ContactModel = Literal["complete", "soft", "hard", "frictionless"]
@@ -45,7 +45,7 @@ JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic")
 Vector = tuple[sp.Expr, sp.Expr, sp.Expr]
 
 
-class ModelError(ValueError):
+class ModelError(ValueError, CoopkinError):
     """A model that cannot be accepted.
 
     ``problems`` lists one line per problem, each naming the entry
@@ -180,8 +180,18 @@ def _join(path: str, loc: tuple[int | str, ...] | list[int | str]) -> str:
     return out or "(top level)"
 
 
+_REPR = reprlib.Repr()
+_REPR.maxlevel, _REPR.maxstring, _REPR.maxother, _REPR.maxlong = 2, 60, 60, 60
+_REPR.maxlist = _REPR.maxdict = _REPR.maxtuple = 4
+
+
 def _brief(value: object) -> str:
-    text = " ".join(repr(value).split())
+    """A short view of a value (never the repr of a whole large one)."""
+    try:
+        text = _REPR.repr(value)
+    except ValueError:           # an integer too long to print
+        text = f"<{type(value).__name__}>"
+    text = " ".join(text.split())
     return text if len(text) <= 60 else text[:57] + "..."
 
 
@@ -196,7 +206,7 @@ def _render(exc: ValidationError, path: str, cls: type[_Entry]) -> list[str]:
             key = str(loc[-1])
             close = difflib.get_close_matches(key, list(cls.model_fields), n=1)
             hint = f" (did you mean '{close[0]}'?)" if close else ""
-            out.append(f"{_join(path, loc[:-1])}: unknown key '{key}'{hint}")
+            out.append(f"{_join(path, loc[:-1])}: unknown key {brief(key)}{hint}")
         elif kind == "invalid_key":
             out.append(f"{_join(path, loc[:-1])}: key {_brief(loc[-1])} is not a name "
                        f"(keys are words such as 'name')")
@@ -244,7 +254,7 @@ class _Names:
 
     def add(self, name: str, path: str, *, symbol: bool) -> bool:
         if not _IDENTIFIER.fullmatch(name):
-            self.problems.append(f"{path}: '{name}' is not a valid name (letters, digits "
+            self.problems.append(f"{path}: {brief(name)} is not a valid name (letters, digits "
                                  f"and underscores, not starting with a digit)")
             return False
         if symbol and name in RESERVED_NAMES:
@@ -273,7 +283,7 @@ def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
             problems.append(str(exc))
             return None
         if rational and not number.is_Rational:
-            problems.append(f"{path}: '{value}' uses a parameter; this vector must have "
+            problems.append(f"{path}: {brief(value)} uses a parameter; this vector must have "
                             f"rational entries without parameters")
             return None
         out.append(number)
@@ -369,7 +379,7 @@ def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Nam
     names.add(entry.name, f"{path}.name", symbol=True)
     jtype = entry.type
     if jtype not in JOINT_TYPES:
-        problems.append(f"{path}.type: unknown joint type '{jtype}' (expected revolute "
+        problems.append(f"{path}.type: unknown joint type {brief(jtype)} (expected revolute "
                         f"or prismatic)")
     axis = _vector(entry.axis, f"{path}.axis", parameters, problems, rational=True)
     if axis is not None and jtype == "revolute":
@@ -406,22 +416,23 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         pass
     elif match is None:
         problems.append(f"{path}.link: expected ARM/K (the link moved by joint K of arm "
-                        f"ARM, ARM/0 its base) or base, got '{entry.link}'")
+                        f"ARM, ARM/0 its base) or base, got {brief(entry.link)}")
     elif match.group(1) not in arm_joints:
         if arm_joints:  # with no arms at all, "arms" already has the problem
-            problems.append(f"{path}.link: unknown arm '{match.group(1)}' "
+            problems.append(f"{path}.link: unknown arm {brief(match.group(1))} "
                             f"(arms: {', '.join(arm_joints)})")
     elif arm_joints[match.group(1)] is not None:
         arm_index, count = arm_joints[match.group(1)]  # type: ignore[misc]
-        link = int(match.group(2))
+        digits = match.group(2)
+        link = int(digits) if len(digits) <= 9 else count + 1
         if link > count:
             plural = "joint" if count == 1 else "joints"
             problems.append(f"{path}.link: arm {match.group(1)} has {count} {plural}, "
-                            f"no link {link}")
+                            f"no link {digits if len(digits) <= 20 else digits[:12] + '...'}")
     point = _vector(entry.point, f"{path}.point", parameters, problems, rational=False)
     model = entry.model
     if model not in CONTACT_MODELS:
-        problems.append(f"{path}.model: unknown contact model '{model}' (expected "
+        problems.append(f"{path}.model: unknown contact model {brief(model)} (expected "
                         f"complete, soft, hard or frictionless)")
     normal = None
     if entry.normal is not None:
@@ -437,78 +448,18 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
     return Contact(entry.name, arm_index, link, point, normal, model)  # type: ignore[arg-type]
 
 
-class _ExactLoader(yaml.SafeLoader):
-    """YAML loader that keeps floats exact and refuses duplicate keys."""
-
-    def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict:
-        seen: set[str] = set()
-        for key_node, _ in node.value:
-            if isinstance(key_node, yaml.ScalarNode) and key_node.value != "<<":
-                if key_node.value in seen:
-                    raise yaml.constructor.ConstructorError(
-                        None, None, f"duplicate key '{key_node.value}'", key_node.start_mark)
-                seen.add(key_node.value)
-        return super().construct_mapping(node, deep=deep)
-
-
-def _exact_float(loader: yaml.SafeLoader, node: yaml.ScalarNode) -> str:
-    """A YAML float is the decimal it prints as: keep its text for ``parse_number``.
-
-    ``.inf`` and ``.nan`` stay text too; ``parse_number`` rejects them with the entry.
-    """
-    text = str(loader.construct_scalar(node)).replace("_", "")
-    if ":" in text:  # YAML 1.1 base 60, e.g. 190:20:30.15
-        sign = -1 if text.startswith("-") else 1
-        total = Fraction(0)
-        for part in text.lstrip("+-").split(":"):
-            total = total * 60 + Fraction(part)
-        return str(sign * total)
-    return text
-
-
-_ExactLoader.add_constructor("tag:yaml.org,2002:float", _exact_float)
-
-
-class _DuplicateKey(ValueError):
-    pass
-
-
-def _json_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    out: dict[str, Any] = {}
-    for key, value in pairs:
-        if key in out:
-            raise _DuplicateKey(key)
-        out[key] = value
-    return out
-
-
 def _read_tree(path: Path, source: str) -> object:
-    """Read a YAML or JSON file into a plain tree, every float kept as its text."""
+    """Read a YAML or JSON file into a plain tree (see :mod:`coopkin_sym.trees`: every
+    float kept as its text, budgets on size, nesting and aliases)."""
     try:
-        text = path.read_text(encoding="utf-8")
-    except IsADirectoryError:
-        raise ModelError(["is a directory, not a model file"], source) from None
-    except UnicodeDecodeError:
-        raise ModelError(["not a text file (UTF-8 expected)"], source) from None
-    except OSError as exc:
-        raise ModelError([f"cannot read the file: {exc.strerror}"], source) from None
-    if path.suffix.lower() == ".json":
-        try:
-            return json.loads(text, parse_float=str, parse_constant=str,
-                              object_pairs_hook=_json_pairs)
-        except json.JSONDecodeError as exc:
-            raise ModelError([f"line {exc.lineno}, column {exc.colno}: not valid JSON: "
-                              f"{exc.msg}"], source) from None
-        except _DuplicateKey as exc:
-            raise ModelError([f"not valid JSON: duplicate key '{exc}'"], source) from None
-    try:
-        return yaml.load(text, Loader=_ExactLoader)  # a SafeLoader subclass: no arbitrary objects
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
-        where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
-        problem = getattr(exc, "problem", None) or str(exc)
-        problem = " ".join(str(problem).split())
-        raise ModelError([f"{where}not valid YAML: {problem}"], source) from None
+        return read_file(path)
+    except TreeError as exc:
+        raise ModelError([str(exc)], source) from None
+
+
+def _source_name(name: str) -> str:
+    """A file name as shown in messages (very long ones shortened)."""
+    return name if len(name) <= 200 else name[:120] + "..." + name[-40:]
 
 
 def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
@@ -540,18 +491,30 @@ def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
     ('prismatic', (3*L, L, L))
     """
     if isinstance(source, Mapping):
+        try:
+            check_tree(source)
+        except TreeError as exc:
+            raise ModelError([f"(top level): {exc}"]) from None
         return _build(source, None, "unnamed")
     if not isinstance(source, str | os.PathLike):
         raise ModelError([f"(top level): expected a file name, an example name or a "
                           f"mapping, got {type(source).__name__}"])
     name = os.fspath(source)
+    if not isinstance(name, str):
+        raise ModelError(["(top level): expected a file name as text, got bytes"])
+    shown = _source_name(name)
     path = Path(name)
-    if not path.exists():
+    try:
+        exists = path.exists()
+    except (OSError, ValueError) as exc:
+        reason = getattr(exc, "strerror", None) or str(exc)
+        raise ModelError([f"cannot read the file: {reason}"], shown) from None
+    if not exists:
         from .examples import example_path, list_examples
 
         if isinstance(source, str) and source in list_examples():
             path = example_path(source)
             return _build(_read_tree(path, str(path)), str(path), path.stem)
         shipped = ", ".join(list_examples())
-        raise ModelError([f"no such file (nor a shipped example: {shipped})"], str(name))
-    return _build(_read_tree(path, str(name)), str(name), path.stem)
+        raise ModelError([f"no such file (nor a shipped example: {shipped})"], shown)
+    return _build(_read_tree(path, shown), shown, path.stem)

@@ -37,8 +37,10 @@ from typing import Any
 
 import sympy as sp
 
+from .errors import CoopkinError
+from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
 from .locus_types import Component, FloatCheck, Locus
-from .output import check_output_path
+from .output import check_output_path, write_files
 
 __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_pairs",
            "render_html", "render_json", "render_latex", "render_markdown",
@@ -63,13 +65,15 @@ KIND_WORDS = {"hypersurface": "hypersurface", "subvariety": "subvariety (codimen
               "isolated": "isolated point", "chart": "at q = pi (second chart)"}
 KIND_PLURALS = {"hypersurface": "hypersurfaces", "subvariety": "subvarieties",
                 "isolated": "isolated points", "chart": "at q = pi (second chart)"}
+# names the parser reads itself (functions and constants), never variables
+_PARSER_NAMES = {*FUNCTIONS, "pi", "CRootOf"}
 # longest equation text shown in a report (the JSON always has all of it)
 MAX_EQUATION = 1500
 # rows per LaTeX tabular
 LATEX_ROWS = 30
 
 
-class ReportError(ValueError):
+class ReportError(ValueError, CoopkinError):
     """A report that cannot be written: unknown format, missing directory, a bad plot
     request, or an I/O error."""
 
@@ -267,7 +271,7 @@ def _components_table(locus: Locus) -> _Table:
             name += f" (in #{c.parent + 1})"
         where = [("cond", _short_condition(c))]
         if not c.real:
-            where.append(_t(" (no real points)"))
+            where.append(_t(" (real points: undecided)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
         if not c.witness and c.algebraic_witness:
             witness = _algebraic_witness_cell(c.algebraic_witness, c.equations,
@@ -307,7 +311,8 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     if c.parent is not None:
         where += f", inside component #{c.parent + 1}"
     items.append([("strong", "Kind:"), _t(" "), _t(f"{kind} ({where}); "
-                                           + ("real points" if c.real else "no real points"))])
+                                           + ("real points" if c.real
+                                              else "real points: undecided"))])
     changes = _changes(c, locus.generic)
     numbers = [("strong", "Numbers:"), _t(f" {_numbers_tuple(c.numbers)} for "
                                           f"({', '.join(NUMBER_NAMES)})")]
@@ -421,12 +426,18 @@ def _formula(text: str) -> list[tuple[str, str]]:
 def _parses(text: str) -> bool:
     if not re.fullmatch(r"[A-Za-z0-9_+\-*/^() .]+", text) or not re.search(r"[A-Za-z]", text):
         return False
+    return _read(text) is not None
+
+
+def _read(text: str) -> sp.Expr | None:
+    """``text`` read by the package's parser, every name in it a variable (but the
+    parser's own functions and ``pi``), or ``None`` when it is not a formula."""
+    names = [n for n in dict.fromkeys(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text))
+             if n not in _PARSER_NAMES]
     try:
-        sp.parse_expr(text, local_dict={n: sp.Symbol(n) for n in
-                                        re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)})
-    except Exception:  # noqa: BLE001 - not a formula
-        return False
-    return True
+        return parse_expression(text, names, "formula", max_length=MAX_EQUATION)
+    except NumberError:
+        return None
 
 
 def _list_or(items: Sequence[str], none: str, formulas: bool = False) -> list:
@@ -509,14 +520,27 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
 # ------------------------------------------------------------------ Markdown
 
 
+def _one_line(text: str) -> str:
+    """Line breaks and other control characters as spaces: user text cannot start a
+    new line (a heading, a table row, a LaTeX line outside a comment)."""
+    return _CONTROL.sub(" ", text)
+
+
+_CONTROL = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+
+
 def _md_escape(text: str) -> str:
-    return re.sub(r"([\\`*_\[\]|<>])", r"\\\1", text)
+    return re.sub(r"([\\`*_\[\]|<>])", r"\\\1", _one_line(text))
 
 
 def _md_code(text: str) -> str:
-    text = text.replace("|", "\\|")
-    ticks = "``" if "`" in text else "`"
-    return f"{ticks}{text}{ticks}"
+    """A code span that no text can leave: its fence is longer than any run of
+    backticks inside, and pipes are escaped for tables."""
+    text = _one_line(text).replace("|", "\\|")
+    longest = max((len(run) for run in re.findall(r"`+", text)), default=0)
+    fence = "`" * (longest + 1)
+    pad = " " if text.startswith("`") or text.endswith("`") or longest else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
 
 
 def _md_inline(parts: Sequence[tuple[str, str]]) -> str:
@@ -563,7 +587,7 @@ def render_markdown(locus: Locus, plots: Mapping[tuple[str, str], str] | None = 
                 lines.append("| " + " | ".join(_md_inline(c) for c in row) + " |")
             lines.append("")
         elif isinstance(b, _Plot):
-            lines += [f"![{_caption(b.pair)}]({b.ref})", ""]
+            lines += [f"![{_md_escape(_caption(b.pair))}]({b.ref})", ""]
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -678,7 +702,12 @@ _TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "
 
 
 def _tex_escape(text: str) -> str:
-    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in text)
+    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in _one_line(text))
+
+
+def _tex_comment(text: str) -> str:
+    """Text inside a ``%`` comment: on one line, so nothing can leave the comment."""
+    return " ".join(_one_line(text).split())
 
 
 def _tex_code(text: str) -> str:
@@ -692,23 +721,17 @@ def _latex(expr: sp.Expr) -> str:
     return re.sub(r"\\operatorname\{(\w+)\}", r"\\mathrm{\1}", text)
 
 
-def _tex_symbols(names: Sequence[str]) -> dict[str, sp.Symbol]:
-    return {n: sp.Symbol(n) for n in names if n.isidentifier()}
-
-
 def _tex_eq(text: str, tail: str = "") -> str:
-    names = re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)
-    try:
-        expr = sp.parse_expr(text, local_dict=_tex_symbols(names))
-    except Exception:  # noqa: BLE001
+    expr = _read(text)
+    if expr is None:
         return _tex_code(text + tail)
     return f"${_latex(expr)}{tail}$"
 
 
 def _tex_value(text: str) -> str | None:
     try:
-        expr = sp.parse_expr(text, local_dict={})
-    except Exception:  # noqa: BLE001
+        expr = parse_expression(text, [], "value", max_length=MAX_EQUATION)
+    except NumberError:
         return None
     return _latex(expr)
 
@@ -726,23 +749,13 @@ def _tex_at(text: str) -> str:
     return ", ".join(out)
 
 
-# names in conditions that are SymPy's, not variables
-_FUNCTIONS = {"pi", "atan", "sqrt", "sin", "cos", "tan", "CRootOf"}
-
-
 def _tex_side(text: str) -> str | None:
     text = text.strip()
     sign = ""
     if text.startswith("\u00b1"):
         sign, text = r"\pm ", text[1:]
-    names = re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)
-    local = {n: sp.Symbol(n) for n in names
-             if n not in _FUNCTIONS and n.isidentifier()}
-    try:
-        expr = sp.parse_expr(text, local_dict=local)
-    except Exception:  # noqa: BLE001
-        return None
-    return sign + _latex(expr)
+    expr = _read(text) if text else None
+    return None if expr is None else sign + _latex(expr)
 
 
 def _tex_cond(text: str) -> str:
@@ -817,7 +830,8 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
     >>> print(render_latex(Locus("demo", [], "", {"Nm": 1})).splitlines()[1])
     \\section*{Singularity locus of demo}
     """
-    out = [f"% Singularity-locus report of {locus.system} (coopkin locus); \\input this "
+    out = [f"% Singularity-locus report of {_tex_comment(locus.system)} (coopkin locus); "
+           f"\\input this "
            f"file in a document."]
     heads = {1: "section*", 2: "subsection*", 3: "subsubsection*"}
     for b in _blocks(locus, None, False):
@@ -838,15 +852,16 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
         out.append("% Plots of the components (need \\usepackage{graphicx}):")
         for pair, name in plots.items():
             out.append(f"% \\includegraphics[width=0.8\\textwidth]{{{name}}}"
-                       f"  % {_caption(pair)}")
+                       f"  % {_tex_comment(_caption(pair))}")
     return "\n".join(out).rstrip() + "\n"
 
 
 # ------------------------------------------------------------------ JSON
 
 
-def render_json(locus: Locus) -> str:
-    """The locus as JSON (:meth:`Locus.to_json`), for programs.
+def render_json(locus: Locus, verification: Mapping | None = None) -> str:
+    """The locus as JSON (:meth:`Locus.to_json`), for programs; with a
+    ``"verification"`` object when one is given.
 
     Example
     -------
@@ -854,11 +869,21 @@ def render_json(locus: Locus) -> str:
     >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:3]
     ['components', 'dropped', 'fixed']
     """
-    return json.dumps(locus.to_json(), indent=2, ensure_ascii=False) + "\n"
+    data = locus.to_json()
+    if verification is not None:
+        data["verification"] = dict(verification)
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
 def locus_from_json(data: Mapping | str) -> Locus:
-    """A :class:`Locus` back from :func:`render_json` (text or parsed).
+    """A :class:`Locus` back from :func:`render_json` (text or parsed), validated like
+    a model file: structure, names, and every expression read by the package's parser
+    (see :mod:`coopkin_sym.report_input`). Nothing in it is ever evaluated.
+
+    Raises
+    ------
+    ReportError
+        One line per problem, each naming the entry.
 
     Example
     -------
@@ -867,35 +892,22 @@ def locus_from_json(data: Mapping | str) -> Locus:
     >>> locus_from_json(render_json(locus)) == locus
     True
     """
-    if isinstance(data, str):
-        data = json.loads(data)
+    from .report_input import ReportInputError, validate_report
+
     try:
-        comps = []
-        for c in data["components"]:
-            c = dict(c)
-            c["changes"] = {k: tuple(v) for k, v in c.get("changes", {}).items()}
-            checks = []
-            for f in c.get("float_checks", []):
-                f = {k: v for k, v in f.items() if k != "agree"}
-                checks.append(FloatCheck(**f))
-            c["float_checks"] = checks
-            comps.append(Component(**c))
-        return Locus(system=data["system"], variables=list(data["variables"]),
-                     fixed=data["fixed"], generic=dict(data["generic"]), components=comps,
-                     parameter_conditions=list(data.get("parameter_conditions", [])),
-                     dropped=list(data.get("dropped", [])),
-                     unexplored=list(data.get("unexplored", [])),
-                     notes=list(data.get("notes", [])), seconds=data.get("seconds", 0.0))
-    except (KeyError, TypeError) as exc:
-        raise ReportError(f"not a locus report: {exc}") from None
+        return validate_report(data)
+    except ReportInputError as exc:
+        raise ReportError(str(exc)) from None
 
 
 # ------------------------------------------------------------------ files
 
 
-def check_target(path: str | os.PathLike) -> str:
+def check_target(path: str | os.PathLike, note: bool = True) -> str:
     """Check a report path before any work: a known suffix (``.md``, ``.html``,
-    ``.tex``, ``.json``) in an existing directory. Returns the format.
+    ``.tex``, ``.json``) in an existing writable directory. Returns the format. With
+    ``note``, the file's state is noted, so that writing it later notices another run
+    that wrote it meanwhile (see :func:`coopkin_sym.output.write_files`).
 
     Example
     -------
@@ -906,7 +918,7 @@ def check_target(path: str | os.PathLike) -> str:
     ...
     coopkin_sym.report.ReportError: report.txt: unknown report format '.txt' ...
     """
-    _, suffix = check_output_path(path, FORMATS, ReportError, "report")
+    _, suffix = check_output_path(path, FORMATS, ReportError, "report", note=note)
     return FORMATS[suffix]
 
 
@@ -929,12 +941,12 @@ def parse_pairs(pairs: Sequence[str | Sequence[str]] | None, system: Any = None
     for p in pairs:
         names = [s.strip() for s in p.split(",")] if isinstance(p, str) else list(p)
         if len(names) != 2 or not all(names):
-            raise ReportError(f"pair {p!r}: expected two joints, e.g. q1,q2")
+            raise ReportError(f"pair {brief(p)}: expected two joints, e.g. q1,q2")
         if names[0] == names[1]:
-            raise ReportError(f"pair {p!r}: the two joints must differ")
+            raise ReportError(f"pair {brief(p)}: the two joints must differ")
         for n in names:
             if joints is not None and n not in joints:
-                raise ReportError(f"pair {p!r}: unknown joint {n!r} (joints: "
+                raise ReportError(f"pair {brief(p)}: unknown joint {brief(n)} (joints: "
                                   f"{', '.join(joints)})")
         out.append((names[0], names[1]))
     return out
@@ -996,7 +1008,7 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
 
 def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
                  pairs: Sequence[str | Sequence[str]] | None = None,
-                 dpi: int = 110) -> list[Path]:
+                 dpi: int = 110, verification: Mapping | None = None) -> list[Path]:
     """Write the report in the format of ``path``'s suffix (``.md``, ``.html``,
     ``.tex``, ``.json``), with a PNG per joint pair next to it
     (``<stem>_<qi>_<qj>.png``; none for JSON). Everything is rendered first and
@@ -1016,6 +1028,9 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
         together in a real component's equations.
     dpi
         Resolution of the PNGs.
+    verification
+        A verification (:meth:`~coopkin_sym.locus_verify.Verification.to_json`) to
+        add to a JSON report.
 
     Example
     -------
@@ -1026,11 +1041,11 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     ['r.json']
     """
     target = Path(path)
-    fmt = check_target(target)
+    fmt = check_target(target, note=False)
     chosen = parse_pairs(pairs, system)
     files: dict[Path, bytes] = {}
     if fmt == "json":
-        files[target] = render_json(locus).encode()
+        files[target] = render_json(locus, verification).encode()
     else:
         pngs, problem = _plots(locus, system, chosen, dpi)
         if problem:
@@ -1050,19 +1065,5 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
 
 
 def _write_all(files: Mapping[Path, bytes]) -> None:
-    """Write every file to a temporary name, then rename them all."""
-    temps: list[tuple[Path, Path]] = []
-    try:
-        for path, data in files.items():
-            tmp = path.with_name(f".{path.name}.{os.getpid()}.partial")
-            with open(tmp, "xb") as fh:
-                temps.append((tmp, path))
-                fh.write(data)
-        for tmp, path in temps:
-            os.replace(tmp, path)
-    except OSError as exc:
-        raise ReportError(f"{next(iter(files))}: cannot write: "
-                          f"{exc.strerror or exc}") from None
-    finally:
-        for tmp, _ in temps:
-            tmp.unlink(missing_ok=True)
+    """Write every file whole, or none (see :func:`coopkin_sym.output.write_files`)."""
+    write_files(files, ReportError)

@@ -48,11 +48,16 @@ import flint
 import numpy as np
 import sympy as sp
 
-from . import kinematics
-from .configuration import Configuration, ConfigurationError, split_assignments
+from . import kinematics, limits
+from .configuration import (
+    Configuration,
+    ConfigurationError,
+    split_assignments,
+    top_level_parts,
+)
 from .exact import elimination as el
 from .exact import modular
-from .exactnum import NumberError, _parse_text, parse_angle
+from .exactnum import NumberError, brief, parse_angle, parse_expression
 from .mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
 from .model import Model
 
@@ -260,7 +265,9 @@ def _straight_line(terms: list, nvars: int, m: int, n: int):
         head.append("    " + "".join(f"x{i}, " for i in range(nvars)) + "= x")
     source = "\n".join(head + lines + [f"    return [{', '.join(cells)}]"])
     namespace: dict = {"__builtins__": {}}
-    exec(compile(source, "<coopkin_sym: compiled Q>", "exec"), namespace)
+    # the source is generated here from the package's own exact integer polynomials
+    # (integers and local names only, see above): no external text reaches it
+    exec(compile(source, "<coopkin_sym: compiled Q>", "exec"), namespace)  # parse-ok
     return namespace["_evaluate"]
 
 
@@ -554,7 +561,7 @@ def compile_system(system: System | Model, joints: Sequence[str],
 
 def _split_point(point) -> list[tuple[str, object]]:
     try:
-        return split_assignments(point, f"point {point!r}")
+        return split_assignments(point, f"point {brief(point)}")
     except ConfigurationError as exc:
         raise SweepError(str(exc)) from None
 
@@ -615,19 +622,11 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
     {'q1': ('-pi', 'pi', 181), 'd4': ('0', '1/2', 3)}
     """
     axes: dict[str, tuple[str, str, int]] = {}
-    parts, depth, start = [], 0, 0
-    for i, ch in enumerate(text):
-        depth += ch == "("
-        depth -= ch == ")"
-        if ch == "," and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    parts.append(text[start:])
-    for part in parts:
+    for part in top_level_parts(text):
         part = part.strip()
         if not part:
             continue
-        shape = f"--grid {part!r}: expected NAME=LO..HI:COUNT (e.g. q1=-pi..pi:181)"
+        shape = f"--grid {brief(part)}: expected NAME=LO..HI:COUNT (e.g. q1=-pi..pi:181)"
         if "=" not in part:
             raise SweepError(shape)
         name, spec = (s.strip() for s in part.split("=", 1))
@@ -637,10 +636,15 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
         lo, _, hi = rng.partition("..")
         if not name or not lo.strip() or not hi.strip():
             raise SweepError(shape)
+        if len(count.strip()) > 12 and count.strip().isdigit():
+            raise SweepError(f"--grid {brief(part)}: the count is over the limit of "
+                             f"{limits.MAX_GRID_COUNT:,} points per joint")
         try:
-            n = int(count.strip())
+            n = int(count.strip()) if len(count.strip()) <= 12 else None
+            if n is None:
+                raise ValueError(count)
         except ValueError:
-            raise SweepError(f"--grid {part!r}: the count {count.strip()!r} is not an "
+            raise SweepError(f"--grid {brief(part)}: the count {brief(count.strip())} is not an "
                              f"integer") from None
         if name in axes:
             raise SweepError(f"--grid: {name} given more than once")
@@ -686,22 +690,33 @@ def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
         where = f"--grid {name}"
         if name not in kinds:
             what = (f"{name} is a parameter, not a joint (set it with --at)" if name in params
-                    else f"unknown joint {name!r} (joints: {', '.join(model.joint_names)})")
+                    else f"unknown joint {brief(name)} (joints: {', '.join(model.joint_names)})")
             raise SweepError(f"{where}: {what}")
         try:
             lo, hi, count = axis
         except (TypeError, ValueError):
             raise SweepError(f"{where}: expected (lo, hi, count)") from None
         if isinstance(count, bool) or not isinstance(count, int | np.integer):
-            raise SweepError(f"{where}: the count must be an integer, got {count!r}")
+            raise SweepError(f"{where}: the count must be an integer, got {brief(count)}")
         if count < 1:
             raise SweepError(f"{where}: zero points (the count must be at least 1, "
                              f"got {count})")
+        if count > limits.MAX_GRID_COUNT:
+            raise SweepError(f"{where}: {count:,} points is over the limit of "
+                             f"{limits.MAX_GRID_COUNT:,} per joint")
+        total = math.prod(len(v) for v in levels) * int(count)
+        if total > limits.MAX_GRID_POINTS:
+            raise SweepError(f"{where}: the grid would have {total:,} points, over the "
+                             f"limit of {limits.MAX_GRID_POINTS:,}")
         try:
-            ends = [_parse_text(str(x), {}, where) for x in (lo, hi)]
+            ends = [parse_expression(str(x), {}, where, max_length=limits.MAX_NUMBER_TEXT,
+                                     kind="parameters") for x in (lo, hi)]
         except NumberError as exc:
             raise SweepError(str(exc)) from None
         if kinds[name] == "revolute":
+            if any(abs(e) > limits.MAX_ANGLE_RADIANS for e in ends):
+                raise SweepError(f"{where}: an end beyond {limits.MAX_ANGLE_RADIANS:,} "
+                                 "radians (use an angle in [-pi, pi])")
             levels.append(tuple(_angle_levels(ends[0], ends[1], int(count), bound, where)))
         else:
             if not all(e.is_Rational for e in ends):
@@ -982,7 +997,12 @@ def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
         index = points.index()
         compiled = compile_system(model, joints, at, prime)
     else:
-        parsed = [_split_point(pt) for pt in points]
+        parsed = []
+        for pt in points:
+            parsed.append(_split_point(pt))
+            if len(parsed) > limits.MAX_GRID_POINTS:
+                raise SweepError(f"points: more than {limits.MAX_GRID_POINTS:,} points "
+                                 "(the limit of one sweep)")
         if not parsed:
             raise SweepError("no points to sweep")
         names = {n for items in parsed for n, _ in items}
@@ -992,7 +1012,7 @@ def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
             params = {p.name for p in model.parameters}
             bad = unknown[0]
             what = (f"{bad} is a parameter: set it with at=" if bad in params
-                    else f"unknown joint {bad!r} (joints: {', '.join(model.joint_names)})")
+                    else f"unknown joint {brief(bad)} (joints: {', '.join(model.joint_names)})")
             raise SweepError(f"points: {what}")
         compiled = compile_system(model, joints, at, prime)
         table: list[dict] = [{} for _ in joints]

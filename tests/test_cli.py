@@ -106,3 +106,22 @@ def test_module_entry_point_exit_codes():
                           "--at", "q1=1"], capture_output=True, text=True, check=False)
     assert bad.returncode == 2 and bad.stdout == ""
     assert "Traceback" not in bad.stderr and "q1" in bad.stderr
+
+
+def test_locus_free_keeps_the_other_joints_at_home(tmp_path):
+    """``--free`` as in ``analyze``: only q2 free, q1 at home (0), in paper case 1 with
+    c1 complete and c2 hard: the numbers change where c2 lies on the line through both
+    base joints (q2 = +-pi/2), and nowhere else (q2 = pi included)."""
+    out = tmp_path / "free.json"
+    result = runner.invoke(app, ["locus", "paper-case1-complete-hard", "--free", "q2",
+                                 "-o", str(out), "--no-progress"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(out.read_text())
+    assert data["variables"] == ["t_q2"] and data["fixed"] == "q1=0,L=1"
+    # q2 = +-pi/2: c2 on the line through both base joints (Nm 0 -> 1)
+    assert sorted((c["condition"], c["numbers"]["Nm"], c["parent"], c["real_points"])
+                  for c in data["components"]) == [
+        ("q2 = -pi/2", 1, None, "witness"), ("q2 = pi/2", 1, None, "witness")]
+    bad = runner.invoke(app, ["locus", "paper-case1-hard", "--free", "q9", "-o",
+                              str(tmp_path / "x.json"), "--no-progress"])
+    assert bad.exit_code != 0 and "q9" in bad.stderr

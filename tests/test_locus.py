@@ -156,7 +156,9 @@ def test_recursion_finds_the_codimension_two_drop():
     assert both.depth == 1 and both.parent == locus.components.index(a2)
     assert both.changes == {"Nc": (4, 2), "Nr": (0, 2), "Nd": (2, 4)}
     # and deeper still: both stretched along the contact line (isolated, depth 2)
-    deepest = [c for c in locus.components if c.depth == 2]
+    t_chart = [c for c in locus.components if not any(e.startswith("s_") for e in
+                                                      c.equations)]
+    deepest = [c for c in t_chart if c.depth == 2]
     assert len(deepest) == 5 and all(c.numbers["Nm"] == 5 for c in deepest)
     # ... and both stretched with the tips at one point: tip1 = 2L(-sin a1, cos a1),
     # tip2 = (3L, 0) + 2L(-sin b1, cos b1), so b1 = -a1 and sin a1 = -3/4, i.e.
@@ -165,10 +167,25 @@ def test_recursion_finds_the_codimension_two_drop():
     assert tips.equations == ["t_a2", "t_b2", "3*t_a1**2 + 8*t_a1 + 3", "t_a1 + t_b1"]
     assert tips.changes["Ni"] == (1, 3) and tips.witness_checked
     assert tips.algebraic_witness["point"]["a1"] == "-2*atan(sqrt(7)/3 + 4/3)"
-    # q = pi, outside the t chart: the finger folded back is singular too
+    # q = pi, outside the t chart: the finger folded back is singular too, alone and
+    # with the other finger folded back (both at once: Nr 2, as both stretched); the
+    # sets with a1 or b1 at pi lie in these (their equations do not involve a1, b1)
     assert {c.condition for c in locus.components if c.kind == "chart"} == {
-        "a2 = pi", "b2 = pi"}
+        "a2 = pi", "b2 = pi", "a2 = pi, b2 = pi"}
+    (folded,) = [c for c in locus.components if c.equations == ["s_a2", "s_b2"]]
+    assert folded.changes == both.changes
+    # one folded back, the other stretched, and both along the contact line
+    (mixed,) = [c for c in locus.components if c.equations == ["s_a2", "t_b2"]]
+    assert mixed.changes == both.changes and mixed.witness == {
+        "a1": "2*atan(1/2)", "a2": "pi", "b1": "2*atan(1/2)", "b2": "0", "L": "1"}
+    inside = [c for c in locus.components if c.parent == locus.components.index(mixed)]
+    assert {c.condition for c in inside} == {
+        f"a2 = pi, b2 = 0, a1 = {x}, b1 = {y}" for x in ("pi/2", "-pi/2")
+        for y in ("pi/2", "-pi/2")}
+    assert all(c.numbers["Nm"] == 5 for c in inside)
     assert all(c.witness_checked for c in locus.components)
+    assert all(c.real == (c.witness is not None or c.algebraic_witness is not None)
+               for c in locus.components)
 
 
 def test_max_depth_bounds_the_search_and_says_so():
@@ -276,7 +293,8 @@ def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
     at one point (any point both reach). Solved over the field of two of the angles;
     checked independently at its irrational witness (radicals)."""
     locus = compute_locus(coopkin_sym.load(TWO_FINGERS), max_depth=0)
-    (tips,) = [c for c in locus.components if c.kind == "subvariety"]
+    (tips,) = [c for c in locus.components if c.kind == "subvariety"
+               and not any(e.startswith("s_") for e in c.equations)]
     assert tips.depth == 0 and len(tips.equations) == 2
     assert tips.changes == {"Nm": (4, 5), "Nc": (4, 5), "Ni": (1, 3), "Ng": (1, 3),
                             "Nh": (0, 1)}
@@ -333,7 +351,9 @@ def test_case2_all_eight_joints_hand_checked():
         "paper-case2-hard").read_text())
     locus = compute_locus(coopkin_sym.load("paper-case2-hard"), max_depth=1)
     one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
-    by_depth = {d: [c for c in locus.components if c.depth == d] for d in (0, 1)}
+    t_chart = [c for c in locus.components
+               if not any(e.startswith("s_") for e in c.equations)]
+    by_depth = {d: [c for c in t_chart if c.depth == d] for d in (0, 1)}
     assert sorted((c.kind, tuple(c.equations)) for c in by_depth[0]) == [
         ("hypersurface", ("t_q2 + 1",)), ("hypersurface", ("t_q2 - 1",)),
         ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 + 1")),
@@ -352,9 +372,96 @@ def test_case2_all_eight_joints_hand_checked():
     assert {c.condition for c in by_depth[0] if c.kind == "subvariety"} == {
         "q7 = -pi/2, q8 = -3*pi/4 or q7 = -pi/2, q8 = pi/4",
         "q7 = pi/2, q8 = -3*pi/4 or q7 = pi/2, q8 = pi/4"}
+    # joints at pi: no set of them changes a number by itself (q = pi is not special
+    # for these robots), and what is found there has the numbers of the t chart's
+    # families (the same robot in line, with a joint turned half a turn)
+    at_pi = [c for c in locus.components if c not in t_chart]
+    assert at_pi and not any(c.kind == "chart" for c in at_pi)
+    assert all(c.changes in (one, {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)})
+               for c in at_pi)
 
 
 def _cos_sin(angle: str) -> tuple[sp.Expr, sp.Expr]:
     """Exact ``(cos q, sin q)`` from the tangent half-angle (radicals stay radicals)."""
+    if angle == "pi":
+        return sp.Integer(-1), sp.Integer(0)
     t = sp.radsimp(sp.tan(sp.sympify(angle) / 2))
     return sp.radsimp((1 - t**2) / (1 + t**2)), sp.radsimp(2 * t / (1 + t**2))
+
+
+# --- families that dividing rows by their content used to hide; q = pi in every set ----
+
+
+def test_content_of_a_row_is_a_candidate_case1_complete_hard():
+    """Paper case 1 with c1 complete and c2 hard: where q2 = +-pi/2 (any q1) c2 lies on
+    the line through both base joints and the numbers change (Nm 0 -> 1, Nh 1 -> 2).
+    The rank drop there is the content of a row after constant pivots."""
+    system = coopkin_sym.load("paper-case1-complete-hard")
+    locus = compute_locus(system)
+    by_eqs = {tuple(c.equations): c for c in locus.components}
+    for eq, angle in (("t_q2 - 1", "pi/2"), ("t_q2 + 1", "-pi/2")):
+        comp = by_eqs[(eq,)]
+        assert comp.kind == "hypersurface" and comp.condition == f"q2 = {angle}"
+        assert comp.changes == {"Nm": (0, 1), "Nc": (0, 1), "Nh": (1, 2)}
+        assert comp.witness_checked and comp.real
+    # a direct analysis anywhere on the family agrees (q1 = 0 and a generic q1)
+    for q1 in ("0", "2*atan(2/7)", "pi"):
+        numbers = system.analyze(at=f"q1={q1},q2=pi/2").numbers.as_dict()
+        assert numbers == by_eqs[("t_q2 - 1",)].numbers
+
+
+def test_two_fingers_with_bases_fixed_find_every_drop_q_pi_included():
+    """The two fingers with a1 = b1 = 0: each finger straight (t = 0) or folded back
+    (q = pi), and every combination of the two, with the numbers a direct analysis
+    gives at each point."""
+    system = coopkin_sym.load(TWO_FINGERS)
+    locus = compute_locus(system, at="a1=0,b1=0")
+    assert locus.generic == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
+    one = {"Nm": 4, "Nc": 3, "Ni": 1, "Nr": 1, "Ng": 1, "Nd": 3, "Nh": 0}
+    two = {"Nm": 4, "Nc": 2, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 4, "Nh": 0}
+    assert {(c.condition, tuple(sorted(c.numbers.items()))) for c in locus.components} == {
+        (cond, tuple(sorted(n.items()))) for cond, n in (
+            ("a2 = 0", one), ("b2 = 0", one), ("a2 = pi", one), ("b2 = pi", one),
+            ("a2 = 0, b2 = 0", two), ("a2 = pi, b2 = 0", two), ("b2 = pi, a2 = 0", two),
+            ("a2 = pi, b2 = pi", two))}
+    assert locus.unexplored == []
+    for a2 in ("0", "pi", "2*atan(1/3)"):
+        for b2 in ("0", "pi", "2*atan(-1/2)"):
+            numbers = system.analyze(at=f"a1=0,b1=0,a2={a2},b2={b2}").numbers.as_dict()
+            stretched = sum(v in ("0", "pi") for v in (a2, b2))
+            assert numbers == (locus.generic, one, two)[stretched]
+
+
+def test_no_real_zeros_is_a_proof_or_nothing():
+    import flint
+
+    from coopkin_sym.locus_algebra import no_real_zeros
+
+    ctx = flint.fmpz_mpoly_ctx.get(("a", "b", "c"), "lex")
+    a, b, c = ctx.gens()
+    # positive definite in one variable for every value of the other: no real zero
+    f = (3*a**2*b**2 - 2*a**2*b + 3*a**2 + 2*a*b**2 + 2*a + 3*b**2 - 2*b + 3)
+    assert no_real_zeros(f) and no_real_zeros(a**2 + b**2 + c**2 + 1)
+    assert no_real_zeros(ctx.constant(7)) and no_real_zeros(b**4 + a**2 + 2)
+    # real zeros (a point, a curve, odd degree): never claimed empty
+    for g in (a**2 + b**2, a**2 + b**2 - 1, a**3 + b + 5, a * b + 1, ctx.constant(0)):
+        assert not no_real_zeros(g)
+
+
+def test_factorization_answers_where_flint_cannot_sort_its_factors():
+    """A random two-arm system whose locus needs a factorization that python-flint's
+    ``factor`` cannot sort (OverflowError in its sort key): the fallback answers, and the
+    factors multiply back to the polynomial."""
+    import flint
+
+    from coopkin_sym.exact.factoring import _factor_with_sympy, factor
+
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+    x, y = ctx.gens()
+    p = 12 * (x**2 - y**2) * (x * y + 3) ** 2
+    for content, factors in (factor(p), _factor_with_sympy(p)):
+        product = ctx.constant(content)
+        for f, e in factors:
+            product *= f**e
+        assert product == p or product == -p
+        assert sorted(str(f) for f, _ in factors) == ["x + y", "x - y", "x*y + 3"]

@@ -128,7 +128,8 @@ def test_markdown_generic_numbers_and_components_table():
         in lines
     assert ("| #1 | `q1 = q2 = -pi/2` | isolated point | **3** | **3** | 1 | 0 | 1 | 4 | "
             "**1** | `q1=-pi/2,q2=-pi/2` | **2/3 wrong**: 1 missed, 1 false alarm |") in lines
-    assert ("| #3 | `t_q1**2 + 1 = 0` (no real points) | hypersurface | **3** | **3** | 1 | "
+    assert ("| #3 | `t_q1**2 + 1 = 0` (real points: undecided) | hypersurface | **3** | **3** | "
+            "1 | "
             "0 | 1 | 4 | **1** | none | not run |") in lines
 
 
@@ -430,9 +431,9 @@ def test_write_errors_leave_nothing(tmp_path):
     with pytest.raises(ReportError, match="unknown joint 'q7'"):
         write_report(hand_made(), tmp_path / "r.md", load("paper-case1-hard"),
                      pairs=["q1,q7"])
-    # the report's name is taken by a directory: the write fails after rendering
+    # the report's name is taken by a directory: refused before anything is written
     (tmp_path / "taken.html").mkdir()
-    with pytest.raises(ReportError, match="cannot write"):
+    with pytest.raises(ReportError, match="taken.html: is a directory"):
         write_report(hand_made(), tmp_path / "taken.html")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["taken.html"]
     assert list((tmp_path / "taken.html").iterdir()) == []

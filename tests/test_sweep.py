@@ -340,7 +340,7 @@ def test_cli_json_and_files(tmp_path):
     (["--grid", "q1=0..1;3"], "expected NAME=LO..HI:COUNT"),
     (["--grid", "q1=0..1:0"], "zero points"),
     (["--grid", "q1=0..1:2", "--at", "q2=pi/3"], "not exact"),
-    (["--grid", "q1=0..1:2", "-o", "out.txt"], "expected a .csv or .json file"),
+    (["--grid", "q1=0..1:2", "-o", "out.txt"], "unknown table (--output) format"),
 ])
 def test_cli_errors_are_clean_and_write_nothing(tmp_path, args, message):
     out = tmp_path / "out.csv"

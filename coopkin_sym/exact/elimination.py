@@ -33,6 +33,8 @@ from collections.abc import Sequence
 
 import flint
 
+from .deadline import check
+
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
 
@@ -64,6 +66,11 @@ def primitive(row: Sequence[Poly]) -> Row:
 
 def _is_zero_row(row: Sequence[Poly]) -> bool:
     return all(e.is_zero() for e in row)
+
+
+def _eliminate_checked(target: Row, pivot_row: Row, col: int) -> Row:
+    check("an exact elimination")
+    return _eliminate(target, pivot_row, col)
 
 
 def _eliminate(target: Row, pivot_row: Row, col: int) -> Row:
@@ -112,6 +119,7 @@ def gauss_jordan(
         return _integer_rref(work, ncols, order)
     done: list[tuple[Row, int]] = []
     while work:
+        check("an exact elimination")
         best = None
         cols = order if canonical else range(ncols)
         for c in cols:
@@ -127,10 +135,11 @@ def gauss_jordan(
             break
         _, i, c = best
         prow = work.pop(i)
-        work = [_eliminate(r, prow, c) if not r[c].is_zero() else r for r in work]
+        work = [_eliminate_checked(r, prow, c) if not r[c].is_zero() else r for r in work]
         work = [r for r in work if not _is_zero_row(r)]
         if reduce:
-            done = [(_eliminate(r, prow, c) if not r[c].is_zero() else r, pc) for r, pc in done]
+            done = [(_eliminate_checked(r, prow, c) if not r[c].is_zero() else r, pc)
+                    for r, pc in done]
         done.append((prow, c))
     if canonical:
         rank_of = {c: k for k, c in enumerate(order)}
@@ -192,8 +201,12 @@ def nullspace(rows: Sequence[Sequence[Poly]], ncols: int | None = None,
         raise ValueError("nullspace of an empty matrix needs ncols and zctx")
     reduced, pivots = gauss_jordan(rows, ncols, canonical=False, reduce=True)
     pivot_set = set(pivots)
-    return [primitive(_kernel_vector(reduced, pivots, f, ncols, zctx))
-            for f in range(ncols) if f not in pivot_set]
+    out = []
+    for f in range(ncols):
+        if f not in pivot_set:
+            check("a nullspace")
+            out.append(primitive(_kernel_vector(reduced, pivots, f, ncols, zctx)))
+    return out
 
 
 def _kernel_vector(reduced: list[Row], pivots: list[int], free: int, ncols: int,
@@ -292,6 +305,7 @@ def determinant(m: Sequence[Sequence[Poly]]) -> Poly:
     prev = zctx.constant(1)
     sign = 1
     for k in range(n - 1):
+        check("a determinant")
         if a[k][k].is_zero():
             swap = next((i for i in range(k + 1, n) if not a[i][k].is_zero()), None)
             if swap is None:
@@ -299,6 +313,7 @@ def determinant(m: Sequence[Sequence[Poly]]) -> Poly:
             a[k], a[swap] = a[swap], a[k]
             sign = -sign
         for i in range(k + 1, n):
+            check("a determinant")
             for j in range(k + 1, n):
                 a[i][j] = (a[i][j] * a[k][k] - a[i][k] * a[k][j]) / prev
         prev = a[k][k]
@@ -337,6 +352,7 @@ def _minors_nullspace(rows: list[Row], ncols: int, zctx, order: list[int]):
     for f in order:
         if f in pivots:
             continue
+        check("a nullspace")
         v = [zctx.constant(0)] * ncols
         v[f] = d
         for i, c in enumerate(pivots):
@@ -390,6 +406,7 @@ def matmul(a: Sequence[Sequence[Poly]], b: Sequence[Sequence[Poly]], zctx) -> li
     ncols = len(b[0]) if b else 0
     out = []
     for row in a:
+        check("a matrix product")
         new = []
         for j in range(ncols):
             s = zctx.constant(0)

@@ -75,6 +75,8 @@ from math import comb
 
 import flint
 
+from ..errors import CoopkinError
+
 PolyDict = dict[tuple[int, ...], int]
 
 #: The prime of the msolve screen (msolve takes primes below 2^31).
@@ -90,7 +92,7 @@ MAX_PRODUCT_TERMS = 20_000
 EXTRA_HINT = "pip install coopkin_sym[certify]"
 
 
-class GroebnerError(ValueError):
+class GroebnerError(ValueError, CoopkinError):
     """A malformed ideal or an unknown backend."""
 
 

@@ -30,6 +30,7 @@ from collections.abc import Sequence
 
 import flint
 
+from .deadline import check
 from .elimination import primitive
 
 Poly = flint.fmpz_mpoly
@@ -58,6 +59,7 @@ class Quotient:
         """``lead^n p`` reduced, and ``n``."""
         n = 0
         while not p.is_zero():
+            check("a reduction modulo a polynomial")
             e = p.degrees()[self.k]
             if e < self.degree:
                 break
@@ -155,6 +157,7 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
         p = prow[col]
         out = []
         for r in left:
+            check("an elimination modulo a polynomial")
             a = r[col]
             if not a.is_zero():
                 g = p.gcd(a)
@@ -217,6 +220,7 @@ def nullspace_modulo(rows: Sequence[Sequence[Poly]], ncols: int,
 
 
 def _clear(r: list[Poly], prow: list[Poly], col: int, quotient: Quotient) -> list[Poly]:
+    check("an elimination modulo a polynomial")
     """``r`` with its entry in ``col`` eliminated by the pivot row ``prow``."""
     a, p = r[col], prow[col]
     if a.is_zero():
@@ -263,6 +267,7 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
     (2, True)
     """
     def trim(c: list[Poly]) -> list[Poly]:
+        check("a gcd modulo a polynomial")
         c = quotient.reduce_row(c)
         while c and c[-1].is_zero():
             c.pop()

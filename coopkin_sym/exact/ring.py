@@ -26,6 +26,8 @@ from math import lcm
 
 import flint
 
+from . import pickling  # noqa: F401 - flint polynomials pickle (copyreg)
+
 ORDERING = "degrevlex"
 
 

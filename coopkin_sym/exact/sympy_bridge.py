@@ -17,6 +17,7 @@ Example
 from __future__ import annotations
 
 from collections.abc import Mapping
+from fractions import Fraction
 
 import flint
 import sympy as sp
@@ -53,21 +54,35 @@ def frac_to_sympy(f: Frac, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
 
 
 def poly_from_sympy(expr, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> flint.fmpq_mpoly:
-    """A SymPy polynomial with rational coefficients in ``ring``'s variables, as an
-    ``fmpq_mpoly``; raises ``ValueError`` if it is not one."""
-    expr = sp.sympify(expr)
+    """A SymPy polynomial with rational coefficients in ``ring``'s variables (or an
+    ``int``/``Fraction``), as an ``fmpq_mpoly``; raises ``ValueError`` if it is not
+    one. Only the variables it uses are handed to SymPy, so a ring with many
+    variables costs nothing more."""
+    if isinstance(expr, int):
+        expr = sp.Integer(expr)
+    elif isinstance(expr, Fraction):
+        expr = sp.Rational(expr.numerator, expr.denominator)
+    if not isinstance(expr, sp.Expr):
+        raise ValueError(f"a {type(expr).__name__} is not a number")
     if expr.is_Rational:
         return ring.qctx.constant(flint.fmpq(int(expr.p), int(expr.q)))
-    syms = [symbols[n] for n in ring.names]
-    if not syms:
-        raise ValueError(f"{expr} is not a rational number")
+    index = {symbols[n]: k for k, n in enumerate(ring.names)}
+    used = sorted(expr.free_symbols, key=lambda s: index.get(s, -1))
+    if not used or any(s not in index for s in used):
+        raise ValueError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
+                         f"{', '.join(ring.names) or 'no variable'}")
     try:
-        poly = sp.Poly(expr, *syms, domain=sp.QQ)
+        poly = sp.Poly(expr, *used, domain=sp.QQ)
     except (sp.PolynomialError, sp.CoercionFailed) as exc:
-        raise ValueError(f"{expr} is not a polynomial in {', '.join(ring.names)}") from exc
-    return ring.qctx.from_dict({
-        m: flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q)) for m, c in poly.terms()
-    })
+        raise ValueError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
+                         f"{', '.join(ring.names)}") from exc
+    terms = {}
+    for monom, c in poly.terms():
+        full = [0] * len(ring.names)
+        for s, e in zip(used, monom, strict=True):
+            full[index[s]] = int(e)
+        terms[tuple(full)] = flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))
+    return ring.qctx.from_dict(terms)
 
 
 def ratio_to_sympy(num, den, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:

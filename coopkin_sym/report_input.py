@@ -1,0 +1,327 @@
+"""Reports read back: validated like model files before anything uses them.
+
+A locus report (the JSON of :func:`coopkin_sym.report.render_json`) is a file people
+exchange, so reading one back is reading untrusted input. The tree is read within the
+budgets of :mod:`coopkin_sym.trees`, its structure checked by pydantic (unknown keys
+refused, every type strict), and every text that is an expression (equations,
+witnesses, fixed values, points of float checks, algebraic witnesses) is read by the
+package's parser (:func:`coopkin_sym.exactnum.parse_expression`): an equation must be
+a polynomial in the report's variables. Problems come one line each, naming the
+entry (``components[0].equations[1]: ...``).
+
+Example
+-------
+>>> tree = {"system": "demo", "variables": ["t_q1"], "fixed": "", "generic": {"Nm": 1},
+...         "components": [{"equations": ["t_q1 - 1"], "numbers": {"Nm": 2},
+...                         "witness": {"q1": "pi/2"}, "real": True}]}
+>>> validate_report(tree).components[0].witness
+{'q1': 'pi/2'}
+>>> validate_report(dict(tree, variables=["pi"]))   # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+coopkin_sym.report_input.ReportInputError: not a locus report: variables[0]: 'pi' is ...
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+from collections.abc import Mapping
+from typing import Any
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    StrictBool,
+    StrictFloat,
+    StrictInt,
+    StrictStr,
+    ValidationError,
+    create_model,
+)
+
+from .configuration import top_level_parts
+from .errors import CoopkinError
+from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
+from .locus_types import Component, FloatCheck, Locus
+from .trees import TreeError, check_tree, read_text
+
+__all__ = ["ReportInputError", "validate_report"]
+
+NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+KINDS = ("hypersurface", "subvariety", "isolated", "chart")
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_RESERVED = {*FUNCTIONS, "pi", "CRootOf", "E", "I", "oo", "nan", "zoo"}
+_DECIMAL = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+class ReportInputError(ValueError, CoopkinError):
+    """A report that cannot be read back: one line per problem."""
+
+    def __init__(self, problems: list[str]):
+        self.problems = list(problems)
+        super().__init__("\n".join(f"not a locus report: {p}" for p in self.problems))
+
+
+class _In(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+Names = dict[StrictStr, StrictStr]
+
+
+class _FloatCheckIn(_In):
+    distance: StrictFloat | StrictInt
+    scale: StrictStr
+    point: Names
+    exact: dict[StrictStr, StrictInt]
+    float: dict[StrictStr, StrictInt]
+    agree: StrictBool | None = None
+
+
+class _AlgebraicIn(_In):
+    point: Names
+    alpha: StrictStr = ""
+    root_of: StrictStr = ""
+    root: StrictStr = ""
+    interval: list[StrictStr] = Field(default_factory=list)
+    approx: Names = Field(default_factory=dict)
+
+
+#: The type of each known field; a field of the dataclass not listed here (added
+#: later) is accepted with any plain value, and a key that is no field is refused.
+_COMPONENT_TYPES: dict[str, Any] = {
+    "equations": list[StrictStr], "numbers": dict[StrictStr, StrictInt],
+    "witness": Names | None, "real": StrictBool, "kind": StrictStr,
+    "condition": StrictStr, "drops": list[StrictStr],
+    "changes": dict[StrictStr, tuple[StrictInt, StrictInt]], "meaning": list[StrictStr],
+    "decided": StrictStr, "witness_checked": StrictBool,
+    "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
+    "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
+}
+_LOCUS_TYPES: dict[str, Any] = {
+    "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
+    "generic": dict[StrictStr, StrictInt], "parameter_conditions": list[StrictStr],
+    "dropped": list[StrictStr], "unexplored": list[StrictStr], "notes": list[StrictStr],
+    "seconds": StrictFloat | StrictInt,
+}
+
+
+def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str):
+    fields: dict[str, Any] = {}
+    for f in dataclasses.fields(cls):
+        kind = types.get(f.name, Any)
+        if f.default is not dataclasses.MISSING:
+            fields[f.name] = (kind, f.default)
+        elif f.default_factory is not dataclasses.MISSING:
+            fields[f.name] = (kind, Field(default_factory=f.default_factory))
+        else:
+            fields[f.name] = (kind, ...)
+    fields.update(extra)
+    return create_model(name, __base__=_In, **fields)
+
+
+_ComponentIn = _model_of(Component, _COMPONENT_TYPES, {}, "_ComponentIn")
+_LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
+                     {"float_summary": (dict[StrictStr, StrictInt] | None, None)},
+                     "_LocusIn")
+
+
+def _path(loc: tuple) -> str:
+    out = ""
+    for part in loc:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out or "(top level)"
+
+
+def _render(exc: ValidationError) -> list[str]:
+    out = []
+    for err in exc.errors(include_url=False):
+        loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and (
+            p.startswith("function-") or p in ("str", "int", "float", "bool", "none",
+                                               "_FloatCheckIn", "_AlgebraicIn"))))
+        kind = err["type"]
+        if kind == "missing":
+            out.append(f"{_path(loc[:-1])}: missing key '{loc[-1]}'")
+        elif kind == "extra_forbidden":
+            out.append(f"{_path(loc[:-1])}: unknown key {brief(str(loc[-1]))}")
+        else:
+            message = " ".join(str(err["msg"]).split())
+            out.append(f"{_path(loc)}: {message[:1].lower()}{message[1:]}"
+                       f" (got {brief(err.get('input'))})")
+    return sorted(dict.fromkeys(out))
+
+
+class _Checker:
+    """The meaning of a structurally valid report: names, expressions, indices."""
+
+    def __init__(self, tree):
+        self.tree = tree
+        self.problems: list[str] = []
+        self.variables: list[str] = []
+
+    def add(self, where: str, message: str) -> None:
+        self.problems.append(f"{where}: {message}")
+
+    def name(self, where: str, text: str) -> bool:
+        if not _IDENTIFIER.fullmatch(text):
+            self.add(where, f"{brief(text)} is not a name")
+            return False
+        if text in _RESERVED:
+            self.add(where, f"{brief(text)} is reserved (it means something else in "
+                            "expressions)")
+            return False
+        return True
+
+    def expression(self, where: str, text: str, names, polynomial: bool = False) -> None:
+        try:
+            expr = parse_expression(text, names, where)
+        except NumberError as exc:
+            self.problems.append(str(exc))
+            return
+        if polynomial and not expr.is_polynomial(*[s for s in expr.free_symbols]):
+            self.add(where, f"{brief(text)} is not a polynomial")
+
+    def numbers(self, where: str, numbers: Mapping[str, int]) -> None:
+        for key, value in numbers.items():
+            if key not in NUMBER_NAMES:
+                self.add(where, f"unknown number {brief(key)} (expected "
+                                f"{', '.join(NUMBER_NAMES)})")
+            elif value < 0:
+                self.add(f"{where}.{key}", f"a count cannot be negative, got {value}")
+
+    def point(self, where: str, point: Mapping[str, str]) -> None:
+        for key, value in point.items():
+            if self.name(f"{where}", key):
+                self.expression(f"{where}.{key}", value, self.variables)
+
+    def assignments(self, where: str, text: str) -> None:
+        """``fixed``: ``NAME=VALUE,...`` (commas inside parentheses belong to values)."""
+        if not text.strip():
+            return
+        for part in top_level_parts(text):
+            name, sep, value = part.partition("=")
+            if not sep:
+                self.add(where, f"expected NAME=VALUE, got {brief(part)}")
+            elif self.name(where, name.strip()):
+                self.expression(f"{where}.{name.strip()}", value, self.variables)
+
+    def run(self, locus) -> None:
+        seen: set[str] = set()
+        for i, v in enumerate(locus.variables):
+            if self.name(f"variables[{i}]", v):
+                if v in seen:
+                    self.add(f"variables[{i}]", f"{brief(v)} given twice")
+                seen.add(v)
+                self.variables.append(v)
+        self.numbers("generic", locus.generic)
+        self.assignments("fixed", locus.fixed)
+        if not math.isfinite(locus.seconds) or locus.seconds < 0:  # float-ok: a check
+            self.add("seconds", "must be a finite number of seconds, at least 0")
+        n = len(locus.components)
+        for k, c in enumerate(locus.components):
+            self.component(f"components[{k}]", c, n)
+
+    def component(self, where: str, c, count: int) -> None:
+        for i, eq in enumerate(c.equations):
+            self.expression(f"{where}.equations[{i}]", eq, self.variables, polynomial=True)
+        self.numbers(f"{where}.numbers", c.numbers)
+        if c.witness is not None:
+            self.point(f"{where}.witness", c.witness)
+        if c.kind not in KINDS:
+            self.add(f"{where}.kind", f"unknown kind {brief(c.kind)} (expected "
+                                      f"{', '.join(KINDS)})")
+        for key, pair in c.changes.items():
+            if key not in NUMBER_NAMES:
+                self.add(f"{where}.changes", f"unknown number {brief(key)}")
+            elif min(pair) < 0:
+                self.add(f"{where}.changes.{key}", "a count cannot be negative")
+        if c.depth < 0:
+            self.add(f"{where}.depth", f"cannot be negative, got {c.depth}")
+        if c.parent is not None and not 1 <= c.parent <= count:
+            self.add(f"{where}.parent", f"no component #{c.parent} (there are {count}, "
+                                        "numbered from 1)")
+        if c.real_points not in ("", "witness", "undecided"):
+            self.add(f"{where}.real_points", f"unknown value {brief(c.real_points)} "
+                                             "(expected witness or undecided)")
+        for j, f in enumerate(c.float_checks):
+            at = f"{where}.float_checks[{j}]"
+            if not math.isfinite(f.distance) or f.distance < 0:  # float-ok: a check
+                self.add(f"{at}.distance", "must be a finite number, at least 0")
+            self.point(f"{at}.point", f.point)
+            self.numbers(f"{at}.exact", f.exact)
+            self.numbers(f"{at}.float", f.float)
+        if c.algebraic_witness is not None:
+            self.algebraic(f"{where}.algebraic_witness",
+                           c.algebraic_witness.model_dump(exclude_unset=True))
+
+    def algebraic(self, where: str, w: Mapping[str, Any]) -> None:
+        self.point(f"{where}.point", w.get("point", {}))
+        for key, value in w.get("approx", {}).items():
+            if not _DECIMAL.fullmatch(value.strip()):
+                self.add(f"{where}.approx.{key}", f"{brief(value)} is not a decimal number")
+        for i, value in enumerate(w.get("interval", [])):
+            for piece in value.split(";"):
+                self.expression(f"{where}.interval[{i}]", piece, [])
+        for key in ("root_of", "root"):
+            for piece in w.get(key, "").split(";"):
+                if piece.strip():
+                    names = [n for n in dict.fromkeys(_IDENTIFIER.findall(piece))
+                             if n not in _RESERVED]
+                    self.expression(f"{where}.{key}", piece, names,
+                                    polynomial=key == "root_of")
+
+
+def validate_report(data: Mapping | str) -> Locus:
+    """A :class:`~coopkin_sym.locus_types.Locus` from report JSON (text or parsed),
+    checked as described in the module docstring.
+
+    Raises
+    ------
+    ReportInputError
+        One line per problem, each naming the entry.
+    """
+    if isinstance(data, str | bytes):
+        try:
+            text = data.decode("utf-8") if isinstance(data, bytes) else data
+            tree = read_text(text, ".json", exact_floats=False)
+        except (TreeError, UnicodeDecodeError) as exc:
+            raise ReportInputError([f"(top level): {exc}"]) from None
+    else:
+        tree = data
+        try:
+            check_tree(tree)
+        except TreeError as exc:
+            raise ReportInputError([f"(top level): {exc}"]) from None
+    if not isinstance(tree, Mapping):
+        raise ReportInputError([f"(top level): expected a mapping, got "
+                                f"{type(tree).__name__}"])
+    try:
+        parsed = _LocusIn.model_validate(tree)
+    except ValidationError as exc:
+        raise ReportInputError(_render(exc)) from None
+    checker = _Checker(tree)
+    checker.run(parsed)
+    if checker.problems:
+        raise ReportInputError(checker.problems)
+    return _to_locus(parsed)
+
+
+def _to_locus(parsed) -> Locus:
+    comps = []
+    for c in parsed.components:
+        values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)}
+        values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
+        if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
+            values["parent"] = c.parent - 1
+        values["float_checks"] = [
+            FloatCheck(distance=f.distance, scale=f.scale, point=dict(f.point),
+                       exact=dict(f.exact), float=dict(f.float)) for f in c.float_checks]
+        if c.algebraic_witness is not None:
+            values["algebraic_witness"] = c.algebraic_witness.model_dump(exclude_unset=True)
+        comps.append(Component(**values))
+    values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
+    values["components"] = comps
+    return Locus(**values)
