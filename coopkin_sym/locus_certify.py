@@ -116,7 +116,8 @@ import sympy as sp
 
 from . import kinematics
 from .configuration import Configuration
-from .errors import CoopkinError
+from .errors import CoopkinError, TimeLimitReached
+from .exact import deadline
 from .exact import elimination as el
 from .exact.groebner import EXTRA_HINT, Verdict, covers, msolve_path, singular_path
 from .exactnum import NumberError, brief, parse_expression
@@ -213,10 +214,26 @@ class Certificate:
     notes: list[str] = field(default_factory=list)
     seconds: float = 0.0
 
-    def to_json(self) -> dict:
+    def to_json(self, every_check: bool = False) -> dict:
+        """Plain JSON data: the summary, per depth, per chart, the tests not certified
+        (with ``every_check``, every test) and the notes.
+
+        Example
+        -------
+        >>> Certificate("demo", True, "complete (certified)").to_json()["summary"]
+        'complete (certified)'
+        """
+        backends: dict[str, int] = {}
+        for c in self.checks:
+            if c.certified:
+                backends[c.backend] = backends.get(c.backend, 0) + 1
+        shown = self.checks if every_check else [c for c in self.checks if not c.certified]
         return {"system": self.system, "certified": self.certified, "summary": self.summary,
                 "depths": {str(k): v for k, v in sorted(self.depths.items())},
-                "charts": self.charts, "checks": [c.to_json() for c in self.checks],
+                "charts": self.charts, "tests": len(self.checks),
+                "certified_by": dict(sorted(backends.items())),
+                "failed": [c.to_json() for c in shown if not c.certified],
+                **({"checks": [c.to_json() for c in shown]} if every_check else {}),
                 "notes": self.notes, "seconds": self.seconds}
 
 
@@ -245,7 +262,9 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
         ``"singular"``, ``"flint"``, ``"sympy"``; ``"msolve"`` alone never certifies
         (it works modulo a prime).
     budget
-        Seconds for the whole certificate; tests after it are not run (and say so).
+        Seconds for the whole certificate (inside a caller's bound of
+        :mod:`coopkin_sym.exact.deadline` the tighter one applies); the tests after it
+        are not run, and the certificate says so.
     first_failure
         Stop at the first test that is not certified (the answer is then only "not
         certified" and why; the tests after it are not run).
@@ -275,6 +294,21 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     ['t chart', 'q1 = pi']
     """
     started = time.monotonic()
+    with deadline.time_limit(budget, "certificate"):
+        try:
+            return _certify(system, locus, at, timeout, backend, first_failure, max_depth,
+                            started)
+        except TimeLimitReached as exc:   # before any test could run
+            why = f"{exc}, before the first test"
+            return Certificate(system=system.model.name, summary=f"not certified: {why}",
+                               depths={0: {"certified": False, "why": why, "tests": 0,
+                                           "failed": 0}},
+                               seconds=round(time.monotonic() - started, 3))
+
+
+def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failure: bool,
+             max_depth: int | None, started: float) -> Certificate:
+    """:func:`certify_locus` inside its time bound."""
     model: Model = system.model
     config = _configuration(model, locus.fixed if at is None else at)
     revolute = [j.name for j in model.joints if j.name in config.free
@@ -304,14 +338,22 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
         cert.seconds = round(time.monotonic() - started, 3)
         return cert
     _refuse_inconsistent_numbers(setup, locus, m, r, cert.notes)
-    runner = _Runner(cert, setup, locus, timeout, backend,
-                     None if budget is None else started + budget, first_failure, max_depth)
-    for size in range(len(revolute) + 1):
-        for pi_joints in itertools.combinations(revolute, size):
-            if runner.stopped:
-                break
+    runner = _Runner(cert, setup, locus, timeout, backend, first_failure, max_depth)
+    slices = [pi for size in range(len(revolute) + 1)
+              for pi in itertools.combinations(revolute, size)]
+    for k, pi_joints in enumerate(slices):
+        if runner.stopped:
+            break
+        try:
             chart = base if not pi_joints else _chart(setup, pi_joints)
             runner.chart(chart)
+        except TimeLimitReached as exc:
+            name = "t chart" if not pi_joints else " = ".join(pi_joints) + " = pi"
+            left = len(slices) - k - 1
+            cert.checks.append(Check(name, 0, None, "Q", "drops", why=(
+                f"not run: {exc}" + (f"; the {left} chart{'s' if left > 1 else ''} after "
+                                     "it were not tested" if left else ""))))
+            break
     if runner.stopped:
         cert.notes.append("Stopped at the first test not certified; the tests after it "
                           "were not run.")
@@ -770,13 +812,12 @@ def _order(component) -> tuple[int, int]:
 
 class _Runner:
     def __init__(self, cert: Certificate, setup: _Setup, locus: Locus, timeout: float,
-                 backend: str, deadline: float | None, first_failure: bool,
-                 max_depth: int | None):
+                 backend: str, first_failure: bool, max_depth: int | None):
         self.cert, self.setup, self.locus = cert, setup, locus
         self.max_depth = max_depth
         self.first_failure, self.stopped = first_failure, False
         self.skipped_depth = False
-        self.timeout, self.backend, self.deadline = timeout, backend, deadline
+        self.timeout, self.backend = timeout, backend
         self.rng = random.Random(1992)
         r = len(setup.model.joints)
         self.component_ranks = [
@@ -840,19 +881,18 @@ class _Runner:
                                               self.rng)
         return cache[key]
 
-    def _over_budget(self, check: Check) -> bool:
-        if self.deadline is not None and time.monotonic() > self.deadline:
-            check.why = "not run: the time budget was spent"
-            self._add(check)
-            return True
-        return False
+    def _test_timeout(self, check: Check) -> float:
+        """Seconds for one test: its own bound, within what is left of the whole
+        certificate's (past that, :class:`TimeLimitReached`)."""
+        deadline.check(f"the test at {check.where()}")
+        left = deadline.remaining()
+        return self.timeout if left is None else max(min(self.timeout, left), 0.01)
 
     def bound(self, check: Check, chart: _Chart, own: list[Poly], gens, conditions
               ) -> None:
         """The rank on the component never exceeds its value: the ``(rho + 1)``-minors
         vanish on it. ``gens`` makes their generators."""
-        if self._over_budget(check):
-            return
+        seconds = self._test_timeout(check)
         gens = gens()
         if isinstance(gens, _TooLarge):
             check.why = gens.why
@@ -868,7 +908,7 @@ class _Runner:
                          "real point")
             self._add(check)
             return
-        verdict = covers(own, [gens], timeout=self.timeout, backend=self.backend,
+        verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names),
                          allowed=[[u] for u in chart.units] + conditions)
         self._record(check, verdict, "the rank is larger than the component's numbers "
@@ -878,8 +918,7 @@ class _Runner:
             conditions) -> None:
         """The drop set (within ``own``) lies in the ``covering`` components. ``gens``
         makes the generators of the drop ideal."""
-        if self._over_budget(check):
-            return
+        seconds = self._test_timeout(check)
         gens = gens()
         if isinstance(gens, _TooLarge):
             check.why = gens.why
@@ -897,7 +936,7 @@ class _Runner:
             self._add(check)
             return
         verdict = covers(list(own) + list(gens), [p for _, p in covering],
-                         timeout=self.timeout, backend=self.backend,
+                         timeout=seconds, backend=self.backend,
                          nvars=len(chart.names),
                          allowed=[[u] for u in chart.units] + conditions)
         lower = "below its generic value" if check.depth == 0 else \

@@ -203,8 +203,12 @@ def test_case1_hard_complete_locus_is_certified():
     data = json.loads(json.dumps(cert.to_json()))
     assert data["summary"] == "complete (certified)"
     assert data["depths"]["0"]["certified"] is True
+    assert data["failed"] == [] and data["tests"] == 46 == sum(data["certified_by"].values())
+    assert "checks" not in data
+    every = json.loads(json.dumps(cert.to_json(every_check=True)))
+    assert len(every["checks"]) == 46
     assert {"chart", "depth", "inside", "matrix", "kind", "certified", "why", "backend",
-            "seconds"} <= set(data["checks"][0])
+            "seconds"} <= set(every["checks"][0])
 
 
 def test_max_depth():
