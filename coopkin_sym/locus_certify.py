@@ -24,13 +24,15 @@ What is checked
 * **Inside a component** of depth ``k`` (its equations added to the ideal), two tests per
   matrix, reported at depths ``k`` and ``k + 1``: its numbers hold everywhere on it as
   upper bounds (every ``(rho + 1)``-minor vanishes there), and the points where a rank
-  falls below its value lie in components later in the order (depth, number of
-  equations): deeper components, or components of the same depth cut out by more
-  equations. ``rank Dt`` is taken as a total over the arms, through the ideal
+  falls below its value lie in components later in a total order (smaller ranks
+  later, then greater depth, more equations, the listing order). ``rank Dt`` is taken
+  as a total over the arms, through the ideal
   ``sum over k_1 + ... + k_A = R of prod_a I_(k_a)(Dt_a)``.
 
-Together, by induction along that order: **every real configuration has the generic
-numbers or the numbers of some reported component that contains it.** That is what
+Together: **every real configuration has the generic numbers or the numbers of some
+reported component that contains it.** (A point with other numbers lies in a component
+by the depth-0 tests; the last such component in the order has exactly its numbers, by
+its two tests.) That is what
 "complete (certified)" means. Parameter values on the locus's parameter conditions
 are left out (they are reported apart).
 
@@ -803,11 +805,14 @@ def _cached(cache: dict, key, make):
 
 
 # --- running the tests ---------------------------------------------------------------------
-def _order(component) -> tuple[int, int]:
-    """Inside a component, the components later in this order may hold its deeper
-    drops: greater depth, or the same depth and more equations. Every chain of
-    components increases in it, which is what the induction needs."""
-    return (component.depth, len(component.equations))
+def _order(index: int, component, ranks: dict[str, int]) -> tuple[int, int, int, int]:
+    """A total order of the components: inside one, the components later in it may hold
+    its deeper drops. Smaller ranks (larger numbers) come later, then greater depth,
+    then more equations, then the listing order. Any total order makes the induction
+    of the module docstring work (take the last component that holds a point); this
+    one puts every component with the numbers of a drop point after the components
+    the point drops from."""
+    return (-sum(ranks.values()), component.depth, len(component.equations), index)
 
 
 class _Runner:
@@ -850,8 +855,9 @@ class _Runner:
             if self.max_depth is not None and comp.depth > self.max_depth:
                 self.skipped_depth = True
                 continue
+            key = _order(i, comp, self.component_ranks[i])
             later = [(j, p) for j, p in here.items()
-                     if _order(self.locus.components[j]) > _order(comp)]
+                     if _order(j, self.locus.components[j], self.component_ranks[j]) > key]
             ranks = self.component_ranks[i]
             for name in ("HG^T", "HD", "Q"):
                 for kind, target in (("numbers", ranks[name] + 1), ("drops", ranks[name])):
