@@ -448,7 +448,8 @@ def _certificate_blocks(locus: Locus) -> list:
         shown = [[_t(f"{c.get('chart')}, depth {c.get('depth')}"
                      + (f", component #{c['inside'] + 1}" if c.get("inside") is not None
                         else "")
-                     + f", {c.get('kind')} of {c.get('matrix')}: {c.get('why')}")]
+                     + (", rank of " if c.get("kind") == "drops" else ", numbers, rank of ")
+                     + f"{c.get('matrix')}: {c.get('why')}")]
                  for c in failed[:SHOWN_FAILURES]]
         more = len(failed) - SHOWN_FAILURES
         out.append(_P([_t(f"Tests not certified ({len(failed)}"

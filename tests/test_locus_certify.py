@@ -19,21 +19,35 @@ at c1 = L(-sin q1, cos q1), c2 = (L - L sin q2, L cos q2)):
 
 from __future__ import annotations
 
+import copy
 import json
 
 import flint
 import pytest
+from typer.testing import CliRunner
 
 from coopkin_sym import load
+from coopkin_sym.cli import app
+from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
 from coopkin_sym.exactnum import NumberError
+from coopkin_sym.locus import compute_locus
 from coopkin_sym.locus_certify import CertifyError, _integer_polynomial, certify_locus
 from coopkin_sym.locus_types import Component, Locus
+from coopkin_sym.report import (
+    ReportError,
+    locus_from_json,
+    render_json,
+    render_latex,
+    render_markdown,
+)
 
 CTX = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
 X, Y = CTX.gens()
 EXACT = ["flint", "sympy"] + (["singular"] if gb.singular_path() else [])
-needs_msolve = pytest.mark.skipif(gb.msolve_path() is None, reason="msolve not installed")
+needs_msolve = pytest.mark.skipif(
+    gb.msolve_path() is None,
+    reason="msolve not installed (the optional extra: pip install coopkin_sym[certify])")
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 ON_THE_LINE = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
@@ -308,8 +322,8 @@ def test_case1_soft_hard_misses_q2_at_pi():
     assert not cert.certified
     bad = [c for c in cert.checks if not c.certified]
     assert len(bad) == 1 and bad[0].depth == 0
-    assert cert.notes[-1] == ("Stopped at the first test not certified; the tests after "
-                              "it were not run.")
+    assert ("Stopped at the first test not certified; the tests after it were not run."
+            in cert.notes)
 
 
 def test_case2_complete_locus_is_certified():
@@ -349,6 +363,7 @@ def test_case2_complete_locus_is_certified():
         ("t chart", 2, 1, "drops")]
 
 
+@needs_msolve
 def test_case2_hard_search_result_misses_coincident_contacts():
     # the search of this version lists the families of q2, q7, q8 below but not the
     # configurations where the two contact points meet (Gt^T: rank 5 -> 3), e.g. every
@@ -368,6 +383,21 @@ def test_case2_hard_search_result_misses_coincident_contacts():
     assert [(c.chart, c.depth, c.matrix) for c in bad] == [("t chart", 0, "HG^T")]
     assert bad[0].why.startswith("the rank drops below its generic value at points on no "
                                  "listed component")
+
+
+def test_case2_hard_on_flint_alone_says_what_timed_out():
+    # flint's Buchberger neither proves nor refutes the c1 = c2 test of case 2 in 2 s
+    system = load("paper-case2-hard")
+    generic = {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
+    names = ["t_q1", "t_q2", "t_q3", "q4", "q5", "t_q6", "t_q7", "t_q8"]
+    cert = certify_locus(system, Locus("case 2", names, "L=1", generic), timeout=2,
+                         backend="flint", first_failure=True)
+    bad = [c for c in cert.checks if not c.certified]
+    assert [(c.chart, c.depth, c.matrix, c.backend) for c in bad] == [
+        ("t chart", 0, "HG^T", "flint")]
+    assert bad[0].why.startswith("timed out after 2 s")
+    assert cert.summary.startswith("not certified: t chart, depth 0, rank of HG^T: timed "
+                                   "out after 2 s")
 
 
 def test_bad_locus_input():
@@ -413,3 +443,144 @@ def test_msolve_alone_never_certifies():
     proved_elsewhere = {c.backend for c in cert.checks if c.certified}
     assert proved_elsewhere <= {"none"}
     assert any(c.why == "not proved (msolve works modulo a prime)" for c in cert.checks)
+
+
+# --- the certificate of the search's own loci, the command line, reports -------------------
+def _without(locus: Locus, equations: list[str]) -> tuple[Locus, int | None]:
+    """The locus without the component cut out by ``equations`` (parents renumbered),
+    and the index its parent has afterwards."""
+    index = next(k for k, c in enumerate(locus.components) if c.equations == equations)
+    out = copy.deepcopy(locus)
+    parent = out.components.pop(index).parent
+    for c in out.components:
+        if c.parent is not None and c.parent > index:
+            c.parent -= 1
+    return out, parent
+
+
+@pytest.fixture(scope="module")
+def soft_hard():
+    """Paper case 1 (soft and hard contacts) and the search's locus of it."""
+    system = load("paper-case1-soft-hard")
+    return system, compute_locus(system)
+
+
+def test_search_locus_with_a_planted_missing_component_fails(soft_hard):
+    system, locus = soft_hard
+    assert certify_locus(system, locus).summary == "complete (certified)"
+    # the point q1 = -pi/2, q2 = pi/2 inside the family t_q2 = 1 left out
+    planted, parent = _without(locus, ["t_q2 - 1", "t_q1 + 1"])
+    assert planted.components[parent].equations == ["t_q2 - 1"]
+    cert = certify_locus(system, planted)
+    assert not cert.certified
+    failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
+              if not c.certified]
+    assert failed == [("t chart", 1, parent, "drops", "Q")]
+    assert cert.summary == (f"not certified: t chart, depth 1, component #{parent + 1}, rank "
+                            "of Q: the rank drops below its value on the component at points "
+                            "on no component listed after it")
+    assert cert.depths[0]["certified"] and not cert.depths[1]["certified"]
+    data = cert.to_json()
+    assert data["failed"] == [c.to_json() for c in cert.checks if not c.certified]
+    assert data["depths"]["1"]["failed"] == 1 and data["charts"]["t chart"]["failed"] == 1
+    # a family at q2 = pi left out: the slice q2 = pi, depth 0
+    planted, _ = _without(locus, ["s_q2", "t_q1**2 + 2*t_q1 - 1"])
+    cert = certify_locus(system, planted)
+    assert {(c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified} == {
+        ("q2 = pi", 0, "HG^T"), ("q2 = pi", 0, "Q")}
+    assert cert.summary.startswith("not certified: q2 = pi, depth 0, rank of HG^T: the rank "
+                                   "drops below its generic value at points on no listed "
+                                   "component")
+
+
+def test_cli_certify_report_and_json_round_trip(tmp_path):
+    runner = CliRunner()
+    js = tmp_path / "case1.json"
+    result = runner.invoke(app, ["locus", "paper-case1-hard", "--certify", "--no-progress",
+                                 "--certify-timeout", "120", "-o", str(js)])
+    assert result.exit_code == 0, result.output
+    assert "; complete (certified); wrote" in result.output
+    data = json.loads(js.read_text())
+    assert data["completeness"] == "complete (certified)"
+    cert = data["certificate"]
+    assert cert["certified"] is True and cert["failed"] == [] and cert["tests"] == 46
+    assert cert["depths"] == {"0": {"certified": True, "why": "", "tests": 31, "failed": 0},
+                              "1": {"certified": True, "why": "", "tests": 15, "failed": 0}}
+    assert sorted(cert["charts"]) == ["q1 = pi", "q1 = q2 = pi", "q2 = pi", "t chart"]
+    back = locus_from_json(js.read_text())
+    assert back.certificate == cert and back.completeness() == "complete (certified)"
+    assert json.loads(render_json(back)) == data
+    text = render_markdown(back)
+    assert "Completeness: **complete (certified)**." in text
+    assert "## Completeness certificate" in text
+    assert "- Depth 0: certified (31 tests)." in text
+    assert "- Depth 1: certified (15 tests)." in text
+
+
+def test_report_without_certificate_says_so(tmp_path):
+    out = tmp_path / "case1.json"
+    result = CliRunner().invoke(app, ["locus", "paper-case1-complete-hard", "--no-progress",
+                                      "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "; completeness not certified (run with --certify); wrote" in result.output
+    data = json.loads(out.read_text())
+    assert data["certificate"] is None
+    assert data["completeness"] == "completeness not certified (run with --certify)"
+    locus = locus_from_json(data)
+    text = render_markdown(locus)
+    assert "**Completeness not certified (run with --certify)**." in text
+    assert "## Completeness certificate" in text
+
+
+def test_failed_certificate_in_reports_and_read_back():
+    system = load("paper-case1-hard")
+    comps = case1_hard_components()
+    del comps[4]
+    locus = case1_locus(comps)
+    locus.certificate = certify_locus(system, locus, timeout=60).to_json()
+    why = ("not certified: t chart, depth 0, rank of HG^T: the rank drops below its generic "
+           "value at points on no listed component (and 1 more)")
+    assert locus.completeness() == why
+    text = render_markdown(locus)
+    assert f"Completeness: **{why}**." in text
+    assert ("- Depth 0: not certified (2 of 28 tests): t chart, depth 0, rank of HG^T: the "
+            "rank drops below its generic value at points on no listed component.") in text
+    assert "- Depth 1: certified (12 tests)." in text
+    assert "Tests not certified (2):" in text
+    assert ("- t chart, depth 0, rank of Q: the rank drops below its generic value at points "
+            "on no listed component") in text
+    latex = render_latex(locus)
+    assert "not certified: t chart, depth 0, rank of HG" in latex
+    data = json.loads(render_json(locus))
+    assert locus_from_json(data).certificate == locus.certificate
+    # read back: the summary must agree with the verdict, indices must exist
+    bad = copy.deepcopy(data)
+    bad["certificate"]["certified"] = True
+    with pytest.raises(ReportError, match="certificate.summary: .* does not agree with "
+                                          "certified = true"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["certificate"]["failed"][0]["inside"] = 9
+    with pytest.raises(ReportError, match=r"certificate.failed\[0\].inside: no component"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["certificate"]["depths"]["0"]["oops"] = 1
+    with pytest.raises(ReportError, match="unknown key 'oops'"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["completeness"] = "complete (certified)"
+    with pytest.raises(ReportError, match="completeness: .* does not agree"):
+        locus_from_json(bad)
+
+
+def test_time_bound_of_the_whole_certificate(soft_hard):
+    # the search's own locus of case 1 within a bound far too short for its 4 charts
+    system, locus = soft_hard
+    cert = certify_locus(system, locus, budget=0)
+    assert not cert.certified
+    assert cert.summary.startswith("not certified: ")
+    assert "time bound of 0 s reached" in cert.summary
+    # an outer bound of the exact layer applies too
+    with deadline.time_limit(0):
+        cert = certify_locus(system, locus, budget=60)
+    assert "time bound of 0 s reached" in cert.summary
