@@ -919,8 +919,8 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     Example
     -------
     >>> from coopkin_sym.locus_types import Locus
-    >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:3]
-    ['components', 'dropped', 'fixed']
+    >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:4]
+    ['certificate', 'completeness', 'components', 'dropped']
     """
     data = locus.to_json()
     if verification is not None:
