@@ -504,6 +504,15 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
     when it cannot be read (a note says why)."""
     out = []
     for i, comp in enumerate(locus.components):
+        if getattr(comp, "outside", None):
+            # the component is the closure of V(equations) minus V(outside), which can be
+            # smaller than V(equations): reading it as V(equations) could prove a covering
+            # that is not there, so it is left out (its saturation is not computed)
+            notes.append(f"component #{i + 1}: a set where its equations hold and "
+                         "denominators of its parametrization do not vanish (saturation "
+                         "is not computed here): the component is not used")
+            out.append(None)
+            continue
         try:
             eqs = [_integer_polynomial(text, names, f"component #{i + 1}, equation {k + 1}")
                    for k, text in enumerate(comp.equations)]
