@@ -579,7 +579,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
     comp = _component(ctx, equations + [f_text], numbers, None, "hypersurface" if depth == 0
                       else "subvariety", drops, depth, parent,
                       "exact over the component's function field (rank modulo its "
-                      "irreducible polynomial)", real=real is True)
+                      "irreducible polynomial)", real=real is True, within=point_so_far)
     if comp is None:
         return
     point = rational_point(ctx, f, names)
@@ -675,7 +675,8 @@ def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> N
                   "Q(alpha)" if moduli else "the function field of the free variables")
         comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth + 1,
                           ctx.locus.components.index(ci), f"exact over {fields}",
-                          condition=f"{ci.condition}; and {cj.condition}")
+                          condition=f"{ci.condition}; and {cj.condition}",
+                          within=point_so_far)
         if comp is None:
             continue
         values = {**vi, **vj}
@@ -841,7 +842,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             chain = dict(inner)
             chain[y] = (k0, k1)
         comp = _component(ctx, eqs, numbers, None, "subvariety", {"Q"}, depth, parent,
-                          decided, chain=chain)
+                          decided, chain=chain, within=inner)
         if comp is None:
             continue
         family_witness(ctx, comp, k, y, inner, numbers)
@@ -880,14 +881,14 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         _inside_candidate(ctx, None, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)],
                           None, depth, parent, None, ())
         return
+    inner = dict(point_so_far)
+    inner[y] = (c0, c1)
     comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)], numbers, None,
                       "subvariety", {"Q"}, depth, parent,
                       "exact over the family's function field (ranks modulo its "
-                      "irreducible polynomial)")
+                      "irreducible polynomial)", within=inner)
     if comp is None:
         return
-    inner = dict(point_so_far)
-    inner[y] = (c0, c1)
     family_witness(ctx, comp, h, x, inner, numbers)
     _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
                "no rational parametrization")
@@ -961,7 +962,7 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
                                                                 sp.Symbol("alpha")))
     comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
                       f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
-                      "conjugate point at once)", condition=condition)
+                      "conjugate point at once)", condition=condition, within=point_so_far)
     if comp is None:
         return None
     attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
@@ -974,10 +975,12 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
 # --- components -------------------------------------------------------------------------
 def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, parent,
                decided, condition: str | None = None, real: bool = True,
-               chain: dict | None = None) -> Component | None:
+               chain: dict | None = None, within: dict | None = None) -> Component | None:
     """Record a component (None when the same set is already recorded). ``chain`` is
     its parametrization by successive linear substitutions (variable -> ``(f0, f1)``,
-    the variable equals ``-f0/f1``), used to recognize the same set found twice."""
+    the variable equals ``-f0/f1``), used to recognize the same set found twice;
+    ``within``, when there is no chain, the parametrization of the set it was found
+    in. Their denominators become the component's ``outside``."""
     if any(sorted(c.equations) == sorted(equations) for c in ctx.locus.components):
         return None
     if chain is not None and any(_within(ctx, chain, c, numbers)
@@ -990,13 +993,37 @@ def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, pa
                      kind=kind, condition=condition or _condition(ctx, equations),
                      drops=_drops_text(
                          drops), changes=changes, decided=decided, depth=depth,
-                     parent=parent)
+                     parent=parent,
+                     outside=_denominators(ctx, chain if chain is not None else within,
+                                           equations))
     if witness is not None:
         attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
     if chain is not None:
         ctx.chains[id(comp)] = (ctx, dict(chain))
     return comp
+
+
+def _denominators(ctx, chain: dict | None, equations: list[str]) -> list[str]:
+    """The irreducible factors of the denominators of a linear parametrization: its
+    image is the set where the equations hold and none of them vanishes (where one
+    does, the equations may hold on a wider set, searched apart by
+    :func:`_chart_points`). None for one irreducible equation (in a chart): its zero
+    set is the closure of that image."""
+    if len([e for e in equations if e not in {f"s_{n}" for n in ctx.pi}]) <= 1:
+        return []
+    out: list[str] = []
+    for _f0, f1 in (chain or {}).values():
+        if f1.is_constant():
+            continue
+        for g, _e in factor(f1)[1]:
+            g = normalize(g)
+            if g.is_constant() or _no_real_points(ctx, g):
+                continue
+            text = poly_text(ctx, g)
+            if text not in out:
+                out.append(text)
+    return out
 
 
 def _on_chain(p, ctx, chain: dict):

@@ -81,6 +81,11 @@ class Component:
     parent
         Index (in :attr:`Locus.components`) of the component this one lies in; in the
         JSON and the reports, its number there (index + 1: ``#1`` is the first).
+    outside
+        Polynomials (strings, same variables as ``equations``) that do not vanish on
+        the component: it is the set where its equations hold and none of these
+        vanish. They are the denominators of its parametrization; the points where one
+        vanishes are searched as sets of their own.
     real_points
         ``"witness"`` (real, a witness is given) or ``"undecided"`` (no real witness
         found and no proof that there is none: never reported as real).
@@ -107,6 +112,7 @@ class Component:
     parent: int | None = None
     algebraic_witness: dict | None = None
     real_points: str = ""
+    outside: list[str] = field(default_factory=list)
 
     def to_json(self) -> dict:
         """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1)."""

@@ -5,9 +5,10 @@ Nothing here uses the locus search: the numbers come straight from the ranks of
 ``Q``, ``H G^T`` and ``H D`` (``Nm = 6 + r - rank Q``, ``Ni = 6 - rank H G^T``,
 ``Nr = r - rank H D``, the others from these), computed exactly at each point.
 
-* **Soundness.** At each component's witness (rational, or algebraic over its number
-  field) the equations must vanish and a direct analysis must give the component's
-  numbers. A point of the grid or of a line that lies on a component cannot have a
+* **Soundness.** A component is the set where its equations vanish and none of its
+  ``outside`` polynomials does. At each component's witness (rational, or algebraic
+  over its number field) the equations must vanish and a direct analysis must give
+  the component's numbers. A point of the grid or of a line that lies on a component cannot have a
   rank above the component's (a rank never rises at a special point of a family):
   such a point proves the component wrong.
 * **The grid.** Every combination of values of the free variables (``tan(q/2)`` in a
@@ -87,6 +88,9 @@ DEFAULT_VALUES: dict[str, tuple[str, ...]] = {
 _INFINITE = {"oo", "inf", "infinity", "pi"}
 #: Uncovered points kept in the result (all are counted).
 MAX_LISTED = 200
+#: Membership of a point where a component's equations hold and one of its ``outside``
+#: polynomials vanishes too (it may lie in the component's closure, or not).
+BOUNDARY = 2
 
 Tan = Fraction | None          # a revolute value: tan(q/2), None for q = pi
 
@@ -168,6 +172,9 @@ class Verification:
         them: nothing here confirms them.
     unread_witnesses
         Components whose witness this check cannot read (a ``CRootOf`` value), and why.
+    boundary_points
+        Points on a component's equations where one of its ``outside`` polynomials
+        vanishes, with ranks not above the component's: taken as on it (its closure).
     """
 
     system: str
@@ -186,6 +193,7 @@ class Verification:
     seed: int = 0
     components: int = 0
     witnesses_checked: int = 0
+    boundary_points: int = 0
     uncovered: list[DropPoint] = field(default_factory=list)
     uncovered_total: int = 0
     unsound: list[ComponentIssue] = field(default_factory=list)
@@ -517,6 +525,7 @@ class _Checker:
             fixed_values[p] = _frac(value)
         self.equations = _Equations(model, self.free, fixed_values)
         self.components = []
+        self.outside: list[list] = []               # each component's denominators
         self.claims: list[dict[str, int]] = []      # each component's seven numbers
         for i, comp in enumerate(locus.components):
             eqs = []
@@ -529,11 +538,18 @@ class _Checker:
                     empty = True
                 else:
                     eqs.append(eq)
+            outs = []
+            for k, text in enumerate(getattr(comp, "outside", [])):
+                out = self.equations.parse(text, f"component {i + 1}, outside {k + 1}")
+                if out is not None:      # undefined at the fixed values: never vanishes
+                    outs.append(out)
+            self.outside.append(outs)
             missing = [x for x in NUMBER_NAMES if x not in comp.numbers]
             if missing:
                 raise VerifyError(f"component {i + 1}: numbers {', '.join(missing)} missing")
             self.claims.append({x: comp.numbers[x] for x in NUMBER_NAMES})
-            relevant = sorted({self.equations.role[k][0] for _, used in eqs for k in used})
+            relevant = sorted({self.equations.role[k][0] for _, used in eqs + outs
+                               for k in used})
             self.components.append((eqs, empty, relevant, self.ranks_of(comp.numbers)))
         self._memo: list[dict] = [{} for _ in self.components]
         self.flats = [f for f in (self._flat(eqs) for eqs, empty, _, _ in self.components
@@ -608,19 +624,23 @@ class _Checker:
         return {k: given[k] for k in order if k in given}
 
     # membership
-    def contains(self, index: int, point: Sequence, ids: Sequence[int] | None = None) -> bool:
-        """Whether component ``index`` contains the rational ``point`` (memoized on the
-        variables its equations use; ``ids``, small integers naming the point's values,
-        make the key cheaper on the grid)."""
+    def contains(self, index: int, point: Sequence, ids: Sequence[int] | None = None) -> int:
+        """1 when component ``index`` contains the rational ``point``, :data:`BOUNDARY`
+        when its equations hold there but one of its ``outside`` polynomials vanishes
+        too, else 0 (memoized on the variables its equations use; ``ids``, small
+        integers naming the point's values, make the key cheaper on the grid)."""
         eqs, empty, relevant, _ = self.components[index]
         if empty:
-            return False
+            return 0
         key = tuple(ids[i] for i in relevant) if ids is not None else (
             "v", *(point[i] for i in relevant))
         memo = self._memo[index]
         hit = memo.get(key)
         if hit is None:
-            hit = memo[key] = all(self.equations.holds_at(eq, point) for eq in eqs)
+            hit = memo[key] = (
+                0 if not all(self.equations.holds_at(eq, point) for eq in eqs) else
+                BOUNDARY if any(self.equations.holds_at(o, point)
+                                for o in self.outside[index]) else 1)
         return hit
 
 
@@ -720,16 +740,27 @@ class _State:
         self.issues.add(key)
         self.result.unsound.append(ComponentIssue(index, kind, point, numbers, detail))
 
-    def judge(self, ranks, numbers, inside: list[int], drop: DropPoint) -> bool:
-        """Record a decided point (``inside``: the components containing it; ``drop``
-        what to report if it is uncovered). Returns whether its numbers are not the
-        generic ones."""
+    def judge(self, ranks, numbers, inside: Mapping[int, int], drop: DropPoint) -> bool:
+        """Record a decided point (``inside``: the components containing it, each with
+        1 or :data:`BOUNDARY`; ``drop`` what to report if it is uncovered). Returns
+        whether its numbers are not the generic ones.
+
+        A component is the closure of the set where its equations hold and no
+        ``outside`` polynomial vanishes; a point where one vanishes may or may not be
+        in that closure. A rank above the component's there proves it is not (ranks
+        never rise at a limit point); otherwise it is taken as on the component."""
         checker, result = self.checker, self.result
         covered = False
-        for i in inside:
-            self.hits[i] += 1
+        for i, how in list(inside.items()):
             claim = checker.components[i][3]
-            if any(a > b for a, b in zip(ranks, claim, strict=True)):
+            above = any(a > b for a, b in zip(ranks, claim, strict=True))
+            if how == BOUNDARY:
+                if above:
+                    del inside[i]
+                    continue
+                result.boundary_points += 1
+            self.hits[i] += 1
+            if above:
                 self.issue(i, "rank-above", drop.point, numbers)
             if checker.claims[i] == numbers:
                 covered = True
@@ -907,12 +938,13 @@ def _read_witness(checker: _Checker, witness: Mapping):
 
 
 def _on_curve(checker: _Checker, index: int, curve: _Line,
-              modulus: flint.fmpq_poly | None) -> bool:
+              modulus: flint.fmpq_poly | None) -> int:
     """Whether component ``index`` contains the point of ``curve`` at a root of the
-    irreducible ``modulus`` (``None``: its generic point)."""
+    irreducible ``modulus`` (``None``: its generic point): 1, :data:`BOUNDARY` or 0
+    as in :meth:`_Checker.contains`."""
     eqs, empty, _, _ = checker.components[index]
     if empty:
-        return False
+        return 0
     for eq in eqs:
         poly, dens = checker.equations.on_line(eq, curve)
         if modulus is None:
@@ -920,7 +952,14 @@ def _on_curve(checker: _Checker, index: int, curve: _Line,
                 return False
         elif not (poly % modulus).is_zero() or any((d % modulus).is_zero() for d in dens):
             return False
-    return True
+    for out in checker.outside[index]:
+        poly, dens = checker.equations.on_line(out, curve)
+        if modulus is None:
+            if poly.is_zero() and not any(d.is_zero() for d in dens):
+                return BOUNDARY
+        elif (poly % modulus).is_zero() and not any((d % modulus).is_zero() for d in dens):
+            return BOUNDARY
+    return 1
 
 
 def _frac(x) -> Fraction:
@@ -956,7 +995,7 @@ def _check_grid(checker: _Checker, state: _State, sets: list[list]) -> None:
                 ids[i] = k
             ranks = compiled.ranks([val for _, _, val in combo])
             result.grid_points += 1
-            inside = [c for c in range(ncomp) if checker.contains(c, point, ids)]
+            inside = {c: m for c in range(ncomp) if (m := checker.contains(c, point, ids))}
             if ranks == checker.generic_ranks and not inside:
                 continue
             numbers = checker.numbers(ranks)
@@ -1192,7 +1231,8 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
     result = state.result
     text = line.text(checker.free)
     # the generic point of the line
-    inside = [c for c in range(len(checker.components)) if _on_curve(checker, c, line, None)]
+    inside = {c: m for c in range(len(checker.components))
+              if (m := _on_curve(checker, c, line, None))}
     if numbers != checker.generic:
         result.singular_lines += 1
     state.judge(ranks, numbers, inside, DropPoint(source, dict(text), numbers, "line"))
@@ -1225,7 +1265,8 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
             result.line_points += 1
             pranks = checker.point_ranks(point)
             pnumbers = checker.numbers(pranks)
-            inside = [c for c in range(len(checker.components)) if checker.contains(c, point)]
+            inside = {c: m for c in range(len(checker.components))
+                      if (m := checker.contains(c, point))}
             if state.judge(pranks, pnumbers, inside,
                            DropPoint(source, checker.at_text(point), pnumbers)):
                 result.line_drops += 1
@@ -1237,7 +1278,8 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
         quotient = Quotient(f, 0)
         pranks = _line_ranks(rows, quotient, r)
         pnumbers = checker.numbers(pranks)
-        inside = [c for c in range(len(checker.components)) if _on_curve(checker, c, line, fq)]
+        inside = {c: m for c in range(len(checker.components))
+                  if (m := _on_curve(checker, c, line, fq))}
         if pnumbers == checker.generic and not inside:
             continue
         point = _approximate(checker, line, fq, roots[0])
@@ -1292,6 +1334,10 @@ def summary_lines(v: Verification) -> list[str]:
                f"{v.singular_lines} lying in the locus")
     out.append(f"  components: {v.components}; witnesses checked: {v.witnesses_checked}; "
                f"with no witness and no point checked: {len(v.unchecked)}")
+    if v.boundary_points:
+        out.append(f"  {v.boundary_points} point(s) where a component's equations hold and "
+                   "a denominator of its parametrization vanishes, ranks not above its "
+                   "own: taken as on it")
     for i, why in v.unread_witnesses.items():
         out.append(f"  witness of component {i + 1} not read here: {why}")
     for u in v.uncovered:

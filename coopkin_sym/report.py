@@ -306,6 +306,10 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     items.append([("strong", "Equations:"), _t(" "), *_equation_parts(c.equations)])
     if c.condition:
         items.append([("strong", "In angles:"), _t(" "), ("cond", c.condition)])
+    if c.outside:
+        items.append([("strong", "Except where:"), _t(" "), *_equation_parts(c.outside),
+                      _t(" (denominators of its parametrization; those points are "
+                         "searched apart)")])
     kind = KIND_WORDS.get(c.kind, c.kind)
     where = f"depth {c.depth}"
     if c.parent is not None:

@@ -133,6 +133,7 @@ _COMPONENT_TYPES: dict[str, Any] = {
     "decided": StrictStr, "witness_checked": StrictBool,
     "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
     "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
+    "outside": list[StrictStr],
 }
 _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
@@ -251,6 +252,9 @@ class _Checker:
                     self.add(f"variables[{i}]", f"{brief(v)} given twice")
                 seen.add(v)
                 self.variables.append(v)
+        # s_<joint> = cot(q/2), the chart at q = pi, for every t_<joint>
+        self.variables += [f"s_{v[2:]}" for v in list(self.variables)
+                           if v.startswith("t_") and f"s_{v[2:]}" not in seen]
         self.numbers("generic", locus.generic)
         self.assignments("fixed", locus.fixed)
         if not math.isfinite(locus.seconds) or locus.seconds < 0:  # float-ok: a check
@@ -290,6 +294,8 @@ class _Checker:
     def component(self, where: str, c, count: int) -> None:
         for i, eq in enumerate(c.equations):
             self.expression(f"{where}.equations[{i}]", eq, self.variables, polynomial=True)
+        for i, eq in enumerate(c.outside):
+            self.expression(f"{where}.outside[{i}]", eq, self.variables, polynomial=True)
         self.numbers(f"{where}.numbers", c.numbers)
         if c.witness is not None:
             self.point(f"{where}.witness", c.witness)

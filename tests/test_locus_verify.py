@@ -12,10 +12,13 @@ from fractions import Fraction
 
 import flint
 import pytest
+import sympy as sp
 from typer.testing import CliRunner
 
 import coopkin_sym
 from coopkin_sym.cli import app
+from coopkin_sym.configuration import Configuration
+from coopkin_sym.exactnum import parse_expression
 from coopkin_sym.irrational import analyze_irrational
 from coopkin_sym.locus import compute_locus
 from coopkin_sym.locus_types import Component, Locus
@@ -30,7 +33,8 @@ from coopkin_sym.locus_verify import (
     summary_lines,
     verify_locus,
 )
-from coopkin_sym.report import render_json
+from coopkin_sym.mobility import analyze
+from coopkin_sym.report import locus_from_json, render_json
 from coopkin_sym.sweep import compile_system
 
 runner = CliRunner()
@@ -418,12 +422,7 @@ def random_system(seed: int) -> dict:
 
 
 # what the current search misses (or gets wrong) on each random system
-RANDOM_FAILURES: dict[int, str] = {
-    7: "components given by a triangular set (a substitution, then a curve) hold their "
-       "equations at points outside the family too (q = 0, and q2 = pi, q1 = q3 = q4 = 0), "
-       "where the ranks are above the component's: the equations need the condition that "
-       "the substitution's denominator does not vanish",
-}
+RANDOM_FAILURES: dict[int, str] = {}
 # the search does not finish within a few minutes on these (steps that are slow on
 # curved families): run only with COOPKIN_SLOW_TESTS=1
 RANDOM_SLOW = {5, 6, 9, 11}
@@ -456,3 +455,35 @@ def test_random_systems_cover_every_pair_of_contact_models():
     pairs = {tuple(c["model"] for c in random_system(s)["contacts"]) for s in range(16)}
     assert len(pairs) == 16
     assert copy.deepcopy(random_system(3)) == random_system(3)        # deterministic
+
+
+def test_a_family_inside_a_parametrization_excludes_its_denominators():
+    # random system 7: inside a hypersurface linear in q4 (q4 = -f0/f1), a curve g = 0
+    # of the other variables. Its equations {f, g} also hold where f0 = f1 = 0 (all
+    # t = 0, any q4), which is not in the family: the ranks there are above its own.
+    system = coopkin_sym.load(random_system(7))
+    locus = compute_locus(system)
+    inner = [c for c in locus.components if c.depth == 1 and c.outside
+             and not any(e.startswith("s_") for e in c.equations)]
+    assert inner
+    names = {v: sp.Symbol(v) for v in locus.variables}
+    zero = {s: 0 for s in names.values()}
+    at_home = analyze(system.model, Configuration.parse(system.model, "q4=1")).numbers
+    for comp in inner:
+        eqs = [parse_expression(e, names, "test") for e in comp.equations]
+        outs = [parse_expression(e, names, "test") for e in comp.outside]
+        assert comp.parent is not None and locus.components[comp.parent].outside == []
+        if all(e.subs(zero) == 0 for e in eqs):
+            assert any(o.subs(zero) == 0 for o in outs)
+            assert at_home.as_dict() != comp.numbers
+    # without them, the verifier finds a component with a rank above its own on them
+    bare = copy.deepcopy(locus)
+    for c in bare.components:
+        c.outside = []
+    v = verify_locus(system, bare, max_points=1500, lines=6, seed=7)
+    assert any(i.kind == "rank-above" for i in v.unsound)
+    v = verify_locus(system, locus, max_points=1500, lines=6, seed=7)
+    assert v.ok
+    # they are part of the JSON and read back
+    again = locus_from_json(render_json(locus))
+    assert [c.outside for c in again.components] == [c.outside for c in locus.components]
