@@ -121,7 +121,14 @@ from .configuration import Configuration
 from .errors import CoopkinError, TimeLimitReached
 from .exact import deadline
 from .exact import elimination as el
-from .exact.groebner import EXTRA_HINT, Verdict, covers, msolve_path, singular_path
+from .exact.groebner import (
+    EXTRA_HINT,
+    Verdict,
+    covers,
+    is_unit_ideal,
+    msolve_path,
+    singular_path,
+)
 from .exactnum import NumberError, brief, parse_expression
 from .locus_types import Locus
 from .model import Model
@@ -504,18 +511,22 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
     when it cannot be read (a note says why)."""
     out = []
     for i, comp in enumerate(locus.components):
-        if getattr(comp, "outside", None):
-            # the component is the closure of V(equations) minus V(outside), which can be
-            # smaller than V(equations): reading it as V(equations) could prove a covering
-            # that is not there, so it is left out (its saturation is not computed)
-            notes.append(f"component #{i + 1}: a set where its equations hold and "
-                         "denominators of its parametrization do not vanish (saturation "
-                         "is not computed here): the component is not used")
-            out.append(None)
-            continue
         try:
             eqs = [_integer_polynomial(text, names, f"component #{i + 1}, equation {k + 1}")
                    for k, text in enumerate(comp.equations)]
+            outs = [_integer_polynomial(text, names, f"component #{i + 1}, outside {k + 1}")
+                    for k, text in enumerate(getattr(comp, "outside", None) or [])]
+            # the component is the closure of V(equations) minus V(outside): it is
+            # V(equations) when no outside polynomial vanishes there (a unit ideal);
+            # otherwise it can be smaller, and reading it as V(equations) could prove a
+            # covering that is not there (its saturation is not computed here)
+            if outs and not all(is_unit_ideal([*eqs, o], timeout=10.0,
+                                              nvars=len(names)).proved for o in outs):
+                notes.append(f"component #{i + 1}: a denominator of its parametrization "
+                             "may vanish on its equations (saturation is not computed "
+                             "here): the component is not used")
+                out.append(None)
+                continue
             numbers = {k: int(comp.numbers[k]) for k in ("Nm", "Ni", "Nr")}
         except NumberError as exc:
             notes.append(f"{exc}: the component is not used")
