@@ -13,6 +13,7 @@ from fractions import Fraction
 import flint
 import pytest
 import sympy as sp
+from random_systems import random_system
 from typer.testing import CliRunner
 
 import coopkin_sym
@@ -378,47 +379,6 @@ def test_search_on_shipped_examples_verifies(name):
                      lines=6 if small else 30)
     assert v.uncovered_total == 0, summary_lines(v)
     assert v.unsound == [], summary_lines(v)
-
-
-MODELS = ("complete", "soft", "hard", "frictionless")
-
-
-def _number(x: Fraction):
-    return int(x) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
-
-
-def _planar_unit(rng: random.Random) -> list:
-    if rng.random() < 0.7:
-        return rng.choice([[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]])
-    a = Fraction(rng.choice([1, -1]), 2)            # (3/5, +-4/5)
-    return [_number((1 - a * a) / (1 + a * a)), _number(2 * a / (1 + a * a)), 0]
-
-
-def random_system(seed: int) -> dict:
-    """Two planar arms of two joints (revolute about z; prismatic in the plane one time in
-    five), small integer geometry, one contact on each arm's last link; the contact
-    models of the pair are ``MODELS[seed % 4]``, ``MODELS[seed // 4 % 4]``, so seeds
-    0..15 make every pair."""
-    rng = random.Random(seed)
-    arms, q = [], 0
-    for a in (1, 2):
-        joints = []
-        for _ in range(2):
-            q += 1
-            point = [rng.randint(-2, 2), rng.randint(-2, 2), 0]
-            if rng.random() < 0.2:
-                joints.append({"name": f"q{q}", "type": "prismatic",
-                               "axis": _planar_unit(rng), "point": point})
-            else:
-                joints.append({"name": f"q{q}", "type": "revolute", "axis": [0, 0, 1],
-                               "point": point})
-        arms.append({"name": f"a{a}", "joints": joints})
-    contacts = [{"name": f"c{i + 1}", "link": f"a{i + 1}/2",
-                 "point": [rng.randint(-2, 2), rng.randint(-2, 2), 0],
-                 "normal": _planar_unit(rng),
-                 "model": MODELS[(seed if i == 0 else seed // 4) % 4]} for i in range(2)]
-    return {"name": f"random system {seed}", "parameters": [], "arms": arms,
-            "contacts": contacts}
 
 
 # what the current search misses (or gets wrong) on each random system
