@@ -3,7 +3,7 @@
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
 ``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
-[--timeout SECONDS] [--pair q1,q2] [--verify]``,
+[--timeout SECONDS] [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
 ``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``.
 Bad input prints one clear error to stderr and exits 2; no traceback, nothing
 half-written. A verification that finds something uncovered or unsound exits 1.
@@ -227,6 +227,13 @@ def locus(
     verify: Annotated[bool, typer.Option(
         "--verify", help="Check the locus independently afterwards (see `coopkin verify`); "
                          "exit 1 when something is uncovered or unsound.")] = False,
+    certify: Annotated[bool, typer.Option(
+        "--certify", help="Prove the locus complete by Groebner bases, chart by chart and "
+                          "depth by depth, or say why it is not proved (the report's "
+                          "summary line).")] = False,
+    certify_timeout: Annotated[float, typer.Option(
+        "--certify-timeout", min=0, help="Wall-clock bound in seconds for the whole "
+                                         "certificate (each test at most 30 s).")] = 300.0,
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
@@ -249,6 +256,11 @@ def locus(
                 else None
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
+        if certify:
+            from .locus_certify import certify_locus
+
+            result.certificate = certify_locus(system, result,
+                                               budget=certify_timeout).to_json()
         checked = _verification(system, result) if verify else None
         written = write_report(result, output, system, pairs=pairs,
                                verification=checked.to_json() if checked else None)
@@ -257,8 +269,8 @@ def locus(
     real = sum(1 for c in result.components if c.real)
     n, u = len(result.components), len(result.unexplored)
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
-    typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; wrote "
-               + ", ".join(str(p) for p in written))
+    typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
+               f"{result.completeness()}; wrote " + ", ".join(str(p) for p in written))
     if checked is not None:
         _echo_verification(checked)
 

@@ -18,6 +18,9 @@ from dataclasses import asdict, dataclass, field
 
 from .errors import TimeLimitReached
 
+#: What a locus without a completeness certificate says about its completeness.
+NOT_CERTIFIED = "completeness not certified (run with --certify)"
+
 
 @dataclass
 class FloatCheck:
@@ -146,6 +149,10 @@ class Locus:
         What was not explored within the bounds (depth, time), in words.
     notes
         Anything else the reader should know (scaling, probabilistic steps).
+    certificate
+        The completeness certificate
+        (:meth:`~coopkin_sym.locus_certify.Certificate.to_json`), or None when none was
+        made (:func:`~coopkin_sym.locus_certify.certify_locus`).
     """
 
     system: str
@@ -158,6 +165,7 @@ class Locus:
     unexplored: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     seconds: float = 0.0
+    certificate: dict | None = None
 
     def float_summary(self) -> dict[str, int]:
         """How many singular configurations float tests called regular (missed), and
@@ -188,7 +196,16 @@ class Locus:
             "notes": self.notes,
             "float_summary": self.float_summary(),
             "seconds": self.seconds,
+            "completeness": self.completeness(),
+            "certificate": self.certificate,
         }
+
+    def completeness(self) -> str:
+        """Whether the locus is proved complete, in one line: ``"complete
+        (certified)"``, ``"not certified: <why>"``, or that no certificate was made."""
+        if self.certificate is None:
+            return NOT_CERTIFIED
+        return str(self.certificate.get("summary", NOT_CERTIFIED))
 
 
 def cut_short(bound, exc: TimeLimitReached) -> Locus:

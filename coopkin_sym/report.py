@@ -417,6 +417,54 @@ def _float_summary_blocks(locus: Locus) -> list:
     return out
 
 
+#: Tests not certified listed one by one in a report (all are in its JSON).
+SHOWN_FAILURES = 10
+
+
+def _certificate_blocks(locus: Locus) -> list:
+    """The completeness certificate: per depth, the tests not certified, its notes."""
+    out: list = [_H(2, "Completeness certificate", "certificate")]
+    cert = locus.certificate
+    if cert is None:
+        out.append(_P([_t(locus.completeness()[:1].upper() + locus.completeness()[1:]
+                          + ": no proof was made that the components above hold every "
+                            "configuration where the numbers change.")]))
+        return out
+    tests = cert.get("tests", 0)
+    out.append(_P([("strong", locus.completeness()),
+                   _t(f" ({tests} exact test{'' if tests == 1 else 's'} in "
+                      f"{len(cert.get('charts', {}))} chart"
+                      f"{'' if len(cert.get('charts', {})) == 1 else 's'}, "
+                      f"{cert.get('seconds', 0):.1f} s).")], css="summary"))  # float-ok
+    lines = []
+    for depth, entry in cert.get("depths", {}).items():
+        n, failed = entry.get("tests", 0), entry.get("failed", 0)
+        if entry.get("certified"):
+            lines.append([_t(f"Depth {depth}: certified ({n} test{'' if n == 1 else 's'}"
+                             + (f"; {entry['why']}" if entry.get("why") else "") + ").")])
+        else:
+            lines.append([_t(f"Depth {depth}: not certified ({failed} of {n} tests): "
+                             f"{entry.get('why', '')}.")])
+    if lines:
+        out.append(_List(lines))
+    failed = cert.get("failed", [])
+    if failed:
+        shown = [[_t(f"{c.get('chart')}, depth {c.get('depth')}"
+                     + (f", component #{c['inside'] + 1}" if c.get("inside") is not None
+                        else "")
+                     + (", rank of " if c.get("kind") == "drops" else ", numbers, rank of ")
+                     + f"{c.get('matrix')}: {c.get('why')}")]
+                 for c in failed[:SHOWN_FAILURES]]
+        more = len(failed) - SHOWN_FAILURES
+        out.append(_P([_t(f"Tests not certified ({len(failed)}"
+                          + (f"; the first {SHOWN_FAILURES} here, all in the JSON"
+                             if more > 0 else "") + "):")]))
+        out.append(_List(shown))
+    if cert.get("notes"):
+        out.extend(_list_or(cert["notes"], ""))
+    return out
+
+
 def _formula(text: str) -> list[tuple[str, str]]:
     """``t_q1**2 + 1 = 0 (no real points)`` as an equation and its words; plain text
     when it is not a polynomial."""
@@ -483,6 +531,10 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
                                   f"item{'' if len(locus.unexplored) == 1 else 's'} "
                                   f"below."))
     out.append(_P(summary, css="summary"))
+    said = locus.completeness()
+    out.append(_P([("strong", said[:1].upper() + said[1:]), _t(".")]
+                  if locus.certificate is None else
+                  [_t("Completeness: "), ("strong", said), _t(".")], css="summary"))
     out.append(_H(2, "Generic numbers", "generic"))
     out.append(_generic_table(locus))
     out.append(_H(2, "Components", "components"))
@@ -515,6 +567,7 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
     out.append(_H(2, "Not explored", "unexplored"))
     out.extend(_list_or(locus.unexplored, "Nothing: the search finished within its "
                                           "bounds."))
+    out.extend(_certificate_blocks(locus))
     if locus.notes:
         out.append(_H(2, "Notes", "notes"))
         out.extend(_list_or(locus.notes, ""))
@@ -870,8 +923,8 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     Example
     -------
     >>> from coopkin_sym.locus_types import Locus
-    >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:3]
-    ['components', 'dropped', 'fixed']
+    >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:4]
+    ['certificate', 'completeness', 'components', 'dropped']
     """
     data = locus.to_json()
     if verification is not None:

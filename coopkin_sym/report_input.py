@@ -90,6 +90,39 @@ class _AlgebraicIn(_In):
     approx: Names = Field(default_factory=dict)
 
 
+class _CheckIn(_In):
+    chart: StrictStr
+    depth: StrictInt
+    inside: StrictInt | None
+    matrix: StrictStr
+    kind: StrictStr
+    certified: StrictBool
+    why: StrictStr = ""
+    backend: StrictStr = ""
+    seconds: StrictFloat | StrictInt = 0
+
+
+class _TallyIn(_In):
+    certified: StrictBool
+    why: StrictStr
+    tests: StrictInt
+    failed: StrictInt
+
+
+class _CertificateIn(_In):
+    system: StrictStr
+    certified: StrictBool
+    summary: StrictStr
+    depths: dict[StrictStr, _TallyIn]
+    charts: dict[StrictStr, _TallyIn]
+    tests: StrictInt
+    certified_by: dict[StrictStr, StrictInt]
+    failed: list[_CheckIn]
+    checks: list[_CheckIn] | None = None
+    notes: list[StrictStr]
+    seconds: StrictFloat | StrictInt
+
+
 #: The type of each known field; a field of the dataclass not listed here (added
 #: later) is accepted with any plain value, and a key that is no field is refused.
 _COMPONENT_TYPES: dict[str, Any] = {
@@ -106,7 +139,7 @@ _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
     "generic": dict[StrictStr, StrictInt], "parameter_conditions": list[StrictStr],
     "dropped": list[StrictStr], "unexplored": list[StrictStr], "notes": list[StrictStr],
-    "seconds": StrictFloat | StrictInt,
+    "seconds": StrictFloat | StrictInt, "certificate": _CertificateIn | None,
 }
 
 
@@ -126,7 +159,8 @@ def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str
 
 _ComponentIn = _model_of(Component, _COMPONENT_TYPES, {}, "_ComponentIn")
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
-                     {"float_summary": (dict[StrictStr, StrictInt] | None, None)},
+                     {"float_summary": (dict[StrictStr, StrictInt] | None, None),
+                      "completeness": (StrictStr | None, None)},
                      "_LocusIn")
 
 
@@ -142,7 +176,8 @@ def _render(exc: ValidationError) -> list[str]:
     for err in exc.errors(include_url=False):
         loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and (
             p.startswith("function-") or p in ("str", "int", "float", "bool", "none",
-                                               "_FloatCheckIn", "_AlgebraicIn"))))
+                                               "_FloatCheckIn", "_AlgebraicIn",
+                                               "_CertificateIn"))))
         kind = err["type"]
         if kind == "missing":
             out.append(f"{_path(loc[:-1])}: missing key '{loc[-1]}'")
@@ -227,6 +262,34 @@ class _Checker:
         n = len(locus.components)
         for k, c in enumerate(locus.components):
             self.component(f"components[{k}]", c, n)
+        if locus.certificate is not None:
+            self.certificate("certificate", locus.certificate, n)
+
+    def certificate(self, where: str, cert, count: int) -> None:
+        """A certificate's summary agrees with its verdict; counts and depths are
+        counts; the components its tests name exist."""
+        if cert.certified != (cert.summary == "complete (certified)"):
+            self.add(f"{where}.summary", f"{brief(cert.summary)} does not agree with "
+                                         f"certified = {str(cert.certified).lower()}")
+        if not cert.certified and not cert.summary.startswith("not certified: "):
+            self.add(f"{where}.summary", "a certificate that does not certify starts with "
+                                         "'not certified: '")
+        if cert.tests < 0 or any(v < 0 for v in cert.certified_by.values()):
+            self.add(f"{where}.tests", "a count cannot be negative")
+        for table in ("depths", "charts"):
+            for key, entry in getattr(cert, table).items():
+                if table == "depths" and not key.isdigit():
+                    self.add(f"{where}.depths", f"{brief(key)} is not a depth")
+                if min(entry.tests, entry.failed) < 0 or entry.failed > entry.tests:
+                    self.add(f"{where}.{table}.{key}", "counts must satisfy 0 <= failed "
+                                                       "<= tests")
+        for name in ("failed", "checks"):
+            for j, check in enumerate(getattr(cert, name) or []):
+                if check.inside is not None and not 0 <= check.inside < count:
+                    self.add(f"{where}.{name}[{j}].inside", f"no component with index "
+                                                           f"{check.inside}")
+                if check.depth < 0:
+                    self.add(f"{where}.{name}[{j}].depth", "cannot be negative")
 
     def component(self, where: str, c, count: int) -> None:
         for i, eq in enumerate(c.equations):
@@ -330,4 +393,10 @@ def _to_locus(parsed) -> Locus:
         comps.append(Component(**values))
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps
-    return Locus(**values)
+    if parsed.certificate is not None:
+        values["certificate"] = parsed.certificate.model_dump(exclude_unset=True)
+    locus = Locus(**values)
+    if parsed.completeness is not None and parsed.completeness != locus.completeness():
+        raise ReportInputError([f"completeness: {brief(parsed.completeness)} does not agree "
+                                f"with the certificate ({brief(locus.completeness())})"])
+    return locus

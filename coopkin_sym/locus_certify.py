@@ -1,0 +1,1030 @@
+"""A certificate that a singularity locus is complete, or the reason it is not.
+
+The numbers of a system change exactly where ``rank Gt^T`` (the first six columns of
+``Q``), ``rank Dt`` (block diagonal by arm) or ``rank Q`` fall below their values. For a
+polynomial matrix ``M`` of rank ``rho`` (generic, or on a component), the points where
+its rank falls below ``rho`` are the common zeros ``V(I)`` of ``I = I_rho(M)``, the ideal
+of its ``rho x rho`` minors. A locus is complete when each such set lies in the union of
+the reported components; by the Nullstellensatz that is a statement about ideals, decided
+exactly by Gröbner bases (:func:`coopkin_sym.exact.groebner.covers`).
+
+What is checked
+---------------
+* **Charts.** ``t = tan(q/2)`` misses ``q = pi``. Every subset ``S`` of the free revolute
+  joints gives a slice ``q_S = pi`` (those joints fixed at pi, the others free in the t
+  chart); the slices, from ``S`` empty (the t chart) to all joints, hold every
+  configuration once. A component lies in ``q_j = pi`` when its equations include
+  ``s_<j>`` (``s = cot(q/2) = 1/t``). On the slice ``S`` a component applies when its
+  equations, read strictly there (``s_j = 0`` for ``j`` in ``S``; an equation in ``t_j``
+  for ``j`` in ``S``, or in ``s_k`` for ``k`` not in ``S``, cannot hold), define a subset
+  of the slice; the others have no point on it.
+* **Depth 0.** On every slice, for ``Gt^T``, each arm's block of ``Dt`` and ``Q`` at their
+  generic ranks (computed here exactly and compared with the locus's generic numbers):
+  the drop set lies in the components that apply.
+* **Inside a component** of depth ``k`` (its equations added to the ideal), two tests per
+  matrix, reported at depths ``k`` and ``k + 1``: its numbers hold everywhere on it as
+  upper bounds (every ``(rho + 1)``-minor vanishes there), and the points where a rank
+  falls below its value lie in components later in a total order (smaller ranks
+  later, then greater depth, more equations, the listing order). ``rank Dt`` is taken
+  as a total over the arms, through the ideal
+  ``sum over k_1 + ... + k_A = R of prod_a I_(k_a)(Dt_a)``.
+
+Together: **every real configuration has the generic numbers or the numbers of some
+reported component that contains it.** (A point with other numbers lies in a component
+by the depth-0 tests; the last such component in the order has exactly its numbers, by
+its two tests.) That is what
+"complete (certified)" means. Parameter values on the locus's parameter conditions
+are left out (they are reported apart).
+
+Only real points matter, and the polynomials ``1 + t_j^2`` (denominators of the
+kinematics) never vanish there. So rows and pivots are handled *at real points*: a row
+may be divided by a factor without real zeros, a pivot without real zeros eliminates its
+column (the rank falls by one at every real point), factors of minors with no real
+zeros (``1 + t^2``, univariate factors with no real root by Sturm's theorem, sums of even
+monomials of one sign, a length parameter) are removed, squares too (``V(g^2) = V(g)``),
+and the sets ``1 + t_j^2 = 0`` may take part in the covering. This leaves small ideals:
+for paper case 2 with hard contacts, the 6 x 14 ``Q`` becomes one row of 9 polynomials.
+When a matrix has more than :data:`MAX_MINORS` minors, random integer combinations
+``det(A M B)`` (Cauchy-Binet) replace them: they lie in the ideal, so their zero set
+contains the drop set and a proof with them is a proof.
+
+Backends and measurements
+-------------------------
+One covering test is an ideal that must be the unit ideal. Measured on this 2-core
+machine (``benchmarks/bench_certify.py``) on one test of paper case 2 with hard contacts
+(t chart, ``rank Gt^T``, whose drop set ``c1 = c2`` is 5-dimensional in 8 variables),
+cap 60 s:
+
+================================  =========  =======  =======  ==================
+covering system                   Singular   flint    SymPy    msolve (modulo p)
+================================  =========  =======  =======  ==================
+true, one z (10 vars, 273k terms)  3.6 s      3.6 s    > 60 s   20 s
+true, z per component (17 vars)    0.03 s     > 60 s   0.43 s   > 60 s
+false, whole space (either form)   > 60 s     > 60 s   > 60 s   > 60 s
+false, random 3-dim subspace       > 60 s     > 60 s   > 60 s   0.36 s
+================================  =========  =======  =======  ==================
+
+So Singular proves (exact ``std`` over Q; both forms of the covering system are tried,
+sharing the time), flint proves the small systems (no process to start: paper case 1
+certifies in 0.05 s on flint alone, 0.3 s through Singular), msolve finds what is
+missing on random subspaces (a screen: it never certifies), SymPy is a last exact
+fallback. Singular and msolve come with the ``certify`` extra
+(``pip install coopkin_sym[certify]``); without them flint does everything, and the
+large tests time out (the certificate then says so).
+
+Whole certificates of the current search's loci (every joint free, 30 s per test):
+paper case 1 (4 charts, 46-82 tests) 0.1-0.2 s; paper case 2 with complete contacts
+(8 joints, 64 charts, 1792 tests) complete (certified) in 9 s, depth 0 alone 1.3 s,
+flint alone 10 s; with hard contacts (1024 tests) not certified in 31 s (depth 0
+alone 18 s; flint alone unfinished after 300 s): the search misses the family where
+the contact points meet (``Ni`` 1 -> 3), in every chart. What makes case 2 feasible is
+the structure: per-arm blocks and the six object columns, pivots without real zeros
+(which leave one row of 9 polynomials of ``Q``), hypersurface components divided out of
+the generators, components that miss the drop set left out, and random subspaces that
+expose a missing family in 3 variables. The number of charts is ``2^r`` for ``r`` free
+revolute joints.
+
+What the certificate takes from the locus: the components' equations and numbers, and
+the parameter conditions. It needs no witness and trusts no claim: a wrong number on a
+component makes its tests fail.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> from coopkin_sym.locus_types import Component, Locus
+>>> system = load("paper-case1-hard")
+>>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+>>> links = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
+>>> meet = {"Nm": 3, "Nc": 3, "Ni": 3, "Nr": 0, "Ng": 3, "Nd": 4, "Nh": 1}
+>>> comps = [Component([f"t_q1 - ({a})", f"t_q2 - ({b})"], links, None, True)
+...          for a in (1, -1) for b in (1, -1)]
+>>> comps.append(Component(["t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2"], meet, None, True))
+>>> locus = Locus("paper case 1", ["t_q1", "t_q2"], "L=1", generic, comps)
+>>> certify_locus(system, locus, timeout=60).summary
+'complete (certified)'
+"""
+
+from __future__ import annotations
+
+import itertools
+import random
+import time
+from dataclasses import asdict, dataclass, field
+from functools import partial
+from math import comb
+
+import flint
+import sympy as sp
+
+from . import kinematics
+from .configuration import Configuration
+from .errors import CoopkinError, TimeLimitReached
+from .exact import deadline
+from .exact import elimination as el
+from .exact.groebner import (
+    EXTRA_HINT,
+    Verdict,
+    covers,
+    is_unit_ideal,
+    msolve_path,
+    singular_path,
+)
+from .exactnum import NumberError, brief, parse_expression
+from .locus_types import Locus
+from .model import Model
+
+Poly = flint.fmpz_mpoly
+
+#: Largest number of minors listed one by one; above it, random combinations.
+MAX_MINORS = 400
+#: Largest size (terms) a minor may reach by the product of its largest entries.
+MAX_MINOR_TERMS = 2_000_000
+NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+
+
+class CertifyError(ValueError, CoopkinError):
+    """A locus that does not belong to the system (other variables or values)."""
+
+
+@dataclass
+class Check:
+    """One test of the certificate.
+
+    Attributes
+    ----------
+    chart
+        ``"t chart"`` or the slice, e.g. ``"q1 = pi"``, ``"q1 = q3 = pi"``.
+    depth
+        0 for the generic drop sets; ``k`` for the numbers of a component of depth
+        ``k``; ``k + 1`` for the drops inside it.
+    inside
+        Index (in the locus's components) of the component the test is about, or None.
+    matrix
+        ``"HG^T"``, ``"HD[arm]"``, ``"HD"`` (all arms), ``"Q"``.
+    kind
+        ``"drops"`` (the drop set lies in the components) or ``"numbers"`` (the
+        component's numbers bound the ranks everywhere on it).
+    certified
+        Whether it is proved.
+    why
+        How it was decided without a Gröbner basis, or why it is not certified.
+    backend, seconds
+        What decided it, and how long it took.
+    """
+
+    chart: str
+    depth: int
+    inside: int | None
+    matrix: str
+    kind: str
+    certified: bool = False
+    why: str = ""
+    backend: str = ""
+    seconds: float = 0.0
+
+    def where(self) -> str:
+        inside = f", component #{self.inside + 1}" if self.inside is not None else ""
+        what = "rank of" if self.kind == "drops" else "numbers, rank of"
+        return f"{self.chart}, depth {self.depth}{inside}, {what} {self.matrix}"
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+
+@dataclass
+class Certificate:
+    """Whether a locus is proved complete, chart by chart and depth by depth.
+
+    Attributes
+    ----------
+    system
+        The system's name.
+    certified
+        True only when every test is certified.
+    summary
+        ``"complete (certified)"`` or ``"not certified: <why>"``.
+    depths, charts
+        Depth (or chart) -> ``{"certified": bool, "why": str, "tests": int,
+        "failed": int}``.
+    checks
+        Every test.
+    notes
+        What the certificate assumed or could not use, in words.
+    seconds
+        Wall time.
+    """
+
+    system: str
+    certified: bool = False
+    summary: str = ""
+    depths: dict[int, dict] = field(default_factory=dict)
+    charts: dict[str, dict] = field(default_factory=dict)
+    checks: list[Check] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    seconds: float = 0.0
+
+    def to_json(self, every_check: bool = False) -> dict:
+        """Plain JSON data: the summary, per depth, per chart, the tests not certified
+        (with ``every_check``, every test) and the notes.
+
+        Example
+        -------
+        >>> Certificate("demo", True, "complete (certified)").to_json()["summary"]
+        'complete (certified)'
+        """
+        backends: dict[str, int] = {}
+        for c in self.checks:
+            if c.certified:
+                backends[c.backend] = backends.get(c.backend, 0) + 1
+        shown = self.checks if every_check else [c for c in self.checks if not c.certified]
+        return {"system": self.system, "certified": self.certified, "summary": self.summary,
+                "depths": {str(k): v for k, v in sorted(self.depths.items())},
+                "charts": self.charts, "tests": len(self.checks),
+                "certified_by": dict(sorted(backends.items())),
+                "failed": [c.to_json() for c in shown if not c.certified],
+                **({"checks": [c.to_json() for c in shown]} if every_check else {}),
+                "notes": self.notes, "seconds": self.seconds}
+
+
+# --- the certificate ---------------------------------------------------------------------
+def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
+                  backend: str = "auto", budget: float | None = None,
+                  first_failure: bool = False, max_depth: int | None = None
+                  ) -> Certificate:
+    """Prove that ``locus`` lists every configuration where the numbers change, with
+    the right numbers, or say why that is not proved, chart by chart and depth by depth.
+
+    Parameters
+    ----------
+    system
+        The :class:`~coopkin_sym.system.System` the locus was computed for.
+    locus
+        The locus (:func:`coopkin_sym.locus.compute_locus`, or read back from JSON).
+    at
+        The values the locus was computed with (``--at`` syntax); default: the locus's
+        own ``fixed`` text.
+    timeout
+        Seconds for each Gröbner-basis test; a test over it is not certified ("timed
+        out after N s").
+    backend
+        ``"auto"`` (Singular to prove and msolve to screen when installed, else flint),
+        ``"singular"``, ``"flint"``, ``"sympy"``; ``"msolve"`` alone never certifies
+        (it works modulo a prime).
+    budget
+        Seconds for the whole certificate (inside a caller's bound of
+        :mod:`coopkin_sym.exact.deadline` the tighter one applies); the tests after it
+        are not run, and the certificate says so.
+    first_failure
+        Stop at the first test that is not certified (the answer is then only "not
+        certified" and why; the tests after it are not run).
+    max_depth
+        Test only depths up to this one (``0``: the generic drop sets alone); the
+        certificate then says that the deeper ones were not tested.
+
+    Returns
+    -------
+    Certificate
+
+    Raises
+    ------
+    CertifyError
+        When the locus's variables are not those of the system with ``at`` fixed.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.locus_types import Locus
+    >>> generic = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
+    >>> nothing = Locus("paper case 1", ["t_q1", "t_q2"], "L=1", generic)
+    >>> cert = certify_locus(load("paper-case1-complete-hard"), nothing, timeout=60)
+    >>> cert.summary.split(": ")[:2]  # q2 = pi/2 for every q1 is missing (q1 = pi too)
+    ['not certified', 't chart, depth 0, rank of Q']
+    >>> [c.chart for c in cert.checks if not c.certified]
+    ['t chart', 'q1 = pi']
+    """
+    started = time.monotonic()
+    with deadline.time_limit(budget, "certificate"):
+        try:
+            return _certify(system, locus, at, timeout, backend, first_failure, max_depth,
+                            started)
+        except TimeLimitReached as exc:   # before any test could run
+            why = f"{exc}, before the first test"
+            return Certificate(system=system.model.name, summary=f"not certified: {why}",
+                               depths={0: {"certified": False, "why": why, "tests": 0,
+                                           "failed": 0}},
+                               seconds=round(time.monotonic() - started, 3))
+
+
+def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failure: bool,
+             max_depth: int | None, started: float) -> Certificate:
+    """:func:`certify_locus` inside its time bound."""
+    model: Model = system.model
+    config = _configuration(model, locus.fixed if at is None else at)
+    revolute = [j.name for j in model.joints if j.name in config.free
+                and j.type == "revolute"]
+    parameters = {p.name for p in model.parameters if p.name not in config.parameters}
+    setup = _Setup(model, config, revolute, (), {}, [], [], parameters)
+    base = _chart(setup, ())
+    if list(base.names) != list(locus.variables):
+        raise CertifyError(f"the locus has variables {', '.join(locus.variables) or 'none'}"
+                           f" but the system with {config.at_text() or 'nothing'} fixed has "
+                           f"{', '.join(base.names) or 'none'}: certify with the values "
+                           "the locus was computed with")
+    setup.full_names = tuple(base.names) + tuple(f"s_{j}" for j in revolute)
+    cert = Certificate(system=model.name)
+    setup.components = _read_components(locus, setup.full_names, cert.notes)
+    setup.conditions = _read_conditions(locus, setup.full_names, cert.notes)
+    ranks = {name: _rank(rows) for name, rows in base.matrices.items()}
+    ranks["HD"] = sum(v for k, v in ranks.items() if k.startswith("HD["))
+    setup.generic_ranks = ranks
+    r, m = len(model.joints), len(base.matrices["Q"])
+    generic = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
+    if generic != {k: locus.generic.get(k) for k in NUMBER_KEYS}:
+        why = (f"the locus's generic numbers ({_numbers_text(locus.generic)}) differ from "
+               f"the exact ones ({_numbers_text(generic)})")
+        cert.summary = f"not certified: {why}"
+        cert.depths = {0: {"certified": False, "why": why, "tests": 0, "failed": 0}}
+        cert.seconds = round(time.monotonic() - started, 3)
+        return cert
+    _refuse_inconsistent_numbers(setup, locus, m, r, cert.notes)
+    runner = _Runner(cert, setup, locus, timeout, backend, first_failure, max_depth)
+    slices = [pi for size in range(len(revolute) + 1)
+              for pi in itertools.combinations(revolute, size)]
+    for k, pi_joints in enumerate(slices):
+        if runner.stopped:
+            break
+        try:
+            chart = base if not pi_joints else _chart(setup, pi_joints)
+            runner.chart(chart)
+        except TimeLimitReached as exc:
+            name = "t chart" if not pi_joints else " = ".join(pi_joints) + " = pi"
+            left = len(slices) - k - 1
+            cert.checks.append(Check(name, 0, None, "Q", "drops", why=(
+                f"not run: {exc}" + (f"; the {left} chart{'s' if left > 1 else ''} after "
+                                     "it were not tested" if left else ""))))
+            break
+    if runner.stopped:
+        cert.notes.append("Stopped at the first test not certified; the tests after it "
+                          "were not run.")
+    if runner.skipped_depth:
+        cert.notes.append(f"Only depths up to {max_depth} were tested: the drops inside "
+                          f"the components of depth {max_depth} and deeper were not tested.")
+    _summarize(cert, locus, max_depth if runner.skipped_depth else None)
+    if backend == "auto" and singular_path() is None:
+        cert.notes.append(f"Singular is not installed ({EXTRA_HINT}): the proofs ran on "
+                          "flint's exact Buchberger algorithm, which is slow beyond small "
+                          "systems.")
+    if backend == "auto" and msolve_path() is None:
+        cert.notes.append(f"msolve is not installed ({EXTRA_HINT}): what is missing was "
+                          "looked for exactly on small subspaces only.")
+    cert.seconds = round(time.monotonic() - started, 3)
+    return cert
+
+
+def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
+                                 notes: list[str]) -> None:
+    """Components whose seven numbers do not follow from their Nm, Ni, Nr are not
+    used (and a note says so)."""
+    for i, comp in enumerate(setup.components):
+        if comp is None:
+            continue
+        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_KEYS}
+        implied = _numbers(m, r, 6 + r - comp[1]["Nm"], 6 - comp[1]["Ni"],
+                           r - comp[1]["Nr"])
+        if given != implied:
+            notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) do not "
+                         f"fit one another (from Nm, Ni, Nr: {_numbers_text(implied)}): "
+                         "the component is not used")
+            setup.components[i] = None
+
+
+# --- setting up --------------------------------------------------------------------------
+@dataclass
+class _Setup:
+    model: Model
+    config: Configuration
+    revolute: list[str]
+    full_names: tuple[str, ...]
+    generic_ranks: dict[str, int]
+    components: list[tuple[list[dict], dict[str, int]] | None]
+    conditions: list[dict]
+    parameters: set[str]
+
+
+@dataclass
+class _Chart:
+    name: str
+    pi_joints: tuple[str, ...]
+    names: tuple[str, ...]
+    zctx: flint.fmpz_mpoly_ctx
+    units: list[Poly]
+    matrices: dict[str, list]           # "HG^T", "HD[arm]", "Q" -> rows
+    arm_blocks: list[tuple[str, list]]
+
+
+def _configuration(model: Model, at) -> Configuration:
+    fixed = Configuration.parse(model, at)
+    params = dict(fixed.parameters)
+    free_params = [p for p in model.parameters if p.name not in params]
+    if len(free_params) == 1 and len(model.parameters) == 1:
+        params[free_params[0].name] = sp.Integer(1)   # the locus's scaling rule
+    free = [j.name for j in model.joints
+            if j.name not in fixed.revolute and j.name not in fixed.prismatic]
+    return Configuration(fixed.revolute, fixed.prismatic, params, frozenset(free))
+
+
+def _chart(setup: _Setup, pi_joints: tuple[str, ...]) -> _Chart:
+    """The matrices on the slice where ``pi_joints`` are at pi, rows cleared of
+    denominators."""
+    model, config = setup.model, setup.config
+    revolute = dict(config.revolute)
+    for j in pi_joints:
+        revolute[j] = (sp.Integer(-1), sp.Integer(0))
+    conf = Configuration(revolute, config.prismatic, config.parameters,
+                         config.free - set(pi_joints))
+    kin = kinematics.build(model, conf)
+    ring = kin.ring
+    gens = ring.zctx.gens()
+    units = [1 + gens[ring.names.index(n)] ** 2 for n in ring.den_names]
+    rows = [ring.clear_row(r) for r in kin.Q]
+    owners = [model.contacts[c].arm for c in kin.row_contacts]
+    matrices: dict[str, list] = {"HG^T": [r[:6] for r in rows]}
+    blocks = []
+    for a, arm in enumerate(model.arms):
+        off = 6 + model.joint_offset(a)
+        block = [[rows[i][off + k] for k in range(len(arm.joints))]
+                 for i, o in enumerate(owners) if o == a]
+        if block:
+            matrices[f"HD[{arm.name}]"] = block
+            blocks.append((arm.name, block))
+    matrices["Q"] = rows
+    name = "t chart" if not pi_joints else " = ".join(pi_joints) + " = pi"
+    return _Chart(name, pi_joints, tuple(ring.names), ring.zctx, units, matrices, blocks)
+
+
+def _rank(rows) -> int:
+    rows = [r for r in rows if not all(e.is_zero() for e in r)]
+    return el.rank(rows, len(rows[0])) if rows else 0
+
+
+def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> dict[str, int]:
+    nm, nr = 6 + r - rank_q, r - rank_dt
+    return {"Nm": nm, "Nc": nm - nr, "Ni": 6 - rank_gt, "Nr": nr, "Ng": m - rank_gt,
+            "Nd": m - rank_dt, "Nh": m - rank_q}
+
+
+def _numbers_text(numbers) -> str:
+    return ", ".join(f"{k} {numbers.get(k)}" for k in NUMBER_KEYS)
+
+
+# --- reading the locus -------------------------------------------------------------------
+def _integer_polynomial(text: str, names: tuple[str, ...], where: str) -> dict:
+    """An equation read by the package's parser, as a primitive integer exponent map
+    over ``names`` (a polynomial with rational coefficients is scaled)."""
+    expr = parse_expression(text, names, where)
+    num, den = sp.fraction(sp.together(expr))
+    symbols = [sp.Symbol(n) for n in names]
+    if den.free_symbols or not den.is_Rational:
+        raise NumberError(where, f"{brief(text)} is not a polynomial (it divides by "
+                                 f"{brief(str(den))})")
+    try:
+        poly = sp.Poly(num, *symbols, domain=sp.QQ) if symbols else None
+    except (sp.PolynomialError, sp.CoercionFailed):
+        poly = None
+    if poly is None and not symbols and num.is_Rational:
+        terms = [((), sp.Rational(num))]
+    elif poly is None:
+        raise NumberError(where, f"{brief(text)} is not a polynomial with rational "
+                                 "coefficients")
+    else:
+        terms = poly.terms()
+    scale = sp.Integer(1)
+    for _, c in terms:
+        scale = sp.ilcm(scale, sp.Rational(c).q)
+    return {tuple(int(e) for e in monom): int(sp.Rational(c) * scale)
+            for monom, c in terms if c}
+
+
+def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
+                     ) -> list[tuple[list[dict], dict[str, int]] | None]:
+    """Each component's equations (exponent maps over ``names``) and ranks, or None
+    when it cannot be read (a note says why)."""
+    out = []
+    for i, comp in enumerate(locus.components):
+        try:
+            eqs = [_integer_polynomial(text, names, f"component #{i + 1}, equation {k + 1}")
+                   for k, text in enumerate(comp.equations)]
+            outs = [_integer_polynomial(text, names, f"component #{i + 1}, outside {k + 1}")
+                    for k, text in enumerate(getattr(comp, "outside", None) or [])]
+            # the component is the closure of V(equations) minus V(outside): it is
+            # V(equations) when no outside polynomial vanishes there (a unit ideal);
+            # otherwise it can be smaller, and reading it as V(equations) could prove a
+            # covering that is not there (its saturation is not computed here)
+            if outs and not all(is_unit_ideal([*eqs, o], timeout=10.0,
+                                              nvars=len(names)).proved for o in outs):
+                notes.append(f"component #{i + 1}: a denominator of its parametrization "
+                             "may vanish on its equations (saturation is not computed "
+                             "here): the component is not used")
+                out.append(None)
+                continue
+            numbers = {k: int(comp.numbers[k]) for k in ("Nm", "Ni", "Nr")}
+        except NumberError as exc:
+            notes.append(f"{exc}: the component is not used")
+            out.append(None)
+            continue
+        except (KeyError, TypeError, ValueError):
+            notes.append(f"component #{i + 1}: its numbers cannot be read: the component "
+                         "is not used")
+            out.append(None)
+            continue
+        out.append((eqs, numbers))
+    return out
+
+
+def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[str]) -> list[dict]:
+    out = []
+    for k, text in enumerate(locus.parameter_conditions):
+        left, _, right = text.partition("=")
+        try:
+            lhs = _integer_polynomial(left, names, f"parameter condition {k + 1}")
+            rhs = _integer_polynomial(right or "0", names, f"parameter condition {k + 1}")
+        except NumberError as exc:
+            notes.append(f"{exc}: the condition is not used")
+            continue
+        diff = dict(lhs)
+        for key, c in rhs.items():
+            diff[key] = diff.get(key, 0) - c
+        out.append({key: c for key, c in diff.items() if c})
+    if out:
+        notes.append("Parameter values on the locus's parameter conditions are left out "
+                     "(they are reported apart).")
+    return out
+
+
+def _in_chart(setup: _Setup, equations: list[dict], chart: _Chart) -> list[Poly] | None:
+    """Equations on the slice ``chart``, or None when they have no point there (read
+    strictly, see the module docstring)."""
+    index = {n: i for i, n in enumerate(chart.names)}
+    pi = set(chart.pi_joints)
+    out = []
+    for eq in equations:
+        terms: dict[tuple[int, ...], int] = {}
+        for monom, c in eq.items():
+            vanishes = False
+            key = [0] * len(chart.names)
+            for name, e in zip(setup.full_names, monom, strict=True):
+                if not e:
+                    continue
+                if name.startswith("s_") and name[2:] in setup.revolute:
+                    if name[2:] not in pi:
+                        return None      # q = pi for a joint that is not at pi here
+                    vanishes = True      # s_j = 0 on this slice
+                elif name.startswith("t_") and name[2:] in pi:
+                    return None          # an equation in t_j cannot hold at q_j = pi
+                else:
+                    key[index[name]] = e
+            if not vanishes:
+                terms[tuple(key)] = terms.get(tuple(key), 0) + c
+        terms = {k: c for k, c in terms.items() if c}
+        if not terms:
+            continue
+        if len(terms) == 1 and not any(next(iter(terms))):
+            return None                  # a nonzero constant: no point here
+        out.append(_primitive(chart.zctx.from_dict(terms)))
+    return out
+
+
+def _primitive(p: Poly) -> Poly:
+    c = p.content()
+    p = p / p.context().constant(c) if c != 1 else p
+    return p if int(p.leading_coefficient()) > 0 else -p
+
+
+# --- drop ideals ---------------------------------------------------------------------------
+class _Everywhere:
+    """Marker: the rank is at least the target at every real point (no drop)."""
+
+
+@dataclass
+class _TooLarge:
+    """The drop ideal is too large to write down; ``why`` says how large."""
+
+    why: str
+
+
+def _is_real_unit(p: Poly, units: list[Poly]) -> bool:
+    """A nonzero constant times powers of ``1 + t_j^2``: no real zeros."""
+    if p.is_zero():
+        return False
+    for u in units:
+        while not p.is_constant():
+            q, r = divmod(p, u)
+            if not r.is_zero():
+                break
+            p = q
+    return p.is_constant()
+
+
+def _real_content(row: list[Poly], units: list[Poly]) -> list[Poly]:
+    """The row divided by the part of its content that has no real zeros."""
+    nonzero = [e for e in row if not e.is_zero()]
+    if not nonzero:
+        return row
+    g = nonzero[0]
+    for e in nonzero[1:]:
+        g = g.gcd(e)
+        if g.is_one():
+            return row
+    part = g.context().constant(g.content())
+    for u in units:
+        while not g.is_constant():
+            q, r = divmod(g, u)
+            if not r.is_zero():
+                break
+            g, part = q, part * u
+    return row if part.is_one() else [e / part for e in row]
+
+
+def _reduce(rows: list[list[Poly]], units: list[Poly]) -> tuple[list[list[Poly]], int]:
+    """Eliminate with pivots that have no real zeros (nonzero constants times powers of
+    ``1 + t^2``): at every real point the rank falls by exactly one per pivot."""
+    rows = [_real_content(list(r), units) for r in rows if not all(e.is_zero() for e in r)]
+    pivots = 0
+    while rows and rows[0]:
+        best = None
+        for i, r in enumerate(rows):
+            for j, e in enumerate(r):
+                if e.is_zero() or (best is not None and (len(e), e.total_degree())
+                                   >= best[0]):
+                    continue
+                if _is_real_unit(e, units):
+                    best = ((len(e), e.total_degree()), i, j)
+        if best is None:
+            break
+        _, i, j = best
+        prow = rows.pop(i)
+        p = prow[j]
+        new = []
+        for r in rows:
+            if r[j].is_zero():
+                nr = r[:j] + r[j + 1:]
+            else:
+                g = p.gcd(r[j])
+                pg, ag = p / g, r[j] / g
+                nr = [pg * x - ag * y for x, y in zip(r, prow, strict=True)]
+                nr = nr[:j] + nr[j + 1:]
+            nr = _real_content(nr, units)
+            if not all(e.is_zero() for e in nr):
+                new.append(nr)
+        rows = new
+        pivots += 1
+    return rows, pivots
+
+
+class _RealZeros:
+    """Which irreducible factors have no real zeros (cached)."""
+
+    def __init__(self, chart: _Chart, parameters: set[str]):
+        self.units = {str(u) for u in chart.units}
+        self.parameters = {chart.names.index(p) for p in parameters if p in chart.names}
+        self.cache: dict[str, bool] = {}
+
+    def strip(self, p: Poly) -> Poly:
+        """The square-free part of ``p`` without factors that have no real zeros."""
+        _, factors = p.factor()
+        out = p.context().constant(1)
+        for f, _e in factors:
+            f = _primitive(f)
+            if not self.none(f):
+                out = out * f
+        return out
+
+    def none(self, f: Poly) -> bool:
+        key = str(f)
+        if key not in self.cache:
+            self.cache[key] = self._decide(f)
+        return self.cache[key]
+
+    def _decide(self, f: Poly) -> bool:
+        if str(f) in self.units:
+            return True
+        degrees = f.degrees()
+        used = [i for i, d in enumerate(degrees) if d]
+        items = [(tuple(int(e) for e in m), int(c)) for m, c in f.to_dict().items()]
+        if len(used) == 1 and used[0] in self.parameters and len(items) == 1 \
+                and f.total_degree() == 1:
+            return True                        # a length parameter: positive
+        if len({c > 0 for _, c in items}) == 1 and any(not any(m) for m, _ in items) \
+                and all(e % 2 == 0 for m, _ in items for e in m):
+            return True                        # even monomials of one sign, constant
+        if len(used) == 1 and degrees[used[0]] % 2 == 0:
+            k = used[0]
+            x = sp.Symbol("x")
+            poly = sp.Poly({(m[k],): c for m, c in items}, x, domain=sp.ZZ)
+            return poly.count_roots() == 0     # Sturm's theorem: exact
+        return False
+
+
+def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
+                     ) -> list[Poly] | type[_Everywhere] | _TooLarge:
+    """Generators of an ideal whose zeros contain the real points where
+    ``rank(rows) < rho`` and no other real point: the ``rho``-minors after the
+    real-unit reduction, stripped of factors without real zeros. ``[]`` when the rank
+    is below ``rho`` everywhere; :class:`_Everywhere` when it never is at a real point."""
+    reduced, pivots = _reduce(rows, chart.units)
+    k = rho - pivots
+    if k <= 0:
+        return _Everywhere
+    if not reduced or k > min(len(reduced), len(reduced[0])):
+        return []
+    nr, nc = len(reduced), len(reduced[0])
+    sizes = sorted((len(e) for r in reduced for e in r), reverse=True)
+    estimate = 1
+    for size in sizes[:k]:
+        estimate *= size
+    if estimate > MAX_MINOR_TERMS:
+        return _TooLarge(f"the {k} x {k} minors of the {nr} x {nc} matrix left after "
+                         f"the pivots without real zeros may have {estimate:.2g} terms "
+                         f"(largest entry {sizes[0]} terms): too large to write")
+    dets = []
+    if comb(nr, k) * comb(nc, k) <= MAX_MINORS:
+        for rs in itertools.combinations(range(nr), k):
+            for cs in itertools.combinations(range(nc), k):
+                dets.append(el.determinant([[reduced[i][j] for j in cs] for i in rs]))
+    else:
+        zctx = chart.zctx
+        for _ in range(len(chart.names) + 3):
+            m = reduced
+            if k < nr:
+                left = [[zctx.constant(rng.randint(-5, 5)) for _ in range(nr)]
+                        for _ in range(k)]
+                m = el.matmul(left, m, zctx)
+            if k < nc:
+                right = [[zctx.constant(rng.randint(-5, 5)) for _ in range(k)]
+                         for _ in range(nc)]
+                m = el.matmul(m, right, zctx)
+            dets.append(el.determinant(m))
+    return _clean([d for d in dets if not d.is_zero()], real)
+
+
+def _clean(polys: list[Poly], real: _RealZeros) -> list[Poly] | type[_Everywhere]:
+    """Square-free parts without factors that have no real zeros; multiples of another
+    generator dropped (the ideal is unchanged)."""
+    seen: dict[str, Poly] = {}
+    for p in polys:
+        q = real.strip(p)
+        if q.is_constant():
+            return _Everywhere
+        seen.setdefault(str(q), q)
+    kept: list[Poly] = []
+    for g in sorted(seen.values(), key=lambda p: (len(p), p.total_degree(), str(p))):
+        if not any(divmod(g, h)[1].is_zero() for h in kept):
+            kept.append(g)
+    return kept
+
+
+def _dt_generators(chart: _Chart, total: int, setup: _Setup, real: _RealZeros, rng,
+                   cache: dict) -> list[Poly] | type[_Everywhere] | _TooLarge:
+    """The points where the ranks of the arm blocks of ``Dt`` add up to less than
+    ``total``: for every split ``k_1 + ... = total`` (each ``k_a`` at most the arm's
+    generic rank) some arm has rank below ``k_a``; the ideal is the sum over splits of
+    the products of the arms' ``I_(k_a)``."""
+    per_arm = []
+    for name, block in chart.arm_blocks:
+        top = setup.generic_ranks[f"HD[{name}]"]
+        per_arm.append([_cached(cache, (f"HD[{name}]", k), lambda b=block, k=k:
+                                _Everywhere if k <= 0 else
+                                _drop_generators(b, k, chart, real, rng))
+                        for k in range(top + 1)])
+    gens: list[Poly] = []
+    one = chart.zctx.constant(1)
+    for split in itertools.product(*[range(len(a)) for a in per_arm]):
+        if sum(split) != total:
+            continue
+        parts = [per_arm[a][k] for a, k in enumerate(split)]
+        too_large = next((p for p in parts if isinstance(p, _TooLarge)), None)
+        if too_large is not None:
+            return too_large
+        lists = [p for p in parts if p is not _Everywhere]
+        if not lists:
+            return _Everywhere                 # these ranks hold at every real point
+        if any(not p for p in lists):
+            continue                           # an arm is below k_a everywhere
+        for choice in itertools.product(*lists):
+            prod = one
+            for g in choice:
+                prod = prod * g
+            gens.append(prod)
+    return _clean(gens, real) if gens else []
+
+
+def _cached(cache: dict, key, make):
+    if key not in cache:
+        cache[key] = make()
+    return cache[key]
+
+
+# --- running the tests ---------------------------------------------------------------------
+def _order(index: int, component, ranks: dict[str, int]) -> tuple[int, int, int, int]:
+    """A total order of the components: inside one, the components later in it may hold
+    its deeper drops. Smaller ranks (larger numbers) come later, then greater depth,
+    then more equations, then the listing order. Any total order makes the induction
+    of the module docstring work (take the last component that holds a point); this
+    one puts every component with the numbers of a drop point after the components
+    the point drops from."""
+    return (-sum(ranks.values()), component.depth, len(component.equations), index)
+
+
+class _Runner:
+    def __init__(self, cert: Certificate, setup: _Setup, locus: Locus, timeout: float,
+                 backend: str, first_failure: bool, max_depth: int | None):
+        self.cert, self.setup, self.locus = cert, setup, locus
+        self.max_depth = max_depth
+        self.first_failure, self.stopped = first_failure, False
+        self.skipped_depth = False
+        self.timeout, self.backend = timeout, backend
+        self.rng = random.Random(1992)
+        r = len(setup.model.joints)
+        self.component_ranks = [
+            None if c is None else {"Q": 6 + r - c[1]["Nm"], "HG^T": 6 - c[1]["Ni"],
+                                    "HD": r - c[1]["Nr"]}
+            for c in setup.components]
+
+    def chart(self, chart: _Chart) -> None:
+        setup = self.setup
+        real = _RealZeros(chart, setup.parameters)
+        cache: dict = {}
+        here = {}
+        for i, comp in enumerate(setup.components):
+            if comp is not None:
+                eqs = _in_chart(setup, comp[0], chart)
+                if eqs is not None:
+                    here[i] = eqs
+        conditions = [p for p in (_in_chart(setup, [c], chart) for c in setup.conditions)
+                      if p]
+        everything = list(here.items())
+        for name in chart.matrices:
+            if self.stopped:
+                return
+            gens = partial(self.generators, chart, real, cache, name,
+                           setup.generic_ranks[name])
+            self.run(Check(chart.name, 0, None, name, "drops"), chart, [], gens,
+                     everything, conditions)
+        for i in sorted(here):
+            comp = self.locus.components[i]
+            if self.max_depth is not None and comp.depth > self.max_depth:
+                self.skipped_depth = True
+                continue
+            key = _order(i, comp, self.component_ranks[i])
+            later = [(j, p) for j, p in here.items()
+                     if _order(j, self.locus.components[j], self.component_ranks[j]) > key]
+            ranks = self.component_ranks[i]
+            for name in ("HG^T", "HD", "Q"):
+                for kind, target in (("numbers", ranks[name] + 1), ("drops", ranks[name])):
+                    if self.stopped:
+                        return
+                    depth = comp.depth + (1 if kind == "drops" else 0)
+                    if self.max_depth is not None and depth > self.max_depth:
+                        self.skipped_depth = True
+                        continue
+                    gens = partial(self.generators, chart, real, cache, name, target)
+                    check = Check(chart.name, depth, i, name, kind)
+                    if kind == "numbers":
+                        self.bound(check, chart, here[i], gens, conditions)
+                    else:
+                        self.run(check, chart, here[i], gens, later, conditions)
+
+    def generators(self, chart: _Chart, real: _RealZeros, cache: dict, name: str,
+                   target: int):
+        """The drop ideal of matrix ``name`` below rank ``target`` (cached)."""
+        key = (name, target)
+        if key not in cache:
+            if name == "HD":
+                cache[key] = _dt_generators(chart, target, self.setup, real, self.rng,
+                                            cache)
+            else:
+                cache[key] = _drop_generators(chart.matrices[name], target, chart, real,
+                                              self.rng)
+        return cache[key]
+
+    def _test_timeout(self, check: Check) -> float:
+        """Seconds for one test: its own bound, within what is left of the whole
+        certificate's (past that, :class:`TimeLimitReached`)."""
+        deadline.check(f"the test at {check.where()}")
+        left = deadline.remaining()
+        return self.timeout if left is None else max(min(self.timeout, left), 0.01)
+
+    def bound(self, check: Check, chart: _Chart, own: list[Poly], gens, conditions
+              ) -> None:
+        """The rank on the component never exceeds its value: the ``(rho + 1)``-minors
+        vanish on it. ``gens`` makes their generators."""
+        seconds = self._test_timeout(check)
+        gens = gens()
+        if isinstance(gens, _TooLarge):
+            check.why = gens.why
+            self._add(check)
+            return
+        if gens == []:
+            check.certified, check.backend = True, "none"
+            check.why = "no larger rank at any point"
+            self._add(check)
+            return
+        if gens is _Everywhere:
+            check.why = ("the rank is larger than the component's numbers give at every "
+                         "real point")
+            self._add(check)
+            return
+        verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
+                         nvars=len(chart.names),
+                         allowed=[[u] for u in chart.units] + conditions)
+        self._record(check, verdict, "the rank is larger than the component's numbers "
+                                     "give at some of its points")
+
+    def run(self, check: Check, chart: _Chart, own: list[Poly], gens, covering,
+            conditions) -> None:
+        """The drop set (within ``own``) lies in the ``covering`` components. ``gens``
+        makes the generators of the drop ideal."""
+        seconds = self._test_timeout(check)
+        gens = gens()
+        if isinstance(gens, _TooLarge):
+            check.why = gens.why
+            self._add(check)
+            return
+        if gens is _Everywhere:
+            check.certified, check.backend = True, "none"
+            check.why = "the rank never drops at a real point"
+            self._add(check)
+            return
+        whole = next((i for i, p in covering if not p), None)
+        if whole is not None:
+            check.certified, check.backend = True, "none"
+            check.why = f"the whole slice lies in component #{whole + 1}"
+            self._add(check)
+            return
+        verdict = covers(list(own) + list(gens), [p for _, p in covering],
+                         timeout=seconds, backend=self.backend,
+                         nvars=len(chart.names),
+                         allowed=[[u] for u in chart.units] + conditions)
+        lower = "below its generic value" if check.depth == 0 else \
+            "below its value on the component"
+        where = "on no listed component" if check.depth == 0 else \
+            "on no component listed after it"
+        self._record(check, verdict, f"the rank drops {lower} at points {where}")
+
+    def _record(self, check: Check, verdict: Verdict, failure: str) -> None:
+        check.backend, check.seconds = verdict.backend, round(verdict.seconds, 3)
+        if verdict.proved:
+            check.certified = True
+        elif verdict.holds is False:
+            check.why = failure + ("" if verdict.exact else " (found modulo a prime)")
+        elif verdict.holds is True:
+            check.why = f"not proved ({verdict.backend} works modulo a prime)"
+        else:
+            check.why = verdict.detail or "undecided"
+            if verdict.detail.startswith("timed out") and singular_path() is None:
+                check.why += f" (Singular not installed: {EXTRA_HINT})"
+        self._add(check)
+
+    def _add(self, check: Check) -> None:
+        self.cert.checks.append(check)
+        if self.first_failure and not check.certified:
+            self.stopped = True
+
+
+def _summarize(cert: Certificate, locus: Locus, max_depth: int | None) -> None:
+    def tally(table: dict, key, check: Check) -> None:
+        entry = table.setdefault(key, {"certified": True, "why": "", "tests": 0,
+                                       "failed": 0})
+        entry["tests"] += 1
+        if not check.certified:
+            entry["failed"] += 1
+            if entry["certified"]:
+                entry["certified"], entry["why"] = False, f"{check.where()}: {check.why}"
+
+    depths: dict[int, dict] = {}
+    charts: dict[str, dict] = {}
+    for c in cert.checks:
+        tally(depths, c.depth, c)
+        tally(charts, c.chart, c)
+    top = max((c.depth for c in locus.components), default=-1) + 1
+    for d in range(top + 1):
+        untested = max_depth is not None and d > max_depth
+        depths.setdefault(d, {"certified": not untested,
+                              "why": "not tested (max_depth)" if untested else
+                              "nothing to test", "tests": 0, "failed": 0})
+    cert.depths = dict(sorted(depths.items()))
+    cert.charts = charts
+    failing = [f"{c.where()}: {c.why}" for c in sorted(
+        (c for c in cert.checks if not c.certified), key=lambda c: c.depth)]
+    failing = [n for n in cert.notes if n.endswith("is not used")] + failing
+    if max_depth is not None:
+        failing.append(f"depths beyond {max_depth} were not tested")
+    cert.certified = not failing
+    if cert.certified:
+        cert.summary = "complete (certified)"
+    else:
+        more = f" (and {len(failing) - 1} more)" if len(failing) > 1 else ""
+        cert.summary = f"not certified: {failing[0]}{more}"
+
+
+__all__ = ["Certificate", "CertifyError", "Check", "certify_locus"]

@@ -1,0 +1,586 @@
+"""The completeness certificate of a singularity locus and its Gröbner-basis layer.
+
+Known loci, derived by hand (paper case 1: joints at (0,0) and (L,0) about z, contacts
+at c1 = L(-sin q1, cos q1), c2 = (L - L sin q2, L cos q2)):
+
+* hard/hard: ``rank Q`` drops where a wrench can pass between the contacts; with
+  ``d = c1 - c2 != 0`` it must lie along ``d`` and be orthogonal to both contact
+  velocities ``e_z x (c_i - o_i)``, so both links lie on the line through the joints
+  (the x-axis): ``cos q1 = cos q2 = 0``, the four points ``q1, q2 = +-pi/2``; with
+  ``d = 0`` (``c1 = c2``: ``cos q1 = cos q2``, ``sin q2 - sin q1 = 1``) the points
+  ``q1 = -q2 = -pi/6, -5pi/6`` (``t1 + t2 = 0, t1^2 + 4 t1 + 1 = 0``), where also
+  ``rank Gt^T`` falls from 5 to 3. ``Dt`` (one column per arm, never zero) never drops.
+  At ``q = pi`` no link lies on the x-axis and ``c1 != c2``: nothing.
+* complete/hard: the object moves with link 1, so c2 must move as a point of link 1 and
+  of link 2 at once: ``q1dot c2 = q2dot (c2 - o2)`` (in the plane), possible exactly
+  when c2, the origin and o2 are collinear: ``cos q2 = 0``, i.e. ``q2 = +-pi/2`` for
+  every ``q1`` (q1 = pi included): Nm 0 -> 1, Nh 1 -> 2.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+
+import flint
+import pytest
+from typer.testing import CliRunner
+
+from coopkin_sym import load
+from coopkin_sym.cli import app
+from coopkin_sym.exact import deadline
+from coopkin_sym.exact import groebner as gb
+from coopkin_sym.exactnum import NumberError
+from coopkin_sym.locus import compute_locus
+from coopkin_sym.locus_certify import CertifyError, _integer_polynomial, certify_locus
+from coopkin_sym.locus_types import Component, Locus
+from coopkin_sym.report import (
+    ReportError,
+    locus_from_json,
+    render_json,
+    render_latex,
+    render_markdown,
+)
+
+CTX = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+X, Y = CTX.gens()
+EXACT = ["flint", "sympy"] + (["singular"] if gb.singular_path() else [])
+needs_msolve = pytest.mark.skipif(
+    gb.msolve_path() is None,
+    reason="msolve not installed (the optional extra: pip install coopkin_sym[certify])")
+
+CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+ON_THE_LINE = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
+C1_IS_C2 = {"Nm": 3, "Nc": 3, "Ni": 3, "Nr": 0, "Ng": 3, "Nd": 4, "Nh": 1}
+COMPLETE_HARD_GENERIC = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
+Q2_ACROSS = {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 2}
+
+
+def case1_hard_components() -> list[Component]:
+    comps = [Component([f"t_q1 - ({a})", f"t_q2 - ({b})"], dict(ON_THE_LINE), None, True)
+             for a in (1, -1) for b in (1, -1)]
+    comps.append(Component(["t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2"], dict(C1_IS_C2), None,
+                           True))
+    return comps
+
+
+def case1_locus(components, generic=CASE1_GENERIC) -> Locus:
+    return Locus("paper case 1", ["t_q1", "t_q2"], "L=1", dict(generic), components)
+
+
+# --- the Gröbner-basis layer (ideals checked by hand) -----------------------------------
+@pytest.mark.parametrize("backend", EXACT)
+def test_unit_ideal_exact(backend):
+    # x = -y gives x^2 + y^2 = -4 != 1: no common zero
+    verdict = gb.is_unit_ideal([X**2 + Y**2 - 1, X * Y - 2, X + Y], timeout=60,
+                               backend=backend)
+    assert (verdict.holds, verdict.exact, verdict.backend) == (True, True, backend)
+    # circle and hyperbola meet (over C): not the unit ideal
+    verdict = gb.is_unit_ideal([X**2 + Y**2 - 1, X * Y - 2], timeout=60, backend=backend)
+    assert (verdict.holds, verdict.exact) == (False, True)
+
+
+@pytest.mark.parametrize("backend", EXACT)
+def test_radical_membership(backend):
+    # V(x^2, y) = {0}: x and x + y vanish there, x + 1 does not
+    assert gb.contains_radical([X**2, Y], X + Y, timeout=60, backend=backend).proved
+    assert gb.contains_radical([X**3, Y**2], X * Y + X, timeout=60, backend=backend).proved
+    assert gb.contains_radical([X**2, Y], X + 1, timeout=60,
+                               backend=backend).holds is False
+    # V(x^2 - y^2, x - y) is the line x = y: x does not vanish on it, x - y does
+    assert gb.contains_radical([X**2 - Y**2, X - Y], X, timeout=60,
+                               backend=backend).holds is False
+    assert gb.contains_radical([X**2 - Y**2, X - Y], X - Y, timeout=60,
+                               backend=backend).proved
+
+
+@pytest.mark.parametrize("backend", EXACT)
+def test_covers(backend):
+    # V(x (y - 1), x y) = {x = 0}
+    ideal = [X * (Y - 1), X * Y]
+    assert gb.covers(ideal, [[X]], timeout=60, backend=backend).proved
+    assert gb.covers(ideal, [[Y], [X - 1]], timeout=60, backend=backend).holds is False
+    # V(x y, x (x - 1)) = {x = 0} and the point (1, 0): a component with two generators
+    ideal = [X * Y, X * (X - 1)]
+    assert gb.covers(ideal, [[X], [X - 1, Y]], timeout=60, backend=backend).proved
+    assert gb.covers(ideal, [[X], [X - 1, Y - 1]], timeout=60,
+                     backend=backend).holds is False
+    # V(x y) is two lines; y = 0 is missing
+    assert gb.covers([X * Y], [[X], [Y - 1]], timeout=60, backend=backend).holds is False
+    # the two points (+-i, 0) lie only on the allowed set x^2 + 1 = 0
+    assert gb.covers([X**2 + 1, Y], [], timeout=60, backend=backend).holds is False
+    assert gb.covers([X**2 + 1, Y], [], timeout=60, backend=backend,
+                     allowed=[[X**2 + 1]]).proved
+    # nothing to cover / a component that is the whole plane
+    assert gb.covers([CTX.constant(3)], [], timeout=60, backend=backend).proved
+    assert gb.covers([X], [[]], timeout=60, backend=backend).proved
+
+
+def test_plain_exponent_maps_and_errors():
+    # x - 1 and x: no common zero (exponent maps in one variable)
+    assert gb.is_unit_ideal([{(1,): 1, (0,): -1}, {(1,): 1}], timeout=60).proved
+    with pytest.raises(gb.GroebnerError, match="unknown backend 'maple'"):
+        gb.is_unit_ideal([X], backend="maple")
+    with pytest.raises(gb.GroebnerError, match="mixed"):
+        gb.is_unit_ideal([X, {(1, 0, 0): 1}])
+    other = flint.fmpz_mpoly_ctx.get(("x", "y", "z"), "degrevlex")
+    with pytest.raises(gb.GroebnerError, match="polynomials in 3 and 2 variables mixed"):
+        gb.covers([X], [[other.gens()[0]]], timeout=10)
+
+
+def test_time_bound():
+    # cyclic-6 takes flint's naive Buchberger far longer than 0.3 s
+    n = 6
+    ctx = flint.fmpz_mpoly_ctx.get(tuple(f"u{i}" for i in range(n)), "degrevlex")
+    u = ctx.gens()
+
+    def product(items):
+        acc = ctx.constant(1)
+        for v in items:
+            acc = acc * v
+        return acc
+
+    system = [sum(product(u[(i + j) % n] for j in range(k)) for i in range(n))
+              for k in range(1, n)]
+    system.append(product(u) - 1)
+    verdict = gb.is_unit_ideal(system, timeout=0.3, backend="flint")
+    assert (verdict.holds, verdict.exact, verdict.detail) == (None, False,
+                                                              "timed out after 0.3 s")
+    # the worker is replaced after the kill: the next test still runs
+    assert gb.is_unit_ideal([X, X - 1], timeout=60, backend="flint").proved
+
+
+@needs_msolve
+def test_msolve_is_a_screen_never_a_proof():
+    unit = gb.is_unit_ideal([X**2 + Y**2 - 1, X * Y - 2, X + Y], timeout=60,
+                            backend="msolve")
+    assert (unit.holds, unit.exact, unit.backend) == (True, False, "msolve")
+    assert not unit.proved
+    proper = gb.is_unit_ideal([X**2 + Y**2 - 1, X * Y - 2], timeout=60, backend="msolve")
+    assert (proper.holds, proper.exact) == (False, False)
+    # coefficients are reduced modulo the prime: 2^31 - 1 is zero there
+    assert gb.is_unit_ideal([{(1, 0): gb.MSOLVE_PRIME}], timeout=60,
+                            backend="msolve").holds is False
+
+
+def test_text_for_the_binaries():
+    p = {(2, 0): -3, (0, 1): 1, (0, 0): 5}
+    assert gb.polynomial_text(p, ["x0", "x1"]) == "-3*x0^2+x1+5"
+    assert gb.polynomial_text({(1, 1): -1, (0, 0): 1}, ["x0", "x1"]) == "-x0*x1+1"
+    assert gb.msolve_text([p], 2, 7) == "x0,x1\n7\n-3*x0^2+x1+5\n"
+
+
+# --- reading equations --------------------------------------------------------------------
+def test_equations_read_by_the_package_parser():
+    # rational coefficients are scaled to a primitive integer polynomial
+    got = _integer_polynomial("-(t_q1 - 1)*(t_q1+1)^2/3 - 2", ("t_q1",), "eq")
+    assert got == {(3,): -1, (2,): -1, (1,): 1, (0,): -5}
+    assert _integer_polynomial("s_q1", ("t_q2", "s_q1"), "eq") == {(0, 1): 1}
+    assert _integer_polynomial("0.5*t_q1 + 1e-1", ("t_q1",), "eq") == {(1,): 5, (0,): 1}
+    long = " + ".join(f"{k}*t_q1**{k % 7}*t_q2**4" for k in range(1, 400))
+    assert len(_integer_polynomial(long, ("t_q1", "t_q2"), "eq")) == 7
+    for bad, message in [("t_q1 + x", "undeclared symbol x"),
+                         ("__import__('os')", "eq: "),
+                         ("t_q1**t_q1", "eq: "),
+                         ("1/t_q1", "not a polynomial"),
+                         ("pi*t_q1", "not a polynomial with rational coefficients"),
+                         ("(t_q1 + 1", "eq: "),
+                         ("t_q1**1001", "too large"),
+                         ("(t_q1 + t_q2 + 7)**999*(t_q1 - t_q2)**999", "too large")]:
+        with pytest.raises(NumberError, match=message) as info:
+            _integer_polynomial(bad, ("t_q1", "t_q2"), "eq")
+        assert "\n" not in str(info.value)
+
+
+# --- certificates -------------------------------------------------------------------------
+def test_case1_hard_complete_locus_is_certified():
+    system = load("paper-case1-hard")
+    # the numbers of the hand-made components, where they are rational points
+    for a in ("pi/2", "-pi/2"):
+        for b in ("pi/2", "-pi/2"):
+            assert system.analyze(f"q1={a},q2={b}").numbers.as_dict() == ON_THE_LINE
+    # q = pi: generic numbers (no link on the x-axis, c1 != c2)
+    for at in ("q1=pi,q2=0", "q1=pi,q2=pi/2", "q1=pi/2,q2=pi", "q1=pi,q2=pi"):
+        assert system.analyze(at).numbers.as_dict() == CASE1_GENERIC
+    cert = certify_locus(system, case1_locus(case1_hard_components()), timeout=60)
+    assert cert.summary == "complete (certified)"
+    assert cert.certified
+    assert sorted(cert.charts) == ["q1 = pi", "q1 = q2 = pi", "q2 = pi", "t chart"]
+    assert all(entry["certified"] and entry["failed"] == 0
+               for entry in list(cert.charts.values()) + list(cert.depths.values()))
+    assert sorted(cert.depths) == [0, 1]
+    # every component's numbers and the drops inside it (none) were tested, t chart
+    inside = {(c.inside, c.kind, c.matrix) for c in cert.checks if c.chart == "t chart"
+              and c.inside is not None}
+    assert inside == {(i, kind, m) for i in range(5) for kind in ("numbers", "drops")
+                      for m in ("HG^T", "HD", "Q")}
+    data = json.loads(json.dumps(cert.to_json()))
+    assert data["summary"] == "complete (certified)"
+    assert data["depths"]["0"]["certified"] is True
+    assert data["failed"] == [] and data["tests"] == 46 == sum(data["certified_by"].values())
+    assert "checks" not in data
+    every = json.loads(json.dumps(cert.to_json(every_check=True)))
+    assert len(every["checks"]) == 46
+    assert {"chart", "depth", "inside", "matrix", "kind", "certified", "why", "backend",
+            "seconds"} <= set(every["checks"][0])
+
+
+def test_max_depth():
+    cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
+                         timeout=60, max_depth=0)
+    assert cert.summary == "not certified: depths beyond 0 were not tested"
+    assert cert.depths[0] == {"certified": True, "why": "", "tests": 46 - 15, "failed": 0}
+    assert cert.depths[1] == {"certified": False, "why": "not tested (max_depth)",
+                              "tests": 0, "failed": 0}
+
+
+@pytest.mark.parametrize("missing", range(5))
+def test_case1_hard_without_one_component_fails(missing):
+    comps = case1_hard_components()
+    del comps[missing]
+    cert = certify_locus(load("paper-case1-hard"), case1_locus(comps), timeout=60)
+    assert not cert.certified
+    failed = {(c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified}
+    if missing < 4:         # a point where both links lie on the x-axis: only Q drops
+        assert failed == {("t chart", 0, "Q")}
+        assert cert.summary == ("not certified: t chart, depth 0, rank of Q: the rank drops "
+                                "below its generic value at points on no listed component")
+    else:                   # c1 = c2: Gt^T drops too
+        assert failed == {("t chart", 0, "HG^T"), ("t chart", 0, "Q")}
+        assert cert.summary.startswith("not certified: t chart, depth 0, rank of HG^T: ")
+    assert cert.depths[0]["certified"] is False and cert.depths[1]["certified"] is True
+    assert cert.charts["q1 = pi"]["certified"] is True
+
+
+def test_wrong_numbers_on_a_component_fail():
+    system = load("paper-case1-hard")
+    comps = case1_hard_components()
+    # c1 = c2 claimed with Gt^T at its generic rank (Ni 1): it is smaller everywhere there
+    comps[4].numbers = dict(ON_THE_LINE)
+    cert = certify_locus(system, case1_locus(comps), timeout=60)
+    failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
+              if not c.certified]
+    assert failed == [("t chart", 1, 4, "drops", "HG^T")]
+    assert cert.summary == ("not certified: t chart, depth 1, component #5, rank of HG^T: the "
+                            "rank drops below its value on the component at points on no "
+                            "component listed after it")
+    # a line of generic configurations claimed to have the numbers of the four points:
+    # Q has a larger rank on most of it
+    comps = case1_hard_components() + [Component(["2*t_q1 - 1"], dict(ON_THE_LINE), None,
+                                                 True)]
+    cert = certify_locus(system, case1_locus(comps), timeout=60)
+    failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
+              if not c.certified]
+    # (the line q1 = 2 atan(1/2) crosses the slice q2 = pi too)
+    assert failed == [("t chart", 0, 5, "numbers", "Q"), ("q2 = pi", 0, 5, "numbers", "Q")]
+    assert cert.summary == ("not certified: t chart, depth 0, component #6, numbers, rank of "
+                            "Q: the rank is larger than the component's numbers give at some "
+                            "of its points (and 1 more)")
+    # numbers that do not fit one another are refused outright
+    comps = case1_hard_components()
+    comps[0].numbers = dict(ON_THE_LINE, Nh=0)
+    cert = certify_locus(system, case1_locus(comps), timeout=60)
+    assert cert.summary.startswith("not certified: component #1: its numbers (Nm 3, Nc 3, "
+                                   "Ni 1, Nr 0, Ng 1, Nd 4, Nh 0) do not fit one another")
+
+
+def test_case1_complete_hard_search_result_fails():
+    # the locus search of this version reports no component at all for this system
+    # (its row-content division hides q2 = +-pi/2): frozen here as it was reported
+    system = load("paper-case1-complete-hard")
+    assert system.analyze("q1=0,q2=pi/2").numbers.as_dict() == Q2_ACROSS
+    assert system.analyze("q1=pi,q2=-pi/2").numbers.as_dict() == Q2_ACROSS
+    searched = case1_locus([], COMPLETE_HARD_GENERIC)
+    searched.dropped = ["t_q1**2 + 1 = 0 (no real points)",
+                        "t_q1**2 + t_q1 + 1 = 0 (no real points)",
+                        "t_q2**2 + 1 = 0 (no real points)"]
+    cert = certify_locus(system, searched, timeout=60)
+    failed = sorted((c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified)
+    assert failed == [("q1 = pi", 0, "Q"), ("t chart", 0, "Q")]
+    assert cert.summary == ("not certified: t chart, depth 0, rank of Q: the rank drops "
+                            "below its generic value at points on no listed component "
+                            "(and 1 more)")
+    # the complete locus: q2 = +-pi/2 for every q1 (pi included), nothing deeper
+    complete = case1_locus([Component(["t_q2 - 1"], dict(Q2_ACROSS), None, True),
+                            Component(["t_q2 + 1"], dict(Q2_ACROSS), None, True)],
+                           COMPLETE_HARD_GENERIC)
+    cert = certify_locus(system, complete, timeout=60)
+    assert cert.summary == "complete (certified)"
+
+
+def test_case1_soft_hard_misses_q2_at_pi():
+    # with q2 = pi, c2 = (L, -L) and the soft contact's normal n1 = (cos q1, sin q1):
+    # n1 . (c1 - c2) = sin q1 - cos q1 vanishes at q1 = pi/4, -3pi/4
+    # (t1^2 + 2 t1 - 1 = 0): the object's rotation about c1 c2 is free there (Ni 0 -> 1)
+    generic = {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0, "Ng": 1, "Nd": 5, "Nh": 0}
+    family = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 2, "Nd": 5, "Nh": 1}
+    cubic = "t_q1**2*t_q2 - t_q1**2 + 2*t_q1*t_q2 + 2*t_q1 - t_q2 + 1"
+    comps = [Component([cubic], dict(family), None, True)]
+    locus = Locus("soft/hard", ["t_q1", "t_q2"], "L=1", generic, comps)
+    cert = certify_locus(load("paper-case1-soft-hard"), locus, timeout=60,
+                         first_failure=True)
+    assert not cert.certified
+    bad = [c for c in cert.checks if not c.certified]
+    assert len(bad) == 1 and bad[0].depth == 0
+    assert ("Stopped at the first test not certified; the tests after it were not run."
+            in cert.notes)
+
+
+def test_case2_complete_locus_is_certified():
+    # both SCARA-type arms lose a joint direction where their three revolute axes lie
+    # in one plane (q2 = +-pi/2, q7 = +-pi/2); inside both, q1 = +-pi/2 and q6 = +-pi/2
+    # add a hyperstatic direction (the locus of paper case 2, 8 joints free)
+    d0 = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 6, "Nd": 5, "Nh": 1}
+    d1 = {"Nm": 3, "Nc": 1, "Ni": 0, "Nr": 2, "Ng": 6, "Nd": 6, "Nh": 1}
+    d2 = {"Nm": 4, "Nc": 2, "Ni": 0, "Nr": 2, "Ng": 6, "Nd": 6, "Nh": 2}
+    comps: list[Component] = []
+    for sign in ("+", "-"):
+        parent = len(comps)
+        comps.append(Component([f"t_q2 {sign} 1"], dict(d0), None, True))
+        for s7 in ("+", "-"):
+            mid = len(comps)
+            comps.append(Component([f"t_q2 {sign} 1", f"t_q7 {s7} 1"], dict(d1), None,
+                                   True, depth=1, parent=parent))
+            for s1 in ("+", "-"):
+                for s6 in ("+", "-"):
+                    comps.append(Component([f"t_q2 {sign} 1", f"t_q7 {s7} 1",
+                                            f"t_q1 {s1} 1", f"t_q6 {s6} 1"], dict(d2),
+                                           None, True, depth=2, parent=mid))
+    comps += [Component([f"t_q7 {s} 1"], dict(d0), None, True) for s in ("+", "-")]
+    names = ["t_q1", "t_q2", "t_q3", "q4", "q5", "t_q6", "t_q7", "t_q8"]
+    generic = {"Nm": 3, "Nc": 3, "Ni": 0, "Nr": 0, "Ng": 6, "Nd": 4, "Nh": 1}
+    system = load("paper-case2-complete")
+    assert system.analyze("q2=pi/2,q7=-pi/2,q1=pi/2,q6=pi/2").numbers.as_dict() == d2
+    cert = certify_locus(system, Locus("case 2", names, "L=1", generic, comps), timeout=60)
+    assert cert.summary == "complete (certified)"
+    assert len(cert.charts) == 64 and sorted(cert.depths) == [0, 1, 2, 3]
+    # without one depth-2 point, the drops inside its parent are not covered
+    del comps[3]
+    cert = certify_locus(system, Locus("case 2", names, "L=1", generic, comps), timeout=60,
+                         first_failure=True)
+    bad = [c for c in cert.checks if not c.certified]
+    assert [(c.chart, c.depth, c.inside, c.kind) for c in bad] == [
+        ("t chart", 2, 1, "drops")]
+
+
+@needs_msolve
+def test_case2_hard_search_result_misses_coincident_contacts():
+    # the search of this version lists the families of q2, q7, q8 below but not the
+    # configurations where the two contact points meet (Gt^T: rank 5 -> 3), e.g. every
+    # joint at home and q5 = -2 L: c1 = c2 = (L, L, L)
+    system = load("paper-case2-hard")
+    generic = {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
+    assert system.analyze("L=1").numbers.as_dict() == generic
+    assert system.analyze("L=1,q5=-2").numbers.as_dict()["Ni"] == 3
+    one = {"Nm": 8, "Nc": 5, "Ni": 1, "Nr": 3, "Ng": 1, "Nd": 1, "Nh": 0}
+    comps = [Component([f"t_q2 {s} 1"], dict(one), None, True) for s in ("+", "-")]
+    comps += [Component(["t_q8**2 + 2*t_q8 - 1", f"t_q7 {s} 1"], dict(one), None, True)
+              for s in ("+", "-")]
+    names = ["t_q1", "t_q2", "t_q3", "q4", "q5", "t_q6", "t_q7", "t_q8"]
+    cert = certify_locus(system, Locus("case 2", names, "L=1", generic, comps), timeout=60,
+                         first_failure=True)
+    bad = [c for c in cert.checks if not c.certified]
+    assert [(c.chart, c.depth, c.matrix) for c in bad] == [("t chart", 0, "HG^T")]
+    assert bad[0].why.startswith("the rank drops below its generic value at points on no "
+                                 "listed component")
+
+
+def test_case2_hard_on_flint_alone_says_what_timed_out():
+    # flint's Buchberger neither proves nor refutes the c1 = c2 test of case 2 in 2 s
+    system = load("paper-case2-hard")
+    generic = {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
+    names = ["t_q1", "t_q2", "t_q3", "q4", "q5", "t_q6", "t_q7", "t_q8"]
+    cert = certify_locus(system, Locus("case 2", names, "L=1", generic), timeout=2,
+                         backend="flint", first_failure=True)
+    bad = [c for c in cert.checks if not c.certified]
+    assert [(c.chart, c.depth, c.matrix, c.backend) for c in bad] == [
+        ("t chart", 0, "HG^T", "flint")]
+    assert bad[0].why.startswith("timed out after 2 s")
+    assert cert.summary.startswith("not certified: t chart, depth 0, rank of HG^T: timed "
+                                   "out after 2 s")
+
+
+def test_bad_locus_input():
+    system = load("paper-case1-hard")
+    with pytest.raises(CertifyError, match="certify with the values the locus was computed"):
+        certify_locus(system, Locus("x", ["t_q1"], "L=1", dict(CASE1_GENERIC)))
+    comps = case1_hard_components()
+    comps[0].equations = ["t_q1 - __import__"]
+    cert = certify_locus(system, case1_locus(comps), timeout=60)
+    assert not cert.certified
+    assert cert.summary.startswith("not certified: component #1, equation 1: "
+                                   "'t_q1 - __import__' uses undeclared symbol __import__")
+    wrong = dict(CASE1_GENERIC, Nm=3)
+    cert = certify_locus(system, case1_locus(case1_hard_components(), wrong), timeout=60)
+    assert cert.summary == ("not certified: the locus's generic numbers (Nm 3, Nc 2, Ni 1, "
+                            "Nr 0, Ng 1, Nd 4, Nh 0) differ from the exact ones (Nm 2, Nc 2, "
+                            "Ni 1, Nr 0, Ng 1, Nd 4, Nh 0)")
+
+
+def test_without_the_extra_flint_alone(monkeypatch):
+    monkeypatch.setattr(gb, "singular_path", lambda: None)
+    monkeypatch.setattr(gb, "msolve_path", lambda: None)
+    import coopkin_sym.locus_certify as lc
+
+    monkeypatch.setattr(lc, "singular_path", lambda: None)
+    monkeypatch.setattr(lc, "msolve_path", lambda: None)
+    cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
+                         timeout=60)
+    assert cert.summary == "complete (certified)"
+    assert {c.backend for c in cert.checks} <= {"flint", "none"}
+    assert cert.notes == [
+        "Singular is not installed (pip install coopkin_sym[certify]): the proofs ran on "
+        "flint's exact Buchberger algorithm, which is slow beyond small systems.",
+        "msolve is not installed (pip install coopkin_sym[certify]): what is missing was "
+        "looked for exactly on small subspaces only."]
+
+
+@needs_msolve
+def test_msolve_alone_never_certifies():
+    cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
+                         timeout=60, backend="msolve")
+    assert not cert.certified
+    proved_elsewhere = {c.backend for c in cert.checks if c.certified}
+    assert proved_elsewhere <= {"none"}
+    assert any(c.why == "not proved (msolve works modulo a prime)" for c in cert.checks)
+
+
+# --- the certificate of the search's own loci, the command line, reports -------------------
+def _without(locus: Locus, equations: list[str]) -> tuple[Locus, int | None]:
+    """The locus without the component cut out by ``equations`` (parents renumbered),
+    and the index its parent has afterwards."""
+    index = next(k for k, c in enumerate(locus.components) if c.equations == equations)
+    out = copy.deepcopy(locus)
+    parent = out.components.pop(index).parent
+    for c in out.components:
+        if c.parent is not None and c.parent > index:
+            c.parent -= 1
+    return out, parent
+
+
+@pytest.fixture(scope="module")
+def soft_hard():
+    """Paper case 1 (soft and hard contacts) and the search's locus of it."""
+    system = load("paper-case1-soft-hard")
+    return system, compute_locus(system)
+
+
+def test_search_locus_with_a_planted_missing_component_fails(soft_hard):
+    system, locus = soft_hard
+    assert certify_locus(system, locus).summary == "complete (certified)"
+    # the point q1 = -pi/2, q2 = pi/2 inside the family t_q2 = 1 left out
+    planted, parent = _without(locus, ["t_q2 - 1", "t_q1 + 1"])
+    assert planted.components[parent].equations == ["t_q2 - 1"]
+    cert = certify_locus(system, planted)
+    assert not cert.certified
+    failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
+              if not c.certified]
+    assert failed == [("t chart", 1, parent, "drops", "Q")]
+    assert cert.summary == (f"not certified: t chart, depth 1, component #{parent + 1}, rank "
+                            "of Q: the rank drops below its value on the component at points "
+                            "on no component listed after it")
+    assert cert.depths[0]["certified"] and not cert.depths[1]["certified"]
+    data = cert.to_json()
+    assert data["failed"] == [c.to_json() for c in cert.checks if not c.certified]
+    assert data["depths"]["1"]["failed"] == 1 and data["charts"]["t chart"]["failed"] == 1
+    # a family at q2 = pi left out: the slice q2 = pi, depth 0
+    planted, _ = _without(locus, ["s_q2", "t_q1**2 + 2*t_q1 - 1"])
+    cert = certify_locus(system, planted)
+    assert {(c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified} == {
+        ("q2 = pi", 0, "HG^T"), ("q2 = pi", 0, "Q")}
+    assert cert.summary.startswith("not certified: q2 = pi, depth 0, rank of HG^T: the rank "
+                                   "drops below its generic value at points on no listed "
+                                   "component")
+
+
+def test_cli_certify_report_and_json_round_trip(tmp_path):
+    runner = CliRunner()
+    js = tmp_path / "case1.json"
+    result = runner.invoke(app, ["locus", "paper-case1-hard", "--certify", "--no-progress",
+                                 "--certify-timeout", "120", "-o", str(js)])
+    assert result.exit_code == 0, result.output
+    assert "; complete (certified); wrote" in result.output
+    data = json.loads(js.read_text())
+    assert data["completeness"] == "complete (certified)"
+    cert = data["certificate"]
+    assert cert["certified"] is True and cert["failed"] == [] and cert["tests"] == 46
+    assert cert["depths"] == {"0": {"certified": True, "why": "", "tests": 31, "failed": 0},
+                              "1": {"certified": True, "why": "", "tests": 15, "failed": 0}}
+    assert sorted(cert["charts"]) == ["q1 = pi", "q1 = q2 = pi", "q2 = pi", "t chart"]
+    back = locus_from_json(js.read_text())
+    assert back.certificate == cert and back.completeness() == "complete (certified)"
+    assert json.loads(render_json(back)) == data
+    text = render_markdown(back)
+    assert "Completeness: **complete (certified)**." in text
+    assert "## Completeness certificate" in text
+    assert "- Depth 0: certified (31 tests)." in text
+    assert "- Depth 1: certified (15 tests)." in text
+
+
+def test_report_without_certificate_says_so(tmp_path):
+    out = tmp_path / "case1.json"
+    result = CliRunner().invoke(app, ["locus", "paper-case1-complete-hard", "--no-progress",
+                                      "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "; completeness not certified (run with --certify); wrote" in result.output
+    data = json.loads(out.read_text())
+    assert data["certificate"] is None
+    assert data["completeness"] == "completeness not certified (run with --certify)"
+    locus = locus_from_json(data)
+    text = render_markdown(locus)
+    assert "**Completeness not certified (run with --certify)**." in text
+    assert "## Completeness certificate" in text
+
+
+def test_failed_certificate_in_reports_and_read_back():
+    system = load("paper-case1-hard")
+    comps = case1_hard_components()
+    del comps[4]
+    locus = case1_locus(comps)
+    locus.certificate = certify_locus(system, locus, timeout=60).to_json()
+    why = ("not certified: t chart, depth 0, rank of HG^T: the rank drops below its generic "
+           "value at points on no listed component (and 1 more)")
+    assert locus.completeness() == why
+    text = render_markdown(locus)
+    assert f"Completeness: **{why}**." in text
+    assert ("- Depth 0: not certified (2 of 28 tests): t chart, depth 0, rank of HG^T: the "
+            "rank drops below its generic value at points on no listed component.") in text
+    assert "- Depth 1: certified (12 tests)." in text
+    assert "Tests not certified (2):" in text
+    assert ("- t chart, depth 0, rank of Q: the rank drops below its generic value at points "
+            "on no listed component") in text
+    latex = render_latex(locus)
+    assert "not certified: t chart, depth 0, rank of HG" in latex
+    data = json.loads(render_json(locus))
+    assert locus_from_json(data).certificate == locus.certificate
+    # read back: the summary must agree with the verdict, indices must exist
+    bad = copy.deepcopy(data)
+    bad["certificate"]["certified"] = True
+    with pytest.raises(ReportError, match="certificate.summary: .* does not agree with "
+                                          "certified = true"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["certificate"]["failed"][0]["inside"] = 9
+    with pytest.raises(ReportError, match=r"certificate.failed\[0\].inside: no component"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["certificate"]["depths"]["0"]["oops"] = 1
+    with pytest.raises(ReportError, match="unknown key 'oops'"):
+        locus_from_json(bad)
+    bad = copy.deepcopy(data)
+    bad["completeness"] = "complete (certified)"
+    with pytest.raises(ReportError, match="completeness: .* does not agree"):
+        locus_from_json(bad)
+
+
+def test_time_bound_of_the_whole_certificate(soft_hard):
+    # the search's own locus of case 1 within a bound far too short for its 4 charts
+    system, locus = soft_hard
+    cert = certify_locus(system, locus, budget=0)
+    assert not cert.certified
+    assert cert.summary.startswith("not certified: ")
+    assert "time bound of 0 s reached" in cert.summary
+    # an outer bound of the exact layer applies too
+    with deadline.time_limit(0):
+        cert = certify_locus(system, locus, budget=60)
+    assert "time bound of 0 s reached" in cert.summary
