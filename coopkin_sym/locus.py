@@ -531,17 +531,7 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             # the image of f = 0 lies where a parametrization's denominator vanishes:
             # those points are searched from the enclosing variables (_chart_points)
             continue
-        split = str(f) in splitting and str(f) not in regular
-        if split and not any(d == 1 for n, d in zip(ctx.ring_names, f.degrees(), strict=True)
-                             if ctx.kinds.get(n, ("", ""))[0] != "parameter"):
-            # a curved factor of a splitting minor: no drop set of codimension 1 there
-            # (see _minor_combinations) and no rational parametrization to search inside
-            note = (f"inside {', '.join([*equations, poly_text(ctx, f)])} (a factor of a "
-                    "minor): drops of codimension 2 or more not searched (no rational "
-                    "parametrization)")
-            if note not in ctx.locus.unexplored:
-                ctx.locus.unexplored.append(note)
-            continue
+        split = str(f) in splitting
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
                        reporter, charts, split=split)
     if rests:
