@@ -51,6 +51,7 @@ import itertools
 import random
 import time
 from dataclasses import dataclass, field
+from math import comb
 
 import flint
 import sympy as sp
@@ -115,8 +116,11 @@ class _Context:
     readings: dict = None  # equation text -> the equation in angles (shared by charts)
     chains: dict = None  # id(component) -> (context, its linear parametrization)
     hidden: int = 0  # how deep inside candidate sets with the enclosing numbers
+    splits: int = 0  # how deep inside zero sets of single minors (codimension >= 2)
     pi: frozenset = frozenset()  # the joints at q = pi in this chart
     deferred: list = field(default_factory=list)  # per level: searches run after it
+    polys: dict = field(default_factory=dict)  # equation text -> polynomial (this chart)
+    owners: dict = None  # id(component) -> the context it was found in (shared)
 
     def expired(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
@@ -186,6 +190,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
                   notes=notes)
     ctx, q_rows = _context(model, config, locus, None, max_depth, random.Random(1992),
                            None if timeout is None else started + timeout, {}, {})
+    ctx.owners = {}
     locus.variables = list(ctx.ring_names)
     locus.generic = ctx.generic.as_dict()
     deadline.keep(locus)  # from here on, a time bound returns what was found
@@ -263,17 +268,30 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
     out = {}
     for name, rows in mats.items():
         contents: list = []
-        polys = _minor_combinations(rows, ctx, contents)
+        deep: list = []
+        polys = _minor_combinations(rows, ctx, contents, deep, name)
         if contents:
             out[f"content:{name}"] = contents
+        if deep:
+            out[f"split:{name}"] = deep
         if polys:
             out[name] = polys
     return out
 
 
+def _positive(e) -> bool:
+    """Whether ``e`` is positive at every real point because every monomial has even
+    exponents and a positive coefficient, and one is constant (``1 + t^2``, the
+    denominators of the kinematics and their products)."""
+    terms = e.to_dict()
+    return (not e.is_zero() and any(not any(m) for m in terms)
+            and all(c > 0 and all(x % 2 == 0 for x in m) for m, c in terms.items()))
+
+
 def _reduce_constant_pivots(rows, contents: list):
-    """Eliminate with every nonzero constant pivot: the rank falls by the number of
-    pivots and the set where it drops stays the same (a constant never vanishes).
+    """Eliminate with every pivot that vanishes at no real point (a nonzero constant,
+    or a polynomial that :func:`_positive` shows positive): the rank falls by the
+    number of pivots at every real point and the set where it drops stays the same.
 
     Each row is then divided by the gcd of its entries; where that gcd vanishes the
     rank may drop, so every such non-constant gcd is appended to ``contents``: its
@@ -282,6 +300,10 @@ def _reduce_constant_pivots(rows, contents: list):
     while rows and rows[0]:
         spot = next(((i, j) for i, r in enumerate(rows) for j, e in enumerate(r)
                      if not e.is_zero() and e.is_constant()), None)
+        if spot is None:
+            spots = [(len(e), i, j) for i, r in enumerate(rows) for j, e in enumerate(r)
+                     if not e.is_zero() and _positive(e)]
+            spot = min(spots)[1:] if spots else None
         if spot is None:
             break
         i, j = spot
@@ -305,13 +327,19 @@ def _without_content(row, contents: list):
                 return row
     if g is None:
         return row
-    contents.append(g)
+    if not _positive(g):        # a positive divisor hides no real drop
+        contents.append(g)
     return [e / g for e in row]
 
 
-def _minor_combinations(rows, ctx: _Context, contents: list) -> list:
+def _minor_combinations(rows, ctx: _Context, contents: list, deep: list | None = None,
+                        name: str = "") -> list:
     """Random combinations of the maximal minors of ``rows`` (their common zeros are the
-    set where the rank drops), after a reduction whose divisors go to ``contents``."""
+    set where the rank drops), after a reduction whose divisors go to ``contents``.
+
+    When the drop set has no hypersurface part and more than four variables, no
+    combination is returned; one maximal minor goes to ``deep`` instead (see
+    :func:`_splitting_minor`)."""
     rows = [r for r in rows if not all(e.is_zero() for e in r)]
     rows = _reduce_constant_pivots(rows, contents)
     if not rows or not rows[0]:
@@ -322,13 +350,27 @@ def _minor_combinations(rows, ctx: _Context, contents: list) -> list:
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in vars_of(ctx, e)})
-    if nvars > 4 and not _common_factor_on_a_line(ctx, rows, rank):
-        # no hypersurface part (the lower-dimensional part is solved only in up to two
-        # variables, so nothing here needs the full determinants)
-        ctx.locus.unexplored.append(
-            f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} block in "
-            f"{nvars} variables: not solved (it has no real hypersurface part)")
-        return []
+    if nvars > 4:
+        # the part of codimension 2 or more is solved here only in up to four variables;
+        # it lies in the zero set of any one maximal minor, whose factors are then
+        # searched inside one by one
+        minor = None
+        if deep is not None and ctx.splits < _MAX_SPLITS:
+            minor = _splitting_minor(rows, rank, zctx)
+            if minor is not None:
+                deep.append(minor)
+        if not _common_factor_on_a_line(ctx, rows, rank):
+            if minor is None:
+                why = (f"more than {_MAX_SPLITS} nested zero sets of single minors"
+                       if ctx.splits >= _MAX_SPLITS else
+                       f"minors larger than {_MAX_SPLIT_RANK} x {_MAX_SPLIT_RANK}, or "
+                       f"more than {_MAX_SPLIT_MINORS} of them")
+                note = (f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} "
+                        f"block ({name or 'a block'}) in {nvars} variables: not solved "
+                        f"({why})")
+                if note not in ctx.locus.unexplored:
+                    ctx.locus.unexplored.append(note)
+            return []
     count = nvars + 1 if nvars <= 2 else 3
     polys = []
     for _ in range(count):
@@ -347,6 +389,42 @@ def _minor_combinations(rows, ctx: _Context, contents: list) -> list:
         if left is None and right is None:
             break
     return polys
+
+
+# how many zero sets of single minors are searched inside one another
+_MAX_SPLITS = 4
+# the most maximal minors listed to choose a splitting one, and their largest size
+_MAX_SPLIT_MINORS = 60
+_MAX_SPLIT_RANK = 3
+
+
+def _splitting_minor(rows, rank: int, zctx):
+    """A nonzero maximal minor of ``rows`` (rank ``rank``) whose zero set is simplest:
+    fewest factors linear in no variable, then lowest degree of its square-free part
+    (factors positive at every real point left out). Its real zero set contains the
+    whole real drop set. None when there are too many minors."""
+    nrows, ncols = len(rows), len(rows[0])
+    if rank > _MAX_SPLIT_RANK or comb(nrows, rank) * comb(ncols, rank) > _MAX_SPLIT_MINORS:
+        return None
+    best, best_key = None, None
+    for ri in itertools.combinations(range(nrows), rank):
+        for ci in itertools.combinations(range(ncols), rank):
+            det = _determinant([[rows[i][j] for j in ci] for i in ri])
+            if det.is_zero():
+                continue
+            _, fs = factor(det)
+            square_free = zctx.constant(1)
+            curved = 0
+            for f, _e in fs:
+                if _positive(f):        # no real zeros: no part of the drop set
+                    continue
+                square_free *= f
+                if not any(d == 1 for d in f.degrees()):
+                    curved += 1
+            key = (curved, square_free.total_degree(), len(fs), str(square_free))
+            if best_key is None or key < best_key:
+                best, best_key = square_free, key
+    return best
 
 
 def _common_factor_on_a_line(ctx: _Context, rows, rank: int, lines: int = 3) -> bool:
@@ -412,8 +490,10 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
     ctx.deferred.append([])
     cands = _candidates(ctx, q_rows)
     factors: dict[str, tuple] = {}
+    splitting: set[str] = set()  # factors of single minors (see _splitting_minor)
     rests: list[list] = []
-    def add_factors(g, matrix: str) -> None:
+    regular: set[str] = set()  # factors that are candidates on their own
+    def add_factors(g, matrix: str, split: bool = False) -> None:
         _, fs = factor(g)
         for f, _e in fs:
             f = normalize(f)
@@ -421,11 +501,12 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             drops = factors.get(key, (f, set()))[1]
             drops.add(matrix)
             factors[key] = (f, drops)
+            (splitting if split else regular).add(key)
 
     for name, polys in cands.items():
-        if name.startswith("content:"):
+        if name.startswith(("content:", "split:")):
             for c in polys:
-                add_factors(c, name.split(":")[1])
+                add_factors(c, name.split(":")[1], name.startswith("split:"))
             continue
         g = polys[0]
         for p in polys[1:]:
@@ -433,6 +514,8 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
         if not g.is_constant():
             add_factors(g, name.split(":")[0])
         rest = [p / g for p in polys] if not g.is_constant() else polys
+        if f"split:{name}" in cands and len({n for p in rest for n in vars_of(ctx, p)}) > 4:
+            continue  # inside the factors of its splitting minor, searched one by one
         if len(rest) > 1 or (rest and not rest[0].is_constant()):
             rests.append(rest)
     ordered = sorted(factors.values(), key=lambda fd: (fd[0].total_degree(), len(fd[0]),
@@ -448,8 +531,9 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             # the image of f = 0 lies where a parametrization's denominator vanishes:
             # those points are searched from the enclosing variables (_chart_points)
             continue
+        split = str(f) in splitting
         _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
-                       reporter, charts)
+                       reporter, charts, split=split)
     if rests:
         _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts,
                   reporter)
@@ -463,7 +547,10 @@ def _drops_text(drops: set[str]) -> list[str]:
 
 
 def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, base, depth,
-                   parent, reporter, charts=()) -> None:
+                   parent, reporter, charts=(), split: bool = False) -> None:
+    """Decide the candidate ``f = 0``: a component when its numbers differ from
+    ``base``, else searched inside (``split``: a factor of a single minor, whose zero
+    set holds a drop set of codimension 2 or more)."""
     names = vars_of(ctx, f)
     f_text = poly_text(ctx, f)
     if all(ctx.kinds[n][0] == "parameter" for n in names):
@@ -492,7 +579,7 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
     sub_point[linear] = (f0, f1)
     if numbers == base:
         _inside_candidate(ctx, sub_rows, equations + [f_text], sub_point, depth, parent,
-                          reporter, sub_charts)
+                          reporter, sub_charts, split=split)
         return
     wider = _wider_component(ctx, sub_point, numbers)
     if wider is not None:  # already found, in a chart with fewer joints at pi
@@ -519,14 +606,20 @@ def _chart_points(ctx, q_rows, f0, f1, equations, point_so_far, base, depth, par
 
 
 def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, charts,
-                      why_not: str | None = None) -> None:
+                      why_not: str | None = None, split: bool = False) -> None:
     """A candidate set whose numbers are the enclosing ones. Some candidates come from
     conditions that are sufficient, not necessary (a left nullspace basis losing rank, a
-    row divisor): the enclosing search does not see drops deeper inside them, so they
+    row divisor), or hold a drop set of higher codimension (``split``: a factor of a
+    single minor): the enclosing search does not see drops deeper inside them, so they
     are searched too, without being reported."""
     if ctx.expired():
         return
-    if why_not is None and rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
+    if sub_point is not None and all(n in sub_point for n in ctx.ring_names):
+        return  # a point: nothing lies deeper inside it
+    if split:
+        if why_not is None and rows is not None and ctx.splits >= _MAX_SPLITS:
+            why_not = f"more than {_MAX_SPLITS} nested zero sets of single minors"
+    elif why_not is None and rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
         why_not = f"more than {_HIDDEN_DEPTH} such set{'s' if _HIDDEN_DEPTH > 1 else ''} deep"
     if why_not is None and depth > ctx.max_depth:
         why_not = f"max depth {ctx.max_depth}"
@@ -537,12 +630,18 @@ def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, 
             ctx.locus.unexplored.append(note)
         return
     def search() -> None:
-        ctx.hidden += 1
+        if split:
+            ctx.splits += 1
+        else:
+            ctx.hidden += 1
         try:
             _explore(ctx, rows, equations, sub_point, depth, parent,
                      reporter or _Progress(False), charts)
         finally:
-            ctx.hidden -= 1
+            if split:
+                ctx.splits -= 1
+            else:
+                ctx.hidden -= 1
 
     ctx.deferred[-1].append(search)  # after the components of the enclosing level
 
@@ -558,11 +657,23 @@ def _substitute_linear(ctx: _Context, q_rows, f, name: str):
     return substitute_rows(q_rows, k, f0, f1), f0, f1
 
 
+# the largest curved family whose numbers are decided modulo its polynomial
+_MAX_CURVED_TERMS = 3000
+
+
 def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, base, depth,
                       parent) -> None:
     """A factor linear in no variable: its numbers over its function field (rank modulo
     ``f``), a witness on it (rational, else a real algebraic point)."""
     names = vars_of(ctx, f)
+    if len(f) > _MAX_CURVED_TERMS:
+        note = (f"a family of {len(f)} terms, degree {f.total_degree()} in "
+                f"{', '.join(names)}{' inside ' + ', '.join(equations) if equations else ''}: "
+                f"not decided (ranks modulo a polynomial of more than {_MAX_CURVED_TERMS} "
+                "terms)")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
     real = has_real_point(ctx, f, names)
     if real is False:
         text = f"{f_text} = 0 (no real points)"
@@ -576,10 +687,13 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
         if len([n for n in ctx.ring_names if n not in point_so_far]) > 1:
             _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
         return
-    comp = _component(ctx, equations + [f_text], numbers, None, "hypersurface" if depth == 0
+    comp = _component(ctx, equations + [f_text], numbers, None,
+                      "hypersurface" if not [e for e in equations
+                                             if e not in {f"s_{n}" for n in ctx.pi}]
                       else "subvariety", drops, depth, parent,
                       "exact over the component's function field (rank modulo its "
-                      "irreducible polynomial)", real=real is True, within=point_so_far)
+                      "irreducible polynomial)", real=real is True, within=point_so_far,
+                      generic_point=(point_so_far, Quotient(f, k)))
     if comp is None:
         return
     point = rational_point(ctx, f, names)
@@ -975,16 +1089,28 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
 # --- components -------------------------------------------------------------------------
 def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, parent,
                decided, condition: str | None = None, real: bool = True,
-               chain: dict | None = None, within: dict | None = None) -> Component | None:
+               chain: dict | None = None, within: dict | None = None,
+               generic_point: tuple | None = None) -> Component | None:
     """Record a component (None when the same set is already recorded). ``chain`` is
     its parametrization by successive linear substitutions (variable -> ``(f0, f1)``,
     the variable equals ``-f0/f1``), used to recognize the same set found twice;
     ``within``, when there is no chain, the parametrization of the set it was found
-    in. Their denominators become the component's ``outside``."""
+    in. Their denominators become the component's ``outside``. ``generic_point``,
+    ``(parametrization, quotient or None)``, describes its generic point: a component of
+    the same chart with the same numbers whose equations vanish there contains it, and
+    it is not recorded."""
     if any(sorted(c.equations) == sorted(equations) for c in ctx.locus.components):
         return None
+    here = numbers.as_dict()
+    if any(c.numbers == here and c.equations and set(c.equations) < set(equations)
+           for c in ctx.locus.components):
+        return None  # inside a recorded component, with its numbers: nothing new
     if chain is not None and any(_within(ctx, chain, c, numbers)
                                  for c in ctx.locus.components):
+        return None
+    if generic_point is not None and any(_vanish_at(ctx, c, *generic_point)
+                                         for c in ctx.locus.components
+                                         if c.numbers == here):
         return None
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
@@ -999,9 +1125,27 @@ def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, pa
     if witness is not None:
         attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
+    if ctx.owners is not None:
+        ctx.owners[id(comp)] = ctx
     if chain is not None:
         ctx.chains[id(comp)] = (ctx, dict(chain))
     return comp
+
+
+def _vanish_at(ctx, comp: Component, point: dict, quotient) -> bool:
+    """Whether every equation of ``comp`` (recorded in this chart) vanishes at the
+    generic point given by the parametrization ``point`` and, when not None, the
+    ``quotient`` by an irreducible polynomial."""
+    if ctx.owners is None or ctx.owners.get(id(comp)) is not ctx:
+        return False
+    for text in comp.equations:
+        p = ctx.polys.get(text)
+        if p is None:
+            return False
+        p = _on_chain(p, ctx, point)
+        if not (p.is_zero() or (quotient is not None and quotient.is_zero(p))):
+            return False
+    return True
 
 
 def _denominators(ctx, chain: dict | None, equations: list[str]) -> list[str]:
@@ -1136,6 +1280,7 @@ def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
         sub, rows = _context(ctx.model, config, ctx.locus, ctx.generic, ctx.max_depth,
                              ctx.rng, ctx.deadline, ctx.readings, ctx.chains)
         sub.pi = frozenset(subset)
+        sub.owners = ctx.owners
         equations = [f"s_{n}" for n in subset]
         for n in subset:
             ctx.readings[f"s_{n}"] = f"{n} = pi"

