@@ -837,7 +837,7 @@ NB03 = [
     the object can turn about that point in every direction with every joint locked
     ($N_i$ 1 to 3). The search finds it inside the zero set of one minor of
     $H G^T$: one equation linear in $q_5$ (the $x$ coordinates agree), one linear in
-    $q_4$ (the heights agree), and a curve ($y$). Inside $q_2 = \pm\pi/2$ it meets
+    $q_4$ (the heights agree), and a curve ($y$). Inside $q_2 = \\pm\\pi/2$ it meets
     the elbow family. The same family is also listed in pieces found along other paths
     (with the same numbers).
 
@@ -926,9 +926,10 @@ NB03 = [
     it misses the singularity itself ($N_i$ too low). In the other 43 it is
     $10^{-12}$ rad off a component (moving a joint of its last equation, so the point
     stays in the enclosing component): in 37 of them it gives the numbers of the
-    component it has just left, in the other six numbers that belong to neither. In case 1 it calls regular
-    configurations singular; for the fingers and inside case 2's hypersurfaces it gives
-    configurations of a singular family the numbers of a deeper family next to them
+    component it has just left, in the other six numbers that belong to neither. In
+    case 1 it calls regular configurations singular; for the fingers and inside case
+    2's hypersurfaces it gives configurations of a singular family the numbers of a
+    deeper family next to them
     (counted as missed: a singular configuration given the wrong numbers). With
     $L = 1$ the same configurations are answered correctly.
 
