@@ -492,7 +492,6 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
     factors: dict[str, tuple] = {}
     splitting: set[str] = set()  # factors of single minors (see _splitting_minor)
     rests: list[list] = []
-    regular: set[str] = set()  # factors that are candidates on their own
     def add_factors(g, matrix: str, split: bool = False) -> None:
         _, fs = factor(g)
         for f, _e in fs:
@@ -501,7 +500,8 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             drops = factors.get(key, (f, set()))[1]
             drops.add(matrix)
             factors[key] = (f, drops)
-            (splitting if split else regular).add(key)
+            if split:
+                splitting.add(key)
 
     for name, polys in cands.items():
         if name.startswith(("content:", "split:")):
@@ -688,8 +688,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
         return
     comp = _component(ctx, equations + [f_text], numbers, None,
-                      "hypersurface" if not [e for e in equations
-                                             if e not in {f"s_{n}" for n in ctx.pi}]
+                      "hypersurface" if not _beyond_chart(ctx, equations)
                       else "subvariety", drops, depth, parent,
                       "exact over the component's function field (rank modulo its "
                       "irreducible polynomial)", real=real is True, within=point_so_far,
@@ -1148,13 +1147,20 @@ def _vanish_at(ctx, comp: Component, point: dict, quotient) -> bool:
     return True
 
 
+def _beyond_chart(ctx, equations: list[str]) -> list[str]:
+    """The equations other than those of the chart (``s_<joint>`` for the joints at
+    q = pi here)."""
+    chart = {f"s_{n}" for n in ctx.pi}
+    return [e for e in equations if e not in chart]
+
+
 def _denominators(ctx, chain: dict | None, equations: list[str]) -> list[str]:
     """The irreducible factors of the denominators of a linear parametrization: its
     image is the set where the equations hold and none of them vanishes (where one
     does, the equations may hold on a wider set, searched apart by
     :func:`_chart_points`). None for one irreducible equation (in a chart): its zero
     set is the closure of that image."""
-    if len([e for e in equations if e not in {f"s_{n}" for n in ctx.pi}]) <= 1:
+    if len(_beyond_chart(ctx, equations)) <= 1:
         return []
     out: list[str] = []
     for _f0, f1 in (chain or {}).values():

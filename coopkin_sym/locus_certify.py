@@ -515,7 +515,7 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
             eqs = [_integer_polynomial(text, names, f"component #{i + 1}, equation {k + 1}")
                    for k, text in enumerate(comp.equations)]
             outs = [_integer_polynomial(text, names, f"component #{i + 1}, outside {k + 1}")
-                    for k, text in enumerate(getattr(comp, "outside", None) or [])]
+                    for k, text in enumerate(comp.outside)]
             # the component is the closure of V(equations) minus V(outside): it is
             # V(equations) when no outside polynomial vanishes there (a unit ideal);
             # otherwise it can be smaller, and reading it as V(equations) could prove a
@@ -914,15 +914,23 @@ class _Runner:
         left = deadline.remaining()
         return self.timeout if left is None else max(min(self.timeout, left), 0.01)
 
+    def _prepare(self, check: Check, gens):
+        """``(seconds, generators)`` for one test; generators None when they are too
+        large to write (the check is then recorded as not certified, with why)."""
+        seconds = self._test_timeout(check)
+        made = gens()
+        if isinstance(made, _TooLarge):
+            check.why = made.why
+            self._add(check)
+            return seconds, None
+        return seconds, made
+
     def bound(self, check: Check, chart: _Chart, own: list[Poly], gens, conditions
               ) -> None:
         """The rank on the component never exceeds its value: the ``(rho + 1)``-minors
         vanish on it. ``gens`` makes their generators."""
-        seconds = self._test_timeout(check)
-        gens = gens()
-        if isinstance(gens, _TooLarge):
-            check.why = gens.why
-            self._add(check)
+        seconds, gens = self._prepare(check, gens)
+        if gens is None:
             return
         if gens == []:
             check.certified, check.backend = True, "none"
@@ -944,11 +952,8 @@ class _Runner:
             conditions) -> None:
         """The drop set (within ``own``) lies in the ``covering`` components. ``gens``
         makes the generators of the drop ideal."""
-        seconds = self._test_timeout(check)
-        gens = gens()
-        if isinstance(gens, _TooLarge):
-            check.why = gens.why
-            self._add(check)
+        seconds, gens = self._prepare(check, gens)
+        if gens is None:
             return
         if gens is _Everywhere:
             check.certified, check.backend = True, "none"

@@ -539,7 +539,7 @@ class _Checker:
                 else:
                     eqs.append(eq)
             outs = []
-            for k, text in enumerate(getattr(comp, "outside", [])):
+            for k, text in enumerate(comp.outside):
                 out = self.equations.parse(text, f"component {i + 1}, outside {k + 1}")
                 if out is not None:      # undefined at the fixed values: never vanishes
                     outs.append(out)
