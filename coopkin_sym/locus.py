@@ -856,20 +856,25 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
             h = normalize(h)
             if _no_real_points(ctx, h):
                 continue
-            if h.degrees()[kx] == 0:
-                note = (f"depth {depth}: the family where {poly_text(ctx, h)} = 0 (codimension "
-                        "2 or more) not solved")
-                if note not in ctx.locus.unexplored:
-                    ctx.locus.unexplored.append(note)
-                continue
-            if h.degrees()[kx] == 1:
-                _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
+            hx = x if h.degrees()[kx] else _variable_to_solve(ctx, h, exclude=(y,))
+            if h.degrees()[ctx.ring_names.index(hx)] == 1:
+                _solve_linear_x(ctx, q_rows, polys, h, hx, y, equations, point_so_far, base,
                                 depth, parent, charts, reporter)
             else:
-                _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base,
+                _solve_curved_x(ctx, q_rows, polys, h, hx, y, equations, point_so_far, base,
                                 depth, parent, charts, reporter)
         return True
     return False
+
+
+def _variable_to_solve(ctx, f, exclude=()) -> str:
+    """A variable of ``f`` to solve it for: the first in which it is linear, else the
+    first of lowest degree (variables in ``exclude`` last)."""
+    degrees = f.degrees()
+    names = [n for n in vars_of(ctx, f)]
+    names.sort(key=lambda n: (n in exclude, degrees[ctx.ring_names.index(n)] != 1,
+                              degrees[ctx.ring_names.index(n)], ctx.ring_names.index(n)))
+    return names[0]
 
 
 def _no_real_points(ctx, f) -> bool:
@@ -893,22 +898,27 @@ def _off_charts(charts, substitute, quotient=None) -> bool:
 
 def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
                     parent, charts, reporter=None) -> None:
-    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    kx, ky_first = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    y_first = y
     h1, h0 = split_linear(h, kx)
     moved = [substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
     common = None
     for p in moved:
         if not p.is_zero():
             common = p if common is None else common.gcd(p)
-    if common is None or common.degrees()[ky] == 0:
+    if common is None or common.is_constant():
         return
     rows_x = substitute_rows(q_rows, kx, h0, h1)
     inner = dict(point_so_far)
     inner[x] = (h0, h1)
     _, factors = factor(common)
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
-        if k.degrees()[ky] == 0:
+        if k.is_constant():
             continue
+        # the family's second equation, solved for y, or for another of its variables
+        # when y stays free along it
+        y = y_first if k.degrees()[ky_first] else _variable_to_solve(ctx, k)
+        ky = ctx.ring_names.index(y)
         k = normalize(k)
         if _no_real_points(ctx, k):
             continue
@@ -919,7 +929,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         if k.degrees()[ky] == 1:
             k1, k0 = split_linear(k, ky)
 
-            def at_xy(c, k0=k0, k1=k1):
+            def at_xy(c, k0=k0, k1=k1, ky=ky):
                 c = at_x(c)
                 return substitute(c, ky, k0, k1, c.degrees()[ky])
 
@@ -971,10 +981,31 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
 
 
 def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
-                    parent, charts, reporter=None) -> None:
+                    parent, charts, reporter=None, swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
+    if len(common) > 2 and not swapped:
+        # several values of y over each point of h = 0 (angles that differ by pi): the
+        # family projects onto the hypersurfaces N = 0 in y and the parameters, N a
+        # factor of the norm res_x(h, g); over each, x is solved from h and g instead
+        g = sum((c * ctx.ring.zctx.gens()[ky] ** i for i, c in enumerate(common)),
+                ctx.ring.zctx.constant(0))
+        _, factors = factor(h.resultant(g, x))
+        for n, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+            if n.degrees()[ky] == 0:
+                continue  # where the leading coefficients vanish: part of a wider set
+            n = normalize(n)
+            if _no_real_points(ctx, n):
+                continue
+            if n.degrees()[ky] == 1:
+                _solve_linear_x(ctx, q_rows, [*polys, h], n, y, x, equations, point_so_far,
+                                base, depth, parent, charts, reporter)
+            else:
+                _solve_curved_x(ctx, q_rows, [*polys, h], n, y, x, equations,
+                                point_so_far, base, depth, parent, charts, reporter,
+                                swapped=True)
+        return
     if len(common) > 2:
         note = (f"depth {depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} values of "
                 f"{y} share each point: not solved")

@@ -445,3 +445,29 @@ def test_a_family_inside_a_parametrization_excludes_its_denominators():
     # they are part of the JSON and read back
     again = locus_from_json(render_json(locus))
     assert [c.outside for c in again.components] == [c.outside for c in locus.components]
+
+
+@pytest.mark.parametrize("seed, why", [
+    (111, "two frictionless contacts on one line of action: q2 has two values (q2 and "
+          "q2 + pi) over each point of the curve in q1, q3; the family is solved over "
+          "the norm's factors instead"),
+    (154, "the contact points meet along t_q3 = 0, t_q1 + t_q2 = 0 with q4 free: the "
+          "resultant's factor does not involve the variable eliminated first"),
+])
+def test_families_of_codimension_two_in_awkward_coordinates(seed, why):
+    system = coopkin_sym.load(random_system(seed))
+    locus = compute_locus(system, at={"q4": 0})
+    v = verify_locus(system, locus, max_points=1000, lines=6, seed=0)
+    assert v.uncovered_total == 0, (why, summary_lines(v))
+    assert v.unsound == [], summary_lines(v)
+    assert not any("share each point" in u or "not solved" in u for u in locus.unexplored)
+    # the point found missing before, with its numbers, lies on a reported component
+    point, numbers = {
+        111: ("q1=0,q2=0,q3=pi/2,q4=0", {"Nm": 8, "Nc": 6, "Ni": 5, "Nr": 2, "Ng": 1,
+                                          "Nd": 0, "Nh": 0}),
+        154: ("q1=pi/2,q2=-pi/2,q3=0,q4=0", {"Nm": 5, "Nc": 3, "Ni": 3, "Nr": 2,
+                                              "Ng": 3, "Nd": 4, "Nh": 1}),
+    }[seed]
+    here = analyze(system.model, Configuration.parse(system.model, point)).numbers
+    assert here.as_dict() == numbers
+    assert any(c.numbers == numbers for c in locus.components)
