@@ -51,6 +51,7 @@ import itertools
 import random
 import time
 from dataclasses import dataclass, field
+from fractions import Fraction
 from math import comb
 
 import flint
@@ -62,7 +63,13 @@ from .errors import CoopkinError, TimeLimitReached
 from .exact import deadline
 from .exact import elimination as el
 from .exact.factoring import factor
-from .exact.quotient import Quotient, Tower, coefficients_in, gcd_modulo
+from .exact.quotient import (
+    Quotient,
+    Tower,
+    coefficients_in,
+    gcd_modulo,
+    smallest_fraction,
+)
 from .exact.substitution import split_linear, substitute, substitute_rows
 from .exact.sympy_bridge import poly_to_sympy
 from .locus_algebra import (
@@ -983,6 +990,13 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
 def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
                     parent, charts, reporter=None, swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    if _enclosing_numbers_at_a_point(ctx, q_rows, polys, h, x, y, base):
+        note = (f"inside {', '.join(equations + [poly_text(ctx, h)])}, {y} a common root "
+                "of the minors (enclosing numbers there): deeper drops not searched (no "
+                "rational parametrization)")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
     if len(common) > 2 and not swapped:
@@ -1014,7 +1028,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         return
     if len(common) < 2:
         return
-    c0, c1 = common
+    c0, c1 = smallest_fraction(*common, quotient)  # y = -c0/c1, c1 free of x
     if _off_charts([*charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
                    quotient):
         return
@@ -1036,6 +1050,37 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     family_witness(ctx, comp, h, x, inner, numbers)
     _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
                "no rational parametrization")
+
+
+# parameters of a family set to random integers of at most this size
+_SPECIALIZE_BOUND = 1 << 16
+
+
+def _enclosing_numbers_at_a_point(ctx, q_rows, polys, h, x, y, base: Numbers) -> bool:
+    """Whether the family ``h = 0`` (``x`` curved), ``y`` a common root of ``polys``,
+    has the enclosing numbers, shown at one point of it: the other variables set to
+    random integers, ``x`` a root of a factor of ``h`` there, ``y`` from the gcd over
+    ``Q(x)``. Ranks never rise at a special point and never exceed the enclosing ones, so
+    equal ranks there are the family's own. ``False`` means not shown (the family is then
+    decided over its function field). The point lies on the family unless the random
+    values hit a proper subset of it (Schwartz-Zippel)."""
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    values = {n: Fraction(ctx.rng.randint(-_SPECIALIZE_BOUND, _SPECIALIZE_BOUND))
+              for n in ctx.ring_names if n not in (x, y)}
+    (h_here, *polys_here), = substitute_values(ctx, [[h, *polys]], values)
+    if h_here.degrees()[kx] < h.degrees()[kx] or any(
+            p.degrees()[ky] < q.degrees()[ky] for p, q in zip(polys_here, polys, strict=True)):
+        return False
+    _, factors = factor(h_here)
+    curved = [f for f, _e in factors if f.degrees()[kx] > 0]
+    if not curved:
+        return False
+    quotient = Quotient(min(curved, key=lambda f: (f.degrees()[kx], len(f))), kx)
+    common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient)
+    if len(common) != 2:
+        return False
+    rows = substitute_rows(substitute_values(ctx, q_rows, values), ky, *common)
+    return numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient) == base
 
 
 def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,

@@ -16,7 +16,12 @@ from sympy.polys.matrices import DomainMatrix
 
 from coopkin_sym.algebraic import RealRoot, angle_of
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.quotient import Quotient, eliminate_modulo, rank_modulo
+from coopkin_sym.exact.quotient import (
+    Quotient,
+    eliminate_modulo,
+    rank_modulo,
+    smallest_fraction,
+)
 
 CTX = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
 X, Y = CTX.gens()
@@ -675,3 +680,60 @@ def test_tower_refuses_moduli_that_are_not_univariate():
 
     with pytest.raises(ValueError, match="univariate"):
         Tower([Quotient(X**2 + Y**2 - 1, 0)])
+
+
+# --- gcd over the function field of a quadratic hypersurface, in lowest terms ----------
+_XPY = flint.fmpz_mpoly_ctx.get(("x", "p", "y"), "degrevlex")
+_small = st.integers(-4, 4)
+_element = st.tuples(_small, _small, _small, _small)   # c0 + c1 p + c2 x + c3 x p
+
+
+def _poly(c):
+    x, p, _ = _XPY.gens()
+    return c[0] + c[1] * p + c[2] * x + c[3] * x * p
+
+
+@settings(max_examples=60, deadline=None)
+@given(num=_element, den=_element, a=st.integers(1, 3), b=_small, c=st.integers(1, 5))
+def test_smallest_fraction_is_the_same_element_with_a_denominator_free_of_x(num, den, a,
+                                                                            b, c):
+    x, p, _ = _XPY.gens()
+    f = a * x**2 + b * x - c * (p**2 + 1)            # irreducible: -c(p^2+1) not a square
+    q = Quotient(f, 0)
+    n, d = _poly(num), _poly(den)
+    if q.is_zero(d):
+        return
+    top, bottom = smallest_fraction(n, d, q)
+    assert bottom.degrees()[0] == 0 and not bottom.is_zero()
+    assert top.degrees()[0] < 2
+    assert q.is_zero(top * d - bottom * n)            # the same element
+    # no common factor left: the content over Z[p] of (top, bottom) is 1
+    parts = [bottom] + [e for e in _coefficients_in_x(top) if not e.is_zero()]
+    g = parts[0]
+    for e in parts[1:]:
+        g = g.gcd(e)
+    assert g.is_constant()
+
+
+def _coefficients_in_x(e):
+    from coopkin_sym.exact.quotient import coefficients_in
+    return coefficients_in(e, 0)
+
+
+@settings(max_examples=40, deadline=None)
+@given(num=_element, den=_element, other=_element, b=_small, c=st.integers(1, 5))
+def test_gcd_modulo_finds_a_planted_root_in_lowest_terms(num, den, other, b, c):
+    from coopkin_sym.exact.quotient import coefficients_in, gcd_modulo
+    x, p, y = _XPY.gens()
+    q = Quotient(x**2 + b * x - c * (p**2 + 1), 0)
+    n, d, o = _poly(num), _poly(den), _poly(other)
+    if q.is_zero(d) or q.is_zero(n) or q.is_zero((n + 1)**2 + o * d**2):
+        return                                        # (the other factors share a root)
+    root = d * y - n                                   # y = n/d
+    f1 = root * (y**2 + o)
+    f2 = root * (d * y + n + 1)
+    common = gcd_modulo([coefficients_in(f1, 2), coefficients_in(f2, 2)], q)
+    assert len(common) == 2                           # degree 1: y = -c0/c1
+    c0, c1 = smallest_fraction(*common, q)
+    assert c1.degrees()[0] == 0
+    assert q.is_zero(c0 * d + c1 * n)                 # -c0/c1 = n/d

@@ -271,6 +271,10 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
         c = quotient.reduce_row(c)
         while c and c[-1].is_zero():
             c.pop()
+        if c and quotient.degree == 2 and c[-1].degrees()[quotient.k] > 0:
+            # times the conjugate of the leading coefficient, which makes it free of x_k:
+            # the coefficients stay as small as the element allows
+            c = quotient.reduce_row([e * _conjugate(c[-1], quotient) for e in c])
         return primitive(c) if c else c
 
     g: list[Poly] = []
@@ -292,5 +296,48 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
     return g
 
 
+def _conjugate(e: Poly, quotient: Quotient) -> Poly:
+    """For ``f = a x^2 + b x + c`` and a reduced ``e = u + v x``: the element ``e'`` with
+    ``e e' = a u^2 - b u v + c v^2 - v^2 f``, free of ``x`` modulo ``f``."""
+    k = quotient.k
+    a, b = _coefficient(quotient.f, k, 2), _coefficient(quotient.f, k, 1)
+    v, u = _coefficient(e, k, 1), _coefficient(e, k, 0)
+    return (a * u - b * v) - a * v * quotient._x
+
+
+def smallest_fraction(num: Poly, den: Poly, quotient: Quotient) -> tuple[Poly, Poly]:
+    """The element ``num/den`` of the fraction field of ``quotient`` written with a
+    denominator free of ``x_k`` and no common factor: ``(a, b)`` with ``a/b = num/den``
+    there, ``a`` reduced, ``b`` free of ``x_k``, ``gcd(coefficients of a, b) = 1``.
+    Unique up to sign, hence as small as the element allows (a root found by a gcd over
+    the quotient can carry thousands of spurious terms). Done for ``f`` of degree 2 in
+    ``x_k``, where ``den`` times its conjugate is free of ``x_k``; for higher degrees the
+    content is removed only.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "p"), "degrevlex")
+    >>> x, p = ctx.gens()
+    >>> q = Quotient(x**2 - p, 0)                     # x = sqrt(p)
+    >>> a, b = smallest_fraction((p + 1) * (1 + x), (p + 1) * (x - 1), q)
+    >>> str(a), str(b)                  # (1 + x)/(x - 1) = (1 + x)^2/(p - 1)
+    ('2*x + p + 1', 'p - 1')
+    """
+    k = quotient.k
+    # reduced forms carry powers of the leading coefficient (free of x_k): balance them
+    (num, n_num), (den, n_den) = quotient._reduce_counted(num), quotient._reduce_counted(den)
+    num, den = num * quotient.lead ** n_den, den * quotient.lead ** n_num
+    if quotient.degree == 2 and den.degrees()[k] > 0:
+        (num, den), = [quotient.reduce_row([e * _conjugate(den, quotient) for e in (num, den)])]
+    parts = [c for c in coefficients_in(num, k) if not c.is_zero()] + [den]
+    g = parts[0]
+    for c in parts[1:]:
+        g = g.gcd(c)
+    if den.leading_coefficient() < 0:
+        g = -g
+    return num / g, den / g
+
+
 __all__ = ["Quotient", "Tower", "coefficients_in", "eliminate_modulo", "gcd_modulo",
-           "nullspace_modulo", "rank_modulo"]
+           "nullspace_modulo", "rank_modulo", "smallest_fraction"]
