@@ -68,6 +68,7 @@ from .exact.quotient import (
     Tower,
     coefficients_in,
     gcd_modulo,
+    rank_modulo,
     smallest_fraction,
 )
 from .exact.substitution import split_linear, substitute, substitute_rows
@@ -709,7 +710,66 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
         algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
-    _go_deeper(ctx, comp, None, None, None, depth, None, (), "no rational parametrization")
+    if depth >= ctx.max_depth or ctx.expired():
+        _go_deeper(ctx, comp, None, None, None, depth, None, (), "no rational parametrization")
+    else:
+        _inside_curved(ctx, q_rows, f, k, comp, equations + [f_text], point_so_far, depth)
+
+
+# the most minor combinations per block searched inside a curved family
+_CURVED_COMBINATIONS = 3
+
+
+def _inside_curved(ctx, q_rows, f, k: int, comp: Component, equations, point_so_far,
+                   depth) -> None:
+    """Drops inside a hypersurface ``f = 0`` with no rational parametrization: for each
+    block (``H G^T``, and ``H D`` of each arm), the set where its rank falls below the
+    family's own is cut out on ``f = 0`` by random combinations of its minors of that
+    size (reduced modulo ``f``), then solved like any set of codimension 2. Drops of
+    ``rank Q`` alone (``Nm``, ``Nh`` with the others unchanged) are not searched there,
+    and the report says so."""
+    quotient = Quotient(f, k)
+    zctx = ctx.ring.zctx
+    model = ctx.model
+    owners = [model.contacts[c].arm for c in ctx.row_contacts]
+    blocks = {"HG^T": [row[:6] for row in q_rows]}
+    for a, arm in enumerate(model.arms):
+        off = 6 + model.joint_offset(a)
+        rows = [q_rows[i][off:off + len(arm.joints)] for i, o in enumerate(owners) if o == a]
+        if rows:
+            blocks[f"HD:{arm.name}"] = rows
+    rests = []
+    for rows in blocks.values():
+        contents: list = []
+        rows = _reduce_constant_pivots([r for r in rows if any(not e.is_zero() for e in r)],
+                                       contents)
+        rests += [[f, g] for g in contents if not quotient.is_zero(g) and not g.is_constant()]
+        if not rows or not rows[0]:
+            continue
+        ncols = len(rows[0])
+        rank = rank_modulo(rows, ncols, quotient)
+        if rank == 0:
+            continue
+        polys = []
+        for _ in range(_CURVED_COMBINATIONS):
+            m = rows
+            if rank < len(rows):
+                m = el.matmul(_random_matrix(ctx, rank, len(rows)), m, zctx)
+            if rank < ncols:
+                m = el.matmul(m, _random_matrix(ctx, ncols, rank), zctx)
+            det = quotient.reduce(_determinant(m))
+            if not det.is_zero():
+                polys.append(normalize(el.primitive([det])[0]))
+            if rank == len(rows) and rank == ncols:
+                break
+        if polys and not any(p.is_constant() for p in polys):   # else: rank never drops
+            rests.append([f, *polys])
+    index = ctx.locus.components.index(comp)
+    note = (f"inside component #{index + 1}: drops of rank Q alone (Nm, Nh changing, the "
+            "other numbers not) not searched (a family with no rational parametrization)")
+    ctx.locus.unexplored.append(note)
+    _isolated(ctx, q_rows, rests, equations, point_so_far,
+              Numbers(**comp.numbers), depth + 1, index)
 
 
 def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
