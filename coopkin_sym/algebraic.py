@@ -114,14 +114,20 @@ def angle_of(tangent: sp.Expr) -> sp.Expr:
     """
     plain = 2 * sp.atan(tangent)
     try:
-        guess = sp.nsimplify(sp.simplify(plain))
-        if not (guess / sp.pi).is_Rational:
+        # a candidate multiple of pi from the value (only a guess: checked exactly below)
+        ratio = Fraction(float(plain / sp.pi)).limit_denominator(_PI_DENOMINATOR)  # float-ok
+        if abs(float(plain / sp.pi) - ratio) > 1e-12:  # float-ok: no candidate
             return plain
+        guess = sp.pi * sp.Rational(ratio.numerator, ratio.denominator)
         if sp.minimal_polynomial(sp.tan(guess / 2) - tangent, _T) != _T:
             return plain
     except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):
         return plain
     return guess
+
+
+# the largest denominator of a multiple of pi recognised in an angle
+_PI_DENOMINATOR = 120
 
 
 __all__ = ["RealRoot", "angle_of"]

@@ -692,8 +692,13 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             key=lambda i: (f.degrees()[i], i))
     numbers = numbers_modulo(q_rows, ctx.model, ctx.row_contacts, Quotient(f, k))
     if numbers == base:
-        if len([n for n in ctx.ring_names if n not in point_so_far]) > 1:
+        if len([n for n in ctx.ring_names if n not in point_so_far]) <= 1:
+            return
+        if ctx.hidden >= _HIDDEN_DEPTH or depth > ctx.max_depth or ctx.expired():
             _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
+        else:
+            _inside_curved(ctx, q_rows, f, k, None, equations + [f_text], point_so_far,
+                           depth, (), hidden=(base, parent))
         return
     comp = _component(ctx, equations + [f_text], numbers, None,
                       "hypersurface" if not _beyond_chart(ctx, equations)
@@ -720,14 +725,25 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
 _CURVED_COMBINATIONS = 3
 
 
-def _inside_curved(ctx, q_rows, f, k: int, comp: Component, equations, point_so_far,
-                   depth) -> None:
+def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
+                   point_so_far, depth, charts=(), hidden: tuple | None = None) -> None:
     """Drops inside a hypersurface ``f = 0`` with no rational parametrization: for each
     block (``H G^T``, and ``H D`` of each arm), the set where its rank falls below the
     family's own is cut out on ``f = 0`` by random combinations of its minors of that
     size (reduced modulo ``f``), then solved like any set of codimension 2. Drops of
     ``rank Q`` alone (``Nm``, ``Nh`` with the others unchanged) are not searched there,
-    and the report says so."""
+    and the report says so. With ``comp`` None, ``f = 0`` is a candidate with the
+    enclosing numbers ``hidden = (numbers, parent)``, searched one such level deep."""
+    names = {n for row in q_rows for e in row for n in vars_of(ctx, e)} | set(vars_of(ctx, f))
+    if len(names) > 4:
+        # the sets cut out there are solved in up to four variables only
+        what = (f"component #{ctx.locus.components.index(comp) + 1}" if comp is not None
+                else ", ".join(equations) + " (enclosing numbers there)")
+        note = (f"inside {what}: deeper drops not searched (no rational parametrization, "
+                f"and {len(names)} variables)")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
     quotient = Quotient(f, k)
     zctx = ctx.ring.zctx
     model = ctx.model
@@ -740,6 +756,9 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component, equations, point_so_
             blocks[f"HD:{arm.name}"] = rows
     rests = []
     for rows in blocks.values():
+        # reduced modulo f first: a row divisible by f is zero on the family, and a row
+        # divided by such a factor would hide the drops there
+        rows = [quotient.reduce_row(r) for r in rows]
         contents: list = []
         rows = _reduce_constant_pivots([r for r in rows if any(not e.is_zero() for e in r)],
                                        contents)
@@ -764,12 +783,23 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component, equations, point_so_
                 break
         if polys and not any(p.is_constant() for p in polys):   # else: rank never drops
             rests.append([f, *polys])
-    index = ctx.locus.components.index(comp)
-    note = (f"inside component #{index + 1}: drops of rank Q alone (Nm, Nh changing, the "
-            "other numbers not) not searched (a family with no rational parametrization)")
-    ctx.locus.unexplored.append(note)
-    _isolated(ctx, q_rows, rests, equations, point_so_far,
-              Numbers(**comp.numbers), depth + 1, index)
+    if comp is not None:
+        index = ctx.locus.components.index(comp)
+        where, numbers, depth, parent = (f"component #{index + 1}", Numbers(**comp.numbers),
+                                         depth + 1, index)
+    else:
+        where, numbers = ", ".join(equations) + " (enclosing numbers there)", hidden[0]
+        parent = hidden[1]
+    note = (f"inside {where}: drops of rank Q alone (Nm, Nh changing, the other numbers "
+            "not) not searched (a family with no rational parametrization)")
+    if note not in ctx.locus.unexplored:
+        ctx.locus.unexplored.append(note)
+    ctx.hidden += comp is None
+    try:
+        _isolated(ctx, q_rows, rests, equations, point_so_far, numbers, depth, parent,
+                  charts)
+    finally:
+        ctx.hidden -= comp is None
 
 
 def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
@@ -1042,9 +1072,12 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
                                not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
             _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, sub_charts)
-        else:
+        elif depth >= ctx.max_depth or ctx.expired():
             _go_deeper(ctx, comp, None, eqs, None, depth, reporter, charts,
                        "no rational parametrization")
+        else:
+            _inside_curved(ctx, rows_x, k, ky, comp, eqs, inner, depth,
+                           (*charts, h1) if not h1.is_constant() else charts)
 
 
 def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
@@ -1108,8 +1141,12 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)
-    _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
-               "no rational parametrization")
+    if depth >= ctx.max_depth or ctx.expired():
+        _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
+                   "no rational parametrization")
+    else:
+        _inside_curved(ctx, rows, h, kx, comp, comp.equations, inner, depth,
+                       (*charts, c1) if not c1.is_constant() else charts)
 
 
 # parameters of a family set to random integers of at most this size
