@@ -696,9 +696,10 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             return
         if ctx.hidden >= _HIDDEN_DEPTH or depth > ctx.max_depth or ctx.expired():
             _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
-        else:
-            _inside_curved(ctx, q_rows, f, k, None, equations + [f_text], point_so_far,
-                           depth, (), hidden=(base, parent))
+        else:   # after the components of the enclosing level, like other candidates
+            ctx.deferred[-1].append(lambda: _inside_curved(
+                ctx, q_rows, f, k, None, equations + [f_text], point_so_far, depth, (),
+                hidden=(base, parent)))
         return
     comp = _component(ctx, equations + [f_text], numbers, None,
                       "hypersurface" if not _beyond_chart(ctx, equations)
@@ -1062,7 +1063,8 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             chain = dict(inner)
             chain[y] = (k0, k1)
         comp = _component(ctx, eqs, numbers, None, "subvariety", {"Q"}, depth, parent,
-                          decided, chain=chain, within=inner)
+                          decided, chain=chain, within=inner,
+                          generic_point=None if chain is not None else (inner, quotient))
         if comp is None:
             continue
         family_witness(ctx, comp, k, y, inner, numbers)
@@ -1137,7 +1139,8 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)], numbers, None,
                       "subvariety", {"Q"}, depth, parent,
                       "exact over the family's function field (ranks modulo its "
-                      "irreducible polynomial)", within=inner)
+                      "irreducible polynomial)", within=inner,
+                      generic_point=(inner, quotient))
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)

@@ -376,8 +376,14 @@ def test_case2_all_eight_joints_hand_checked():
                and c.equations[1].startswith("q4*") for c in contacts_meet)
     two = {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)}
     both = {"Nc": (6, 5), "Ni": (1, 3), "Nr": (2, 3), "Ng": (1, 3), "Nd": (0, 1)}
-    assert sorted(tuple(sorted(c.changes.items())) for c in by_depth[1]) == sorted(
-        [tuple(sorted(two.items()))] * 4 + [tuple(sorted(both.items()))] * 2)
+    found = sorted(tuple(sorted(c.changes.items())) for c in by_depth[1])
+    known = sorted([tuple(sorted(two.items()))] * 4 + [tuple(sorted(both.items()))] * 2)
+    assert all(found.count(k) == known.count(k) for k in known)
+    # anything else found there lies inside q2 = +-pi/2 and loses more
+    for c in by_depth[1]:
+        if tuple(sorted(c.changes.items())) not in known:
+            assert c.equations[0] in ("t_q2 + 1", "t_q2 - 1")
+            assert c.numbers["Nr"] > 3 and c.numbers["Ni"] == 3
     for c in locus.components:
         # a witness checked, or no real point found and none claimed
         assert c.witness_checked or (c.real_points == "undecided" and not c.real)
