@@ -779,7 +779,7 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
                 m = el.matmul(m, _random_matrix(ctx, ncols, rank), zctx)
             det = quotient.reduce(_determinant(m))
             if not det.is_zero():
-                polys.append(normalize(el.primitive([det])[0]))
+                polys.append(normalize(det))
             if rank == len(rows) and rank == ncols:
                 break
         if polys and not any(p.is_constant() for p in polys):   # else: rank never drops

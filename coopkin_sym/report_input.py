@@ -337,8 +337,10 @@ class _Checker:
         for key in ("root_of", "root"):
             for piece in w.get(key, "").split(";"):
                 if piece.strip():
-                    names = [n for n in dict.fromkeys(_IDENTIFIER.findall(piece))
-                             if n not in _RESERVED]
+                    # a root is a number: a name in it can only be CRootOf's variable
+                    names = [] if key == "root" else [
+                        n for n in dict.fromkeys(_IDENTIFIER.findall(piece))
+                        if n not in _RESERVED]
                     self.expression(f"{where}.{key}", piece, names,
                                     polynomial=key == "root_of")
 

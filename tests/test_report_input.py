@@ -173,3 +173,15 @@ def test_analyze_latex_keeps_the_model_name_in_its_comment(tmp_path):
     lines = result.stdout.splitlines()
     assert lines[0].startswith("% x \\immediate")
     assert not any(line.startswith("\\immediate") for line in lines)
+
+
+def test_a_witness_root_of_degree_four_is_read_back():
+    # SymPy writes roots beyond degree two as CRootOf(polynomial in t, k): the name t
+    # is the polynomial's variable there, not a variable of the report
+    root = "CRootOf(16*t**4 + 120*t**3 + 145*t**2 - 300*t - 225, 0)"
+    data = tree(components__0__algebraic_witness__root=root)
+    again = locus_from_json(data)
+    assert again.components[0].algebraic_witness["root"] == root
+    # the same name outside CRootOf is still refused in a root (a root is a number)
+    assert any("uses undeclared symbol t" in line
+               for line in refused(tree(components__0__algebraic_witness__root="t + 1")))
