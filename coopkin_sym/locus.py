@@ -68,7 +68,6 @@ from .exact.quotient import (
     Tower,
     coefficients_in,
     gcd_modulo,
-    rank_modulo,
     smallest_fraction,
 )
 from .exact.substitution import split_linear, substitute, substitute_rows
@@ -722,68 +721,16 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
         _inside_curved(ctx, q_rows, f, k, comp, equations + [f_text], point_so_far, depth)
 
 
-# the most minor combinations per block searched inside a curved family
-_CURVED_COMBINATIONS = 3
-
-
 def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
                    point_so_far, depth, charts=(), hidden: tuple | None = None) -> None:
-    """Drops inside a hypersurface ``f = 0`` with no rational parametrization: for each
-    block (``H G^T``, and ``H D`` of each arm), the set where its rank falls below the
-    family's own is cut out on ``f = 0`` by random combinations of its minors of that
-    size (reduced modulo ``f``), then solved like any set of codimension 2. Drops of
-    ``rank Q`` alone (``Nm``, ``Nh`` with the others unchanged) are not searched there,
-    and the report says so. With ``comp`` None, ``f = 0`` is a candidate with the
-    enclosing numbers ``hidden = (numbers, parent)``, searched one such level deep."""
+    """Drops inside a family ``f = 0`` with no rational parametrization, where a divisor
+    of the rows vanishes: each block (``H G^T``, and ``H D`` of each arm) is reduced
+    modulo ``f`` (a row divisible by ``f`` is zero there), its pivots positive everywhere
+    eliminated, and the zero set on ``f = 0`` of each divisor taken out of a row is
+    solved like any set of codimension 2. Drops cut out there by minors alone are not
+    searched, and the report says so. With ``comp`` None, ``f = 0`` is a candidate with
+    the enclosing numbers ``hidden = (numbers, parent)``, searched one such level deep."""
     names = {n for row in q_rows for e in row for n in vars_of(ctx, e)} | set(vars_of(ctx, f))
-    if len(names) > 4:
-        # the sets cut out there are solved in up to four variables only
-        what = (f"component #{ctx.locus.components.index(comp) + 1}" if comp is not None
-                else ", ".join(equations) + " (enclosing numbers there)")
-        note = (f"inside {what}: deeper drops not searched (no rational parametrization, "
-                f"and {len(names)} variables)")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
-        return
-    quotient = Quotient(f, k)
-    zctx = ctx.ring.zctx
-    model = ctx.model
-    owners = [model.contacts[c].arm for c in ctx.row_contacts]
-    blocks = {"HG^T": [row[:6] for row in q_rows]}
-    for a, arm in enumerate(model.arms):
-        off = 6 + model.joint_offset(a)
-        rows = [q_rows[i][off:off + len(arm.joints)] for i, o in enumerate(owners) if o == a]
-        if rows:
-            blocks[f"HD:{arm.name}"] = rows
-    rests = []
-    for rows in blocks.values():
-        # reduced modulo f first: a row divisible by f is zero on the family, and a row
-        # divided by such a factor would hide the drops there
-        rows = [quotient.reduce_row(r) for r in rows]
-        contents: list = []
-        rows = _reduce_constant_pivots([r for r in rows if any(not e.is_zero() for e in r)],
-                                       contents)
-        rests += [[f, g] for g in contents if not quotient.is_zero(g) and not g.is_constant()]
-        if not rows or not rows[0]:
-            continue
-        ncols = len(rows[0])
-        rank = rank_modulo(rows, ncols, quotient)
-        if rank == 0:
-            continue
-        polys = []
-        for _ in range(_CURVED_COMBINATIONS):
-            m = rows
-            if rank < len(rows):
-                m = el.matmul(_random_matrix(ctx, rank, len(rows)), m, zctx)
-            if rank < ncols:
-                m = el.matmul(m, _random_matrix(ctx, ncols, rank), zctx)
-            det = quotient.reduce(_determinant(m))
-            if not det.is_zero():
-                polys.append(normalize(det))
-            if rank == len(rows) and rank == ncols:
-                break
-        if polys and not any(p.is_constant() for p in polys):   # else: rank never drops
-            rests.append([f, *polys])
     if comp is not None:
         index = ctx.locus.components.index(comp)
         where, numbers, depth, parent = (f"component #{index + 1}", Numbers(**comp.numbers),
@@ -791,14 +738,41 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
     else:
         where, numbers = ", ".join(equations) + " (enclosing numbers there)", hidden[0]
         parent = hidden[1]
-    note = (f"inside {where}: drops of rank Q alone (Nm, Nh changing, the other numbers "
-            "not) not searched (a family with no rational parametrization)")
+    if len(names) > 4:
+        # the sets cut out there are solved in up to four variables only
+        note = (f"inside {where}: deeper drops not searched (no rational parametrization, "
+                f"and {len(names)} variables)")
+        if note not in ctx.locus.unexplored:
+            ctx.locus.unexplored.append(note)
+        return
+    quotient = Quotient(f, k)
+    model = ctx.model
+    owners = [model.contacts[c].arm for c in ctx.row_contacts]
+    blocks = [[row[:6] for row in q_rows]]
+    for a, arm in enumerate(model.arms):
+        off = 6 + model.joint_offset(a)
+        rows = [q_rows[i][off:off + len(arm.joints)] for i, o in enumerate(owners) if o == a]
+        if rows:
+            blocks.append(rows)
+    divisors: list = []
+    for rows in blocks:
+        rows = [quotient.reduce_row(r) for r in rows]
+        contents: list = []
+        _reduce_constant_pivots([r for r in rows if any(not e.is_zero() for e in r)],
+                                contents)
+        divisors += [g for g in contents if not g.is_constant() and not quotient.is_zero(g)
+                     and g not in divisors]
+    note = (f"inside {where}: only where a divisor of the rows vanishes was searched (drops "
+            "cut out by minors alone not searched: a family with no rational "
+            "parametrization)")
     if note not in ctx.locus.unexplored:
         ctx.locus.unexplored.append(note)
+    if not divisors:
+        return
     ctx.hidden += comp is None
     try:
-        _isolated(ctx, q_rows, rests, equations, point_so_far, numbers, depth, parent,
-                  charts)
+        _isolated(ctx, q_rows, [[f, g] for g in divisors], equations, point_so_far, numbers,
+                  depth, parent, charts)
     finally:
         ctx.hidden -= comp is None
 
