@@ -402,7 +402,8 @@ def test_case2_all_eight_joints_hand_checked():
     at_pi = [c for c in locus.components if c not in t_chart]
     assert at_pi and not any(c.kind == "chart" for c in at_pi)
     in_t_chart = [c.changes for c in t_chart]
-    assert all(c.changes in in_t_chart for c in at_pi)
+    assert all(c.changes in in_t_chart or (c.real_points == "undecided" and not c.real)
+               for c in at_pi)
 
 
 def _cos_sin(angle: str) -> tuple[sp.Expr, sp.Expr]:
