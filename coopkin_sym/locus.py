@@ -693,7 +693,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
     if numbers == base:
         if len([n for n in ctx.ring_names if n not in point_so_far]) <= 1:
             return
-        if ctx.hidden >= _HIDDEN_DEPTH or depth > ctx.max_depth or ctx.expired():
+        if ctx.hidden >= _HIDDEN_DEPTH or depth > 0 or ctx.expired():
             _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
         else:   # after the components of the enclosing level, like other candidates
             ctx.deferred[-1].append(lambda: _inside_curved(
@@ -715,7 +715,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
             attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
         algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
-    if depth >= ctx.max_depth or ctx.expired():
+    if depth > 0 or depth >= ctx.max_depth or ctx.expired():
         _go_deeper(ctx, comp, None, None, None, depth, None, (), "no rational parametrization")
     else:
         _inside_curved(ctx, q_rows, f, k, comp, equations + [f_text], point_so_far, depth)
@@ -723,13 +723,14 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
 
 def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
                    point_so_far, depth, charts=(), hidden: tuple | None = None) -> None:
-    """Drops inside a family ``f = 0`` with no rational parametrization, where a divisor
-    of the rows vanishes: each block (``H G^T``, and ``H D`` of each arm) is reduced
-    modulo ``f`` (a row divisible by ``f`` is zero there), its pivots positive everywhere
-    eliminated, and the zero set on ``f = 0`` of each divisor taken out of a row is
-    solved like any set of codimension 2. Drops cut out there by minors alone are not
-    searched, and the report says so. With ``comp`` None, ``f = 0`` is a candidate with
-    the enclosing numbers ``hidden = (numbers, parent)``, searched one such level deep."""
+    """Drops inside a family ``f = 0`` of the first level (depth 0) with no rational
+    parametrization, where a divisor of the rows vanishes: each block (``H G^T``, and
+    ``H D`` of each arm) is reduced modulo ``f`` (a row divisible by ``f`` is zero
+    there), its pivots positive everywhere eliminated, and the zero set on ``f = 0`` of
+    each divisor taken out of a row is solved like any set of codimension 2. Drops cut
+    out there by minors alone are not searched, and the report says so. With ``comp``
+    None, ``f = 0`` is a candidate with the enclosing numbers ``hidden = (numbers,
+    parent)``, searched one such level deep."""
     names = {n for row in q_rows for e in row for n in vars_of(ctx, e)} | set(vars_of(ctx, f))
     if comp is not None:
         index = ctx.locus.components.index(comp)
@@ -1048,7 +1049,7 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
                                not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
             _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, sub_charts)
-        elif depth >= ctx.max_depth or ctx.expired():
+        elif depth > 0 or depth >= ctx.max_depth or ctx.expired():
             _go_deeper(ctx, comp, None, eqs, None, depth, reporter, charts,
                        "no rational parametrization")
         else:
@@ -1118,7 +1119,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)
-    if depth >= ctx.max_depth or ctx.expired():
+    if depth > 0 or depth >= ctx.max_depth or ctx.expired():
         _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
                    "no rational parametrization")
     else:

@@ -16,6 +16,8 @@ Example
 
 from __future__ import annotations
 
+from .deadline import check
+
 
 def substitute_rows(rows, k: int, f0, f1):
     """``rows`` with ``x_k = -f0/f1``, each row times the power of ``f1`` that clears
@@ -64,6 +66,7 @@ def substitute(p, k: int, f0, f1, deg: int):
         by_power.setdefault(e, {})[rest] = c
     acc = zctx.constant(0)
     for e, terms in by_power.items():
+        check("a substitution")
         acc = acc + zctx.from_dict(terms) * (-f0) ** e * f1 ** (deg - e)
     return acc
 
