@@ -381,9 +381,10 @@ def test_search_on_shipped_examples_verifies(name):
 
 # what the current search misses (or gets wrong) on each random system
 RANDOM_FAILURES: dict[int, str] = {}
-# the search does not finish within a few minutes on these (steps that are slow on
-# curved families): run only with COOPKIN_SLOW_TESTS=1
-RANDOM_SLOW = {5, 6, 9, 11}
+# slower ones (5: about 15 s; 6 and 11 had not finished within minutes, on curved
+# families): run only with COOPKIN_SLOW_TESTS=1. System 9 stays in the default run: it
+# needs the search inside a curved hypersurface
+RANDOM_SLOW = {5, 6, 11}
 SLOW = os.environ.get("COOPKIN_SLOW_TESTS") == "1"
 
 
