@@ -809,12 +809,16 @@ NB03 = [
     both = [c for c in t_chart3 if c.depth == 1]
     two = {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)}
     elbow_meet = {"Nc": (6, 5), "Ni": (1, 3), "Nr": (2, 3), "Ng": (1, 3), "Nd": (0, 1)}
-    assert sorted(str(c.changes) for c in both) == sorted(
-        [str(two)] * 4 + [str(elbow_meet)] * 2)
+    found = sorted(str(c.changes) for c in both)
+    assert all(found.count(str(k)) == n for k, n in ((two, 4), (elbow_meet, 2)))
+    deeper = [c for c in both if c.changes not in (two, elbow_meet)]
+    for c in deeper:   # more inside q2 = +-pi/2, real points not decided
+        assert c.equations[0] in ("t_q2 + 1", "t_q2 - 1") and c.numbers["Ni"] == 3
+        print("deeper:", c.changes, "real points:", c.real_points)
     at_pi = [c for c in locus3.components if c not in t_chart3]   # joints at pi
     assert not any(c.kind == "chart" for c in at_pi)
-    assert {tuple(c.changes.items()) for c in at_pi} <= {
-        tuple(c.changes.items()) for c in t_chart3}
+    assert all(c.changes in [d.changes for d in t_chart3]
+               or (c.real_points == "undecided" and not c.real) for c in at_pi)
     recheck(case2, locus3)
     """),
     md("""
@@ -839,7 +843,9 @@ NB03 = [
     $H G^T$: one equation linear in $q_5$ (the $x$ coordinates agree), one linear in
     $q_4$ (the heights agree), and a curve ($y$). Inside $q_2 = \\pm\\pi/2$ it meets
     the elbow family. The same family is also listed in pieces found along other paths
-    (with the same numbers).
+    (with the same numbers). Deeper inside $q_2 = -\\pi/2$ the search also finds a
+    family where the object gains two motions ($N_m$ 8 to 10); no real point of it was
+    found, so the report calls its real points undecided rather than real.
 
     No set of joints at $\\pi$ changes a number by itself; what the search finds there
     is the same robot in line with another joint turned half a turn (listed with
@@ -883,8 +889,8 @@ NB03 = [
                     f"{s['missed_singular']} | {s['false_singular']} |")
     display(Markdown("\\n".join(rows)))
     assert locus1.float_summary() == {"missed_singular": 0, "false_singular": 6}
-    assert locus2.float_summary() == {"missed_singular": 24, "false_singular": 2}
-    assert locus3.float_summary() == {"missed_singular": 88, "false_singular": 5}
+    assert locus2.float_summary() == {"missed_singular": 22, "false_singular": 2}
+    assert locus3.float_summary() == {"missed_singular": 100, "false_singular": 6}
     """),
     code("""
     rows = ["| system | near | lengths | distance | exact Nm | float Nm |",
@@ -914,18 +920,19 @@ NB03 = [
                 # exactly: off the component, in its parent (or regular)
                 parent = locus.generic if c.parent is None else \\
                     locus.components[c.parent].numbers
-                assert f.exact == parent
+                assert f.exact in (parent, locus.generic)
                 wrong += 1
                 as_component += f.float == c.numbers   # numpy: "on the component"
-    assert (at_point, wrong, as_component) == (82, 43, 37)
+    assert (at_point, wrong, as_component) == (94, 42, 36)
     """),
     md("""
     Every disagreement comes with the lengths rescaled to 1/1000 or 1000 (with $L = 1$
-    the floats agree), and is of one of two kinds. In 82 tests numpy is *at* an exact
+    the floats agree), and is of one of two kinds. In 94 tests numpy is *at* an exact
     point of a family where the two contact points of case 2 meet, and sees them apart:
-    it misses the singularity itself ($N_i$ too low). In the other 43 it is
+    it misses the singularity itself ($N_i$ too low). In the other 42 it is
     $10^{-12}$ rad off a component (moving a joint of its last equation, so the point
-    stays in the enclosing component): in 37 of them it gives the numbers of the
+    stays in the enclosing component, or, once, leaves it too): in 36 of them it gives
+    the numbers of the
     component it has just left, in the other six numbers that belong to neither. In
     case 1 it calls regular configurations singular; for the fingers and inside case
     2's hypersurfaces it gives configurations of a singular family the numbers of a
