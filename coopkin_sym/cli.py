@@ -480,4 +480,17 @@ def main() -> None:
     try:
         app()
     except KeyboardInterrupt:  # pragma: no cover - typer turns it into exit 130
-        sys.exit(130)
+        _exit_interrupted()
+    except SystemExit as exc:
+        if exc.code == 130:
+            _exit_interrupted()
+        raise
+
+
+def _exit_interrupted() -> None:
+    """Exit with 130 after Ctrl-C without running exit handlers: they join the threads
+    of a worker pool whose processes were just stopped, which can wait for ever.
+    Temporary files are already removed (the interrupt unwound through them)."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(130)
