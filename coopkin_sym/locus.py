@@ -248,17 +248,12 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
     maximal minors (a few polynomials whose common zeros are the drop set); under
     ``content:<matrix>`` the polynomials rows were divided by (each one's zero set is a
     candidate on its own)."""
-    model, zctx = ctx.model, ctx.ring.zctx
-    owners = [model.contacts[c].arm for c in ctx.row_contacts]
+    zctx = ctx.ring.zctx
+    owners = [ctx.model.contacts[c].arm for c in ctx.row_contacts]
     gt = [row[:6] for row in q_rows]
     mats: dict[str, list] = {"HG^T": gt}
     a_rows = [gt[i] for i, o in enumerate(owners) if o is None]
-    for a, arm in enumerate(model.arms):
-        rows = [i for i, o in enumerate(owners) if o == a]
-        off = 6 + model.joint_offset(a)
-        d = [[q_rows[i][off + k] for k in range(len(arm.joints))] for i in rows]
-        if not rows:
-            continue
+    for arm, rows, d in _arm_blocks(ctx, q_rows):
         mats[f"HD:{arm.name}"] = d
         dt = [list(col) for col in zip(*d, strict=True)]
         y, _ = el.nullspace_rref(dt, len(rows), zctx)
@@ -284,6 +279,18 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
         if polys:
             out[name] = polys
     return out
+
+
+def _arm_blocks(ctx: _Context, q_rows):
+    """For each arm with contact rows: the arm, the indices of its rows of ``Q`` and
+    its block ``H D`` (those rows, its joint columns)."""
+    model = ctx.model
+    owners = [model.contacts[c].arm for c in ctx.row_contacts]
+    for a, arm in enumerate(model.arms):
+        rows = [i for i, o in enumerate(owners) if o == a]
+        if rows:
+            off = 6 + model.joint_offset(a)
+            yield arm, rows, [q_rows[i][off:off + len(arm.joints)] for i in rows]
 
 
 def _positive(e) -> bool:
@@ -375,8 +382,7 @@ def _minor_combinations(rows, ctx: _Context, contents: list, deep: list | None =
                 note = (f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} "
                         f"block ({name or 'a block'}) in {nvars} variables: not solved "
                         f"({why})")
-                if note not in ctx.locus.unexplored:
-                    ctx.locus.unexplored.append(note)
+                _note(ctx, note)
             return []
     count = nvars + 1 if nvars <= 2 else 3
     polys = []
@@ -548,6 +554,12 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
         search()
 
 
+def _note(ctx: _Context, text: str) -> None:
+    """Say once in the report what was not explored."""
+    if text not in ctx.locus.unexplored:
+        ctx.locus.unexplored.append(text)
+
+
 def _drops_text(drops: set[str]) -> list[str]:
     names = {"HG^T": "HG^T", "HD": "HD", "Y": "Q", "A": "Q", "Q": "Q"}
     return sorted({names[d] for d in drops})
@@ -633,8 +645,7 @@ def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, 
     if why_not is not None or rows is None:
         note = (f"inside {', '.join(equations)} (enclosing numbers there): deeper drops not "
                 f"searched ({why_not or 'no rational parametrization'})")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
+        _note(ctx, note)
         return
     def search() -> None:
         if split:
@@ -678,8 +689,7 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
                 f"{', '.join(names)}{' inside ' + ', '.join(equations) if equations else ''}: "
                 f"not decided (ranks modulo a polynomial of more than {_MAX_CURVED_TERMS} "
                 "terms)")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
+        _note(ctx, note)
         return
     real = has_real_point(ctx, f, names)
     if real is False:
@@ -743,18 +753,10 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
         # the sets cut out there are solved in up to four variables only
         note = (f"inside {where}: deeper drops not searched (no rational parametrization, "
                 f"and {len(names)} variables)")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
+        _note(ctx, note)
         return
     quotient = Quotient(f, k)
-    model = ctx.model
-    owners = [model.contacts[c].arm for c in ctx.row_contacts]
-    blocks = [[row[:6] for row in q_rows]]
-    for a, arm in enumerate(model.arms):
-        off = 6 + model.joint_offset(a)
-        rows = [q_rows[i][off:off + len(arm.joints)] for i, o in enumerate(owners) if o == a]
-        if rows:
-            blocks.append(rows)
+    blocks = [[row[:6] for row in q_rows]] + [d for _, _, d in _arm_blocks(ctx, q_rows)]
     divisors: list = []
     for rows in blocks:
         rows = [quotient.reduce_row(r) for r in rows]
@@ -766,8 +768,7 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
     note = (f"inside {where}: only where a divisor of the rows vanishes was searched (drops "
             "cut out by minors alone not searched: a family with no rational "
             "parametrization)")
-    if note not in ctx.locus.unexplored:
-        ctx.locus.unexplored.append(note)
+    _note(ctx, note)
     if not divisors:
         return
     ctx.hidden += comp is None
@@ -798,14 +799,12 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
                     f"({', '.join(names_used)}) not solved (solved: up to two variables, "
                     f"and up to four when the equations have at most "
                     f"{_PARAMETER_SOLVE_TERMS} terms)")
-            if note not in ctx.locus.unexplored:
-                ctx.locus.unexplored.append(note)
+            _note(ctx, note)
             continue
         points, algebraic, unresolved = solve_small(ctx, polys, names_used)
         for text in unresolved:
             note = f"real points {text}: numbers not decided"
-            if note not in ctx.locus.unexplored:
-                ctx.locus.unexplored.append(note)
+            _note(ctx, note)
         rational_points += points
         algebraic_points += algebraic
     created = []
@@ -1064,8 +1063,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         note = (f"inside {', '.join(equations + [poly_text(ctx, h)])}, {y} a common root "
                 "of the minors (enclosing numbers there): deeper drops not searched (no "
                 "rational parametrization)")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
+        _note(ctx, note)
         return
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
@@ -1093,8 +1091,7 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
     if len(common) > 2:
         note = (f"depth {depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} values of "
                 f"{y} share each point: not solved")
-        if note not in ctx.locus.unexplored:
-            ctx.locus.unexplored.append(note)
+        _note(ctx, note)
         return
     if len(common) < 2:
         return
