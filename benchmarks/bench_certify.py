@@ -30,9 +30,7 @@ import sys
 import time
 
 import coopkin_sym
-from coopkin_sym.exact import groebner as gb
-from coopkin_sym.locus import compute_locus
-from coopkin_sym.locus_certify import (
+from coopkin_sym.analysis.locus.certify import (
     _chart,
     _configuration,
     _drop_generators,
@@ -42,6 +40,8 @@ from coopkin_sym.locus_certify import (
     _Setup,
     certify_locus,
 )
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.exact import groebner as gb
 
 EXAMPLES = ("paper-case1-hard", "paper-case1-complete-hard", "paper-case1-soft",
             "paper-case1-soft-hard", "paper-case2-complete", "paper-case2-hard")

@@ -37,9 +37,9 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import coopkin_sym
-from coopkin_sym import kinematics, mobility
-from coopkin_sym.builders import arm_cell, planar_hand, spatial_hand
+from coopkin_sym.analysis import kinematics, mobility
 from coopkin_sym.exact.sympy_bridge import matrix_to_sympy
+from coopkin_sym.model.builders import arm_cell, planar_hand, spatial_hand
 
 MIXED5 = ["hard", "soft", "hard", "soft", "hard"]
 TOO_LARGE = getattr(mobility, "BlockTooLarge", ())   # the package's term budget
@@ -483,7 +483,7 @@ def run(quick: bool = False, log=print) -> list[dict]:
 def profile(expr: str, top: int = 25) -> None:
     """Time per stage of one generic analysis (``expr`` a builder call or an example
     name), with cProfile's top functions of the package."""
-    from coopkin_sym import mobility
+    from coopkin_sym.analysis import mobility
     names = {**BUILDERS, "MIXED5": MIXED5}
     model = eval(expr, {"__builtins__": {}}, names) if "(" in expr else expr
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP, MEMORY_CAP))

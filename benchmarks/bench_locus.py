@@ -28,9 +28,9 @@ import numpy as np
 import sympy as sp
 
 import coopkin_sym
-from coopkin_sym.builders import planar_hand
-from coopkin_sym.locus import compute_locus
-from coopkin_sym.report import write_report
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.model.builders import planar_hand
+from coopkin_sym.present.report import write_report
 
 
 def _float_q(system):

@@ -28,8 +28,8 @@ import numpy as np
 import sympy as sp
 
 import coopkin_sym
-from coopkin_sym import sweep as sweep_module
-from coopkin_sym.sweep import Value, compile_system, grid, sweep
+from coopkin_sym.analysis import sweep as sweep_module
+from coopkin_sym.analysis.sweep import Value, compile_system, grid, sweep
 
 SYSTEM = "paper-case2-hard"
 AT = "L=1"

@@ -68,9 +68,9 @@ def describe(seed: int) -> dict:
 def run_one(seed: int, timeout: float, lines: int, max_points: int) -> dict:
     """Search and verify one system (in this process); the result row."""
     import coopkin_sym
+    from coopkin_sym.analysis.locus.search import compute_locus
+    from coopkin_sym.analysis.locus.verify import verify_locus
     from coopkin_sym.errors import TimeLimitReached
-    from coopkin_sym.locus import compute_locus
-    from coopkin_sym.locus_verify import verify_locus
 
     row = describe(seed)
     row["source"] = str(Path(coopkin_sym.__file__).parent.parent)

@@ -15,11 +15,11 @@ Example
 (2, 1)
 """
 
-from .configuration import Configuration, ConfigurationError
-from .errors import CoopkinError
-from .mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion, Numbers
-from .model import Model, ModelError
-from .system import System, load
+from coopkin_sym.analysis.mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion, Numbers
+from coopkin_sym.errors import CoopkinError
+from coopkin_sym.model.configuration import Configuration, ConfigurationError
+from coopkin_sym.model.model import Model, ModelError
+from coopkin_sym.system import System, load
 
 __all__ = [
     "Analysis",

@@ -1,5 +1,5 @@
 """``python -m coopkin_sym`` runs the ``coopkin`` command."""
 
-from .cli import main
+from coopkin_sym.cli import main
 
 main()

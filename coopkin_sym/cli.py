@@ -30,13 +30,14 @@ from typing import Annotated
 import sympy as sp
 import typer
 
-from .configuration import ConfigurationError
-from .errors import CoopkinError, TimeLimitReached
-from .exactnum import NumberError
-from .irrational import IrrationalAnalysis, NotIrrational, analyze_irrational
-from .mobility import Analysis, InfeasibleMotion
-from .model import ModelError
-from .system import load
+from coopkin_sym.analysis.irrational import IrrationalAnalysis
+from coopkin_sym.analysis.mobility import Analysis, InfeasibleMotion
+from coopkin_sym.errors import CoopkinError, TimeLimitReached
+from coopkin_sym.exact.parse import NumberError
+from coopkin_sym.model.configuration import ConfigurationError
+from coopkin_sym.model.model import ModelError
+from coopkin_sym.present.sentences import irrational_sentences
+from coopkin_sym.system import load
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
@@ -71,31 +72,18 @@ def analyze(
     try:
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
-        try:
-            result = system.analyze(at, generic=generic, free=free_joints)
-        except ConfigurationError as exc:
-            result = _irrational_or_raise(system, at, exc, generic or bool(free_joints))
+        result = system.analyze(at, generic=generic, free=free_joints)
         if not isinstance(result, IrrationalAnalysis):
             text = (json.dumps(result.as_json(), indent=2) if as_json else
                     render_latex(result) if latex else render_text(result))
         elif as_json:
-            text = json.dumps(result.as_json(), indent=2)
+            text = json.dumps({**result.as_json(), "meaning": irrational_sentences(result)},
+                              indent=2)
         else:
             text = _irrational_text(result)
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
-
-
-def _irrational_or_raise(system, at, error: ConfigurationError, symbolic: bool):
-    """The numbers over a number field when some angle has an irrational but algebraic
-    tan(q/2); otherwise the original error."""
-    if symbolic or at is None:
-        raise error
-    try:
-        return analyze_irrational(system.model, at)
-    except NotIrrational:
-        raise error from None
 
 
 def _irrational_text(result: IrrationalAnalysis) -> str:
@@ -107,7 +95,7 @@ def _irrational_text(result: IrrationalAnalysis) -> str:
              f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
              f"of {result.minimal_polynomial} (every conjugate point at once)", "",
              "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()), ""]
-    lines += [f"- {s}" for s in result.meaning]
+    lines += [f"- {s}" for s in irrational_sentences(result)]
     lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
                   "(the numbers are exact; use a rational configuration for C11..C23)."]
     return "\n".join(lines)
@@ -116,7 +104,7 @@ def _irrational_text(result: IrrationalAnalysis) -> str:
 @app.command()
 def examples() -> None:
     """List the shipped example systems."""
-    from .examples import describe_example, list_examples
+    from coopkin_sym.model.examples import describe_example, list_examples
 
     for name in list_examples():
         typer.echo(f"{name:28s} {describe_example(name)}")
@@ -135,7 +123,7 @@ def draw(
                          "(C11) or redundant:K (C23), K from 1.")] = None,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from .draw import DrawError, save_picture
+    from coopkin_sym.present.draw import DrawError, save_picture
 
     try:
         path = save_picture(model, output, at=at, motion=motion)
@@ -167,8 +155,8 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from .output import check_output_path, write_files
-    from .sweep import SweepError, grid
+    from coopkin_sym.analysis.sweep import SweepError, grid
+    from coopkin_sym.present.files import check_output_path, write_files
 
     fmt = "json" if as_json else "csv"
     try:
@@ -237,7 +225,7 @@ def locus(
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from .report import ReportError, check_target, parse_pairs, write_report
+    from coopkin_sym.present.report import ReportError, check_target, parse_pairs, write_report
 
     try:
         check_target(output)
@@ -246,7 +234,7 @@ def locus(
     except (*USER_ERRORS, ReportError) as exc:
         _fail(str(exc))
     try:
-        from .locus import LocusError, compute_locus
+        from coopkin_sym.analysis.locus.search import LocusError, compute_locus
     except ImportError as exc:  # pragma: no cover - depends on the installation
         _fail(f"the locus engine is not available: {exc}")
     show = not no_progress and sys.stderr.isatty()
@@ -257,7 +245,7 @@ def locus(
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
         if certify:
-            from .locus_certify import certify_locus
+            from coopkin_sym.analysis.locus.certify import certify_locus
 
             result.certificate = certify_locus(system, result,
                                                budget=certify_timeout).to_json()
@@ -276,7 +264,7 @@ def locus(
 
 
 def _verification(system, locus, **options):
-    from .locus_verify import VerifyError, verify_locus
+    from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
 
     try:
         return verify_locus(system, locus, **options)
@@ -285,7 +273,7 @@ def _verification(system, locus, **options):
 
 
 def _echo_verification(checked) -> None:
-    from .locus_verify import summary_lines
+    from coopkin_sym.analysis.locus.verify import summary_lines
 
     typer.echo("\n".join(summary_lines(checked)))
     if not checked.ok:
@@ -310,7 +298,7 @@ def verify_report(
     must check. Exit 1 when something is uncovered or unsound."""
     from pathlib import Path
 
-    from .report import ReportError, locus_from_json
+    from coopkin_sym.present.report import ReportError, locus_from_json
 
     try:
         system = load(model)
@@ -373,7 +361,7 @@ def _sweep(system, points, at, workers: int, show: bool):
 
 def render_text(a: Analysis) -> str:
     """The human report of ``coopkin analyze``."""
-    from .interpret import sentences
+    from coopkin_sym.present.sentences import sentences
 
     lines = [f"System: {a.model.name}"]
     where = a.configuration.at_text() or "home (all joints at 0)"

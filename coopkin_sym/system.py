@@ -1,4 +1,9 @@
-"""The public entry point: a loaded system and its analyses.
+"""The public facade: a loaded system and everything the package can do with it.
+
+:class:`System` gathers the layers below: ``analyze`` (at rational or algebraic
+configurations, or generically), ``locus`` (where the numbers change), ``sweep``
+(exact numbers at many points) and ``draw`` (a picture). Every method takes a
+configuration the same way: ``at`` as ``--at`` text (``"q1=pi/2,L=1000"``) or a mapping.
 
 Example
 -------
@@ -13,11 +18,22 @@ Example
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING
 
-from .configuration import Configuration
-from .mobility import Analysis, analyze
-from .model import Model, load_model
+from coopkin_sym.analysis.irrational import IrrationalAnalysis, analyze_irrational
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.analysis.mobility import Analysis, analyze
+from coopkin_sym.analysis.sweep import sweep
+from coopkin_sym.errors import ConfigurationError, NotIrrational
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model, load_model
+from coopkin_sym.present.draw import draw_system
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
 
 
 class System:
@@ -26,7 +42,7 @@ class System:
     Parameters
     ----------
     model
-        The validated model (see :func:`coopkin_sym.model.load_model`).
+        The validated model (see :func:`coopkin_sym.model.model.load_model`).
     """
 
     def __init__(self, model: Model):
@@ -46,7 +62,8 @@ class System:
         return Configuration.parse(self.model, at, free)
 
     def analyze(self, at: str | Mapping | Configuration | None = None, *,
-                generic: bool = False, free: Iterable[str] | None = None) -> Analysis:
+                generic: bool = False,
+                free: Iterable[str] | None = None) -> Analysis | IrrationalAnalysis:
         """Exact mobility and kinematic analysis.
 
         Parameters
@@ -54,22 +71,69 @@ class System:
         at
             Values of joint variables (angles in SymPy syntax, displacements) and
             parameters; unset joints are at home (q = 0), unset parameters symbolic.
+            An angle whose ``tan(q/2)`` is irrational but algebraic (``q1=-pi/6``) is
+            analyzed exactly over the number field it generates: the result is then an
+            :class:`~coopkin_sym.analysis.irrational.IrrationalAnalysis` (the numbers
+            and, for a quadratic field, the motions behind ``Ni`` and ``Nr``).
         generic
             Keep every joint variable symbolic (the generic analysis over Q(t, L)).
         free
             Joint names to keep symbolic (the rest at their values).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6").numbers.Ni
+        3
         """
         if isinstance(at, Configuration):
-            config = at
-        else:
+            return analyze(self.model, at)
+        try:
             config = self.configuration(at, "all" if generic else free)
+        except ConfigurationError as error:
+            if generic or free or at is None:
+                raise
+            try:
+                return analyze_irrational(self.model, at)
+            except NotIrrational:
+                raise error from None
         return analyze(self.model, config)
+
+    def locus(self, at: str | Mapping | None = None, *, max_depth: int = 2,
+              timeout: float | None = None, progress: bool = False,
+              free: Iterable[str] | None = None, pi_size: int | None = None) -> Locus:
+        """Where the numbers change: every family of configurations whose numbers
+        differ from the generic ones (see
+        :func:`coopkin_sym.analysis.locus.search.compute_locus`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("paper-case1-hard").locus()
+        >>> locus.generic["Nm"], [c.condition for c in locus.components][:2]
+        (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
+        """
+        return compute_locus(self, at, max_depth, timeout, progress, free, pi_size)
+
+    def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
+             title: str | None = None) -> Figure:
+        """A picture of the system at ``at`` (see
+        :func:`coopkin_sym.present.draw.draw_system`), with one of its motions.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> fig = load("paper-case1-hard").draw("q1=pi/2,q2=pi/2", motion="coordinated:1")
+        >>> len(fig.axes)
+        1
+        """
+        return draw_system(self, at, motion=motion, title=title)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
               progress: bool = False, chunk: int = 16384):
-        """Exact numbers at many points, fast (see :func:`coopkin_sym.sweep.sweep`).
+        """Exact numbers at many points, fast (see :func:`coopkin_sym.analysis.sweep.sweep`).
 
-        ``points`` is a grid (:func:`coopkin_sym.sweep.grid`) or an iterable of points
+        ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
         :class:`concurrent.futures.Executor`.
 
@@ -80,8 +144,6 @@ class System:
         >>> res.numbers[:, 0].tolist()
         [3, 2]
         """
-        from .sweep import sweep
-
         return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
 
     def __repr__(self) -> str:

@@ -30,9 +30,9 @@ SETUP = code("""
     from IPython.display import Markdown, Math, display
 
     import coopkin_sym
-    from coopkin_sym.draw import draw_system
-    from coopkin_sym.examples import example_path
-    from coopkin_sym.interpret import sentences
+    from coopkin_sym.present.draw import draw_system
+    from coopkin_sym.model.examples import example_path
+    from coopkin_sym.present.sentences import sentences
 
 
     def show(name, matrix):
@@ -441,11 +441,11 @@ NB03 = [
     # Singularity loci: where the numbers change, exactly
 
     The paper computes the mobility numbers at one configuration; notebook 01 found by
-    hand, along one family, where they jump. `coopkin_sym.locus.compute_locus` finds
+    hand, along one family, where they jump. `coopkin_sym.analysis.locus.search.compute_locus` finds
     every family of configurations where the numbers differ from the generic ones
     (the *locus*), decides each family's numbers exactly, gives an exact witness point
     on it (checked by a direct analysis), recurses inside each family for deeper drops,
-    and lists what it did not explore. `coopkin_sym.report` writes it up.
+    and lists what it did not explore. `coopkin_sym.present.report` writes it up.
 
     Angles are handled through $t = \\tan(q/2)$, so a component such as
     `t_q1 - 1 = 0` is $q_1 = \\pi/2$. Floats appear only in the plots and in the float
@@ -460,11 +460,12 @@ NB03 = [
     from IPython.display import Image, Markdown, display
 
     import coopkin_sym
-    from coopkin_sym.draw import draw_system
-    from coopkin_sym.irrational import analyze_irrational
-    from coopkin_sym.locus import compute_locus
-    from coopkin_sym.locus_plot import plot_components
-    from coopkin_sym.report import write_report
+    from coopkin_sym.present.draw import draw_system
+    from coopkin_sym.analysis.irrational import analyze_irrational
+    from coopkin_sym.analysis.locus.search import compute_locus
+    from coopkin_sym.present.locus_plot import plot_components
+    from coopkin_sym.present.report import write_report
+    from coopkin_sym.present.sentences import component_sentences
 
     NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
@@ -547,7 +548,7 @@ NB03 = [
     coincident = locus1.components[4]
     assert coincident.numbers == dict(GENERIC1, Nm=3, Nc=3, Ni=3, Ng=3, Nh=1)
     assert coincident.equations == ["t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2"]
-    for line in locus1.components[3].meaning:
+    for line in component_sentences(locus1.components[3]):
         print("-", line)
     """),
     md("""
@@ -794,7 +795,7 @@ NB03 = [
     for c in elbow:
         assert c.equations in (["t_q2 + 1"], ["t_q2 - 1"])
         assert c.changes == {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
-        print(c.condition, "->", c.meaning[1])
+        print(c.condition, "->", component_sentences(c)[1])
     one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
     in_line = [c for c in t_chart3 if c.depth == 0 and c.kind == "subvariety"
                and c.changes == one]

@@ -1,4 +1,4 @@
-"""The example families of :mod:`coopkin_sym.builders` against the independent reference,
+"""The example families of :mod:`coopkin_sym.model.builders` against the independent reference,
 against hand derivations, and generic numbers against random rational points."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ import sympy as sp
 from independent import reference_analysis
 
 import coopkin_sym
-from coopkin_sym.builders import arm_cell, circle_point, planar_hand, spatial_hand
+from coopkin_sym.model.builders import arm_cell, circle_point, planar_hand, spatial_hand
 
 NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 MIXED5 = ["hard", "soft", "hard", "soft", "hard"]

@@ -13,7 +13,7 @@ from typer.testing import CliRunner  # noqa: E402
 
 from coopkin_sym import load  # noqa: E402
 from coopkin_sym.cli import app  # noqa: E402
-from coopkin_sym.draw import DrawError, draw_system, parse_motion, save_picture  # noqa: E402
+from coopkin_sym.present.draw import DrawError, draw_system, parse_motion, save_picture  # noqa: E402
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 

@@ -1,4 +1,4 @@
-"""Exact numbers and angles from text (coopkin_sym.exactnum)."""
+"""Exact numbers and angles from text (coopkin_sym.exact.parse)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from coopkin_sym.exactnum import NumberError, angle_text, parse_angle, parse_number
+from coopkin_sym.exact.parse import NumberError, angle_text, parse_angle, parse_number
 
 L = sp.Symbol("L", positive=True)
 PARAMS = {"L": L}

@@ -20,10 +20,10 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from coopkin_sym import load
+from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.errors import CoopkinError
-from coopkin_sym.locus_types import Component, FloatCheck, Locus
-from coopkin_sym.report import (
+from coopkin_sym.present.report import (
     locus_from_json,
     render_html,
     render_json,

@@ -13,8 +13,8 @@ from typer.testing import CliRunner
 
 from coopkin_sym import limits, load
 from coopkin_sym.cli import app
-from coopkin_sym.model import ModelError
-from coopkin_sym.trees import TreeError, check_tree, read_text
+from coopkin_sym.model.model import ModelError
+from coopkin_sym.model.trees import TreeError, check_tree, read_text
 
 runner = CliRunner()
 BASE = {"name": "x", "parameters": ["L"],

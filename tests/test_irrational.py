@@ -13,17 +13,18 @@ from hypothesis import strategies as st
 from independent import reference_numbers_algebraic
 from typer.testing import CliRunner
 
-import coopkin_sym.examples
+import coopkin_sym.model.examples
+from coopkin_sym.analysis.irrational import NotIrrational, analyze_irrational
 from coopkin_sym.cli import app
-from coopkin_sym.configuration import ConfigurationError
-from coopkin_sym.irrational import NotIrrational, analyze_irrational
-from coopkin_sym.model import load_model
+from coopkin_sym.model.configuration import ConfigurationError
+from coopkin_sym.model.model import load_model
+from coopkin_sym.present.sentences import irrational_sentences
 
 runner = CliRunner()
 
 
 def reference_numbers(name: str, angles: dict[str, sp.Expr], L: int = 1) -> dict:
-    model = yaml.safe_load(coopkin_sym.examples.example_path(name).read_text())
+    model = yaml.safe_load(coopkin_sym.model.examples.example_path(name).read_text())
     at = {j: (sp.cos(q), sp.sin(q)) for j, q in angles.items()}
     return reference_numbers_algebraic(model, {**at, "L": L})
 
@@ -35,8 +36,8 @@ def test_coincident_contacts_of_case1_in_radicals():
         "Nm": 3, "Nc": 3, "Ni": 3, "Nr": 0, "Ng": 3, "Nd": 4, "Nh": 1}
     assert a.tangents == {"q1": "-2 + sqrt(3)", "q2": "2 - sqrt(3)"}
     assert a.minimal_polynomial == "alpha**2 + 4*alpha + 1"
-    assert a.meaning[2] == ("Ni = 3: with every joint locked, the object can still turn "
-                            "freely about c1 (= c2), in every direction.")
+    assert irrational_sentences(a)[2] == ("Ni = 3: with every joint locked, the object can "
+                                   "still turn freely about c1 (= c2), in every direction.")
 
 
 def test_two_independent_radicals_give_a_degree_four_field():

@@ -17,9 +17,10 @@ from independent import (
 from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
-import coopkin_sym.examples
-from coopkin_sym.builders import planar_hand
-from coopkin_sym.locus import LocusError, compute_locus
+import coopkin_sym.model.examples
+from coopkin_sym.analysis.locus.search import LocusError, compute_locus
+from coopkin_sym.model.builders import planar_hand
+from coopkin_sym.present.sentences import component_sentences
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 # both links on the contact line: the object gains a rotation about z (checked by
@@ -61,8 +62,8 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
     w = c.algebraic_witness
     assert w["point"] == {"L": "1", "q1": "-5*pi/6", "q2": "5*pi/6"}
     assert w["root"] == "-2 - sqrt(3)" and w["root_of"] == "alpha**2 + 4*alpha + 1"
-    assert c.meaning[2] == ("Ni = 3: with every joint locked, the object can still turn "
-                            "freely about c1 (= c2), in every direction.")
+    assert component_sentences(c)[2] == ("Ni = 3: with every joint locked, the object can "
+                                   "still turn freely about c1 (= c2), in every direction.")
 
 
 def _ranks_over_the_algebraic_numbers(q: sp.Matrix) -> tuple[int, int, int]:
@@ -73,7 +74,7 @@ def _ranks_over_the_algebraic_numbers(q: sp.Matrix) -> tuple[int, int, int]:
 
 
 def test_case1_witnesses_are_confirmed_by_an_independent_analysis(case1):
-    model = yaml.safe_load(coopkin_sym.examples.example_path(
+    model = yaml.safe_load(coopkin_sym.model.examples.example_path(
         "paper-case1-hard").read_text())
     conditions = set()
     for c in case1.components:
@@ -206,10 +207,10 @@ def test_function_field_rank_agrees_with_the_parametrization():
     """Case 1 soft/hard has a hypersurface linear in t_q2 only: its numbers by
     substitution (t_q2 = ...) and by ranks modulo the polynomial in t_q1 (degree 2,
     the function-field route used for curved components) agree."""
-    from coopkin_sym import kinematics
-    from coopkin_sym.configuration import Configuration
+    from coopkin_sym.analysis import kinematics
+    from coopkin_sym.analysis.mobility import numbers_modulo
     from coopkin_sym.exact.quotient import Quotient
-    from coopkin_sym.mobility import numbers_modulo
+    from coopkin_sym.model.configuration import Configuration
 
     system = coopkin_sym.load("paper-case1-soft-hard")
     locus = compute_locus(system, max_depth=0)
@@ -323,7 +324,7 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
     """Each algebraic witness, read back from its --at text by the independent
     number-field path (fresh kinematics, a primitive element), has the reported
     numbers."""
-    from coopkin_sym.irrational import analyze_irrational
+    from coopkin_sym.analysis.irrational import analyze_irrational
 
     for model in ("paper-case1-hard", TWO_FINGERS, "paper-case2-hard"):
         system = coopkin_sym.load(model)
@@ -355,7 +356,7 @@ def test_case2_all_eight_joints_hand_checked():
     The contact points meet (c1 = c2: x, y and z agree, codimension 3) where the object
     can turn about that point in every direction: Ni 1 -> 3.
     """
-    model = yaml.safe_load(coopkin_sym.examples.example_path(
+    model = yaml.safe_load(coopkin_sym.model.examples.example_path(
         "paper-case2-hard").read_text())
     locus = compute_locus(coopkin_sym.load("paper-case2-hard"), max_depth=1)
     one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
@@ -460,7 +461,7 @@ def test_two_fingers_with_bases_fixed_find_every_drop_q_pi_included():
 def test_no_real_zeros_is_a_proof_or_nothing():
     import flint
 
-    from coopkin_sym.locus_algebra import no_real_zeros
+    from coopkin_sym.analysis.locus.algebra import no_real_zeros
 
     ctx = flint.fmpz_mpoly_ctx.get(("a", "b", "c"), "lex")
     a, b, c = ctx.gens()

@@ -27,14 +27,14 @@ import pytest
 from typer.testing import CliRunner
 
 from coopkin_sym import load
+from coopkin_sym.analysis.locus.certify import CertifyError, _integer_polynomial, certify_locus
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
-from coopkin_sym.exactnum import NumberError
-from coopkin_sym.locus import compute_locus
-from coopkin_sym.locus_certify import CertifyError, _integer_polynomial, certify_locus
-from coopkin_sym.locus_types import Component, Locus
-from coopkin_sym.report import (
+from coopkin_sym.exact.parse import NumberError
+from coopkin_sym.present.report import (
     ReportError,
     locus_from_json,
     render_json,
@@ -420,7 +420,7 @@ def test_bad_locus_input():
 def test_without_the_extra_flint_alone(monkeypatch):
     monkeypatch.setattr(gb, "singular_path", lambda: None)
     monkeypatch.setattr(gb, "msolve_path", lambda: None)
-    import coopkin_sym.locus_certify as lc
+    import coopkin_sym.analysis.locus.certify as lc
 
     monkeypatch.setattr(lc, "singular_path", lambda: None)
     monkeypatch.setattr(lc, "msolve_path", lambda: None)

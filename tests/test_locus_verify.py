@@ -17,13 +17,10 @@ from random_systems import random_system
 from typer.testing import CliRunner
 
 import coopkin_sym
-from coopkin_sym.cli import app
-from coopkin_sym.configuration import Configuration
-from coopkin_sym.exactnum import parse_expression
-from coopkin_sym.irrational import analyze_irrational
-from coopkin_sym.locus import compute_locus
-from coopkin_sym.locus_types import Component, Locus
-from coopkin_sym.locus_verify import (
+from coopkin_sym.analysis.irrational import analyze_irrational
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.analysis.locus.verify import (
     VerifyError,
     _Checker,
     _eval_q,
@@ -34,9 +31,12 @@ from coopkin_sym.locus_verify import (
     summary_lines,
     verify_locus,
 )
-from coopkin_sym.mobility import analyze
-from coopkin_sym.report import locus_from_json, render_json
-from coopkin_sym.sweep import compile_system
+from coopkin_sym.analysis.mobility import analyze
+from coopkin_sym.analysis.sweep import compile_system
+from coopkin_sym.cli import app
+from coopkin_sym.exact.parse import parse_expression
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.present.report import locus_from_json, render_json
 
 runner = CliRunner()
 

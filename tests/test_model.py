@@ -1,4 +1,4 @@
-"""Model loading and validation (coopkin_sym.model, coopkin_sym.examples)."""
+"""Model loading and validation (coopkin_sym.model.model, coopkin_sym.model.examples)."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from strategies import random_systems
 
-from coopkin_sym.examples import describe_example, example_path, list_examples
-from coopkin_sym.model import Arm, Contact, Joint, Model, ModelError, load_model
+from coopkin_sym.model.examples import describe_example, example_path, list_examples
+from coopkin_sym.model.model import Arm, Contact, Joint, Model, ModelError, load_model
 
 L = sp.Symbol("L", positive=True)
 R = sp.Rational

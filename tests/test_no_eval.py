@@ -19,18 +19,18 @@ from typer.testing import CliRunner
 
 import coopkin_sym
 from coopkin_sym import load
+from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.errors import CoopkinError
-from coopkin_sym.exactnum import (
+from coopkin_sym.exact.parse import (
     NumberError,
     exact_expr,
     parse_angle,
     parse_expression,
     parse_number,
 )
-from coopkin_sym.interpret import describe_joint_motion, describe_twist, twist_words
-from coopkin_sym.locus_types import Component, Locus
-from coopkin_sym.report import locus_from_json, render_json, write_report
+from coopkin_sym.present.report import locus_from_json, render_json, write_report
+from coopkin_sym.present.sentences import describe_joint_motion, describe_twist, twist_words
 
 PACKAGE = Path(coopkin_sym.__file__).parent
 #: Calls that can evaluate text, found in the syntax tree (not in comments or docs):

@@ -15,10 +15,10 @@ import pytest
 from typer.testing import CliRunner
 
 from coopkin_sym import load
+from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.cli import app, worker_count
-from coopkin_sym.locus_types import Component, Locus
-from coopkin_sym.output import check_output_path, plain_file_mode, write_files
-from coopkin_sym.report import ReportError, write_report
+from coopkin_sym.present.files import check_output_path, plain_file_mode, write_files
+from coopkin_sym.present.report import ReportError, write_report
 
 runner = CliRunner()
 
@@ -172,7 +172,7 @@ def test_analysis_pickles_and_comes_back_from_a_worker():
 
 
 def test_a_report_written_by_another_run_meanwhile_is_not_lost(tmp_path, monkeypatch):
-    import coopkin_sym.locus as locus_module
+    import coopkin_sym.analysis.locus.search as locus_module
 
     target = tmp_path / "r.json"
     generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}

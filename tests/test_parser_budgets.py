@@ -12,9 +12,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from coopkin_sym import limits, load
-from coopkin_sym.configuration import ConfigurationError
 from coopkin_sym.errors import CoopkinError
-from coopkin_sym.exactnum import (
+from coopkin_sym.exact.parse import (
     NumberError,
     algebraic_half_angle,
     exact_expr,
@@ -22,6 +21,7 @@ from coopkin_sym.exactnum import (
     parse_expression,
     parse_number,
 )
+from coopkin_sym.model.configuration import ConfigurationError
 
 L, M, N = (sp.Symbol(n, positive=True) for n in "LMN")
 PARAMS = {"L": L, "M": M, "N": N}
@@ -226,7 +226,7 @@ def test_rational_radians_are_never_exact():
 def test_the_field_of_a_configuration_is_bounded():
     system = load("paper-case2-hard")
     with pytest.raises(ConfigurationError, match="over the limit of 64"):
-        from coopkin_sym.irrational import analyze_irrational
+        from coopkin_sym.analysis.irrational import analyze_irrational
         analyze_irrational(system.model, "q1=pi/17,q2=pi/13,q3=pi/11")
 
 

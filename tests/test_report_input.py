@@ -9,9 +9,9 @@ import re
 import pytest
 from typer.testing import CliRunner
 
+from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.cli import app
-from coopkin_sym.locus_types import Component, FloatCheck, Locus
-from coopkin_sym.report import (
+from coopkin_sym.present.report import (
     ReportError,
     locus_from_json,
     render_json,
@@ -143,7 +143,7 @@ def _user_tex_is_inert(tex: str) -> None:
 def test_latex_escapes_every_user_string():
     evil = locus(system=EVIL, notes=[EVIL], unexplored=[EVIL])
     evil.components[0].condition = f"q1 = {EVIL}"
-    evil.components[0].meaning = [EVIL]
+    evil.components[0].stated_meaning = [EVIL]
     evil.components[0].equations = ["t_q1 + 1", EVIL]
     evil.components[0].witness = {"q1": EVIL}
     tex = render_latex(evil, {("q1", "q2"): "r_q1_q2.png"})

@@ -19,11 +19,8 @@ from strategies import random_configurations, random_systems
 from typer.testing import CliRunner
 
 import coopkin_sym
-from coopkin_sym.cli import app
-from coopkin_sym.exact import modular
-from coopkin_sym.exactnum import angle_text, parse_angle
-from coopkin_sym.mobility import NUMBER_NAMES
-from coopkin_sym.sweep import (
+from coopkin_sym.analysis.mobility import NUMBER_NAMES
+from coopkin_sym.analysis.sweep import (
     SweepError,
     Value,
     compile_system,
@@ -31,6 +28,9 @@ from coopkin_sym.sweep import (
     parse_grid,
     sweep,
 )
+from coopkin_sym.cli import app
+from coopkin_sym.exact import modular
+from coopkin_sym.exact.parse import angle_text, parse_angle
 
 CASE1 = coopkin_sym.load("paper-case1-hard")
 CASE2 = coopkin_sym.load("paper-case2-hard")

@@ -14,12 +14,12 @@ import pytest
 from typer.testing import CliRunner
 
 from coopkin_sym import load
-from coopkin_sym.builders import spatial_hand
+from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.cli import _alarm, app
 from coopkin_sym.errors import CoopkinError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
-from coopkin_sym.locus import compute_locus
+from coopkin_sym.model.builders import spatial_hand
 
 runner = CliRunner()
 ROOT = Path(__file__).resolve().parents[1]

@@ -31,7 +31,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
-from ..errors import TimeLimitReached
+from coopkin_sym.errors import TimeLimitReached
 
 __all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "remaining",
            "time_limit"]

@@ -33,7 +33,7 @@ from collections.abc import Sequence
 
 import flint
 
-from .deadline import check
+from coopkin_sym.exact.deadline import check
 
 Poly = flint.fmpz_mpoly
 Row = list[Poly]

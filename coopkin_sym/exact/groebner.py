@@ -75,7 +75,7 @@ from math import comb
 
 import flint
 
-from ..errors import CoopkinError
+from coopkin_sym.errors import GroebnerError
 
 PolyDict = dict[tuple[int, ...], int]
 
@@ -91,9 +91,6 @@ SMALL_VARIABLES, SMALL_TERMS, SMALL_SECONDS = 6, 400, 0.1
 MAX_PRODUCT_TERMS = 20_000
 EXTRA_HINT = "pip install coopkin_sym[certify]"
 
-
-class GroebnerError(ValueError, CoopkinError):
-    """A malformed ideal or an unknown backend."""
 
 
 @dataclass(frozen=True)

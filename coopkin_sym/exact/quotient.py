@@ -30,8 +30,8 @@ from collections.abc import Sequence
 
 import flint
 
-from .deadline import check
-from .elimination import primitive
+from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.elimination import primitive
 
 Poly = flint.fmpz_mpoly
 

@@ -26,7 +26,7 @@ from math import lcm
 
 import flint
 
-from . import pickling  # noqa: F401 - flint polynomials pickle (copyreg)
+from coopkin_sym.exact import pickling  # noqa: F401 - flint polynomials pickle (copyreg)
 
 ORDERING = "degrevlex"
 

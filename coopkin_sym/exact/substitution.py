@@ -16,7 +16,7 @@ Example
 
 from __future__ import annotations
 
-from .deadline import check
+from coopkin_sym.exact.deadline import check
 
 
 def substitute_rows(rows, k: int, f0, f1):

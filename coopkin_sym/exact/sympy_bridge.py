@@ -22,7 +22,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from .ring import Frac, Ring
+from coopkin_sym.exact.ring import Frac, Ring
 
 
 def rational_to_sympy(c) -> sp.Rational:

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .mobility import Analysis
+from coopkin_sym.analysis.mobility import Analysis
 
 
 def float_matrix(m) -> np.ndarray:

@@ -1,11 +1,11 @@
 """Reports read back: validated like model files before anything uses them.
 
-A locus report (the JSON of :func:`coopkin_sym.report.render_json`) is a file people
+A locus report (the JSON of :func:`coopkin_sym.present.report.render_json`) is a file people
 exchange, so reading one back is reading untrusted input. The tree is read within the
-budgets of :mod:`coopkin_sym.trees`, its structure checked by pydantic (unknown keys
+budgets of :mod:`coopkin_sym.model.trees`, its structure checked by pydantic (unknown keys
 refused, every type strict), and every text that is an expression (equations,
 witnesses, fixed values, points of float checks, algebraic witnesses) is read by the
-package's parser (:func:`coopkin_sym.exactnum.parse_expression`): an equation must be
+package's parser (:func:`coopkin_sym.exact.parse.parse_expression`): an equation must be
 a polynomial in the report's variables. Problems come one line each, naming the
 entry (``components[0].equations[1]: ...``).
 
@@ -19,7 +19,7 @@ Example
 >>> validate_report(dict(tree, variables=["pi"]))   # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-coopkin_sym.report_input.ReportInputError: not a locus report: variables[0]: 'pi' is ...
+coopkin_sym.errors.ReportInputError: not a locus report: variables[0]: 'pi' is ...
 """
 
 from __future__ import annotations
@@ -42,11 +42,11 @@ from pydantic import (
     create_model,
 )
 
-from .configuration import top_level_parts
-from .errors import CoopkinError
-from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
-from .locus_types import Component, FloatCheck, Locus
-from .trees import TreeError, check_tree, read_text
+from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
+from coopkin_sym.errors import ReportInputError
+from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.model.configuration import top_level_parts
+from coopkin_sym.model.trees import TreeError, check_tree, read_text
 
 __all__ = ["ReportInputError", "validate_report"]
 
@@ -56,13 +56,6 @@ _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _RESERVED = {*FUNCTIONS, "pi", "CRootOf", "E", "I", "oo", "nan", "zoo"}
 _DECIMAL = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
-
-class ReportInputError(ValueError, CoopkinError):
-    """A report that cannot be read back: one line per problem."""
-
-    def __init__(self, problems: list[str]):
-        self.problems = list(problems)
-        super().__init__("\n".join(f"not a locus report: {p}" for p in self.problems))
 
 
 class _In(BaseModel):
@@ -143,9 +136,12 @@ _LOCUS_TYPES: dict[str, Any] = {
 }
 
 
-def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str):
+def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str,
+              skip: tuple[str, ...] = ()):
     fields: dict[str, Any] = {}
     for f in dataclasses.fields(cls):
+        if f.name in skip:
+            continue
         kind = types.get(f.name, Any)
         if f.default is not dataclasses.MISSING:
             fields[f.name] = (kind, f.default)
@@ -157,7 +153,11 @@ def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str
     return create_model(name, __base__=_In, **fields)
 
 
-_ComponentIn = _model_of(Component, _COMPONENT_TYPES, {}, "_ComponentIn")
+# a report states what changes on a component in words ("meaning"); the computed
+# component keeps the exact data instead ("shown"), which a report does not carry
+_ComponentIn = _model_of(Component, _COMPONENT_TYPES,
+                         {"meaning": (list[StrictStr], Field(default_factory=list))},
+                         "_ComponentIn", skip=("shown", "stated_meaning"))
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
                      {"float_summary": (dict[StrictStr, StrictInt] | None, None),
                       "completeness": (StrictStr | None, None)},
@@ -346,7 +346,7 @@ class _Checker:
 
 
 def validate_report(data: Mapping | str) -> Locus:
-    """A :class:`~coopkin_sym.locus_types.Locus` from report JSON (text or parsed),
+    """A :class:`~coopkin_sym.analysis.locus.types.Locus` from report JSON (text or parsed),
     checked as described in the module docstring.
 
     Raises
@@ -383,7 +383,9 @@ def validate_report(data: Mapping | str) -> Locus:
 def _to_locus(parsed) -> Locus:
     comps = []
     for c in parsed.components:
-        values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)}
+        values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)
+                  if f.name not in ("shown", "stated_meaning")}
+        values["stated_meaning"] = list(c.meaning)
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
         if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
             values["parent"] = c.parent - 1

@@ -42,27 +42,26 @@ from collections.abc import Iterable, Mapping, Sequence
 from concurrent.futures import Executor, as_completed
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import Any
 
 import flint
 import numpy as np
 import sympy as sp
 
-from . import kinematics, limits
-from .configuration import (
+from coopkin_sym import limits
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
+from coopkin_sym.errors import SweepError
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact import modular
+from coopkin_sym.exact.parse import NumberError, brief, parse_angle, parse_expression
+from coopkin_sym.model.configuration import (
     Configuration,
     ConfigurationError,
     split_assignments,
     top_level_parts,
 )
-from .exact import elimination as el
-from .exact import modular
-from .exactnum import NumberError, brief, parse_angle, parse_expression
-from .mobility import NUMBER_NAMES, Numbers, numbers_from_ranks
-from .model import Model
-
-if TYPE_CHECKING:
-    from .system import System
+from coopkin_sym.model.model import Model, model_of
 
 __all__ = ["Compiled", "Grid", "SweepError", "SweepResult", "Value", "compile_system",
            "grid", "parse_grid", "sweep"]
@@ -72,9 +71,6 @@ SNAP_BOUND = 1e-9  # float-ok: a tolerance for choosing snapped angles, never fo
 #: Points evaluated together in one numpy block (cache-sized).
 BLOCK = 4096
 
-
-class SweepError(ConfigurationError):
-    """A grid or a list of points that cannot be swept (unknown joint, bad range...)."""
 
 
 # --- exact values ---------------------------------------------------------------------
@@ -175,10 +171,6 @@ def _pi_text(ratio: Fraction) -> str:
 
 
 # --- compilation ----------------------------------------------------------------------
-def _model_of(system: System | Model) -> Model:
-    return system if isinstance(system, Model) else system.model
-
-
 class _Exact:
     """Exact evaluation of the homogenized integer polynomials, in one process.
 
@@ -400,10 +392,10 @@ class Compiled:
     3
     """
 
-    def __init__(self, system: System | Model, joints: Sequence[str],
+    def __init__(self, system: Model | Any, joints: Sequence[str],
                  at: str | Mapping | None = None,
                  prime: int = modular.PRIME):
-        model = _model_of(system)
+        model = model_of(system)
         if not (2 < prime < 2**31 and sp.isprime(prime)):
             raise ValueError(f"prime: expected an odd prime below 2**31, got {prime}")
         self.model = model
@@ -533,7 +525,7 @@ class Compiled:
 _COMPILED: OrderedDict[tuple, tuple[Model, Compiled]] = OrderedDict()
 
 
-def compile_system(system: System | Model, joints: Sequence[str],
+def compile_system(system: Model | Any, joints: Sequence[str],
                    at: str | Mapping | None = None,
                    prime: int = modular.PRIME) -> Compiled:
     """:class:`Compiled` for ``system``, ``joints`` swept, the rest at ``at`` (cached).
@@ -544,7 +536,7 @@ def compile_system(system: System | Model, joints: Sequence[str],
     >>> compile_system(load("paper-case1-hard"), ["q1"]).generic.as_dict()
     {'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
     """
-    model = _model_of(system)
+    model = model_of(system)
     at_key = at if at is None or isinstance(at, str) else tuple(
         sorted((str(k), str(v)) for k, v in at.items()))
     key = (id(model), tuple(joints), at_key, prime)
@@ -654,7 +646,7 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
     return axes
 
 
-def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
+def grid(system: Model | Any, axes: str | Mapping[str, tuple], *,
          bound: float = SNAP_BOUND) -> Grid:  # float-ok: the snapping bound
     """The exact points of a grid over some joints.
 
@@ -681,7 +673,7 @@ def grid(system: System | Model, axes: str | Mapping[str, tuple], *,
     >>> g2.levels[0][1].text, g2.snapped[0]["requested"]
     ('2*atan(29681/51409)', 'pi/3')
     """
-    model = _model_of(system)
+    model = model_of(system)
     spec = parse_grid(axes) if isinstance(axes, str) else dict(axes)
     kinds = {j.name: j.type for j in model.joints}
     params = {p.name for p in model.parameters}
@@ -956,7 +948,7 @@ class SweepResult:
         return out.getvalue()
 
 
-def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
+def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
           at: str | Mapping | None = None,
           executor: Executor | None = None, progress: bool = False,
           chunk: int = 16384, prime: int = modular.PRIME) -> SweepResult:
@@ -990,7 +982,7 @@ def sweep(system: System | Model, points: Grid | Iterable[str | Mapping], *,
     >>> res.numbers[:, 0].tolist(), res.rechecked.tolist()
     ([3, 2], [True, False])
     """
-    model = _model_of(system)
+    model = model_of(system)
     bound = None
     if isinstance(points, Grid):
         joints, levels, bound = points.joints, points.levels, points.bound

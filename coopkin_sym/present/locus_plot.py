@@ -1,6 +1,6 @@
 """Pictures of a singularity locus on a pair of joint variables.
 
-Each real component of a :class:`~coopkin_sym.locus_types.Locus` whose equations
+Each real component of a :class:`~coopkin_sym.analysis.locus.types.Locus` whose equations
 involve the two chosen joints is drawn in the plane of those joints, from its exact
 polynomials:
 
@@ -20,7 +20,7 @@ such line is marked ``# float-ok``. No singularity is decided here.
 
 Example
 -------
->>> from coopkin_sym.locus_types import Component, Locus
+>>> from coopkin_sym.analysis.locus.types import Component, Locus
 >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 >>> here = dict(generic, Nm=3, Nc=3, Nh=1)
 >>> locus = Locus("demo", ["t_q1", "t_q2", "L"], "", generic, [
@@ -44,9 +44,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np  # float-ok: plotting grids only
 import sympy as sp
 
-from .errors import CoopkinError
-from .exactnum import NumberError, parse_angle, parse_expression, parse_number
-from .locus_types import Component, Locus
+from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.errors import PlotError
+from coopkin_sym.exact.parse import NumberError, parse_angle, parse_expression, parse_number
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -64,10 +64,6 @@ COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:b
           "tab:pink", "tab:olive", "tab:cyan", "tab:gray")
 INFINITY = "oo"  # a revolute joint at q = pi: t = tan(q/2) is infinite
 
-
-class PlotError(ValueError, CoopkinError):
-    """A pair of joints that cannot be plotted (unknown, the same twice, or not
-    among the locus's variables), or matplotlib missing."""
 
 
 @functools.cache
@@ -166,7 +162,7 @@ def components_on(locus: Locus, system: Any, pair: Sequence[str]) -> list[int]:
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
     >>> c = Component(["t_q2"], {}, {"q2": "0"}, True)
     >>> components_on(Locus("demo", ["t_q1", "t_q2"], "", {}, [c]), None, ("q1", "q2"))
     [0]
@@ -195,7 +191,7 @@ def default_pairs(locus: Locus, system: Any, limit: int = 6) -> list[tuple[str, 
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
     >>> c = Component(["t_q1 - t_q2"], {}, None, True)
     >>> default_pairs(Locus("demo", ["t_q1", "t_q2", "t_q3"], "", {}, [c]), None)
     [('q1', 'q2')]
@@ -499,7 +495,7 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     Parameters
     ----------
     locus
-        The locus (see :func:`coopkin_sym.locus.compute_locus`).
+        The locus (see :func:`coopkin_sym.analysis.locus.search.compute_locus`).
     system
         The system (for joint kinds and parameter names), or ``None``: then ``t_X``
         variables are revolute joints and other variables parameters.
@@ -516,7 +512,7 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Component, Locus
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
     >>> c = Component(["t_q1 - t_q2"], {}, {"q1": "0", "q2": "0"}, True, condition="q1 = q2")
     >>> fig = plot_components(Locus("demo", ["t_q1", "t_q2"], "", {}, [c]), None)
     >>> fig.axes[0].get_xlabel()
@@ -636,7 +632,7 @@ def plot_png(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> plot_png(Locus("demo", ["t_q1", "t_q2"], "", {}), None)[:4]
     b'\\x89PNG'
     """

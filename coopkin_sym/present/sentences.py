@@ -8,7 +8,7 @@ Lines are named by the contact points on them when there are any.
 Example
 -------
 >>> from coopkin_sym import load
->>> from coopkin_sym.interpret import sentences
+>>> from coopkin_sym.present.sentences import sentences
 >>> for s in sentences(load("paper-case1-hard").analyze()):
 ...     print(s)  # doctest: +ELLIPSIS
 Nm = 2: ...
@@ -23,9 +23,11 @@ from collections.abc import Sequence
 
 import sympy as sp
 
-from .exact.sympy_bridge import frac_to_sympy
-from .exactnum import exact_expr
-from .mobility import Analysis
+from coopkin_sym.analysis.irrational import IrrationalAnalysis, PointMotions
+from coopkin_sym.analysis.locus.types import Component, WitnessMotions
+from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 
 # entries larger than this (in operations) are not simplified for words
 _MAX_OPS = 400
@@ -261,7 +263,7 @@ def count_sentences(numbers, r: int) -> list[str]:
 
     Example
     -------
-    >>> from coopkin_sym.mobility import Numbers
+    >>> from coopkin_sym.analysis.mobility import Numbers
     >>> print(count_sentences(Numbers(3, 3, 1, 0, 1, 4, 1), 2)[2])
     Ni = 1: with every joint locked, the object can still make one independent motion.
     """
@@ -295,3 +297,86 @@ def count_sentences(numbers, r: int) -> list[str]:
                "Nh = 0: every internal force can be controlled by the joints (not "
                "hyperstatic).")
     return out
+
+
+def _key(sentence: str) -> str:
+    return sentence.split(" ")[0]
+
+
+def point_sentences(numbers, joints: Sequence[str], motions: PointMotions | None,
+                    changed: set[str] | frozenset[str] | None = None) -> list[str]:
+    """One sentence per number (those in ``changed`` when given) at a point where only
+    the numbers and, for a quadratic field, the exact motions behind ``Ni`` and ``Nr``
+    are known (:class:`~coopkin_sym.analysis.irrational.PointMotions`): those two are
+    told in words, the others by their counts.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.irrational import analyze_irrational
+    >>> from coopkin_sym.model.model import load_model
+    >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6,L=1")
+    >>> print(point_sentences(a.numbers, a.joints, a.motions)[2].split(": ")[1])
+    with every joint locked, the object can still turn freely about c1 (= c2), in every direction.
+    """
+    out = [s for s in count_sentences(numbers, len(joints))
+           if changed is None or _key(s) in changed]
+    if motions is None:
+        return out
+    keys = {"Ni", "Nr"} if changed is None else {"Ni", "Nr"} & set(changed)
+    words = {}
+    if "Ni" in keys and numbers.Ni:
+        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
+                       f"{object_motions_words(motions.object_twists, motions.contact_points)}.")
+    if "Nr" in keys and numbers.Nr:
+        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
+                       "move: " + "; ".join(joint_motion_words(v, joints)
+                                            for v in motions.joint_motions) + ".")
+    return [words.get(_key(s), s) for s in out]
+
+
+def irrational_sentences(result: IrrationalAnalysis) -> list[str]:
+    """The sentences of an analysis at a configuration with irrational coordinates.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.irrational import analyze_irrational
+    >>> from coopkin_sym.model.model import load_model
+    >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6,L=1")
+    >>> irrational_sentences(a)[0].startswith("Nm = 3")
+    True
+    """
+    return point_sentences(result.numbers, result.joints, result.motions)
+
+
+def witness_sentences(shown: WitnessMotions) -> list[str]:
+    """What changes at a locus component's witness, one sentence per changed number:
+    from the exact analysis at a rational witness, from the exact motions at an
+    algebraic one, or from the counts alone.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.types import WitnessMotions
+    >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
+    >>> shown = WitnessMotions(a.numbers, ("q1", "q2"), frozenset({"Nm"}), analysis=a)
+    >>> witness_sentences(shown)[0][:8]
+    'Nm = 3: '
+    """
+    if shown.analysis is not None:
+        return [s for s in sentences(shown.analysis) if _key(s) in shown.changed]
+    return point_sentences(shown.numbers, shown.joints, shown.motions, shown.changed)
+
+
+def component_sentences(component: Component) -> list[str]:
+    """What changes on a locus component, in words: from the exact data at its witness,
+    or, for a report read back, the sentences it states (empty without a witness).
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.locus.types import Component
+    >>> component_sentences(Component(["t_q1"], {"Nm": 3}, None, True))
+    []
+    """
+    if component.shown is not None:
+        return witness_sentences(component.shown)
+    return list(component.stated_meaning)

@@ -1,19 +1,19 @@
 """Singularity-locus reports: Markdown, HTML, LaTeX and JSON.
 
-A report says, for a :class:`~coopkin_sym.locus_types.Locus`: the generic numbers;
+A report says, for a :class:`~coopkin_sym.analysis.locus.types.Locus`: the generic numbers;
 every component (its equations, where it reads simply in angles, its numbers and what
 changes, what the change means, an exact witness point in ``--at`` syntax, and what a
 float rank test says there); how many singular configurations the float tests missed
 and how many regular ones they called singular; parameter-only conditions, factors
 dropped for having no real points, and what was not explored within the bounds.
 Markdown and HTML reports carry plots of the components on pairs of joint variables
-(see :mod:`coopkin_sym.locus_plot`); the HTML page is self-contained (the PNGs are
+(see :mod:`coopkin_sym.present.locus_plot`); the HTML page is self-contained (the PNGs are
 embedded). The LaTeX is an appendix to ``\\input`` in a paper (plain ``article``
 class, no packages needed). The JSON is :meth:`Locus.to_json` for programs.
 
 Example
 -------
->>> from coopkin_sym.locus_types import Component, Locus
+>>> from coopkin_sym.analysis.locus.types import Component, Locus
 >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 >>> locus = Locus("demo", ["t_q1", "t_q2"], "", generic, [Component(
 ...     ["t_q1 + 1", "t_q2 + 1"], dict(generic, Nm=3, Nc=3, Nh=1),
@@ -37,10 +37,11 @@ from typing import Any
 
 import sympy as sp
 
-from .errors import CoopkinError
-from .exactnum import FUNCTIONS, NumberError, brief, parse_expression
-from .locus_types import Component, FloatCheck, Locus
-from .output import check_output_path, write_files
+from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
+from coopkin_sym.errors import ReportError
+from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.sentences import component_sentences
 
 __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_pairs",
            "render_html", "render_json", "render_latex", "render_markdown",
@@ -72,10 +73,6 @@ MAX_EQUATION = 1500
 # rows per LaTeX tabular
 LATEX_ROWS = 30
 
-
-class ReportError(ValueError, CoopkinError):
-    """A report that cannot be written: unknown format, missing directory, a bad plot
-    request, or an I/O error."""
 
 
 # ------------------------------------------------------------------ small texts
@@ -349,9 +346,10 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     if c.decided:
         items.append([("strong", "Decided:"), _t(" "), _t(c.decided)])
     out.append(_List(items))
-    if c.meaning:
+    meaning = component_sentences(c)
+    if meaning:
         out.append(_P([("strong", "What changes there:")]))
-        out.append(_List([[_t(s)] for s in c.meaning]))
+        out.append(_List([[_t(s)] for s in meaning]))
     if c.float_checks:
         out += _float_check_blocks(c, locus.generic)
     return out
@@ -622,7 +620,7 @@ def render_markdown(locus: Locus, plots: Mapping[tuple[str, str], str] | None = 
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> print(render_markdown(Locus("demo", [], "", {"Nm": 1})).splitlines()[0])
     # Singularity locus of demo
     """
@@ -706,7 +704,7 @@ def render_html(locus: Locus, plots: Mapping[tuple[str, str], bytes] | None = No
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> render_html(Locus("demo", [], "", {"Nm": 1})).startswith("<!DOCTYPE html>")
     True
     """
@@ -883,7 +881,7 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> print(render_latex(Locus("demo", [], "", {"Nm": 1})).splitlines()[1])
     \\section*{Singularity locus of demo}
     """
@@ -916,17 +914,29 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
 # ------------------------------------------------------------------ JSON
 
 
+def _with_meaning(data: dict, component: Component) -> dict:
+    """A component's JSON with its sentences as ``"meaning"``, after ``"changes"``."""
+    out = {}
+    for key, value in data.items():
+        out[key] = value
+        if key == "changes":
+            out["meaning"] = component_sentences(component)
+    return out
+
+
 def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     """The locus as JSON (:meth:`Locus.to_json`), for programs; with a
     ``"verification"`` object when one is given.
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:4]
     ['certificate', 'completeness', 'components', 'dropped']
     """
     data = locus.to_json()
+    data["components"] = [_with_meaning(d, c)
+                          for d, c in zip(data["components"], locus.components, strict=True)]
     if verification is not None:
         data["verification"] = dict(verification)
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
@@ -935,7 +945,7 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
 def locus_from_json(data: Mapping | str) -> Locus:
     """A :class:`Locus` back from :func:`render_json` (text or parsed), validated like
     a model file: structure, names, and every expression read by the package's parser
-    (see :mod:`coopkin_sym.report_input`). Nothing in it is ever evaluated.
+    (see :mod:`coopkin_sym.present.report_input`). Nothing in it is ever evaluated.
 
     Raises
     ------
@@ -944,12 +954,12 @@ def locus_from_json(data: Mapping | str) -> Locus:
 
     Example
     -------
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> locus = Locus("demo", ["t_q1"], "", {"Nm": 1})
     >>> locus_from_json(render_json(locus)) == locus
     True
     """
-    from .report_input import ReportInputError, validate_report
+    from coopkin_sym.present.report_input import ReportInputError, validate_report
 
     try:
         return validate_report(data)
@@ -964,7 +974,7 @@ def check_target(path: str | os.PathLike, note: bool = True) -> str:
     """Check a report path before any work: a known suffix (``.md``, ``.html``,
     ``.tex``, ``.json``) in an existing writable directory. Returns the format. With
     ``note``, the file's state is noted, so that writing it later notices another run
-    that wrote it meanwhile (see :func:`coopkin_sym.output.write_files`).
+    that wrote it meanwhile (see :func:`coopkin_sym.present.files.write_files`).
 
     Example
     -------
@@ -973,7 +983,7 @@ def check_target(path: str | os.PathLike, note: bool = True) -> str:
     >>> check_target("report.txt")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    coopkin_sym.report.ReportError: report.txt: unknown report format '.txt' ...
+    coopkin_sym.errors.ReportError: report.txt: unknown report format '.txt' ...
     """
     _, suffix = check_output_path(path, FORMATS, ReportError, "report", note=note)
     return FORMATS[suffix]
@@ -1028,7 +1038,7 @@ def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str]
             try:
                 import io
 
-                from .draw import draw_system
+                from coopkin_sym.present.draw import draw_system
                 fig = draw_system(system, at=",".join(f"{n}={v}" for n, v in
                                                      comp.witness.items()),
                                   title=f"{locus.system}: component {k + 1}, "
@@ -1049,7 +1059,7 @@ def _png_name(stem: str, pair: tuple[str, str]) -> str:
 def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
            dpi: int) -> tuple[dict[tuple[str, str], bytes], str | None]:
     try:
-        from .locus_plot import PlotError, default_pairs, plot_png
+        from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
     except ImportError:  # pragma: no cover
         return {}, "plots need matplotlib"
     try:
@@ -1086,13 +1096,13 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     dpi
         Resolution of the PNGs.
     verification
-        A verification (:meth:`~coopkin_sym.locus_verify.Verification.to_json`) to
+        A verification (:meth:`~coopkin_sym.analysis.locus.verify.Verification.to_json`) to
         add to a JSON report.
 
     Example
     -------
     >>> import tempfile, pathlib
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "r.json"
     >>> [p.name for p in write_report(Locus("demo", [], "", {"Nm": 1}), out)]
     ['r.json']
@@ -1122,5 +1132,5 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
 
 
 def _write_all(files: Mapping[Path, bytes]) -> None:
-    """Write every file whole, or none (see :func:`coopkin_sym.output.write_files`)."""
+    """Write every file whole, or none (see :func:`coopkin_sym.present.files.write_files`)."""
     write_files(files, ReportError)

@@ -1,4 +1,4 @@
-"""Polynomial systems of the singularity locus, exactly (see :mod:`coopkin_sym.locus`).
+"""Polynomial systems of the singularity locus, exactly (see :mod:`.search`).
 
 Helpers on the polynomials of a locus search (``fmpz_mpoly`` in the ring of the free
 variables, held by the search context ``ctx``): normal forms and texts, real and
@@ -22,12 +22,12 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from .algebraic import RealRoot
-from .exact.factoring import factor
-from .exact.numberfield import NumberField
-from .exact.substitution import split_linear, substitute, substitute_rows
-from .exact.sympy_bridge import poly_to_sympy
-from .exactnum import angle_text
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.numberfield import NumberField
+from coopkin_sym.exact.parse import angle_text
+from coopkin_sym.exact.realroot import RealRoot
+from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
 # values tried, in order, for the free coordinates of a witness
 NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),

@@ -26,7 +26,7 @@ Example
 >>> read_text("a: 010", ".yaml")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-coopkin_sym.trees.TreeError: line 1, column 4: 010 is ambiguous (YAML 1.1 reads ... or 8
+coopkin_sym.errors.TreeError: line 1, column 4: 010 is ambiguous (YAML 1.1 reads ... or 8
 """
 
 from __future__ import annotations
@@ -39,14 +39,11 @@ from pathlib import Path
 
 import yaml
 
-from . import limits
-from .errors import CoopkinError
+from coopkin_sym import limits
+from coopkin_sym.errors import TreeError
 
 __all__ = ["TreeError", "check_tree", "read_file", "read_text"]
 
-
-class TreeError(ValueError, CoopkinError):
-    """A file or tree that cannot be read: one line saying where and why."""
 
 
 _NULL = re.compile(r"~|null|Null|NULL|")

@@ -8,7 +8,7 @@ Unset joints are at home (q = 0).
 
 Example
 -------
->>> from coopkin_sym.model import load_model
+>>> from coopkin_sym.model.model import load_model
 >>> m = load_model("paper-case1-hard")
 >>> c = Configuration.parse(m, "q1=pi/2,L=2")
 >>> c.revolute["q1"], c.parameters["L"]
@@ -22,13 +22,9 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .errors import CoopkinError
-from .exactnum import NumberError, angle_text, brief, parse_angle, parse_number
-from .model import Model
-
-
-class ConfigurationError(ValueError, CoopkinError):
-    """A configuration that names an unknown variable or has an inexact value."""
+from coopkin_sym.errors import ConfigurationError
+from coopkin_sym.exact.parse import NumberError, angle_text, brief, parse_angle, parse_number
+from coopkin_sym.model.model import Model
 
 
 @dataclass(frozen=True)

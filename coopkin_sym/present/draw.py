@@ -1,7 +1,7 @@
 """Pictures of a system: arms, joints, contacts, the object, and one of its motions.
 
 Everything here is drawing, so everything here is floating point (each such line is
-marked ``# float-ok``): the exact geometry of an :class:`~coopkin_sym.mobility.Analysis`
+marked ``# float-ok``): the exact geometry of an :class:`~coopkin_sym.analysis.mobility.Analysis`
 (current joint points and axes, contact points and normals, the columns of the blocks)
 is evaluated exactly at rational values and only then turned into floats for
 matplotlib. No rank, nullspace or singularity is decided here.
@@ -46,13 +46,15 @@ import flint
 import numpy as np  # float-ok: drawing coordinates
 import sympy as sp
 
-from . import limits
-from .errors import CoopkinError
-from .exact.ring import Frac
-from .exact.sympy_bridge import rational_to_sympy
-from .exactnum import brief
-from .mobility import Analysis
-from .output import check_output_path, write_files
+from coopkin_sym import limits
+from coopkin_sym.analysis.mobility import Analysis, analyze
+from coopkin_sym.errors import DrawError
+from coopkin_sym.exact.parse import brief
+from coopkin_sym.exact.ring import Frac
+from coopkin_sym.exact.sympy_bridge import rational_to_sympy
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model, load_model, model_of
+from coopkin_sym.present.files import check_output_path, write_files
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -79,10 +81,6 @@ _LABEL_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
               "edgecolor": "none"}
 
 
-class DrawError(ValueError, CoopkinError):
-    """A picture that cannot be drawn: a bad motion request, an unknown file format,
-    matplotlib missing, or an output file that cannot be written."""
-
 
 # ------------------------------------------------------------------ inputs
 
@@ -102,7 +100,7 @@ def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str
     >>> parse_motion(("coordinated", 2), a)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    coopkin_sym.draw.DrawError: motion: there is no coordinated motion 2: this system has 1 ...
+    coopkin_sym.errors.DrawError: motion: there is no coordinated motion 2: this system ...
     """
     if motion is None:
         return None
@@ -143,10 +141,11 @@ def _analysis(source: Any, at: str | Mapping | None) -> Analysis:
             raise DrawError("at: this analysis already has its configuration; pass the "
                             "system (or analyze it at the configuration) instead")
         return source
-    from .system import System, load
-
-    system = source if isinstance(source, System) else load(source)
-    return system.analyze(at)
+    if isinstance(source, Model) or hasattr(source, "model"):
+        model = model_of(source)
+    else:
+        model = load_model(source)
+    return analyze(model, Configuration.parse(model, at))
 
 
 @functools.cache
@@ -307,7 +306,7 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
     Parameters
     ----------
     analysis_or_system
-        An :class:`~coopkin_sym.mobility.Analysis`, a :class:`~coopkin_sym.System`,
+        An :class:`~coopkin_sym.analysis.mobility.Analysis`, a :class:`~coopkin_sym.System`,
         or anything :func:`coopkin_sym.load` accepts (file, dict, example name).
     at
         Configuration to analyze and draw (not with an ``Analysis``, which has one).
@@ -603,7 +602,7 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
     """Arrows for one motion; returns the title line describing it."""
     from matplotlib.lines import Line2D
 
-    from .interpret import describe_joint_motion, describe_twist
+    from coopkin_sym.present.sentences import describe_joint_motion, describe_twist
 
     kind, k = request
     j = k - 1

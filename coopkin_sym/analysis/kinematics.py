@@ -15,8 +15,8 @@ constrains; ``Q = (H G^T | -H D)``.
 
 Example
 -------
->>> from coopkin_sym.model import load_model
->>> from coopkin_sym.configuration import Configuration
+>>> from coopkin_sym.model.model import load_model
+>>> from coopkin_sym.model.configuration import Configuration
 >>> m = load_model("paper-case1-hard")
 >>> k = build(m, Configuration())
 >>> len(k.Q), len(k.Q[0])          # 6 constrained components, 6 + 2 unknowns
@@ -30,12 +30,12 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .configuration import Configuration
-from .exact.deadline import check
-from .exact.ring import Frac, Ring
-from .exact.sympy_bridge import poly_from_sympy
-from .exactnum import exact_expr
-from .model import Model
+from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.ring import Frac, Ring
+from coopkin_sym.exact.sympy_bridge import poly_from_sympy
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model
 
 Vec = list[Frac]
 Mat = list[list[Frac]]

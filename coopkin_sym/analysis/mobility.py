@@ -22,8 +22,8 @@ and the force-domain ``Ng = m - rank Gt``, ``Nd = m - rank Dt``, ``Nh = m - rank
 
 Example
 -------
->>> from coopkin_sym.model import load_model
->>> from coopkin_sym.configuration import Configuration
+>>> from coopkin_sym.model.model import load_model
+>>> from coopkin_sym.model.configuration import Configuration
 >>> a = analyze(load_model("paper-case1-hard"), Configuration())
 >>> a.numbers.as_dict()
 {'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
@@ -39,35 +39,28 @@ from functools import cached_property
 
 import sympy as sp
 
-from . import kinematics
-from .configuration import Configuration
-from .errors import CoopkinError
-from .exact import elimination as el
-from .exact.deadline import check
-from .exact.quotient import eliminate_modulo, rank_modulo
-from .exact.ratfunc import RatFunc
-from .exact.sympy_bridge import (
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.quotient import eliminate_modulo, rank_modulo
+from coopkin_sym.exact.ratfunc import RatFunc
+from coopkin_sym.exact.sympy_bridge import (
     columns_to_sympy,
     matrix_to_sympy,
     poly_from_sympy,
     poly_to_sympy,
     ratio_to_sympy,
 )
-from .exactnum import exact_expr
-from .model import Model
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model
 
 NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
 # the largest primitive coordinated column (in terms of one entry) shown as polynomials
 DEFAULT_TERM_BUDGET = 20_000
 
-
-class BlockTooLarge(ValueError, CoopkinError):
-    """A symbolic block whose entries would exceed the analysis's term budget."""
-
-
-class InfeasibleMotion(ValueError, CoopkinError):
-    """A requested velocity that the system cannot realize without breaking a contact."""
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
 """Witnesses of locus components, and what floats say there (see
-:mod:`coopkin_sym.locus`).
+:mod:`coopkin_sym.analysis.locus.search`).
 
 A witness is an exact point of a component where a direct analysis gives the
 component's numbers: rational coordinates where they exist (completed from nice values
@@ -24,18 +24,18 @@ from math import atan, pi, tan
 import flint
 import sympy as sp
 
-from .algebraic import RealRoot, angle_of
-from .configuration import Configuration
-from .exact.numberfield import NumberField
-from .exact.quotient import Quotient, Tower
-from .exact.substitution import substitute
-from .exact.sympy_bridge import poly_to_sympy
-from .exactnum import angle_text, parse_expression
-from .irrational import motion_sentences
-from .locus_algebra import NICE, roots, substitute_values, univariate, vars_of
-from .locus_types import Component, FloatCheck
-from .mobility import Numbers, analyze, numbers_modulo
-from .numeric import float_numbers
+from coopkin_sym.analysis.floatcheck import float_numbers
+from coopkin_sym.analysis.irrational import point_motions
+from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
+from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
+from coopkin_sym.analysis.mobility import Numbers, analyze, numbers_modulo
+from coopkin_sym.exact.numberfield import NumberField
+from coopkin_sym.exact.parse import angle_text, parse_expression
+from coopkin_sym.exact.quotient import Quotient, Tower
+from coopkin_sym.exact.realroot import RealRoot, angle_of
+from coopkin_sym.exact.substitution import substitute
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy
+from coopkin_sym.model.configuration import Configuration
 
 FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 
@@ -254,7 +254,7 @@ def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
                        for k, v in point.items()},
         }
         comp.witness_checked = True
-        comp.meaning = algebraic_meaning(ctx, full, x, g, root, numbers, comp.changes)
+        comp.shown = algebraic_motions(ctx, full, x, g, root, numbers, comp.changes)
         if approx_at is not None:
             analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
             comp.float_checks = float_image_checks(ctx, approx_at, analysis, numbers,
@@ -283,22 +283,18 @@ def fixed_at(ctx) -> dict[str, str]:
     return out
 
 
-def algebraic_meaning(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
-                       changes) -> list[str]:
-    """What changes at an irrational witness (motions in words for a quadratic field)."""
+def algebraic_motions(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
+                      changes) -> WitnessMotions:
+    """What an irrational witness shows: the exact motions behind the changed ``Ni`` and
+    ``Nr`` for a quadratic field (the counts alone otherwise)."""
     rows = substitute_values(ctx, ctx.rows0, full, x)
     alpha = root.expression()
     values = {ctx.symbols[n]: (alpha if n == x and n not in full else
                                value_expr(full[n], alpha)) for n in ctx.ring_names}
-    return motion_sentences(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
+    motions = point_motions(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
                             ctx.kin, values, root.degree, changed=set(changes))
-
-
-def count_meaning(ctx, numbers: Numbers, changes) -> list[str]:
-    from .interpret import count_sentences
-
-    return [s for s in count_sentences(numbers, len(ctx.model.joints))
-            if s.split(" ")[0] in changes]
+    return WitnessMotions(numbers, ctx.model.joint_names, frozenset(changes),
+                          motions=motions)
 
 
 def float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Numbers,
@@ -323,15 +319,9 @@ def attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbe
     analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
     comp.witness = witness
     comp.witness_checked = analysis.numbers == numbers
-    comp.meaning = meaning(analysis, {k: tuple(v) for k, v in comp.changes.items()})
+    comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes),
+                                analysis=analysis)
     comp.float_checks = float_checks(ctx, witness, analysis, comp.equations)
-
-
-def meaning(analysis, changes) -> list[str]:
-    from .interpret import sentences
-
-    keys = {k for k in changes}
-    return [s for s in sentences(analysis) if s.split(" ")[0] in keys]
 
 
 def float_checks(ctx, witness: dict[str, str], analysis,
@@ -374,7 +364,7 @@ def float_checks(ctx, witness: dict[str, str], analysis,
 def nudged_angle(text: str, distance: float) -> str:
     """An exact angle about ``distance`` radians above ``text`` (a rational tangent
     half-angle; the float only chooses it)."""
-    from .exactnum import parse_angle
+    from coopkin_sym.exact.parse import parse_angle
 
     c, s = parse_angle(text, "witness")
     q = float(sp.atan2(s, c)) + distance  # float-ok: choosing a nearby exact angle
@@ -457,7 +447,7 @@ def attach_two_root_witness(ctx, comp: Component, first: tuple, second: tuple,
                        for k, v in point.items()},
         }
         comp.witness_checked = True
-        comp.meaning = count_meaning(ctx, numbers, comp.changes)
+        comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes))
         approx_at = to_at(ctx, near)
         if approx_at is not None:
             analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))

@@ -3,11 +3,11 @@
 A model is what a model file (YAML, JSON or a Python dict, DESIGN section 3) says,
 checked and with every number exact: a SymPy ``Rational`` or a polynomial with
 rational coefficients in the declared parameters (each a positive ``Symbol``).
-Nothing here computes kinematics; see :mod:`coopkin_sym.kinematics`.
+Nothing here computes kinematics; see :mod:`coopkin_sym.analysis.kinematics`.
 
 Example
 -------
->>> from coopkin_sym.model import load_model
+>>> from coopkin_sym.model.model import load_model
 >>> m = load_model({
 ...     "name": "one arm", "parameters": ["L"],
 ...     "arms": [{"name": "a", "joints": [
@@ -33,9 +33,10 @@ from typing import Any, Literal
 import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
-from .errors import CoopkinError
-from .exactnum import NumberError, brief, parse_number
-from .trees import TreeError, check_tree, read_file
+from coopkin_sym.errors import ModelError
+from coopkin_sym.exact.parse import NumberError, brief, parse_number
+from coopkin_sym.model.examples import example_path, list_examples
+from coopkin_sym.model.trees import TreeError, check_tree, read_file
 
 JointType = Literal["revolute", "prismatic"]
 ContactModel = Literal["complete", "soft", "hard", "frictionless"]
@@ -44,20 +45,6 @@ JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic")
 
 Vector = tuple[sp.Expr, sp.Expr, sp.Expr]
 
-
-class ModelError(ValueError, CoopkinError):
-    """A model that cannot be accepted.
-
-    ``problems`` lists one line per problem, each naming the entry
-    (``contacts[1].normal: not a unit vector``); ``str(error)`` is the whole message,
-    prefixed by the file name when the model came from a file.
-    """
-
-    def __init__(self, problems: list[str], source: str | None = None):
-        self.problems = list(problems)
-        self.source = source
-        prefix = f"{source}: " if source else ""
-        super().__init__("\n".join(prefix + p for p in self.problems))
 
 
 @dataclass(frozen=True)
@@ -449,7 +436,7 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
 
 
 def _read_tree(path: Path, source: str) -> object:
-    """Read a YAML or JSON file into a plain tree (see :mod:`coopkin_sym.trees`: every
+    """Read a YAML or JSON file into a plain tree (see :mod:`coopkin_sym.model.trees`: every
     float kept as its text, budgets on size, nesting and aliases)."""
     try:
         return read_file(path)
@@ -462,6 +449,23 @@ def _source_name(name: str) -> str:
     return name if len(name) <= 200 else name[:120] + "..." + name[-40:]
 
 
+def model_of(source: Any) -> Model:
+    """The model of ``source``: a :class:`Model` itself, or the ``.model`` of an object
+    that holds one (a :class:`~coopkin_sym.System`, an analysis). The layers below the
+    public facade take either, without importing it.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> model_of(load("paper-case1-hard")).joint_names
+    ('q1', 'q2')
+    """
+    model = source if isinstance(source, Model) else getattr(source, "model", None)
+    if not isinstance(model, Model):
+        raise TypeError(f"expected a model or a system, got {type(source).__name__}")
+    return model
+
+
 def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
     """Load and validate a model (DESIGN section 3).
 
@@ -469,7 +473,7 @@ def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
     ----------
     source : str, path or mapping
         A ``.yaml``/``.yml``/``.json`` file, the name of a shipped example
-        (``"paper-case1-hard"``, see :mod:`coopkin_sym.examples`), or the same tree
+        (``"paper-case1-hard"``, see :mod:`coopkin_sym.model.examples`), or the same tree
         as a Python mapping.
 
     Returns
@@ -510,8 +514,6 @@ def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
         reason = getattr(exc, "strerror", None) or str(exc)
         raise ModelError([f"cannot read the file: {reason}"], shown) from None
     if not exists:
-        from .examples import example_path, list_examples
-
         if isinstance(source, str) and source in list_examples():
             path = example_path(source)
             return _build(_read_tree(path, str(path)), str(path), path.stem)

@@ -1,7 +1,9 @@
-"""Plain-data results of a singularity-locus computation (see :mod:`coopkin_sym.locus`).
+"""Plain-data results of a singularity-locus computation (see :mod:`.search`).
 
-Everything here is plain Python (strings, ints, dicts), so a locus can be written as
-JSON, rendered as a report, or sent to another process.
+Everything here is plain data (strings, ints, dicts, and the exact objects a witness
+shows), so a locus can be written as JSON, rendered as a report, or sent to another
+process. No sentence is written here: :mod:`coopkin_sym.present.sentences` tells what
+a component's :class:`WitnessMotions` show.
 
 Example
 -------
@@ -13,10 +15,16 @@ Example
 
 from __future__ import annotations
 
+import copy
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, fields
+from typing import TYPE_CHECKING, Any
 
-from .errors import TimeLimitReached
+from coopkin_sym.errors import TimeLimitReached
+
+if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.irrational import PointMotions
+    from coopkin_sym.analysis.mobility import Analysis, Numbers
 
 #: What a locus without a completeness certificate says about its completeness.
 NOT_CERTIFIED = "completeness not certified (run with --certify)"
@@ -38,6 +46,29 @@ class FloatCheck:
     @property
     def agree(self) -> bool:
         return self.exact == self.float
+
+
+@dataclass(frozen=True)
+class WitnessMotions:
+    """What a component's witness shows, exactly: the numbers there, which of them
+    differ from the generic ones (``changed``), and the exact data behind them: the
+    whole exact ``analysis`` at a rational witness, the exact ``motions`` behind ``Ni``
+    and ``Nr`` at an algebraic witness over a quadratic field, or neither (the counts
+    alone). The sentences are :func:`coopkin_sym.present.sentences.witness_sentences`.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
+    >>> WitnessMotions(a.numbers, ("q1", "q2"), frozenset({"Nm"}), analysis=a).changed
+    frozenset({'Nm'})
+    """
+
+    numbers: Numbers
+    joints: tuple[str, ...]
+    changed: frozenset[str]
+    analysis: Analysis | None = None
+    motions: PointMotions | None = None
 
 
 @dataclass
@@ -66,8 +97,12 @@ class Component:
         Which matrices lose rank there: subset of ``["Q", "HG^T", "HD"]``.
     changes
         Number name -> (generic, here), for the numbers that differ.
-    meaning
-        Plain sentences: what motion is gained or lost there.
+    shown
+        What the witness shows, exactly (:class:`WitnessMotions`), for the sentences
+        saying what motion is gained or lost there; None without a witness.
+    stated_meaning
+        The sentences a report read back states (a report is a document; a computed
+        component leaves this empty and keeps ``shown``).
     decided
         How the numbers were decided (``"exact over the component's function field"``,
         ``"exact at a rational point of the component"``).
@@ -104,7 +139,7 @@ class Component:
     condition: str = ""
     drops: list[str] = field(default_factory=list)
     changes: dict[str, tuple[int, int]] = field(default_factory=dict)
-    meaning: list[str] = field(default_factory=list)
+    stated_meaning: list[str] = field(default_factory=list)
     decided: str = ""
     witness_checked: bool = False
     float_checks: list[FloatCheck] = field(default_factory=list)
@@ -113,10 +148,13 @@ class Component:
     algebraic_witness: dict | None = None
     real_points: str = ""
     outside: list[str] = field(default_factory=list)
+    shown: Any = field(default=None, repr=False, compare=False)
 
     def to_json(self) -> dict:
-        """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1)."""
-        out = asdict(self)
+        """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1). The
+        sentences are not data: the presentation layer adds them as ``"meaning"``."""
+        out = {f.name: copy.deepcopy(getattr(self, f.name)) for f in fields(self)
+               if f.name not in ("shown", "stated_meaning")}
         if self.parent is not None:
             out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
@@ -151,8 +189,8 @@ class Locus:
         Anything else the reader should know (scaling, probabilistic steps).
     certificate
         The completeness certificate
-        (:meth:`~coopkin_sym.locus_certify.Certificate.to_json`), or None when none was
-        made (:func:`~coopkin_sym.locus_certify.certify_locus`).
+        (:meth:`~coopkin_sym.analysis.locus.certify.Certificate.to_json`), or None when none was
+        made (:func:`~coopkin_sym.analysis.locus.certify.certify_locus`).
     """
 
     system: str

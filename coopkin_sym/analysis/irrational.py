@@ -9,18 +9,19 @@ values substituted, and their ranks are computed modulo the minimal polynomial o
 ``alpha`` (:mod:`coopkin_sym.exact.quotient`). The numbers are then exact at every
 conjugate point at once (the ranks are the same at each). For a quadratic field the
 subspaces that make the numbers (object motions with the joints locked, joint motions
-with the object fixed) are also computed exactly and told in words.
+with the object fixed) are also computed exactly (:class:`PointMotions`; the sentences
+that tell them are :func:`coopkin_sym.present.sentences.point_sentences`).
 
 Example
 -------
->>> from coopkin_sym.model import load_model
+>>> from coopkin_sym.model.model import load_model
 >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6,L=1")
 >>> a.numbers.as_dict()                     # the two contacts at one point
 {'Nm': 3, 'Nc': 3, 'Ni': 3, 'Nr': 0, 'Ng': 3, 'Nd': 4, 'Nh': 1}
 >>> a.minimal_polynomial, a.alpha
 ('alpha**2 + 4*alpha + 1', '-2 + sqrt(3)')
->>> print(a.meaning[2].split(": ")[1])
-with every joint locked, the object can still turn freely about c1 (= c2), in every direction.
+>>> len(a.motions.object_twists)            # the three free turns, exactly
+3
 """
 
 from __future__ import annotations
@@ -31,21 +32,46 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
 
-from . import kinematics, limits
-from .configuration import Configuration, ConfigurationError, split_assignments
-from .errors import CoopkinError
-from .exact.quotient import Quotient, nullspace_modulo
-from .exact.substitution import substitute_rows
-from .exact.sympy_bridge import frac_to_sympy, poly_to_sympy
-from .exactnum import NumberError, algebraic_half_angle, exact_expr, parse_angle
-from .mobility import Numbers, numbers_modulo
-from .model import Model
+from coopkin_sym import limits
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.mobility import Numbers, numbers_modulo
+from coopkin_sym.errors import NotIrrational
+from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
+from coopkin_sym.exact.quotient import Quotient, nullspace_modulo
+from coopkin_sym.exact.substitution import substitute_rows
+from coopkin_sym.exact.sympy_bridge import frac_to_sympy, poly_to_sympy
+from coopkin_sym.model.configuration import (
+    Configuration,
+    ConfigurationError,
+    split_assignments,
+)
+from coopkin_sym.model.model import Model
 
 _ALPHA = sp.Symbol("alpha")
 
 
-class NotIrrational(ValueError, CoopkinError):
-    """Every value of the configuration is rational: use the rational analysis."""
+
+@dataclass(frozen=True)
+class PointMotions:
+    """The motions behind ``Ni`` and ``Nr`` at a point over a quadratic field, exactly.
+
+    ``object_twists`` is a basis of the object twists ``(v, w)`` left free with every
+    joint locked (empty when ``Ni`` was not asked for or is 0), ``joint_motions`` a
+    basis of the joint rates with the object fixed (likewise for ``Nr``), and
+    ``contact_points`` names each contact point, so that lines can be named by them.
+    Entries are SymPy numbers in radicals.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.model import load_model
+    >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6,L=1")
+    >>> [name for name, _ in a.motions.contact_points]
+    ['c1', 'c2']
+    """
+
+    object_twists: list[list[sp.Expr]]
+    joint_motions: list[list[sp.Expr]]
+    contact_points: list[tuple[str, list[sp.Expr]]]
 
 
 @dataclass(frozen=True)
@@ -54,7 +80,15 @@ class IrrationalAnalysis:
 
     ``alpha`` generates the number field of the configuration, a root of
     ``minimal_polynomial``; ``tangents`` gives each irrational ``tan(q/2)`` exactly;
-    ``meaning`` has one plain sentence per number.
+    ``motions`` holds the exact motions behind ``Ni`` and ``Nr`` for a quadratic field
+    (None for a field of higher degree); ``joints`` names the joints.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.model import load_model
+    >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6")
+    >>> a.at, a.numbers.Ni
+    ({'q1': '-pi/6', 'q2': 'pi/6'}, 3)
     """
 
     at: dict[str, str]
@@ -62,16 +96,18 @@ class IrrationalAnalysis:
     minimal_polynomial: str
     alpha: str
     tangents: dict[str, str]
-    meaning: list[str]
+    motions: PointMotions | None
+    joints: tuple[str, ...]
 
     def as_json(self) -> dict:
+        """The JSON of ``coopkin analyze`` here, without the sentences (the
+        presentation layer adds them as ``"meaning"``)."""
         return {"numbers": self.numbers.as_dict(), "blocks": {},
                 "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
                           "tangents": self.tangents},
                 "omitted": {"blocks": "at a configuration with irrational coordinates only "
                                       "the numbers (and their motions in words) are "
-                                      "computed"},
-                "meaning": self.meaning}
+                                      "computed"}}
 
 
 def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
@@ -137,15 +173,16 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     quotient = Quotient(g, kx)
     numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
     values = {kin.symbols[f"t_{n}"]: irrational[n] for n in names}
-    meaning = motion_sentences(model, numbers, rows, quotient, kin, values,
-                               degree=sp.degree(minimal, _ALPHA))
+    motions = point_motions(model, numbers, rows, quotient, kin, values,
+                            degree=sp.degree(minimal, _ALPHA))
     given = {**{n: str(v) for n, v in rational}, **{n: str(dict(split_assignments(
         at, "--at"))[n]) for n in names}}
     order_names = [j.name for j in model.joints] + [p.name for p in model.parameters]
     return IrrationalAnalysis(
         at={k: given[k] for k in order_names if k in given}, numbers=numbers,
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
-        tangents={n: sp.sstr(irrational[n]) for n in names}, meaning=meaning)
+        tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
+        joints=model.joint_names)
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):
@@ -163,20 +200,16 @@ def _in_slot(zctx, coeffs: Sequence, k: int):
     return zctx.from_dict(terms)
 
 
-def motion_sentences(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
-                     values: Mapping[sp.Symbol, sp.Expr], degree: int,
-                     changed: set[str] | None = None) -> list[str]:
-    """One sentence per number (those in ``changed`` when given) at a point over
-    ``Q(alpha)``: the rows of ``Q`` there (``rows``, modulo ``quotient``) and the exact
-    value of every remaining variable (``values``, SymPy). For a quadratic field, Ni
-    and Nr name their motions in words."""
-    from .interpret import count_sentences, joint_motion_words, object_motions_words
-
-    out = [s for s in count_sentences(numbers, len(model.joints))
-           if changed is None or s.split(" ")[0] in changed]
+def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
+                  values: Mapping[sp.Symbol, sp.Expr], degree: int,
+                  changed: set[str] | None = None) -> PointMotions | None:
+    """The exact motions behind ``Ni`` and ``Nr`` (those in ``changed`` when given) at a
+    point over ``Q(alpha)``: the rows of ``Q`` there (``rows``, modulo ``quotient``) and
+    the exact value of every remaining variable (``values``, SymPy). None for a field of
+    degree above 2, or when neither number is asked for."""
     keys = {"Ni", "Nr"} if changed is None else {"Ni", "Nr"} & changed
     if degree > 2 or not keys:
-        return out
+        return None
 
     def exact(e) -> sp.Expr:
         return sp.radsimp(sp.expand(exact_expr(e, None, "value").subs(values)))
@@ -185,21 +218,19 @@ def motion_sentences(model: Model, numbers: Numbers, rows, quotient: Quotient, k
         return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]
                 for v in nullspace_modulo(block, ncols, quotient)]
 
-    words = {}
+    twists: list[list[sp.Expr]] = []
+    contacts: list[tuple[str, list[sp.Expr]]] = []
+    joint_motions: list[list[sp.Expr]] = []
     if "Ni" in keys and numbers.Ni:
         contacts = [(c.name, [exact(frac_to_sympy(v, kin.symbols)) for v in point])
                     for c, point in zip(model.contacts, kin.points, strict=True)]
         twists = vectors([r[:6] for r in rows], 6)
-        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
-                       f"{object_motions_words(twists, contacts)}.")
     if "Nr" in keys and numbers.Nr:
-        motions = [joint_motion_words(v, model.joint_names)
-                   for v in vectors([r[6:] for r in rows], len(model.joints))]
-        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
-                       "move: " + "; ".join(motions) + ".")
-    return [words.get(s.split(" ")[0], s) for s in out]
+        joint_motions = vectors([r[6:] for r in rows], len(model.joints))
+    return PointMotions(object_twists=twists, joint_motions=joint_motions,
+                        contact_points=contacts)
 
 
-__all__ = ["IrrationalAnalysis", "NotIrrational", "analyze_irrational", "irrational_values",
-           "motion_sentences"]
+__all__ = ["IrrationalAnalysis", "NotIrrational", "PointMotions", "analyze_irrational",
+           "irrational_values", "point_motions"]
 

@@ -40,7 +40,7 @@ only through their own witnesses; a pass says "nothing found", not "complete".
 Example
 -------
 >>> from coopkin_sym import load
->>> from coopkin_sym.locus_types import Locus
+>>> from coopkin_sym.analysis.locus.types import Locus
 >>> empty = Locus("paper case 1, hard/hard", ["t_q1", "t_q2"], "L=1",
 ...               {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0})
 >>> v = verify_locus(load("paper-case1-hard"), empty, lines=0)
@@ -64,16 +64,21 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from . import kinematics
-from .configuration import Configuration, ConfigurationError, split_assignments
-from .exact import elimination as el
-from .exact.factoring import factor
-from .exact.quotient import Quotient, rank_modulo
-from .exactnum import NumberError, parse_number
-from .locus_types import Locus
-from .mobility import NUMBER_NAMES, analyze, numbers_from_ranks
-from .model import Model
-from .sweep import Value, compile_system
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.analysis.mobility import NUMBER_NAMES, analyze, numbers_from_ranks
+from coopkin_sym.analysis.sweep import Value, compile_system
+from coopkin_sym.errors import VerifyError
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.parse import NumberError, parse_number
+from coopkin_sym.exact.quotient import Quotient, rank_modulo
+from coopkin_sym.model.configuration import (
+    Configuration,
+    ConfigurationError,
+    split_assignments,
+)
+from coopkin_sym.model.model import Model, model_of
 
 __all__ = ["DEFAULT_VALUES", "ComponentIssue", "DropPoint", "Verification", "VerifyError",
            "summary_lines", "verify_locus"]
@@ -94,10 +99,6 @@ BOUNDARY = 2
 
 Tan = Fraction | None          # a revolute value: tan(q/2), None for q = pi
 
-
-class VerifyError(ValueError):
-    """A locus that cannot be checked against this model (names or texts that do not
-    fit), with the entry and the problem."""
 
 
 # --- results --------------------------------------------------------------------------
@@ -655,8 +656,8 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     system
         The :class:`~coopkin_sym.system.System` (or its model) the locus is about.
     locus
-        The locus (from :func:`~coopkin_sym.locus.compute_locus`, or read back with
-        :func:`~coopkin_sym.report.locus_from_json`).
+        The locus (from :func:`~coopkin_sym.analysis.locus.search.compute_locus`, or read back with
+        :func:`~coopkin_sym.present.report.locus_from_json`).
     at
         The values the locus was computed at (``--at`` syntax); default
         ``locus.fixed``. A parameter neither free nor fixed is taken as 1.
@@ -679,7 +680,7 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     Example
     -------
     >>> from coopkin_sym import load
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> generic = {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0, "Ng": 0, "Nd": 3, "Nh": 0}
     >>> v = verify_locus(load("paper-case1-soft"),
     ...                  Locus("case 1 soft", ["t_q1", "t_q2"], "L=1", generic), lines=2)
@@ -687,7 +688,7 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     (False, 100, 2)
     """
     started = time.monotonic()
-    model: Model = system if isinstance(system, Model) else system.model
+    model: Model = model_of(system)
     if max_points < 1:
         raise VerifyError(f"max_points: expected a positive number, got {max_points}")
     if lines < 0:
@@ -863,7 +864,7 @@ def _read_witness(checker: _Checker, witness: Mapping):
     primitive element of their field with minimal polynomial ``g``."""
     from sympy.polys.numberfields.subfield import primitive_element
 
-    from .exactnum import algebraic_half_angle, parse_angle, parse_expression
+    from coopkin_sym.exact.parse import algebraic_half_angle, parse_angle, parse_expression
 
     model = checker.model
     fixed = dict(checker.fixed_items)
@@ -1311,7 +1312,7 @@ def summary_lines(v: Verification) -> list[str]:
     Example
     -------
     >>> from coopkin_sym import load
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> generic = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
     >>> v = verify_locus(load("paper-case1-complete-hard"),
     ...                  Locus("c", ["t_q1", "t_q2"], "L=1", generic), lines=0)

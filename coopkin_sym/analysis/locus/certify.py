@@ -91,7 +91,7 @@ component makes its tests fail.
 Example
 -------
 >>> from coopkin_sym import load
->>> from coopkin_sym.locus_types import Component, Locus
+>>> from coopkin_sym.analysis.locus.types import Component, Locus
 >>> system = load("paper-case1-hard")
 >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 >>> links = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
@@ -116,12 +116,12 @@ from math import comb
 import flint
 import sympy as sp
 
-from . import kinematics
-from .configuration import Configuration
-from .errors import CoopkinError, TimeLimitReached
-from .exact import deadline
-from .exact import elimination as el
-from .exact.groebner import (
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.errors import CertifyError, TimeLimitReached
+from coopkin_sym.exact import deadline
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.groebner import (
     EXTRA_HINT,
     Verdict,
     covers,
@@ -129,9 +129,9 @@ from .exact.groebner import (
     msolve_path,
     singular_path,
 )
-from .exactnum import NumberError, brief, parse_expression
-from .locus_types import Locus
-from .model import Model
+from coopkin_sym.exact.parse import NumberError, brief, parse_expression
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model, model_of
 
 Poly = flint.fmpz_mpoly
 
@@ -141,9 +141,6 @@ MAX_MINORS = 400
 MAX_MINOR_TERMS = 2_000_000
 NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
-
-class CertifyError(ValueError, CoopkinError):
-    """A locus that does not belong to the system (other variables or values)."""
 
 
 @dataclass
@@ -259,7 +256,7 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     system
         The :class:`~coopkin_sym.system.System` the locus was computed for.
     locus
-        The locus (:func:`coopkin_sym.locus.compute_locus`, or read back from JSON).
+        The locus (:func:`coopkin_sym.analysis.locus.search.compute_locus`, or read back from JSON).
     at
         The values the locus was computed with (``--at`` syntax); default: the locus's
         own ``fixed`` text.
@@ -293,7 +290,7 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     Example
     -------
     >>> from coopkin_sym import load
-    >>> from coopkin_sym.locus_types import Locus
+    >>> from coopkin_sym.analysis.locus.types import Locus
     >>> generic = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
     >>> nothing = Locus("paper case 1", ["t_q1", "t_q2"], "L=1", generic)
     >>> cert = certify_locus(load("paper-case1-complete-hard"), nothing, timeout=60)
@@ -309,7 +306,7 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
                             started)
         except TimeLimitReached as exc:   # before any test could run
             why = f"{exc}, before the first test"
-            return Certificate(system=system.model.name, summary=f"not certified: {why}",
+            return Certificate(system=model_of(system).name, summary=f"not certified: {why}",
                                depths={0: {"certified": False, "why": why, "tests": 0,
                                            "failed": 0}},
                                seconds=round(time.monotonic() - started, 3))
@@ -318,7 +315,7 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
 def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failure: bool,
              max_depth: int | None, started: float) -> Certificate:
     """:func:`certify_locus` inside its time bound."""
-    model: Model = system.model
+    model: Model = model_of(system)
     config = _configuration(model, locus.fixed if at is None else at)
     revolute = [j.name for j in model.joints if j.name in config.free
                 and j.type == "revolute"]

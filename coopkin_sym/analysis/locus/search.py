@@ -28,9 +28,9 @@ algebraic point (radicals or ``CRootOf``). ``q = pi`` (``t = oo``) is checked jo
 by joint in the second chart.
 
 This module runs the search and decides the components; the polynomial systems are
-solved in :mod:`coopkin_sym.locus_algebra`, witnesses and float checks are made in
-:mod:`coopkin_sym.locus_witness`, and the results are the plain data of
-:mod:`coopkin_sym.locus_types`.
+solved in :mod:`coopkin_sym.analysis.locus.algebra`, witnesses and float checks are made in
+:mod:`coopkin_sym.analysis.locus.witness`, and the results are the plain data of
+:mod:`coopkin_sym.analysis.locus.types`.
 
 Example
 -------
@@ -57,22 +57,8 @@ from math import comb
 import flint
 import sympy as sp
 
-from . import kinematics
-from .configuration import Configuration
-from .errors import CoopkinError, TimeLimitReached
-from .exact import deadline
-from .exact import elimination as el
-from .exact.factoring import factor
-from .exact.quotient import (
-    Quotient,
-    Tower,
-    coefficients_in,
-    gcd_modulo,
-    smallest_fraction,
-)
-from .exact.substitution import split_linear, substitute, substitute_rows
-from .exact.sympy_bridge import poly_to_sympy
-from .locus_algebra import (
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.algebra import (
     has_real_point,
     linear_equation,
     linearly_disjoint,
@@ -83,8 +69,8 @@ from .locus_algebra import (
     substitute_values,
     vars_of,
 )
-from .locus_types import Component, Locus, cut_short
-from .locus_witness import (
+from coopkin_sym.analysis.locus.types import Component, Locus, cut_short
+from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
     algebraic_witness_on,
     attach_algebraic_witness,
@@ -96,12 +82,22 @@ from .locus_witness import (
     to_at,
     witness_linear,
 )
-from .mobility import Numbers, decompose, numbers_modulo
-from .model import Model
-
-
-class LocusError(ValueError, CoopkinError):
-    """A locus that cannot be computed for this input."""
+from coopkin_sym.analysis.mobility import Numbers, decompose, numbers_modulo
+from coopkin_sym.errors import LocusError, TimeLimitReached
+from coopkin_sym.exact import deadline
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.quotient import (
+    Quotient,
+    Tower,
+    coefficients_in,
+    gcd_modulo,
+    smallest_fraction,
+)
+from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model, model_of
 
 
 @dataclass
@@ -168,7 +164,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
             except TimeLimitReached as exc:
                 return cut_short(bound, exc)
     started = time.monotonic()
-    model: Model = system.model
+    model: Model = model_of(system)
     fixed = Configuration.parse(model, at)
     notes: list[str] = []
     params = dict(fixed.parameters)
@@ -1405,7 +1401,7 @@ def _within(ctx, chain: dict, other: Component, numbers: Numbers) -> bool:
 
 def _condition(ctx, equations: list[str]) -> str:
     """The equations in angles where they read simply (see
-    :func:`~coopkin_sym.locus_algebra.read_poly`)."""
+    :func:`~coopkin_sym.analysis.locus.algebra.read_poly`)."""
     return ", ".join(ctx.readings.get(eq, f"{eq} = 0") for eq in equations)
 
 

@@ -1,0 +1,117 @@
+"""The package's layers, checked on its source: imports only go down, and no cycle.
+
+DESIGN section 5: ``errors``/``limits`` (base) < ``exact`` < ``model`` < ``analysis`` <
+``present`` < the public facade (``coopkin_sym``, ``system``, ``cli``). Every import of
+a package module counts, at the top of a file or inside a function, so that a
+dependency cannot hide.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+import coopkin_sym
+
+PACKAGE = Path(coopkin_sym.__file__).resolve().parent
+LAYERS = ("base", "exact", "model", "analysis", "present", "facade")
+
+
+def _module_name(path: Path) -> str:
+    parts = ("coopkin_sym", *path.relative_to(PACKAGE).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+MODULES = {_module_name(p): p for p in sorted(PACKAGE.rglob("*.py"))}
+
+
+def layer(module: str) -> str:
+    """The layer of a module of the package."""
+    parts = module.split(".")
+    if len(parts) >= 2 and parts[1] in ("exact", "model", "analysis", "present"):
+        return parts[1]
+    if module in ("coopkin_sym.errors", "coopkin_sym.limits"):
+        return "base"
+    return "facade"
+
+
+def imports(module: str) -> set[str]:
+    """The package modules that ``module`` imports (anywhere in its source)."""
+    path = MODULES[module]
+    package = module if path.name == "__init__.py" else module.rsplit(".", 1)[0]
+    found: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.Import):
+            targets = [(a.name, []) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")[: len(package.split(".")) - node.level + 1]
+                name = ".".join(base + ([node.module] if node.module else []))
+            else:
+                name = node.module or ""
+            targets = [(name, [a.name for a in node.names])]
+        else:
+            continue
+        for name, names in targets:
+            if not name.startswith("coopkin_sym"):
+                continue
+            subs = [f"{name}.{n}" for n in names if f"{name}.{n}" in MODULES]
+            found.update(subs or [name])
+    found.discard(module)
+    return found
+
+
+GRAPH = {m: imports(m) for m in MODULES}
+
+
+def test_every_import_goes_down_or_stays_in_its_layer():
+    upward = [f"{m} ({layer(m)}) imports {t} ({layer(t)})"
+              for m, targets in GRAPH.items() for t in sorted(targets)
+              if LAYERS.index(layer(t)) > LAYERS.index(layer(m))]
+    assert upward == []
+
+
+def test_no_import_cycle():
+    state: dict[str, int] = {}
+    cycles: list[list[str]] = []
+
+    def visit(m: str, stack: list[str]) -> None:
+        state[m] = 1
+        stack.append(m)
+        for t in sorted(GRAPH.get(m, ())):
+            if t not in MODULES:
+                continue
+            if state.get(t) == 1:
+                cycles.append(stack[stack.index(t):] + [t])
+            elif t not in state:
+                visit(t, stack)
+        stack.pop()
+        state[m] = 2
+
+    for m in sorted(MODULES):
+        if m not in state:
+            visit(m, [])
+    # a package's __init__ re-exporting its own submodules is not a cycle of ideas
+    real = [c for c in cycles
+            if not any(a == b.rsplit(".", 1)[0] or b == a.rsplit(".", 1)[0]
+                       for a, b in zip(c, c[1:], strict=False))]
+    assert real == []
+
+
+@pytest.mark.parametrize("module", ["coopkin_sym.exact", "coopkin_sym.model",
+                                    "coopkin_sym.analysis", "coopkin_sym.present"])
+def test_layers_exist_and_hold_modules(module):
+    inside = [m for m in MODULES if m.startswith(module + ".")]
+    assert len(inside) >= 3, inside
+
+
+def test_the_checker_sees_an_upward_import(tmp_path):
+    """The check can fail: a planted upward import is found."""
+    source = "from coopkin_sym.present.sentences import sentences\n"
+    tree = ast.parse(source)
+    node = tree.body[0]
+    assert isinstance(node, ast.ImportFrom)
+    assert layer(node.module) == "present"
+    assert LAYERS.index(layer(node.module)) > LAYERS.index(layer("coopkin_sym.exact.ring"))
