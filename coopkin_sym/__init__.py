@@ -15,7 +15,8 @@ Example
 (2, 1)
 """
 
-from coopkin_sym.analysis.mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion, Numbers
+from coopkin_sym.analysis.mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion
+from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.configuration import Configuration, ConfigurationError
 from coopkin_sym.model.model import Model, ModelError

@@ -19,7 +19,7 @@ from strategies import random_configurations, random_systems
 from typer.testing import CliRunner
 
 import coopkin_sym
-from coopkin_sym.analysis.mobility import NUMBER_NAMES
+from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.sweep import (
     SweepError,
     Value,

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.analysis.numbers import numbers_from_ranks
 
 
 def float_matrix(m) -> np.ndarray:
@@ -38,7 +39,4 @@ def float_numbers(analysis: Analysis) -> dict[str, int]:
     def rank(a: np.ndarray) -> int:
         return int(np.linalg.matrix_rank(a)) if a.size else 0  # float-ok
 
-    rq, rg, rd = rank(q), rank(q[:, :6]), rank(q[:, 6:])
-    nm, ni, nr = 6 + r - rq, 6 - rg, r - rd
-    return {"Nm": nm, "Nc": nm - nr, "Ni": ni, "Nr": nr, "Ng": m - rg, "Nd": m - rd,
-            "Nh": m - rq}
+    return numbers_from_ranks(m, r, rank(q), rank(q[:, :6]), rank(q[:, 6:])).as_dict()

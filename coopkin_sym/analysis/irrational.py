@@ -34,7 +34,8 @@ from sympy.polys.numberfields.subfield import primitive_element
 
 from coopkin_sym import limits
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.mobility import Numbers, numbers_modulo
+from coopkin_sym.analysis.mobility import numbers_modulo
+from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import NotIrrational
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
 from coopkin_sym.exact.quotient import Quotient, nullspace_modulo

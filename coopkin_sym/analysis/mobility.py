@@ -40,6 +40,7 @@ from functools import cached_property
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.deadline import check
@@ -56,29 +57,9 @@ from coopkin_sym.exact.sympy_bridge import (
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
-NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
-
 # the largest primitive coordinated column (in terms of one entry) shown as polynomials
 DEFAULT_TERM_BUDGET = 20_000
 
-
-
-@dataclass(frozen=True)
-class Numbers:
-    """Mobility ``Nm``, connectivity ``Nc``, indeterminacy ``Ni``, redundancy ``Nr``,
-    and the force-domain graspable ``Ng`` (internal forces), defective ``Nd`` and
-    hyperstatic ``Nh`` numbers."""
-
-    Nm: int
-    Nc: int
-    Ni: int
-    Nr: int
-    Ng: int
-    Nd: int
-    Nh: int
-
-    def as_dict(self) -> dict[str, int]:
-        return {k: getattr(self, k) for k in NUMBER_NAMES}
 
 
 @dataclass(frozen=True)
@@ -506,8 +487,7 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     coord_u = [v for v, p in zip(feasible, pivots, strict=True) if p not in c11_pivots]
     nc, ni, nr = len(feasible), len(c11), len(c23)
     nm = nc + nr
-    numbers = Numbers(Nm=nm, Nc=nc, Ni=ni, Nr=nr, Ng=m - (6 - ni), Nd=m - (r - nr),
-                      Nh=m - (6 + r - nm))
+    numbers = numbers_from_ranks(m, r, *ranks_from_numbers({"Nm": nm, "Ni": ni, "Nr": nr}, r))
     return Decomposition(numbers, c11, c11_pivots, c23, arm_maps, coord_u)
 
 
@@ -559,20 +539,6 @@ class _ArmMap:
             q = [qi - factor * RatFunc.poly(vi) if not vi.is_zero() else qi
                  for qi, vi in zip(q, v, strict=True)]
         return q
-
-
-def numbers_from_ranks(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> Numbers:
-    """The seven numbers of a system with ``m`` constraint rows and ``r`` joints from
-    the ranks of ``Q``, ``Gt^T`` and ``Dt``.
-
-    Example
-    -------
-    >>> numbers_from_ranks(6, 2, 6, 5, 2).as_dict()    # paper case 1, hard contacts
-    {'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
-    """
-    nm, nr = 6 + r - rank_q, r - rank_dt
-    return Numbers(Nm=nm, Nc=nm - nr, Ni=6 - rank_gt, Nr=nr, Ng=m - rank_gt,
-                   Nd=m - rank_dt, Nh=m - rank_q)
 
 
 def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> Numbers:

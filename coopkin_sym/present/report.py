@@ -38,6 +38,7 @@ from typing import Any
 import sympy as sp
 
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
+from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.present.files import check_output_path, write_files
@@ -51,7 +52,6 @@ __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_p
 FORMATS: dict[str, str] = {".md": "markdown", ".html": "html", ".tex": "latex",
                            ".json": "json"}
 
-NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 NUMBER_WORDS = {
     "Nm": "mobility: independent motions of object and joints that keep every contact",
     "Nc": "connectivity: independent motions of the object",

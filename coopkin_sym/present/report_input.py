@@ -43,6 +43,7 @@ from pydantic import (
 )
 
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
+from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportInputError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.model.configuration import top_level_parts
@@ -50,7 +51,6 @@ from coopkin_sym.model.trees import TreeError, check_tree, read_text
 
 __all__ = ["ReportInputError", "validate_report"]
 
-NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 KINDS = ("hypersurface", "subvariety", "isolated", "chart")
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _RESERVED = {*FUNCTIONS, "pi", "CRootOf", "E", "I", "oo", "nan", "zoo"}

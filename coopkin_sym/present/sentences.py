@@ -263,7 +263,7 @@ def count_sentences(numbers, r: int) -> list[str]:
 
     Example
     -------
-    >>> from coopkin_sym.analysis.mobility import Numbers
+    >>> from coopkin_sym.analysis.numbers import Numbers
     >>> print(count_sentences(Numbers(3, 3, 1, 0, 1, 4, 1), 2)[2])
     Ni = 1: with every joint locked, the object can still make one independent motion.
     """

@@ -118,6 +118,7 @@ import sympy as sp
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import CertifyError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
@@ -139,8 +140,6 @@ Poly = flint.fmpz_mpoly
 MAX_MINORS = 400
 #: Largest size (terms) a minor may reach by the product of its largest entries.
 MAX_MINOR_TERMS = 2_000_000
-NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
-
 
 
 @dataclass
@@ -336,7 +335,7 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
     setup.generic_ranks = ranks
     r, m = len(model.joints), len(base.matrices["Q"])
     generic = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
-    if generic != {k: locus.generic.get(k) for k in NUMBER_KEYS}:
+    if generic != {k: locus.generic.get(k) for k in NUMBER_NAMES}:
         why = (f"the locus's generic numbers ({_numbers_text(locus.generic)}) differ from "
                f"the exact ones ({_numbers_text(generic)})")
         cert.summary = f"not certified: {why}"
@@ -385,9 +384,8 @@ def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
     for i, comp in enumerate(setup.components):
         if comp is None:
             continue
-        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_KEYS}
-        implied = _numbers(m, r, 6 + r - comp[1]["Nm"], 6 - comp[1]["Ni"],
-                           r - comp[1]["Nr"])
+        given = {k: locus.components[i].numbers.get(k) for k in NUMBER_NAMES}
+        implied = _numbers(m, r, *ranks_from_numbers(comp[1], r))
         if given != implied:
             notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) do not "
                          f"fit one another (from Nm, Ni, Nr: {_numbers_text(implied)}): "
@@ -465,13 +463,11 @@ def _rank(rows) -> int:
 
 
 def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> dict[str, int]:
-    nm, nr = 6 + r - rank_q, r - rank_dt
-    return {"Nm": nm, "Nc": nm - nr, "Ni": 6 - rank_gt, "Nr": nr, "Ng": m - rank_gt,
-            "Nd": m - rank_dt, "Nh": m - rank_q}
+    return numbers_from_ranks(m, r, rank_q, rank_gt, rank_dt).as_dict()
 
 
 def _numbers_text(numbers) -> str:
-    return ", ".join(f"{k} {numbers.get(k)}" for k in NUMBER_KEYS)
+    return ", ".join(f"{k} {numbers.get(k)}" for k in NUMBER_NAMES)
 
 
 # --- reading the locus -------------------------------------------------------------------
@@ -843,8 +839,8 @@ class _Runner:
         self.rng = random.Random(1992)
         r = len(setup.model.joints)
         self.component_ranks = [
-            None if c is None else {"Q": 6 + r - c[1]["Nm"], "HG^T": 6 - c[1]["Ni"],
-                                    "HD": r - c[1]["Nr"]}
+            None if c is None else dict(zip(("Q", "HG^T", "HD"),
+                                            ranks_from_numbers(c[1], r), strict=True))
             for c in setup.components]
 
     def chart(self, chart: _Chart) -> None:

@@ -82,7 +82,8 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
     witness_linear,
 )
-from coopkin_sym.analysis.mobility import Numbers, decompose, numbers_modulo
+from coopkin_sym.analysis.mobility import decompose, numbers_modulo
+from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el

@@ -24,7 +24,8 @@ from coopkin_sym.errors import TimeLimitReached
 
 if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.irrational import PointMotions
-    from coopkin_sym.analysis.mobility import Analysis, Numbers
+    from coopkin_sym.analysis.mobility import Analysis
+    from coopkin_sym.analysis.numbers import Numbers
 
 #: What a locus without a completeness certificate says about its completeness.
 NOT_CERTIFIED = "completeness not certified (run with --certify)"

@@ -66,7 +66,8 @@ import sympy as sp
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.locus.types import Locus
-from coopkin_sym.analysis.mobility import NUMBER_NAMES, analyze, numbers_from_ranks
+from coopkin_sym.analysis.mobility import analyze
+from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks
 from coopkin_sym.analysis.sweep import Value, compile_system
 from coopkin_sym.errors import VerifyError
 from coopkin_sym.exact import elimination as el

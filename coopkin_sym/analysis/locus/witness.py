@@ -28,7 +28,8 @@ from coopkin_sym.analysis.floatcheck import float_numbers
 from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
-from coopkin_sym.analysis.mobility import Numbers, analyze, numbers_modulo
+from coopkin_sym.analysis.mobility import analyze, numbers_modulo
+from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text, parse_expression
 from coopkin_sym.exact.quotient import Quotient, Tower

@@ -1,0 +1,92 @@
+"""The seven numbers of a cooperating system, from three ranks: the one formula.
+
+With ``m`` contact constraint rows and ``r`` joints, ``Q = [-H G^T | H D]`` is
+``m x (6 + r)``. Its rank and the ranks of its two column blocks give every number of
+Bicchi, Melchiorri and Balluchi (ICRA 1992):
+
+* mobility ``Nm = 6 + r - rank Q`` (the dimension of ``ker Q``),
+* redundancy ``Nr = r - rank HD`` (joint motions with the object fixed),
+* connectivity ``Nc = Nm - Nr`` (object motions compatible with the contacts),
+* indeterminacy ``Ni = 6 - rank HG^T`` (object motions with every joint locked),
+* graspable ``Ng = m - rank HG^T`` (internal forces), defective
+  ``Nd = m - rank HD``, hyperstatic ``Nh = m - rank Q``.
+
+Every path of the package (the exact decomposition, the sweep's modular ranks, the
+float comparison, the locus) counts through :func:`seven_numbers`.
+
+Example
+-------
+>>> numbers_from_ranks(6, 2, 6, 5, 2).as_dict()    # paper case 1, hard contacts
+{'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: The seven numbers, in the order every table and file of the package uses.
+NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+
+
+@dataclass(frozen=True)
+class Numbers:
+    """Mobility ``Nm``, connectivity ``Nc``, indeterminacy ``Ni``, redundancy ``Nr``,
+    and the force-domain graspable ``Ng`` (internal forces), defective ``Nd`` and
+    hyperstatic ``Nh`` numbers.
+
+    Example
+    -------
+    >>> Numbers(2, 2, 1, 0, 1, 4, 0).as_dict()["Ni"]
+    1
+    """
+
+    Nm: int
+    Nc: int
+    Ni: int
+    Nr: int
+    Ng: int
+    Nd: int
+    Nh: int
+
+    def as_dict(self) -> dict[str, int]:
+        return {k: getattr(self, k) for k in NUMBER_NAMES}
+
+
+def seven_numbers(m, r, rank_q, rank_gt, rank_dt) -> tuple:
+    """``(Nm, Nc, Ni, Nr, Ng, Nd, Nh)`` from ``m`` rows, ``r`` joints and the ranks of
+    ``Q``, ``H G^T`` and ``H D``. Plain arithmetic, so the ranks may be integers or
+    numpy integer arrays (one entry per point).
+
+    Example
+    -------
+    >>> seven_numbers(6, 2, 6, 5, 2)
+    (2, 2, 1, 0, 1, 4, 0)
+    """
+    nm, nr = 6 + r - rank_q, r - rank_dt
+    return (nm, nm - nr, 6 - rank_gt, nr, m - rank_gt, m - rank_dt, m - rank_q)
+
+
+def numbers_from_ranks(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> Numbers:
+    """The seven numbers of a system with ``m`` constraint rows and ``r`` joints from
+    the ranks of ``Q``, ``H G^T`` and ``H D``.
+
+    Example
+    -------
+    >>> numbers_from_ranks(6, 2, 6, 5, 2).Nm
+    2
+    """
+    return Numbers(*(int(n) for n in seven_numbers(m, r, rank_q, rank_gt, rank_dt)))
+
+
+def ranks_from_numbers(numbers, r: int) -> tuple[int, int, int]:
+    """The ranks of ``Q``, ``H G^T`` and ``H D`` that give ``numbers`` (a
+    :class:`Numbers` or a mapping with ``Nm``, ``Ni``, ``Nr``) for ``r`` joints: the
+    formula of :func:`seven_numbers` read backwards.
+
+    Example
+    -------
+    >>> ranks_from_numbers({"Nm": 2, "Ni": 1, "Nr": 0}, 2)
+    (6, 5, 2)
+    """
+    get = numbers.get if isinstance(numbers, dict) else lambda k: getattr(numbers, k)
+    return 6 + r - get("Nm"), 6 - get("Ni"), r - get("Nr")

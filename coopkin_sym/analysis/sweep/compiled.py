@@ -1,0 +1,411 @@
+"""``Q`` compiled for exact evaluation at many points (see :mod:`coopkin_sym.analysis.sweep`).
+
+Each row is cleared to integer polynomials and homogenized in the swept variables;
+the generic ranks are computed once, exactly, over ``Q(t, L)``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import random
+from collections import OrderedDict
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import flint
+import numpy as np
+import sympy as sp
+
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
+from coopkin_sym.analysis.sweep.grid import _split_point
+from coopkin_sym.analysis.sweep.values import Value
+from coopkin_sym.errors import SweepError
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact import modular
+from coopkin_sym.model.configuration import (
+    Configuration,
+)
+from coopkin_sym.model.model import Model, model_of
+
+
+# --- compilation ----------------------------------------------------------------------
+class _Exact:
+    """Exact evaluation of the homogenized integer polynomials, in one process.
+
+    With every parameter set, the polynomials become one straight-line program on
+    Python integers (each monomial once, from a smaller one times one variable; then
+    each entry as an integer combination of monomials), generated from the exponents
+    and integer coefficients alone, and the ranks come from flint's ``fmpz_mat``.
+    With parameters left symbolic, the entries are partially evaluated with flint and
+    ranked over ``Q(L)`` by :mod:`coopkin_sym.exact.elimination`.
+    """
+
+    def __init__(self, plan: dict):
+        self.m, self.n = plan["m"], plan["n"]
+        self.kinds = plan["kinds"]
+        self.njv = plan["njv"]
+        self.params = plan["nvars"] - plan["njv"]
+        if self.params:
+            self.ctx = flint.fmpz_mpoly_ctx.get(tuple(plan["names"]), "degrevlex")
+            self.entries = [(k, self.ctx.from_dict(dict(t))) for k, t in plan["terms"]]
+        else:
+            self.program = _straight_line(plan["terms"], plan["nvars"], self.m, self.n)
+            n = self.n                          # column selections, applied in C
+            self.first = flint.fmpz_mat(n, 6, [int(i == j) for i in range(n)
+                                               for j in range(6)])
+            self.last = flint.fmpz_mat(n, n - 6, [int(i == j + 6) for i in range(n)
+                                                  for j in range(n - 6)])
+
+    def ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
+        """Exact ranks of ``Q``, of its first 6 and of its last ``r`` columns."""
+        m, n = self.m, self.n
+        if m == 0:
+            return 0, 0, 0
+        args = _joint_vector(self.kinds, pairs)
+        if not self.params:
+            full = flint.fmpz_mat(m, n, self.program(args))
+            return (full.rank(), (full * self.first).rank(),
+                    (full * self.last).rank() if n > 6 else 0)
+        subs = {i: flint.fmpz(args[i]) for i in range(self.njv)}
+        zero = self.ctx.constant(0)
+        flat = [zero] * (m * n)
+        for k, poly in self.entries:
+            flat[k] = poly.subs(subs) if subs else poly
+        rows = [flat[i * n:(i + 1) * n] for i in range(m)]
+        return (el.rank(rows, n), el.rank([r[:6] for r in rows], 6),
+                el.rank([r[6:] for r in rows], n - 6) if n > 6 else 0)
+
+
+def _straight_line(terms: list, nvars: int, m: int, n: int):
+    """A Python function ``x -> entries of Q`` (a flat, row-major list of ints)
+    evaluating the integer polynomials ``terms`` at the integer vector ``x``. The
+    generated text holds only integers and local names."""
+    names: dict[tuple[int, ...], str] = {(0,) * nvars: "1"}
+    lines: list[str] = []
+
+    def monomial(e: tuple[int, ...]) -> str:
+        if e in names:
+            return names[e]
+        used = [v for v, x in enumerate(e) if x]
+        parents = [(v, e[:v] + (e[v] - 1,) + e[v + 1:]) for v in used]
+        v, parent = next(((v, q) for v, q in parents if q in names), parents[-1])
+        base = monomial(parent)
+        if base == "1":
+            names[e] = f"x{v}"
+        else:
+            names[e] = f"m{len(lines)}"
+            lines.append(f"    {names[e]} = {base} * x{v}")
+        return names[e]
+
+    for e in sorted({tuple(e) for _, entry in terms for e, _ in entry}, key=sum):
+        monomial(e)
+    cells = ["0"] * (m * n)
+    for k, entry in terms:
+        expr = ""
+        for e, c in entry:
+            mono = monomial(tuple(e))
+            mag = abs(c)
+            term = str(mag) if mono == "1" else (mono if mag == 1 else f"{mag}*{mono}")
+            expr += (" - " if c < 0 else " + ") + term
+        name = f"e{k}"
+        lines.append(f"    {name} = {expr[3:] if expr.startswith(' + ') else '-' + expr[3:]}")
+        cells[k] = name
+    head = ["def _evaluate(x):"]
+    if nvars:
+        head.append("    " + "".join(f"x{i}, " for i in range(nvars)) + "= x")
+    source = "\n".join(head + lines + [f"    return [{', '.join(cells)}]"])
+    namespace: dict = {"__builtins__": {}}
+    # the source is generated here from the package's own exact integer polynomials
+    # (integers and local names only, see above): no external text reaches it
+    exec(compile(source, "<coopkin_sym: compiled Q>", "exec"), namespace)  # parse-ok
+    return namespace["_evaluate"]
+
+
+_EXACT_CACHE: OrderedDict[str, _Exact] = OrderedDict()
+
+
+def _exact_for(plan: dict) -> _Exact:
+    ev = _EXACT_CACHE.get(plan["key"])
+    if ev is None:
+        ev = _EXACT_CACHE[plan["key"]] = _Exact(plan)
+        while len(_EXACT_CACHE) > 8:
+            _EXACT_CACHE.popitem(last=False)
+    return ev
+
+
+def _joint_vector(kinds: Sequence[str], pairs: Sequence[tuple[int, int]]) -> list[int]:
+    """The variables of the compiled polynomials at one point: for a revolute joint with
+    ``tan(q/2) = a/b``, ``(a^2 + b^2, b^2 - a^2, 2 a b)`` (proportional to
+    ``(1, cos q, sin q)``); for a prismatic one ``(a, b)``."""
+    out: list[int] = []
+    for kind, (a, b) in zip(kinds, pairs, strict=True):
+        if kind == "revolute":
+            a2, b2 = a * a, b * b
+            out += [a2 + b2, b2 - a2, 2 * a * b]
+        else:
+            out += [a, b]
+    return out
+
+
+def _compile_rows(frac_rows, rows, ring, joints, kinds, var_of, param_vars, names, n):
+    """The rows of ``Q`` as integer polynomials in the variables of :func:`_joint_vector`.
+
+    Row ``i`` of ``Q`` times its denominator is the integer polynomial ``rows[i]`` in
+    ``t = tan(q/2)`` (and displacements ``d``); homogenized with ``t = a/b`` to the
+    degree ``2 e`` of its denominator ``(1 + t^2)^e`` (and ``d = a/b`` to its degree in
+    ``d``), it is ``Q``'s row times a nonzero number at every point, ``q = pi`` included.
+    Every revolute part is a form of even degree in ``(a, b)``, rewritten in
+    ``w = a^2 + b^2``, ``c = b^2 - a^2``, ``s = 2 a b`` (much sparser: ``Q`` is built from
+    cosines and sines); the row is then scaled to primitive integer coefficients.
+    Returns ``[(flat entry index, [(exponents, integer coefficient), ...]), ...]``.
+    """
+    qctx = flint.fmpq_mpoly_ctx.get(tuple(names), "degrevlex")
+    gens = qctx.gens()
+    half = flint.fmpq(1, 2)
+    starts, pos = [], 0
+    for kind in kinds:
+        starts.append(pos)
+        pos += 3 if kind == "revolute" else 2
+    cache: dict[tuple[int, int, int], flint.fmpq_mpoly] = {}
+
+    def factor(jj: int, i: int, k: int) -> flint.fmpq_mpoly:
+        key = (jj, i, k)
+        if key not in cache:
+            o = starts[jj]
+            if kinds[jj] == "revolute":          # a^i b^k, i + k even
+                w, c, s = gens[o], gens[o + 1], gens[o + 2]
+                f = ((w - c) * half) ** (i // 2) * ((w + c) * half) ** (k // 2)
+                cache[key] = f * (s * half) if i % 2 else f
+            else:
+                cache[key] = gens[o] ** i * gens[o + 1] ** k
+        return cache[key]
+
+    nparams = len(param_vars)
+    njv = len(names) - nparams
+    terms = []
+    for i, (frac_row, row) in enumerate(zip(frac_rows, rows, strict=True)):
+        top = [max(es) for es in zip(*(f.den for f in frac_row), strict=True)]
+        degree = []
+        for j, kind in zip(joints, kinds, strict=True):
+            v = var_of[j]
+            if kind == "revolute":
+                degree.append(2 * top[ring.den_names.index(ring.names[v])])
+            else:
+                degree.append(max((p.degrees()[v] for p in row if not p.is_zero()),
+                                  default=0))
+        converted = []
+        for k, poly in enumerate(row):
+            if poly.is_zero():
+                continue
+            acc = qctx.constant(0)
+            for e, c in poly.to_dict().items():
+                term = qctx.from_dict({(0,) * njv + tuple(e[v] for v in param_vars): int(c)})
+                for jj, (j, d) in enumerate(zip(joints, degree, strict=True)):
+                    ej = e[var_of[j]]
+                    if ej > d:  # pragma: no cover - entries of Q are bounded at t = oo
+                        raise AssertionError("row degree above its denominator")
+                    term = term * factor(jj, ej, d - ej)
+                acc += term
+            converted.append((k, acc.to_dict()))
+        dens = [int(c.q) for _, d in converted for c in d.values()]
+        scale = math.lcm(*dens) if dens else 1
+        ints = [(k, {e: int(c.p) * (scale // int(c.q)) for e, c in d.items()})
+                for k, d in converted]
+        g = math.gcd(*(c for _, d in ints for c in d.values())) or 1
+        for k, d in ints:
+            if d:
+                terms.append((i * n + k, sorted((tuple(e), c // g) for e, c in d.items())))
+    return terms
+
+
+class Compiled:
+    """``Q`` of a system compiled for exact evaluation with some joints swept.
+
+    Parameters
+    ----------
+    system
+        A :class:`~coopkin_sym.system.System` (or its model).
+    joints
+        The swept joints (symbolic at compile time, given values point by point).
+    at
+        Values of the other joints and of parameters (``"q3=pi/2,L=1"`` or a mapping);
+        a value given here for a swept joint is its default at points that leave it
+        out. Unset joints are at home, unset parameters symbolic (the numbers are then
+        those over ``Q(L)``, as :meth:`System.analyze` gives them).
+    prime
+        The prime of the modular pass (below ``2**31``).
+
+    Attributes
+    ----------
+    generic : Numbers
+        The numbers with the swept joints symbolic (over ``Q(t, L)``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> c = compile_system(load("paper-case2-hard"), ["q1", "q2"], "L=1")
+    >>> c.generic.as_dict()["Nm"]
+    8
+    >>> c.numbers("q1=2*atan(1/3),q2=pi/2").Nr         # a singular configuration
+    3
+    """
+
+    def __init__(self, system: Model | Any, joints: Sequence[str],
+                 at: str | Mapping | None = None,
+                 prime: int = modular.PRIME):
+        model = model_of(system)
+        if not (2 < prime < 2**31 and sp.isprime(prime)):
+            raise ValueError(f"prime: expected an odd prime below 2**31, got {prime}")
+        self.model = model
+        self.prime = prime
+        kinds = {j.name: j.type for j in model.joints}
+        joints = tuple(dict.fromkeys(joints))
+        for j in joints:
+            if j not in kinds:
+                params = {p.name for p in model.parameters}
+                what = "a parameter, not a joint" if j in params else "not a joint"
+                raise SweepError(f"{j} is {what} (joints: {', '.join(model.joint_names)})")
+        self.joints = joints
+        self.kinds = tuple(kinds[j] for j in joints)
+        full = Configuration.parse(model, at)
+        swept = set(joints)
+        self.base = Configuration(
+            {k: v for k, v in full.revolute.items() if k not in swept},
+            {k: v for k, v in full.prismatic.items() if k not in swept},
+            dict(full.parameters), frozenset(swept))
+        self.at_text = self.base.at_text()
+        self.defaults = tuple(self._default(full, j) for j in joints)
+        kin = kinematics.build(model, self.base)
+        ring = kin.ring
+        self.r = len(model.joints)
+        self.m = len(kin.Q)
+        n = self.n = 6 + self.r
+        var_of = {}
+        for j, kind in zip(joints, self.kinds, strict=True):
+            var_of[j] = ring.names.index(f"t_{j}" if kind == "revolute" else j)
+        param_vars = [i for i, nm in enumerate(ring.names) if nm not in
+                      {ring.names[v] for v in var_of.values()}]
+        names = []
+        for j, kind in zip(joints, self.kinds, strict=True):
+            names += ([f"{j}.w", f"{j}.c", f"{j}.s"] if kind == "revolute"
+                      else [f"{j}.num", f"{j}.den"])
+        njv = len(names)
+        names += [ring.names[i] for i in param_vars]
+        rows = [ring.clear_row(row) for row in kin.Q]
+        terms = _compile_rows(kin.Q, rows, ring, joints, self.kinds, var_of, param_vars,
+                              names, n)
+        generic = (el.rank(rows, n) if rows else 0,
+                   el.rank([r[:6] for r in rows], 6) if rows else 0,
+                   el.rank([r[6:] for r in rows], n - 6) if rows else 0)
+        self.generic_ranks = generic
+        self.generic = self._numbers(*generic)
+        flat_terms = [(k, e, c) for k, ts in terms for e, c in ts]
+        nvars = len(names)
+        exps = np.array([e for _, e, _ in flat_terms], dtype=np.int64).reshape(-1, nvars)
+        used = sorted({k % n for k, _ in terms})
+        key = hashlib.sha1(repr((names, terms, self.m, n)).encode()).hexdigest()
+        self.plan = {
+            "key": key, "prime": prime, "m": self.m, "n": n, "names": names,
+            "kinds": list(self.kinds), "njv": njv, "nvars": nvars, "terms": terms,
+            "exps": exps,
+            "coefs": modular.residues([c for _, _, c in flat_terms], prime),
+            "entries": np.array([k for k, _, _ in flat_terms], dtype=np.int64),
+            "params": [random.Random(f"coopkin:{names[i]}").randrange(2, prime)
+                       for i in range(njv, nvars)],
+            "cols6": [c for c in used if c < 6], "colsr": [c for c in used if c >= 6],
+            "generic": generic,
+        }
+
+    def _default(self, full: Configuration, joint: str) -> Value:
+        if joint in full.revolute:
+            return Value.from_cos_sin(*full.revolute[joint])
+        if joint in full.prismatic:
+            return self._rational(joint, full.prismatic[joint], joint)
+        return Value.from_tangent(0) if self._kind(joint) == "revolute" else Value("0", 0, 1)
+
+    def _kind(self, joint: str) -> str:
+        return self.kinds[self.joints.index(joint)]
+
+    @staticmethod
+    def _rational(joint: str, d: sp.Expr, shown) -> Value:
+        if not d.is_Rational:
+            raise SweepError(f"{joint}={shown}: a swept displacement must be a number "
+                             f"(got {d}; set the parameters it uses)")
+        return Value(sp.sstr(d), int(d.p), int(d.q))
+
+    def _numbers(self, rq: int, r6: int, rr: int) -> Numbers:
+        return numbers_from_ranks(self.m, self.r, rq, r6, rr)
+
+    def value(self, joint: str, value) -> Value:
+        """The exact :class:`Value` of ``joint`` for ``value`` (an angle in SymPy syntax,
+        a ``(cos, sin)`` pair, a displacement, or a :class:`Value`)."""
+        if isinstance(value, Value):
+            return value
+        if joint not in self.joints:
+            raise SweepError(f"{joint} is not a swept joint (swept: {', '.join(self.joints)})")
+        if self._kind(joint) == "revolute":
+            cfg = Configuration.parse(self.model, {joint: value})
+            return Value.from_cos_sin(*cfg.revolute[joint])
+        given = dict(self.base.parameters)
+        cfg = Configuration.parse(self.model, {joint: value, **given})
+        return self._rational(joint, cfg.prismatic[joint], value)
+
+    def ranks(self, values: Sequence[Value]) -> tuple[int, int, int]:
+        """Exact ranks of ``Q``, ``H G^T`` and ``H D`` at the swept values (in the order
+        of :attr:`joints`)."""
+        return _exact_for(self.plan).ranks([(v.num, v.den) for v in values])
+
+    def numbers_at(self, values: Sequence[Value]) -> Numbers:
+        """The exact numbers at the swept values (in the order of :attr:`joints`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> c = compile_system(load("paper-case1-hard"), ["q1", "q2"])
+        >>> c.numbers_at([Value.from_tangent(-1), Value.from_tangent(-1)]).Nm
+        3
+        """
+        return self._numbers(*self.ranks(values))
+
+    def numbers(self, point: str | Mapping | None = None) -> Numbers:
+        """The exact numbers at one point (``"q1=pi/2,q2=0"`` or a mapping of swept
+        joints; swept joints left out take their default)."""
+        items = dict(_split_point(point))
+        values = []
+        for j, default in zip(self.joints, self.defaults, strict=True):
+            values.append(self.value(j, items.pop(j)) if j in items else default)
+        if items:
+            raise SweepError(f"{', '.join(items)}: not a swept joint "
+                             f"(swept: {', '.join(self.joints)})")
+        return self.numbers_at(values)
+
+
+_COMPILED: OrderedDict[tuple, tuple[Model, Compiled]] = OrderedDict()
+
+
+def compile_system(system: Model | Any, joints: Sequence[str],
+                   at: str | Mapping | None = None,
+                   prime: int = modular.PRIME) -> Compiled:
+    """:class:`Compiled` for ``system``, ``joints`` swept, the rest at ``at`` (cached).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> compile_system(load("paper-case1-hard"), ["q1"]).generic.as_dict()
+    {'Nm': 2, 'Nc': 2, 'Ni': 1, 'Nr': 0, 'Ng': 1, 'Nd': 4, 'Nh': 0}
+    """
+    model = model_of(system)
+    at_key = at if at is None or isinstance(at, str) else tuple(
+        sorted((str(k), str(v)) for k, v in at.items()))
+    key = (id(model), tuple(joints), at_key, prime)
+    hit = _COMPILED.get(key)
+    if hit is not None and hit[0] is model:
+        _COMPILED.move_to_end(key)
+        return hit[1]
+    compiled = Compiled(model, joints, at, prime)
+    _COMPILED[key] = (model, compiled)
+    while len(_COMPILED) > 16:
+        _COMPILED.popitem(last=False)
+    return compiled

@@ -1,0 +1,227 @@
+"""The sweep driver: batches evaluated modulo a prime, non-generic points rechecked
+exactly over Q, on any :class:`concurrent.futures.Executor` (see
+:mod:`coopkin_sym.analysis.sweep`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from concurrent.futures import Executor, as_completed
+from typing import Any
+
+import numpy as np
+
+from coopkin_sym import limits
+from coopkin_sym.analysis.numbers import seven_numbers
+from coopkin_sym.analysis.sweep.compiled import _exact_for, _joint_vector, compile_system
+from coopkin_sym.analysis.sweep.grid import Grid, _split_point
+from coopkin_sym.analysis.sweep.result import SweepResult
+from coopkin_sym.analysis.sweep.values import Value
+from coopkin_sym.errors import SweepError
+from coopkin_sym.exact import modular
+from coopkin_sym.exact.parse import brief
+from coopkin_sym.model.model import Model, model_of
+
+#: Points evaluated together in one numpy block (cache-sized).
+BLOCK = 4096
+
+
+# --- the sweep ------------------------------------------------------------------------
+def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
+               index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Ranks ``(points, 3)`` (Q, first 6 columns, last r columns) of one chunk and which
+    points needed the exact recheck. Plain data in and out (runs in any process)."""
+    p = plan["prime"]
+    m, n = plan["m"], plan["n"]
+    count = index.shape[0]
+    ranks = np.zeros((count, 3), dtype=np.int64)
+    rechecked = np.zeros(count, dtype=bool)
+    if m == 0 or count == 0:
+        return ranks, rechecked
+    columns = []                       # per joint: residues of its variables per value
+    for kind, ps in zip(plan["kinds"], pairs, strict=True):
+        vectors = [_joint_vector([kind], [pair]) for pair in ps]
+        columns.append([modular.residues(col, p) for col in zip(*vectors, strict=True)])
+    cols6, colsr = plan["cols6"], plan["colsr"]
+    generic = np.array(plan["generic"], dtype=np.int64)
+    for start in range(0, count, BLOCK):
+        idx = index[start:start + BLOCK]
+        size = idx.shape[0]
+        rows = []
+        for j, cols in enumerate(columns):
+            rows += [col[idx[:, j]] for col in cols]
+        rows += [np.full(size, v, dtype=np.int64) for v in plan["params"]]
+        values = np.stack(rows) if rows else np.zeros((0, size), dtype=np.int64)
+        flat = modular.evaluate(plan["exps"], plan["coefs"], plan["entries"], m * n,
+                                values, p).reshape(m, n, size)
+        block = ranks[start:start + size]
+        if colsr or cols6:
+            rq, rr = modular.rank_profile(flat[:, colsr + cols6, :], p, prefix=len(colsr))
+            block[:, 0], block[:, 2] = rq, rr
+        if cols6:
+            block[:, 1] = modular.rank_profile(flat[:, cols6, :], p)[0]
+    if (ranks > generic).any():  # pragma: no cover - impossible: rank mod p <= rank
+        raise AssertionError("a rank modulo p exceeds the generic rank")
+    doubt = np.flatnonzero((ranks != generic).any(axis=1))
+    if doubt.size:
+        exact = _exact_for(plan)
+        for i in doubt:
+            ranks[i] = exact.ranks([pairs[j][index[i, j]] for j in range(len(pairs))])
+        rechecked[doubt] = True
+    return ranks, rechecked
+
+
+def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
+          at: str | Mapping | None = None,
+          executor: Executor | None = None, progress: bool = False,
+          chunk: int = 16384, prime: int = modular.PRIME) -> SweepResult:
+    """Exact numbers at many points.
+
+    Parameters
+    ----------
+    system
+        The system (or its model).
+    points
+        A :class:`Grid` (see :func:`grid`), or an iterable of points, each a mapping
+        ``{joint: value}`` or text ``"q1=pi/2,q2=2*atan(1/3)"`` of exact values (the
+        swept joints are those named; one left out of a point takes its value from
+        ``at``, else home).
+    at
+        Values of the other joints and of parameters.
+    executor
+        Any :class:`concurrent.futures.Executor` (a process pool, a cluster's
+        executor): chunks of points are mapped over it as plain data.
+    progress
+        Show a progress bar (on stderr).
+    chunk
+        Points per task.
+    prime
+        The prime of the modular pass (below ``2**31``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> res = sweep(load("paper-case1-hard"), ["q1=pi/2,q2=pi/2", "q1=0,q2=0"])
+    >>> res.numbers[:, 0].tolist(), res.rechecked.tolist()
+    ([3, 2], [True, False])
+    """
+    model = model_of(system)
+    bound = None
+    if isinstance(points, Grid):
+        joints, levels, bound = points.joints, points.levels, points.bound
+        index = points.index()
+        compiled = compile_system(model, joints, at, prime)
+    else:
+        parsed = []
+        for pt in points:
+            parsed.append(_split_point(pt))
+            if len(parsed) > limits.MAX_GRID_POINTS:
+                raise SweepError(f"points: more than {limits.MAX_GRID_POINTS:,} points "
+                                 "(the limit of one sweep)")
+        if not parsed:
+            raise SweepError("no points to sweep")
+        names = {n for items in parsed for n, _ in items}
+        joints = tuple(j for j in model.joint_names if j in names)
+        unknown = sorted(names - set(joints))
+        if unknown:
+            params = {p.name for p in model.parameters}
+            bad = unknown[0]
+            what = (f"{bad} is a parameter: set it with at=" if bad in params
+                    else f"unknown joint {brief(bad)} (joints: {', '.join(model.joint_names)})")
+            raise SweepError(f"points: {what}")
+        compiled = compile_system(model, joints, at, prime)
+        table: list[dict] = [{} for _ in joints]
+        lv: list[list[Value]] = [[] for _ in joints]
+        index = np.zeros((len(parsed), len(joints)), dtype=np.int64)
+        for i, items in enumerate(parsed):
+            given = dict(items)
+            for k, j in enumerate(joints):
+                raw = given.get(j)
+                key = ("default",) if raw is None else _hashable(raw)
+                pos = table[k].get(key)
+                if pos is None:
+                    v = compiled.defaults[k] if raw is None else compiled.value(j, raw)
+                    pos = table[k].get((v.num, v.den))
+                    if pos is None:
+                        pos = table[k][(v.num, v.den)] = len(lv[k])
+                        lv[k].append(v)
+                    table[k][key] = pos
+                index[i, k] = pos
+        levels = tuple(tuple(v) for v in lv)
+    pairs = [[(v.num, v.den) for v in vs] for vs in levels]
+    total = index.shape[0]
+    ranks = np.zeros((total, 3), dtype=np.int64)
+    rechecked = np.zeros(total, dtype=bool)
+    chunk = max(1, int(chunk))
+    starts = list(range(0, total, chunk))
+    with _progress(progress, total, model.name) as advance:
+        if executor is None:
+            for s in starts:
+                r, re = _run_chunk(compiled.plan, pairs, index[s:s + chunk])
+                ranks[s:s + chunk], rechecked[s:s + chunk] = r, re
+                advance(len(r))
+        else:
+            futures = {}
+            for s in starts:
+                sub, local_pairs = _localize(index[s:s + chunk], pairs)
+                futures[executor.submit(_run_chunk, compiled.plan, local_pairs, sub)] = s
+            for fut in as_completed(futures):
+                s = futures[fut]
+                r, re = fut.result()
+                ranks[s:s + chunk], rechecked[s:s + chunk] = r, re
+                advance(len(r))
+    m, r = compiled.m, compiled.r
+    numbers = np.stack(seven_numbers(m, r, ranks[:, 0], ranks[:, 1], ranks[:, 2]), axis=1)
+    return SweepResult(model.name, tuple(joints), compiled.at_text, compiled.generic,
+                       tuple(levels), index, numbers, rechecked, prime, bound)
+
+
+def _hashable(value):
+    try:
+        hash(value)
+    except TypeError:
+        return ("repr", repr(value))
+    return (type(value).__name__, value)
+
+
+def _localize(index: np.ndarray, pairs: list[list[tuple[int, int]]]):
+    """The chunk's own value tables (only the values it uses) and its re-indexed points."""
+    sub = np.empty_like(index)
+    local = []
+    for k, ps in enumerate(pairs):
+        used, inverse = np.unique(index[:, k], return_inverse=True)
+        sub[:, k] = inverse.ravel()
+        local.append([ps[i] for i in used.tolist()])
+    return sub, local
+
+
+class _progress:
+    """A rich progress bar on stderr (or nothing)."""
+
+    def __init__(self, show: bool, total: int, name: str):
+        self.show, self.total, self.name = show, total, name
+        self.bar = None
+
+    def __enter__(self):
+        if not self.show:
+            return lambda k: None
+        from rich.console import Console
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeRemainingColumn,
+        )
+
+        self.bar = Progress(TextColumn("sweep {task.description}"), BarColumn(),
+                            MofNCompleteColumn(), TimeRemainingColumn(),
+                            console=Console(stderr=True), transient=True)
+        self.bar.__enter__()
+        task = self.bar.add_task(self.name, total=self.total)
+        return lambda k: self.bar.advance(task, k)
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.__exit__(*exc)
+        return False

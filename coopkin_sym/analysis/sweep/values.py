@@ -1,0 +1,114 @@
+"""Exact values of swept joints: tangent half-angles and displacements, snapped.
+
+A swept revolute joint takes values whose ``tan(q/2)`` is rational (or ``q = pi``); a
+grid angle that is not is snapped to a nearby one within a stated bound (floats only
+choose the rational). See :mod:`coopkin_sym.analysis.sweep`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+from coopkin_sym.errors import SweepError
+
+#: Largest angle change allowed when a grid angle is snapped to a rational tan(q/2).
+SNAP_BOUND = 1e-9  # float-ok: a tolerance for choosing snapped angles, never for ranks
+
+
+# --- exact values ---------------------------------------------------------------------
+@dataclass(frozen=True)
+class Value:
+    """One exact value of a swept joint, in homogeneous coordinates.
+
+    A revolute angle has ``tan(q/2) = num/den`` (``(1, 0)`` is ``q = pi``); a prismatic
+    displacement is ``num/den``. ``text`` is exact (``"pi/2"``, ``"2*atan(1/3)"``,
+    ``"3/4"``). A snapped grid angle keeps the angle that was asked for
+    (``requested``) and how far the exact one lies from it (``error``, radians).
+
+    Example
+    -------
+    >>> v = Value.from_tangent(Fraction(1, 3))
+    >>> v.text, v.num, v.den
+    ('2*atan(1/3)', 1, 3)
+    >>> Value.from_cos_sin(-1, 0).text
+    'pi'
+    """
+
+    text: str
+    num: int
+    den: int
+    requested: str | None = None
+    error: float | None = None  # float-ok: reported distance of a snapped angle
+
+    @classmethod
+    def from_tangent(cls, t: Fraction | int | None) -> Value:
+        """The angle with ``tan(q/2) = t`` (``None``: ``q = pi``)."""
+        if t is None:
+            return cls("pi", 1, 0)
+        t = Fraction(t)
+        named = {0: "0", 1: "pi/2", -1: "-pi/2"}
+        text = named.get(t, f"2*atan({t})")
+        return cls(text, t.numerator, t.denominator)
+
+    @classmethod
+    def from_cos_sin(cls, cos, sin) -> Value:
+        """The angle with exact rational ``(cos q, sin q)``."""
+        c, s = Fraction(str(cos)), Fraction(str(sin))
+        return cls.from_tangent(None if c == -1 else s / (1 + c))
+
+    @property
+    def snapped(self) -> bool:
+        return self.requested is not None
+
+
+def _tangent_of(ratio: Fraction) -> Fraction | None | bool:
+    """``tan(pi * ratio / 2)`` when rational (``None`` for infinity), else ``False``.
+
+    Niven: for rational ``ratio`` the half-angle tangent is rational only at multiples
+    of ``pi/2``.
+    """
+    r = ratio % 2
+    table = {Fraction(0): Fraction(0), Fraction(1, 2): Fraction(1), Fraction(1): None,
+             Fraction(3, 2): Fraction(-1)}
+    return table.get(r, False)
+
+
+def _snap(q: float, bound: float) -> tuple[int, int, float]:  # float-ok: snapping only
+    """Homogeneous ``(a, b)`` with ``|2 atan2(a, b) - q| <= bound``: the first continued
+    fraction convergent of ``tan(q/2)`` (of ``cot(q/2)`` beyond 1) that meets the bound."""
+    q = math.remainder(q, 2 * math.pi)  # float-ok
+    t = math.tan(q / 2)  # float-ok
+    inverse = abs(t) > 1  # float-ok
+    for f in _convergents(Fraction(1 / t if inverse else t)):  # float-ok
+        if inverse:
+            a, b = (1, 0) if f == 0 else (f.denominator * (1 if f > 0 else -1),
+                                          abs(f.numerator))
+        else:
+            a, b = f.numerator, f.denominator
+        err = abs(math.remainder(2 * math.atan2(a, b) - q, 2 * math.pi))  # float-ok
+        if err <= bound:  # float-ok
+            return a, b, err
+    raise SweepError(f"cannot snap the angle {q!r} within {bound} rad")  # pragma: no cover
+
+
+def _convergents(x: Fraction):
+    """The continued fraction convergents of ``x``, in order (the last is ``x``)."""
+    p, q = x.numerator, x.denominator
+    h0, h1, k0, k1 = 0, 1, 1, 0
+    while q:
+        a, r = divmod(p, q)
+        h0, h1 = h1, a * h1 + h0
+        k0, k1 = k1, a * k1 + k0
+        yield Fraction(h1, k1)
+        p, q = q, r
+
+
+def _pi_text(ratio: Fraction) -> str:
+    """``ratio * pi`` as SymPy prints it (``"-89*pi/90"``, ``"pi/6"``, ``"0"``)."""
+    if ratio == 0:
+        return "0"
+    num, den = abs(ratio.numerator), ratio.denominator
+    text = ("-" if ratio < 0 else "") + ("pi" if num == 1 else f"{num}*pi")
+    return text + (f"/{den}" if den != 1 else "")
