@@ -19,24 +19,40 @@ Example
 from __future__ import annotations
 
 import json
+import multiprocessing
 import os
-import re
 import signal
 import sys
 import threading
+from concurrent.futures import ProcessPoolExecutor
 from contextlib import contextmanager
+from pathlib import Path
 from typing import Annotated
 
-import sympy as sp
 import typer
 
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
-from coopkin_sym.analysis.mobility import Analysis, InfeasibleMotion
+from coopkin_sym.analysis.locus.certify import certify_locus
+from coopkin_sym.analysis.locus.search import LocusError, compute_locus
+from coopkin_sym.analysis.locus.verify import VerifyError, summary_lines, verify_locus
+from coopkin_sym.analysis.mobility import InfeasibleMotion
+from coopkin_sym.analysis.sweep import SweepError, grid
 from coopkin_sym.errors import CoopkinError, TimeLimitReached
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.model.configuration import ConfigurationError
+from coopkin_sym.model.examples import describe_example, list_examples
 from coopkin_sym.model.model import ModelError
+from coopkin_sym.present.draw import DrawError, save_picture
+from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.report import (
+    ReportError,
+    check_target,
+    locus_from_json,
+    parse_pairs,
+    write_report,
+)
 from coopkin_sym.present.sentences import irrational_sentences
+from coopkin_sym.present.text import analysis_latex, analysis_text, irrational_text
 from coopkin_sym.system import load
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
@@ -75,37 +91,20 @@ def analyze(
         result = system.analyze(at, generic=generic, free=free_joints)
         if not isinstance(result, IrrationalAnalysis):
             text = (json.dumps(result.as_json(), indent=2) if as_json else
-                    render_latex(result) if latex else render_text(result))
+                    analysis_latex(result) if latex else analysis_text(result))
         elif as_json:
             text = json.dumps({**result.as_json(), "meaning": irrational_sentences(result)},
                               indent=2)
         else:
-            text = _irrational_text(result)
+            text = irrational_text(result)
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
 
 
-def _irrational_text(result: IrrationalAnalysis) -> str:
-    """The human report of ``coopkin analyze`` at a configuration with irrational
-    coordinates."""
-    at = ",".join(f"{k}={v}" for k, v in result.at.items())
-    tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
-    lines = [f"Configuration: {at}",
-             f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
-             f"of {result.minimal_polynomial} (every conjugate point at once)", "",
-             "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()), ""]
-    lines += [f"- {s}" for s in irrational_sentences(result)]
-    lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
-                  "(the numbers are exact; use a rational configuration for C11..C23)."]
-    return "\n".join(lines)
-
-
 @app.command()
 def examples() -> None:
     """List the shipped example systems."""
-    from coopkin_sym.model.examples import describe_example, list_examples
-
     for name in list_examples():
         typer.echo(f"{name:28s} {describe_example(name)}")
 
@@ -123,8 +122,6 @@ def draw(
                          "(C11) or redundant:K (C23), K from 1.")] = None,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym.present.draw import DrawError, save_picture
-
     try:
         path = save_picture(model, output, at=at, motion=motion)
     except (*USER_ERRORS, DrawError) as exc:
@@ -155,9 +152,6 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from coopkin_sym.analysis.sweep import SweepError, grid
-    from coopkin_sym.present.files import check_output_path, write_files
-
     fmt = "json" if as_json else "csv"
     try:
         target = None
@@ -225,18 +219,12 @@ def locus(
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from coopkin_sym.present.report import ReportError, check_target, parse_pairs, write_report
-
     try:
         check_target(output)
         system = load(model)
         pairs = parse_pairs(pair, system) if pair else None
     except (*USER_ERRORS, ReportError) as exc:
         _fail(str(exc))
-    try:
-        from coopkin_sym.analysis.locus.search import LocusError, compute_locus
-    except ImportError as exc:  # pragma: no cover - depends on the installation
-        _fail(f"the locus engine is not available: {exc}")
     show = not no_progress and sys.stderr.isatty()
     try:
         with _alarm(timeout):
@@ -245,8 +233,6 @@ def locus(
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
         if certify:
-            from coopkin_sym.analysis.locus.certify import certify_locus
-
             result.certificate = certify_locus(system, result,
                                                budget=certify_timeout).to_json()
         checked = _verification(system, result) if verify else None
@@ -264,8 +250,6 @@ def locus(
 
 
 def _verification(system, locus, **options):
-    from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
-
     try:
         return verify_locus(system, locus, **options)
     except VerifyError as exc:
@@ -273,8 +257,6 @@ def _verification(system, locus, **options):
 
 
 def _echo_verification(checked) -> None:
-    from coopkin_sym.analysis.locus.verify import summary_lines
-
     typer.echo("\n".join(summary_lines(checked)))
     if not checked.ok:
         raise typer.Exit(1)
@@ -296,9 +278,6 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
-    from pathlib import Path
-
-    from coopkin_sym.present.report import ReportError, locus_from_json
 
     try:
         system = load(model)
@@ -343,8 +322,6 @@ def _sweep(system, points, at, workers: int, show: bool):
     count = worker_count(workers, n)
     if count == 1:
         return system.sweep(points, at=at, progress=show)
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
 
     chunk = max(1, min(16384, -(-n // (4 * count))))
     pool = ProcessPoolExecutor(count)
@@ -357,76 +334,6 @@ def _sweep(system, points, at, workers: int, show: bool):
         raise
     pool.shutdown()
     return result
-
-
-def render_text(a: Analysis) -> str:
-    """The human report of ``coopkin analyze``."""
-    from coopkin_sym.present.sentences import sentences
-
-    lines = [f"System: {a.model.name}"]
-    where = a.configuration.at_text() or "home (all joints at 0)"
-    if a.configuration.free:
-        where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
-    lines.append(f"Configuration: {where}")
-    if a.variables:
-        lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
-                     + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
-                                                  for v in a.variables) else ""))
-    n = a.numbers
-    lines.append("")
-    lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
-    lines.append("")
-    for s in sentences(a):
-        lines.append(f"- {s}")
-    object_rows = ["v_x", "v_y", "v_z", "w_x", "w_y", "w_z"]
-    joint_rows = list(a.model.joint_names)
-    blocks, omitted = a.available_blocks()
-    for name, mat in blocks.items():
-        lines.append("")
-        if mat is None:
-            lines.append(f"{name}: not shown: {omitted[name]}")
-            continue
-        labels = object_rows if name in ("C11", "C12") else joint_rows
-        lines.append(f"{name} ({mat.rows} x {mat.cols})" + (": empty" if mat.cols == 0 else ""))
-        if mat.cols:
-            lines.extend(block_table(mat, labels))
-    return "\n".join(lines)
-
-
-def _cell(e: sp.Expr, width: int = 48) -> str:
-    """An entry as text, or its size when it is too long to read in a table."""
-    text = sp.sstr(e)
-    if len(text) <= width:
-        return text
-    num, den = sp.fraction(e)
-    terms = len(sp.Add.make_args(sp.expand(num)))
-    extra = "" if den == 1 else f"/{len(sp.Add.make_args(sp.expand(den)))}"
-    return f"<{terms}{extra} terms>"
-
-
-def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
-    """A matrix as aligned text rows, each led by its label."""
-    cells = [[_cell(mat[i, j]) for j in range(mat.cols)] for i in range(mat.rows)]
-    widths = [max(len(cells[i][j]) for i in range(mat.rows)) for j in range(mat.cols)]
-    lw = max(len(x) for x in labels)
-    return [f"  {labels[i]:>{lw}} | " + "  ".join(c.rjust(w) for c, w in zip(row, widths,
-                                                                          strict=True))
-            for i, row in enumerate(cells)]
-
-
-def render_latex(a: Analysis) -> str:
-    """The blocks and numbers as LaTeX."""
-    head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
-    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
-    out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
-    blocks, omitted = a.available_blocks()
-    for name, mat in blocks.items():
-        if mat is None:
-            out.append(f"% {name} not shown: {omitted[name]}")
-            continue
-        body = sp.latex(mat) if mat.cols else r"\emptyset"
-        out.append(rf"\[ C_{{{name[1:]}}} = {body} \]")
-    return "\n".join(out)
 
 
 @contextmanager

@@ -31,7 +31,14 @@ from __future__ import annotations
 
 class CoopkinError(Exception):
     """Base class of the package's own errors (each also keeps its historical base,
-    such as ``ValueError``)."""
+    such as ``ValueError``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> issubclass(ModelError, CoopkinError)
+    True
+    """
 
 
 class TimeLimitReached(CoopkinError):
@@ -73,11 +80,29 @@ class NumberError(ValueError, CoopkinError):
 
 
 class GroebnerError(ValueError, CoopkinError):
-    """A malformed ideal or an unknown backend."""
+    """A malformed ideal or an unknown backend.
+
+    Example
+    -------
+    >>> from coopkin_sym.exact.groebner import covers
+    >>> covers([], [], backend="magic")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.GroebnerError: unknown backend 'magic' (known: ...)
+    """
 
 
 class TreeError(ValueError, CoopkinError):
-    """A file or tree that cannot be read: one line saying where and why."""
+    """A file or tree that cannot be read: one line saying where and why.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.trees import read_text
+    >>> read_text("a: [1, 2", "m.yaml")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.TreeError: line 2, column 1: not valid YAML: did not find expected ',' or ']'
+    """
 
 
 class ModelError(ValueError, CoopkinError):
@@ -86,6 +111,15 @@ class ModelError(ValueError, CoopkinError):
     ``problems`` lists one line per problem, each naming the entry
     (``contacts[1].normal: not a unit vector``); ``str(error)`` is the whole message,
     prefixed by the file name when the model came from a file.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> try:
+    ...     load({"name": "x"})
+    ... except ModelError as error:
+    ...     print(error.problems[0])
+    arms: at least one arm with one joint is needed
     """
 
     def __init__(self, problems: list[str], source: str | None = None):
@@ -96,45 +130,145 @@ class ModelError(ValueError, CoopkinError):
 
 
 class ConfigurationError(ValueError, CoopkinError):
-    """A configuration that names an unknown variable or has an inexact value."""
+    """A configuration that names an unknown variable or has an inexact value.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> load("paper-case1-hard").analyze("q7=0")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ConfigurationError: --at q7: unknown name 'q7' (known: q1, q2, L)
+    """
 
 
 class BlockTooLarge(ValueError, CoopkinError):
-    """A symbolic block whose entries would exceed the analysis's term budget."""
+    """A symbolic block whose entries would exceed the analysis's term budget.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze(generic=True)
+    >>> a.term_budget = 1
+    >>> a.C22  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.BlockTooLarge: C22: the coordinated joint motions would have ...
+    """
 
 
 class InfeasibleMotion(ValueError, CoopkinError):
-    """A requested velocity that the system cannot realize without breaking a contact."""
+    """A requested velocity that the system cannot realize without breaking a contact.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
+    >>> a.joint_velocities([1, 0, 0, 0, 0, 0])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.InfeasibleMotion: object twist u is not feasible: ...
+    """
 
 
 class SweepError(ConfigurationError):
-    """A grid or a list of points that cannot be swept (unknown joint, bad range...)."""
+    """A grid or a list of points that cannot be swept (unknown joint, bad range...).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.sweep import grid
+    >>> grid(load("paper-case1-hard"), "q9=0..1:3")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.SweepError: --grid q9: unknown joint 'q9' (joints: q1, q2)
+    """
 
 
 class NotIrrational(ValueError, CoopkinError):
-    """Every value of the configuration is rational: use the rational analysis."""
+    """Every value of the configuration is rational: use the rational analysis.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.irrational import analyze_irrational
+    >>> from coopkin_sym.model import load_model
+    >>> analyze_irrational(load_model("paper-case1-hard"), "q1=pi/2")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.NotIrrational: every value is rational
+    """
 
 
 class LocusError(ValueError, CoopkinError):
-    """A locus that cannot be computed for this input."""
+    """A locus that cannot be computed for this input.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> load("paper-case1-hard").locus("q1=0,q2=0")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.LocusError: every joint has a value: a locus needs at least one free joint
+    """
 
 
 class CertifyError(ValueError, CoopkinError):
-    """A locus that does not belong to the system (other variables or values)."""
+    """A locus that does not belong to the system (other variables or values).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.certify import certify_locus
+    >>> locus = load("paper-case1-hard").locus()
+    >>> certify_locus(load("paper-case2-hard"), locus)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.CertifyError: the locus has variables t_q1, t_q2 but the system ...
+    """
 
 
 class VerifyError(ValueError, CoopkinError):
     """A locus that cannot be checked against this model (names or texts that do not
-    fit), with the entry and the problem."""
+    fit), with the entry and the problem.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.verify import verify_locus
+    >>> locus = load("paper-case1-hard").locus()
+    >>> verify_locus(load("paper-case2-hard"), locus)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.VerifyError: the locus's variables ['t_q1', 't_q2'] do not match ...
+    """
 
 
 class ReportError(ValueError, CoopkinError):
     """A report that cannot be written: unknown format, missing directory, a bad plot
-    request, or an I/O error."""
+    request, or an I/O error.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.present.report import write_report
+    >>> write_report(load("paper-case1-hard").locus(), "r.txt")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ReportError: r.txt: unknown report format '.txt' (expected ...)
+    """
 
 
 class ReportInputError(ValueError, CoopkinError):
-    """A report that cannot be read back: one line per problem."""
+    """A report that cannot be read back: one line per problem.
+
+    Example
+    -------
+    >>> from coopkin_sym.present.report_input import validate_report
+    >>> validate_report("[1]")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ReportInputError: not a locus report: (top level): expected a mapping, ...
+    """
 
     def __init__(self, problems: list[str]):
         self.problems = list(problems)
@@ -143,9 +277,29 @@ class ReportInputError(ValueError, CoopkinError):
 
 class DrawError(ValueError, CoopkinError):
     """A picture that cannot be drawn: a bad motion request, an unknown file format,
-    matplotlib missing, or an output file that cannot be written."""
+    matplotlib missing, or an output file that cannot be written.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> load("paper-case1-hard").draw(motion="twisting:1")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.DrawError: motion: unknown kind 'twisting' (expected ...)
+    """
 
 
 class PlotError(ValueError, CoopkinError):
     """A pair of joints that cannot be plotted (unknown, the same twice, or not
-    among the locus's variables), or matplotlib missing."""
+    among the locus's variables), or matplotlib missing.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.present.locus_plot import plot_png
+    >>> system = load("paper-case1-hard")
+    >>> plot_png(system.locus(), system, ("q1", "q1"))
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.PlotError: pair: the two joints must differ, got 'q1' twice
+    """

@@ -43,6 +43,14 @@ class System:
     ----------
     model
         The validated model (see :func:`coopkin_sym.model.model.load_model`).
+
+    Example
+    -------
+    >>> system = load("paper-case1-hard")
+    >>> system
+    System('paper case 1, hard/hard': 2 arms, 2 joints, 2 contacts)
+    >>> system.analyze().numbers.Nm, system.locus().generic["Ni"]
+    (2, 1)
     """
 
     def __init__(self, model: Model):

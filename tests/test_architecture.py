@@ -115,3 +115,14 @@ def test_the_checker_sees_an_upward_import(tmp_path):
     assert isinstance(node, ast.ImportFrom)
     assert layer(node.module) == "present"
     assert LAYERS.index(layer(node.module)) > LAYERS.index(layer("coopkin_sym.exact.ring"))
+
+
+def test_every_public_class_has_an_example():
+    """Every public class's docstring carries an example (run by the doctests)."""
+    missing = []
+    for module, path in MODULES.items():
+        for node in ast.parse(path.read_text(), str(path)).body:
+            if isinstance(node, ast.ClassDef) and not node.name.startswith("_"):
+                if ">>>" not in (ast.get_docstring(node) or ""):
+                    missing.append(f"{module}.{node.name}")
+    assert missing == []

@@ -65,6 +65,15 @@ class Kinematics:
     axes, origins
         Current joint axes and points on them (``None`` for a prismatic joint
         without a point).
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> from coopkin_sym.model.configuration import Configuration
+    >>> model = load_model("paper-case1-hard")
+    >>> kin = build(model, Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1"))
+    >>> len(kin.Q), len(kin.Q[0]), kin.row_labels[0]
+    (6, 8, 'c1: v_x')
     """
 
     ring: Ring

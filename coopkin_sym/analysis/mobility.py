@@ -70,6 +70,14 @@ class Motion:
     columns span the homogeneous part (redundant joint motions for
     :meth:`Analysis.joint_velocities`, indeterminate object motions for
     :meth:`Analysis.object_velocities`).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2,L=1")
+    >>> m = a.object_velocities([1, 0])
+    >>> m.particular.T, m.free.shape
+    (Matrix([[0, 0, 0, 0, 0, 1]]), (6, 1))
     """
 
     particular: sp.Matrix
@@ -81,6 +89,13 @@ class Analysis:
 
     Built by :func:`analyze`; matrices are exposed as SymPy matrices for display
     (entries are polynomials or rational functions of :attr:`variables`).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
+    >>> a.numbers.Nm, a.Q.shape, a.C23.shape
+    (3, (6, 8), (2, 0))
     """
 
     def __init__(self, model: Model, config: Configuration, kin: kinematics.Kinematics,
@@ -138,7 +153,16 @@ class Analysis:
         ``None`` when clearing the joint part's denominators would exceed the term
         budget (the blocks then show the joint part as rational functions)."""
         self._within_budget("C22")
-        budget = self.term_budget if self.term_budget is not None else 10**18
+        return self._coordinated_columns(self.term_budget)
+
+    @cached_property
+    def _unbounded_coordinated(self) -> list[list]:
+        """The coordinated columns as polynomial vectors, whatever their size."""
+        return self._coordinated_columns(None)
+
+    def _coordinated_columns(self, budget: int | None) -> list[list] | None:
+        """The coordinated columns, primitive, or None over ``budget`` terms."""
+        budget = budget if budget is not None else 10**18
         zctx = self.ring.zctx
         out = []
         for u, q in zip(self._coord_u, self._coord_q, strict=True):
@@ -323,13 +347,7 @@ class Analysis:
         if self._coordinated is not None:
             return self._coordinated
         self._within_budget("kinematic maps")
-        saved, self.term_budget = self.term_budget, None
-        try:
-            del self.__dict__["_coordinated"]
-            return self._coordinated
-        finally:
-            self.term_budget = saved
-            self.__dict__["_coordinated"] = None
+        return self._unbounded_coordinated
 
     def _solve(self, columns, rhs, what: str):
         """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent), as
@@ -445,7 +463,20 @@ def _to_angles(expr: sp.Expr, tsyms: dict, column: list[sp.Expr]) -> sp.Expr:
 
 @dataclass
 class Decomposition:
-    """The arm-by-arm decomposition of ``N(Q)`` (see :func:`decompose`)."""
+    """The arm-by-arm decomposition of ``N(Q)`` (see :func:`decompose`).
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis import kinematics
+    >>> from coopkin_sym.model import load_model
+    >>> from coopkin_sym.model.configuration import Configuration
+    >>> model = load_model("paper-case1-hard")
+    >>> kin = kinematics.build(model, Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1"))
+    >>> rows = [kin.ring.clear_row(r) for r in kin.Q]
+    >>> d = decompose(rows, model, kin.row_contacts, kin.ring.zctx)
+    >>> d.numbers.Nm, len(d.c11), len(d.c23)
+    (3, 1, 0)
+    """
 
     numbers: Numbers
     c11: list

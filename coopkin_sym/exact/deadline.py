@@ -40,7 +40,14 @@ __all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "remaining",
 @dataclass
 class Bound:
     """One wall-clock bound: it ends at ``end`` (``time.monotonic()``), ``seconds``
-    after ``started``; ``kept`` is what the computation registered with :func:`keep`."""
+    after ``started``; ``kept`` is what the computation registered with :func:`keep`.
+
+    Example
+    -------
+    >>> with time_limit(60, "an example") as bound:
+    ...     bound.seconds
+    60.0
+    """
 
     end: float
     seconds: float

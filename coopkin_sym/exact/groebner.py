@@ -74,6 +74,7 @@ from importlib import metadata
 from math import comb
 
 import flint
+import sympy as sp
 
 from coopkin_sym.errors import GroebnerError
 
@@ -110,6 +111,15 @@ class Verdict:
         Wall time spent.
     detail
         Why the answer is undecided, or how it was reached.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> v = covers([x * y], [[x], [y]], timeout=30)
+    >>> v.holds, v.exact
+    (True, True)
     """
 
     holds: bool | None
@@ -640,8 +650,6 @@ def _flint_unit_child(polys: list[PolyDict], n: int) -> bool:
 
 
 def _sympy_unit_child(polys: list[PolyDict], n: int) -> bool:
-    import sympy as sp
-
     gens = sp.symbols(f"x0:{max(n, 1)}")
     exprs = [sp.Poly.from_dict(p, *gens, domain=sp.QQ).as_expr() for p in polys]
     basis = sp.groebner(exprs, *gens, order="grevlex", domain=sp.QQ, method="f5b")

@@ -28,7 +28,15 @@ KPoly = list[Element]
 
 
 class NumberField:
-    """``Q[x]/(g)`` for an irreducible ``g`` (``fmpq_poly``)."""
+    """``Q[x]/(g)`` for an irreducible ``g`` (``fmpq_poly``).
+
+    Example
+    -------
+    >>> import flint
+    >>> k = NumberField(flint.fmpq_poly([-2, 0, 1]))      # Q(sqrt(2))
+    >>> k.inverse(k.element([0, 1]))                    # 1/sqrt(2) = sqrt(2)/2
+    1/2*x
+    """
 
     def __init__(self, g: flint.fmpq_poly):
         if g.degree() < 1:

@@ -41,6 +41,7 @@ from decimal import Decimal
 from fractions import Fraction
 
 import flint
+import mpmath
 import sympy as sp
 
 from coopkin_sym import limits
@@ -1049,8 +1050,6 @@ def _nearest_point(parts: _AngleParts, d: int, n: int) -> tuple[int | None, int 
     """Integers ``x, y`` inside certified enclosures of ``d cos q`` and ``d sin q``
     (mpmath interval arithmetic), when the enclosures are narrow enough to tell the
     ``n`` roots apart; otherwise ``(None, None)``."""
-    import mpmath
-
     iv = mpmath.iv
     saved = iv.prec
     try:

@@ -45,6 +45,15 @@ class Quotient:
     ``x_k``, which is not divisible by ``f``; a row is reduced with one power for all
     its entries, so it is the same row times a nonzero factor, which a rank never
     notices.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+    >>> x, y = ctx.gens()
+    >>> qr = Quotient(x**2 - 2, 0)                        # Z[x, y]/(x^2 - 2)
+    >>> qr.reduce(x**3 + y)
+    2*x + y
     """
 
     def __init__(self, f: Poly, k: int):

@@ -27,7 +27,17 @@ Poly = flint.fmpz_mpoly
 
 @dataclass(frozen=True, slots=True)
 class RatFunc:
-    """``num / den`` in lowest terms, ``den`` with a positive leading coefficient."""
+    """``num / den`` in lowest terms, ``den`` with a positive leading coefficient.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "lex")
+    >>> (t,) = ctx.gens()
+    >>> f = RatFunc(t**2 - 1, t + 1)
+    >>> f.num, f.den
+    (t^2 - 1, t + 1)
+    """
 
     num: Poly
     den: Poly

@@ -29,7 +29,14 @@ _T = sp.Symbol("t")
 class RealRoot:
     """The root in ``(lo, hi]`` of the irreducible polynomial with integer
     coefficients ``coeffs`` (lowest degree first); ``index`` is its rank among the real
-    roots, smallest first."""
+    roots, smallest first.
+
+    Example
+    -------
+    >>> r = RealRoot.all_of([-2, 0, 1])[1]                # the positive root of x^2 - 2
+    >>> r.expression(), r.lo < r.hi
+    (sqrt(2), True)
+    """
 
     coeffs: tuple[int, ...]
     lo: Fraction

@@ -40,6 +40,12 @@ class Ring:
         Variable names, in order.
     denominator_variables
         Names ``t`` whose factor ``1 + t**2`` may appear in denominators.
+
+    Example
+    -------
+    >>> ring = Ring(["t_q1", "L"], ["t_q1"])
+    >>> ring.names, ring.zctx.nvars()
+    (('t_q1', 'L'), 2)
     """
 
     def __init__(self, names: Sequence[str], denominator_variables: Sequence[str] = ()):
@@ -136,7 +142,15 @@ def _to_fmpq(x) -> flint.fmpq:
 
 @dataclass(frozen=True, slots=True)
 class Frac:
-    """``num / prod(ring.den_factors[j] ** den[j])`` with ``num`` an ``fmpq_mpoly``."""
+    """``num / prod(ring.den_factors[j] ** den[j])`` with ``num`` an ``fmpq_mpoly``.
+
+    Example
+    -------
+    >>> ring = Ring(["t_q1"], ["t_q1"])
+    >>> c = ring.cos_of(0)                                # cos q1 = (1 - t^2)/(1 + t^2)
+    >>> c.num, c.den
+    (-t_q1^2 + 1, (1,))
+    """
 
     ring: Ring
     num: flint.fmpq_mpoly

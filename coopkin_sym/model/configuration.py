@@ -29,7 +29,15 @@ from coopkin_sym.model.model import Model
 
 @dataclass(frozen=True)
 class Configuration:
-    """Exact values of joint variables and parameters, and the free joints."""
+    """Exact values of joint variables and parameters, and the free joints.
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> c = Configuration.parse(load_model("paper-case1-hard"), "q1=pi/2,L=2", free=["q2"])
+    >>> c.at_text(), sorted(c.free)
+    ('q1=pi/2,L=2', ['q2'])
+    """
 
     revolute: Mapping[str, tuple[sp.Rational, sp.Rational]] = field(default_factory=dict)
     prismatic: Mapping[str, sp.Expr] = field(default_factory=dict)

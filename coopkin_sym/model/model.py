@@ -54,6 +54,12 @@ class Joint:
     ``axis`` is an exact unit vector for a revolute joint and a nonzero direction for
     a prismatic one; ``point`` is a point on a revolute joint's axis (``None`` for a
     prismatic joint without one).
+
+    Example
+    -------
+    >>> j = load_model("paper-case1-hard").arms[0].joints[0]
+    >>> j.name, j.type, j.axis
+    ('q1', 'revolute', (0, 0, 1))
     """
 
     name: str
@@ -64,7 +70,14 @@ class Joint:
 
 @dataclass(frozen=True)
 class Arm:
-    """A serial chain; ``joints`` run from the base outwards."""
+    """A serial chain; ``joints`` run from the base outwards.
+
+    Example
+    -------
+    >>> arm = load_model("paper-case2-hard").arms[0]
+    >>> arm.name, [j.name for j in arm.joints]
+    ('s1', ['q1', 'q2', 'q3', 'q4'])
+    """
 
     name: str
     joints: tuple[Joint, ...]
@@ -79,6 +92,12 @@ class Contact:
     (1-based), 0 for the arm's fixed base (always 0 for the ground).
     ``normal`` is an exact unit vector, or ``None`` when the file gives none (allowed
     only for ``hard`` and ``complete`` contacts).
+
+    Example
+    -------
+    >>> c = load_model("paper-case1-hard").contacts[0]
+    >>> c.name, c.arm, c.link, c.model
+    ('c1', 0, 1, 'hard')
     """
 
     name: str
@@ -91,7 +110,14 @@ class Contact:
 
 @dataclass(frozen=True)
 class Model:
-    """A whole system: parameters, arms, contacts."""
+    """A whole system: parameters, arms, contacts.
+
+    Example
+    -------
+    >>> m = load_model("paper-case1-hard")
+    >>> m.joint_names, [p.name for p in m.parameters], len(m.contacts)
+    (('q1', 'q2'), ['L'], 2)
+    """
 
     name: str
     parameters: tuple[sp.Symbol, ...]

@@ -55,6 +55,7 @@ from coopkin_sym.exact.sympy_bridge import rational_to_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model, model_of
 from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.sentences import describe_joint_motion, describe_twist
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -602,7 +603,6 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
     """Arrows for one motion; returns the title line describing it."""
     from matplotlib.lines import Line2D
 
-    from coopkin_sym.present.sentences import describe_joint_motion, describe_twist
 
     kind, k = request
     j = k - 1

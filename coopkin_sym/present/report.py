@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import base64
 import html
+import io
 import json
 import os
 import re
@@ -41,7 +42,10 @@ from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.present.draw import draw_system
 from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
+from coopkin_sym.present.report_input import ReportInputError, validate_report
 from coopkin_sym.present.sentences import component_sentences
 
 __all__ = ["FORMATS", "ReportError", "check_target", "locus_from_json", "parse_pairs",
@@ -959,8 +963,6 @@ def locus_from_json(data: Mapping | str) -> Locus:
     >>> locus_from_json(render_json(locus)) == locus
     True
     """
-    from coopkin_sym.present.report_input import ReportInputError, validate_report
-
     try:
         return validate_report(data)
     except ReportInputError as exc:
@@ -1036,9 +1038,6 @@ def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str]
     for k, comp in enumerate(locus.components):
         if comp.real and comp.witness:
             try:
-                import io
-
-                from coopkin_sym.present.draw import draw_system
                 fig = draw_system(system, at=",".join(f"{n}={v}" for n, v in
                                                      comp.witness.items()),
                                   title=f"{locus.system}: component {k + 1}, "
@@ -1058,10 +1057,6 @@ def _png_name(stem: str, pair: tuple[str, str]) -> str:
 
 def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
            dpi: int) -> tuple[dict[tuple[str, str], bytes], str | None]:
-    try:
-        from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
-    except ImportError:  # pragma: no cover
-        return {}, "plots need matplotlib"
     try:
         chosen = pairs if pairs is not None else default_pairs(locus, system)
         pngs = {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}

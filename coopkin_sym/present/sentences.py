@@ -211,50 +211,83 @@ def _connectivity_words(n) -> str:
     return f"the object can move in {_count(n.Nc, 'independent direction')} only"
 
 
+def _number_word(k: int) -> str:
+    return _WORDS[k] if k < len(_WORDS) else str(k)
+
+
+def _connectivity_sentence(n, coordinated: Sequence[str] = ()) -> str:
+    """``Nc``: how many object motions the joints drive (each told when given) and how
+    many they leave free."""
+    parts = []
+    driven = n.Nc - n.Ni
+    if driven and n.Nc:
+        parts.append(f"{_number_word(driven)} driven by the joints"
+                     + (f" ({'; '.join(coordinated)})" if coordinated else ""))
+    if n.Ni and n.Nc:
+        parts.append(f"{_number_word(n.Ni)} left free (Ni)")
+    return (f"Nc = {n.Nc}: {_connectivity_words(n)}"
+            + (": " + " and ".join(parts) if parts else "") + ".")
+
+
+def _indeterminacy_sentence(n, free: str | None = None) -> str:
+    """``Ni``: the object motions with every joint locked (``free`` in words, or their
+    count)."""
+    if n.Ni == 0:
+        return ("Ni = 0: with every joint locked, the object cannot move (no "
+                "indeterminate motion).")
+    free = free or f"make {_count(n.Ni, 'independent motion')}"
+    return f"Ni = {n.Ni}: with every joint locked, the object can still {free}."
+
+
+def _redundancy_sentence(n, motions: str | None = None) -> str:
+    """``Nr``: the joint motions with the object fixed (in words, or their count)."""
+    if n.Nr == 0:
+        return "Nr = 0: no joint can move while the object stays fixed (no redundancy)."
+    if motions:
+        return f"Nr = {n.Nr}: with the object fixed, the arms can still move: {motions}."
+    return (f"Nr = {n.Nr}: with the object fixed, the arms can still make "
+            f"{_count(n.Nr, 'independent motion')}.")
+
+
+def _force_sentences(n, r: int) -> list[str]:
+    """``Ng``, ``Nd`` and ``Nh``: the force domain, from the numbers alone."""
+    return [
+        f"Ng = {n.Ng}: the contacts can exert {_count(n.Ng, 'independent internal force')}"
+        " (squeezing the object without moving it).",
+        f"Nd = {n.Nd}: {_count(n.Nd, 'contact force combination')} "
+        f"{'produces' if n.Nd == 1 else 'produce'} no torque at the {r} joints: "
+        "the joints can neither exert nor feel them (defective grasp)." if n.Nd else
+        "Nd = 0: every contact force loads some joint (not defective).",
+        f"Nh = {n.Nh}: {_count(n.Nh, 'internal force')} the joints cannot control "
+        "(hyperstatic: internal forces that load no joint)." if n.Nh else
+        "Nh = 0: every internal force can be controlled by the joints (not "
+        "hyperstatic).",
+    ]
+
+
 def sentences(analysis: Analysis) -> list[str]:
-    """One plain sentence per number of ``analysis``."""
+    """One plain sentence per number of ``analysis``, its motions told in words.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> print(sentences(load("paper-case1-hard").analyze())[3])
+    Nr = 0: no joint can move while the object stays fixed (no redundancy).
+    """
     n = analysis.numbers
-    r = analysis.r
-    out = [_mobility_sentence(n)]
-    conn = _connectivity_words(n)
     driven = n.Nc - n.Ni
     blocks, _ = analysis.available_blocks()
     c12, c22 = blocks["C12"], blocks["C22"]
-    coords = [f"{describe_twist(c12.col(k), analysis)} by moving "
-              f"{describe_joint_motion(c22.col(k), analysis)}"
-              for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
-    parts = []
-    if driven and n.Nc:
-        parts.append(f"{_WORDS[driven] if driven < len(_WORDS) else driven} driven by the "
-                     "joints" + (f" ({'; '.join(coords)})" if coords else ""))
-    if n.Ni and n.Nc:
-        parts.append(f"{_WORDS[n.Ni] if n.Ni < len(_WORDS) else n.Ni} left free (Ni)")
-    out.append(f"Nc = {n.Nc}: {conn}" + (": " + " and ".join(parts) if parts else "") + ".")
-    if n.Ni == 0:
-        out.append("Ni = 0: with every joint locked, the object cannot move (no "
-                   "indeterminate motion).")
-    else:
-        free = object_motions_words([list(analysis.C11.col(k)) for k in range(n.Ni)],
-                                    _contact_points(analysis))
-        out.append(f"Ni = {n.Ni}: with every joint locked, the object can still {free}.")
-    if n.Nr == 0:
-        out.append("Nr = 0: no joint can move while the object stays fixed (no "
-                   "redundancy).")
-    else:
-        red = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
-                        for k in range(n.Nr))
-        out.append(f"Nr = {n.Nr}: with the object fixed, the arms can still move: {red}.")
-    out.append(f"Ng = {n.Ng}: the contacts can exert {_count(n.Ng, 'independent internal force')}"
-               " (squeezing the object without moving it).")
-    out.append(f"Nd = {n.Nd}: {_count(n.Nd, 'contact force combination')} "
-               f"{'produces' if n.Nd == 1 else 'produce'} no torque at the {r} joints: "
-               "the joints can neither exert nor feel them (defective grasp)." if n.Nd else
-               "Nd = 0: every contact force loads some joint (not defective).")
-    out.append(f"Nh = {n.Nh}: {_count(n.Nh, 'internal force')} the joints cannot control "
-               "(hyperstatic: internal forces that load no joint)." if n.Nh else
-               "Nh = 0: every internal force can be controlled by the joints (not "
-               "hyperstatic).")
-    return out
+    coordinated = [f"{describe_twist(c12.col(k), analysis)} by moving "
+                   f"{describe_joint_motion(c22.col(k), analysis)}"
+                   for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
+    free = object_motions_words([list(analysis.C11.col(k)) for k in range(n.Ni)],
+                                _contact_points(analysis)) if n.Ni else None
+    redundant = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
+                          for k in range(n.Nr)) if n.Nr else None
+    return [_mobility_sentence(n), _connectivity_sentence(n, coordinated),
+            _indeterminacy_sentence(n, free), _redundancy_sentence(n, redundant),
+            *_force_sentences(n, analysis.r)]
 
 
 def count_sentences(numbers, r: int) -> list[str]:
@@ -267,36 +300,9 @@ def count_sentences(numbers, r: int) -> list[str]:
     >>> print(count_sentences(Numbers(3, 3, 1, 0, 1, 4, 1), 2)[2])
     Ni = 1: with every joint locked, the object can still make one independent motion.
     """
-    n = numbers
-    out = [_mobility_sentence(n)]
-    conn = _connectivity_words(n)
-    parts = []
-    driven = n.Nc - n.Ni
-    if driven and n.Nc:
-        parts.append(f"{_WORDS[driven] if driven < len(_WORDS) else driven} driven by the "
-                     "joints")
-    if n.Ni and n.Nc:
-        parts.append(f"{_WORDS[n.Ni] if n.Ni < len(_WORDS) else n.Ni} left free (Ni)")
-    out.append(f"Nc = {n.Nc}: {conn}" + (": " + " and ".join(parts) if parts else "") + ".")
-    out.append(f"Ni = {n.Ni}: with every joint locked, the object "
-               + (f"can still make {_count(n.Ni, 'independent motion')}." if n.Ni else
-                  "cannot move (no indeterminate motion)."))
-    out.append(f"Nr = {n.Nr}: " + (f"with the object fixed, the arms can still make "
-                                   f"{_count(n.Nr, 'independent motion')}." if n.Nr else
-                                   "no joint can move while the object stays fixed (no "
-                                   "redundancy)."))
-    out.append(f"Ng = {n.Ng}: the contacts can exert "
-               f"{_count(n.Ng, 'independent internal force')} (squeezing the object "
-               "without moving it).")
-    out.append(f"Nd = {n.Nd}: {_count(n.Nd, 'contact force combination')} "
-               f"{'produces' if n.Nd == 1 else 'produce'} no torque at the {r} joints "
-               "(defective grasp)." if n.Nd else
-               "Nd = 0: every contact force loads some joint (not defective).")
-    out.append(f"Nh = {n.Nh}: {_count(n.Nh, 'internal force')} the joints cannot control "
-               "(hyperstatic)." if n.Nh else
-               "Nh = 0: every internal force can be controlled by the joints (not "
-               "hyperstatic).")
-    return out
+    return [_mobility_sentence(numbers), _connectivity_sentence(numbers),
+            _indeterminacy_sentence(numbers), _redundancy_sentence(numbers),
+            *_force_sentences(numbers, r)]
 
 
 def _key(sentence: str) -> str:
@@ -325,12 +331,11 @@ def point_sentences(numbers, joints: Sequence[str], motions: PointMotions | None
     keys = {"Ni", "Nr"} if changed is None else {"Ni", "Nr"} & set(changed)
     words = {}
     if "Ni" in keys and numbers.Ni:
-        words["Ni"] = (f"Ni = {numbers.Ni}: with every joint locked, the object can still "
-                       f"{object_motions_words(motions.object_twists, motions.contact_points)}.")
+        words["Ni"] = _indeterminacy_sentence(numbers, object_motions_words(
+            motions.object_twists, motions.contact_points))
     if "Nr" in keys and numbers.Nr:
-        words["Nr"] = (f"Nr = {numbers.Nr}: with the object fixed, the arms can still "
-                       "move: " + "; ".join(joint_motion_words(v, joints)
-                                            for v in motions.joint_motions) + ".")
+        words["Nr"] = _redundancy_sentence(numbers, "; ".join(
+            joint_motion_words(v, joints) for v in motions.joint_motions))
     return [words.get(_key(s), s) for s in out]
 
 

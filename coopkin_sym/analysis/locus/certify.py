@@ -166,6 +166,14 @@ class Check:
         How it was decided without a Gröbner basis, or why it is not certified.
     backend, seconds
         What decided it, and how long it took.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> system = load("paper-case1-hard")
+    >>> check = certify_locus(system, system.locus(), timeout=60).checks[0]
+    >>> check.chart, check.depth, check.certified
+    ('t chart', 0, True)
     """
 
     chart: str
@@ -208,6 +216,14 @@ class Certificate:
         What the certificate assumed or could not use, in words.
     seconds
         Wall time.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> system = load("paper-case1-hard")
+    >>> cert = certify_locus(system, system.locus(), timeout=60)
+    >>> cert.certified, cert.summary
+    (True, 'complete (certified)')
     """
 
     system: str

@@ -36,7 +36,14 @@ class FloatCheck:
     """What a float rank test (numpy's matrix rank, default tolerance) says near a
     witness: ``distance`` is how far (in radians, on one joint) the point is from the
     witness, ``scale`` the value given to the length parameters; ``exact`` the exact
-    numbers there, ``float`` the float ones."""
+    numbers there, ``float`` the float ones.
+
+    Example
+    -------
+    >>> check = FloatCheck(0.0, "L=1", {"q1": "pi/2"}, {"Nm": 3}, {"Nm": 2})
+    >>> check.agree
+    False
+    """
 
     distance: float
     scale: str
@@ -130,6 +137,13 @@ class Component:
         ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
         "-2 + sqrt(3)", "interval": [lo, hi], "approx": {...}}`` (exact texts; the
         ``root_of`` polynomial is irreducible, the root the one in ``interval``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> c = load("paper-case1-hard").locus().components[0]
+    >>> c.equations, c.condition, c.changes["Nm"]
+    (['t_q1 + 1', 't_q2 + 1'], 'q1 = -pi/2, q2 = -pi/2', (2, 3))
     """
 
     equations: list[str]
@@ -192,6 +206,13 @@ class Locus:
         The completeness certificate
         (:meth:`~coopkin_sym.analysis.locus.certify.Certificate.to_json`), or None when none was
         made (:func:`~coopkin_sym.analysis.locus.certify.certify_locus`).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> locus = load("paper-case1-hard").locus()
+    >>> locus.variables, locus.generic["Nm"], len(locus.components)
+    (['t_q1', 't_q2'], 2, 5)
     """
 
     system: str

@@ -63,6 +63,7 @@ from fractions import Fraction
 
 import flint
 import sympy as sp
+from sympy.polys.numberfields.subfield import primitive_element
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.locus.types import Locus
@@ -72,7 +73,13 @@ from coopkin_sym.analysis.sweep import Value, compile_system
 from coopkin_sym.errors import VerifyError
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.factoring import factor
-from coopkin_sym.exact.parse import NumberError, parse_number
+from coopkin_sym.exact.parse import (
+    NumberError,
+    algebraic_half_angle,
+    parse_angle,
+    parse_expression,
+    parse_number,
+)
 from coopkin_sym.exact.quotient import Quotient, rank_modulo
 from coopkin_sym.model.configuration import (
     Configuration,
@@ -116,6 +123,12 @@ class DropPoint:
     isolating interval of the real root) or ``"line"`` (every point of a line whose
     own numbers are not the generic ones: ``point`` is the line). ``on``: components
     containing it, with other numbers.
+
+    Example
+    -------
+    >>> p = DropPoint("grid", {"q1": "pi/2", "q2": "pi/2"}, {"Nm": 3})
+    >>> p.kind, p.point["q1"]
+    ('point', 'pi/2')
     """
 
     source: str
@@ -137,6 +150,12 @@ class ComponentIssue:
     its numbers cannot hold there), ``"generic-numbers"`` (its numbers are the generic
     ones), or ``"generic"`` (``component`` is -1: the locus's generic numbers are
     wrong). ``point`` and ``numbers`` are the evidence.
+
+    Example
+    -------
+    >>> issue = ComponentIssue(0, "witness-off", {"q1": "0"}, {"Nm": 2})
+    >>> issue.component, issue.kind
+    (0, 'witness-off')
     """
 
     component: int
@@ -177,6 +196,14 @@ class Verification:
     boundary_points
         Points on a component's equations where one of its ``outside`` polynomials
         vanishes, with ranks not above the component's: taken as on it (its closure).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> system = load("paper-case1-hard")
+    >>> check = verify_locus(system, system.locus(), max_points=200)
+    >>> check.ok, check.grid_points > 0
+    (True, True)
     """
 
     system: str
@@ -863,9 +890,6 @@ def _read_witness(checker: _Checker, witness: Mapping):
     """``(point, None, None)`` for a rational witness; ``(None, curve, g)`` for one with
     irrational algebraic values: every free variable a polynomial in ``alpha``, a
     primitive element of their field with minimal polynomial ``g``."""
-    from sympy.polys.numberfields.subfield import primitive_element
-
-    from coopkin_sym.exact.parse import algebraic_half_angle, parse_angle, parse_expression
 
     model = checker.model
     fixed = dict(checker.fixed_items)

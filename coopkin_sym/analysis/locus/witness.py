@@ -31,7 +31,7 @@ from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotio
 from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import angle_text, parse_expression
+from coopkin_sym.exact.parse import angle_text, parse_angle, parse_expression
 from coopkin_sym.exact.quotient import Quotient, Tower
 from coopkin_sym.exact.realroot import RealRoot, angle_of
 from coopkin_sym.exact.substitution import substitute
@@ -365,8 +365,6 @@ def float_checks(ctx, witness: dict[str, str], analysis,
 def nudged_angle(text: str, distance: float) -> str:
     """An exact angle about ``distance`` radians above ``text`` (a rational tangent
     half-angle; the float only chooses it)."""
-    from coopkin_sym.exact.parse import parse_angle
-
     c, s = parse_angle(text, "witness")
     q = float(sp.atan2(s, c)) + distance  # float-ok: choosing a nearby exact angle
     t = Fraction(tan(q / 2))  # float-ok: the binary float is itself an exact rational

@@ -46,6 +46,13 @@ class Grid:
         For each joint, its exact :class:`Value` list.
     bound
         The largest ``|dq|`` allowed to a snapped angle (radians).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> g = grid(load("paper-case1-hard"), "q1=-pi/2..pi/2:3,q2=0..0:1")
+    >>> g.joints, len(g), [v.text for v in g.levels[0]]
+    (('q1', 'q2'), 3, ['-pi/2', '0', 'pi/2'])
     """
 
     joints: tuple[str, ...]

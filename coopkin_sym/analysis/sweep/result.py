@@ -5,6 +5,7 @@ JSON (see :mod:`coopkin_sym.analysis.sweep`).
 from __future__ import annotations
 
 import io
+import json
 from dataclasses import dataclass
 
 import numpy as np
@@ -37,6 +38,13 @@ class SweepResult:
         point was certified by its ranks modulo :attr:`prime`.
     bound
         The snapping bound of the grid (radians), ``None`` for explicit points.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2", "q1=0"])
+    >>> res.joints, res.numbers[:, 0].tolist(), res.rows()[0]["Nm"]
+    (('q1', 'q2'), [3, 2], 3)
     """
 
     system: str
@@ -124,8 +132,6 @@ class SweepResult:
 
     def json_text(self) -> str:
         """:meth:`to_json` as text: the header indented, one line per point."""
-        import json
-
         points = ",\n".join("  " + json.dumps(row) for row in self.rows())
         header = json.dumps(self.header(), indent=2).replace("\n", "\n  ")
         return f'{{\n  "header": {header},\n  "points": [\n{points}\n  ]\n}}\n'

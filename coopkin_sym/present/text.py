@@ -1,0 +1,126 @@
+"""Analyses as text and LaTeX: what ``coopkin analyze`` prints.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> text = analysis_text(load("paper-case1-hard").analyze())
+>>> "Nm = 2  Nc = 2  Ni = 1" in text
+True
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from coopkin_sym.analysis.irrational import IrrationalAnalysis
+from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.present.sentences import irrational_sentences, sentences
+
+__all__ = ["analysis_latex", "analysis_text", "block_table", "irrational_text"]
+
+
+def analysis_text(a: Analysis) -> str:
+    """The human report of ``coopkin analyze``: numbers, sentences and blocks.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> print(analysis_text(load("paper-case1-hard").analyze()).splitlines()[0])
+    System: paper case 1, hard/hard
+    """
+    lines = [f"System: {a.model.name}"]
+    where = a.configuration.at_text() or "home (all joints at 0)"
+    if a.configuration.free:
+        where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
+    lines.append(f"Configuration: {where}")
+    if a.variables:
+        lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
+                     + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
+                                                  for v in a.variables) else ""))
+    n = a.numbers
+    lines.append("")
+    lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
+    lines.append("")
+    for s in sentences(a):
+        lines.append(f"- {s}")
+    object_rows = ["v_x", "v_y", "v_z", "w_x", "w_y", "w_z"]
+    joint_rows = list(a.model.joint_names)
+    blocks, omitted = a.available_blocks()
+    for name, mat in blocks.items():
+        lines.append("")
+        if mat is None:
+            lines.append(f"{name}: not shown: {omitted[name]}")
+            continue
+        labels = object_rows if name in ("C11", "C12") else joint_rows
+        lines.append(f"{name} ({mat.rows} x {mat.cols})" + (": empty" if mat.cols == 0 else ""))
+        if mat.cols:
+            lines.extend(block_table(mat, labels))
+    return "\n".join(lines)
+
+
+def _cell(e: sp.Expr, width: int = 48) -> str:
+    """An entry as text, or its size when it is too long to read in a table."""
+    text = sp.sstr(e)
+    if len(text) <= width:
+        return text
+    num, den = sp.fraction(e)
+    terms = len(sp.Add.make_args(sp.expand(num)))
+    extra = "" if den == 1 else f"/{len(sp.Add.make_args(sp.expand(den)))}"
+    return f"<{terms}{extra} terms>"
+
+
+def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
+    """A matrix as aligned text rows, each led by its label."""
+    cells = [[_cell(mat[i, j]) for j in range(mat.cols)] for i in range(mat.rows)]
+    widths = [max(len(cells[i][j]) for i in range(mat.rows)) for j in range(mat.cols)]
+    lw = max(len(x) for x in labels)
+    return [f"  {labels[i]:>{lw}} | " + "  ".join(c.rjust(w) for c, w in zip(row, widths,
+                                                                          strict=True))
+            for i, row in enumerate(cells)]
+
+
+def analysis_latex(a: Analysis) -> str:
+    """The numbers and blocks of an analysis as LaTeX.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> print(analysis_latex(load("paper-case1-hard").analyze()).splitlines()[1])
+    $N_{m} = 2$, $N_{c} = 2$, $N_{i} = 1$, $N_{r} = 0$, $N_{g} = 1$, $N_{d} = 4$, $N_{h} = 0$
+    """
+    head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
+    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
+    out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
+    blocks, omitted = a.available_blocks()
+    for name, mat in blocks.items():
+        if mat is None:
+            out.append(f"% {name} not shown: {omitted[name]}")
+            continue
+        body = sp.latex(mat) if mat.cols else r"\emptyset"
+        out.append(rf"\[ C_{{{name[1:]}}} = {body} \]")
+    return "\n".join(out)
+
+
+def irrational_text(result: IrrationalAnalysis) -> str:
+    """The human report of ``coopkin analyze`` at a configuration with irrational
+    coordinates.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")
+    >>> print(irrational_text(a).splitlines()[0])
+    Configuration: q1=-pi/6,q2=pi/6
+    """
+    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
+    lines = [f"Configuration: {at}",
+             f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
+             f"of {result.minimal_polynomial} (every conjugate point at once)", "",
+             "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()), ""]
+    lines += [f"- {s}" for s in irrational_sentences(result)]
+    lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
+                  "(the numbers are exact; use a rational configuration for C11..C23)."]
+    return "\n".join(lines)
