@@ -83,10 +83,11 @@ def test_no_text_is_evaluated_anywhere_in_the_package():
 
 
 def test_the_only_marked_evaluation_is_the_sweep_code_generator():
-    marked = [(p.name, name) for p in PACKAGE.rglob("*.py")
+    marked = [(p.relative_to(PACKAGE).as_posix(), name) for p in PACKAGE.rglob("*.py")
               for number, name in calls(p.read_text())
               if "# parse-ok" in p.read_text().splitlines()[number - 1]]
-    assert sorted(marked) == [("sweep.py", "compile"), ("sweep.py", "exec")]
+    assert sorted(marked) == [("analysis/sweep/compiled.py", "compile"),
+                              ("analysis/sweep/compiled.py", "exec")]
 
 
 # ----------------------------------------------------------------- payloads

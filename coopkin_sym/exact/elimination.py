@@ -29,7 +29,7 @@ Example
 from __future__ import annotations
 
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import flint
 
@@ -68,17 +68,32 @@ def _is_zero_row(row: Sequence[Poly]) -> bool:
     return all(e.is_zero() for e in row)
 
 
-def _eliminate_checked(target: Row, pivot_row: Row, col: int) -> Row:
-    check("an exact elimination")
-    return _eliminate(target, pivot_row, col)
+def combine(target: Sequence[Poly], pivot_row: Sequence[Poly], col: int,
+            reduce_row: Callable[[list[Poly]], list[Poly]] | None = None) -> Row:
+    """The one row update of every elimination of the package: ``target`` with its
+    entry in ``col`` cleared by ``pivot_row``, as ``(p/g) target - (a/g) pivot_row``
+    with ``p``, ``a`` the two entries and ``g = gcd(p, a)``, reduced by ``reduce_row``
+    (in a quotient ring) and made primitive. The entry ``a`` must be nonzero.
 
-
-def _eliminate(target: Row, pivot_row: Row, col: int) -> Row:
-    a = target[col]
-    p = pivot_row[col]
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "degrevlex")
+    >>> (t,) = ctx.gens()
+    >>> one = ctx.constant(1)
+    >>> [str(e) for e in combine([t, 2 * one], [t**2, t], 0)]
+    ['0', '1']
+    """
+    a, p = target[col], pivot_row[col]
     g = p.gcd(a)
     pg, ag = p / g, a / g
-    return primitive([pg * x - ag * y for x, y in zip(target, pivot_row, strict=True)])
+    out = [pg * x - ag * y for x, y in zip(target, pivot_row, strict=True)]
+    return primitive(reduce_row(out) if reduce_row is not None else out)
+
+
+def _eliminate_checked(target: Row, pivot_row: Row, col: int) -> Row:
+    check("an exact elimination")
+    return combine(target, pivot_row, col)
 
 
 def gauss_jordan(

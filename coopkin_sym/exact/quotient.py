@@ -31,7 +31,7 @@ from collections.abc import Sequence
 import flint
 
 from coopkin_sym.exact.deadline import check
-from coopkin_sym.exact.elimination import primitive
+from coopkin_sym.exact.elimination import combine, primitive
 
 Poly = flint.fmpz_mpoly
 
@@ -61,6 +61,7 @@ class Quotient:
         if degree < 1:
             raise ValueError(f"{f} does not involve variable {k}")
         self.f, self.k, self.degree = f, k, degree
+        self.zctx = f.context()
         self.lead = _coefficient(f, k, degree)
         self._x = f.context().gens()[k]
 
@@ -120,6 +121,7 @@ class Tower:
                 raise ValueError(f"{q.f} is not univariate with a constant leading "
                                  "coefficient")
         self.moduli = list(moduli)
+        self.zctx = self.moduli[0].zctx
 
     def reduce_row(self, row: Sequence[Poly]) -> list[Poly]:
         row = list(row)
@@ -163,18 +165,13 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
         best = min(candidates, key=lambda i: _size(left[i][col]))
         prow = left.pop(best)
         pivots += 1
-        p = prow[col]
         out = []
         for r in left:
             check("an elimination modulo a polynomial")
-            a = r[col]
-            if not a.is_zero():
-                g = p.gcd(a)
-                pg, ag = p / g, a / g
-                r = quotient.reduce_row([pg * x - ag * y for x, y in zip(r, prow, strict=True)])
+            if not r[col].is_zero():
+                r = combine(r, prow, col, quotient.reduce_row)
                 if all(e.is_zero() for e in r):
                     continue
-                r = primitive(r)
             out.append(r)
         left = out
     return pivots, left
@@ -209,7 +206,7 @@ def nullspace_modulo(rows: Sequence[Sequence[Poly]], ncols: int,
         pivots = [(c, _clear(r, prow, col, quotient)) for c, r in pivots]
         pivots.append((col, prow))
     pivot_cols = {c for c, _ in pivots}
-    zctx = quotient.f.context()
+    zctx = quotient.zctx
     basis = []
     for free in (j for j in range(ncols) if j not in pivot_cols):
         v = [zctx.constant(0)] * ncols
@@ -229,15 +226,9 @@ def nullspace_modulo(rows: Sequence[Sequence[Poly]], ncols: int,
 
 
 def _clear(r: list[Poly], prow: list[Poly], col: int, quotient: Quotient) -> list[Poly]:
-    check("an elimination modulo a polynomial")
     """``r`` with its entry in ``col`` eliminated by the pivot row ``prow``."""
-    a, p = r[col], prow[col]
-    if a.is_zero():
-        return r
-    g = p.gcd(a)
-    out = quotient.reduce_row([(p / g) * u - (a / g) * v
-                               for u, v in zip(r, prow, strict=True)])
-    return primitive(out) if any(not e.is_zero() for e in out) else out
+    check("an elimination modulo a polynomial")
+    return combine(r, prow, col, quotient.reduce_row) if not r[col].is_zero() else r
 
 
 def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) -> int:

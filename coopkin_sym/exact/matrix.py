@@ -1,0 +1,214 @@
+"""One exact-matrix type over every domain the package computes in.
+
+A :class:`PolyMatrix` is a matrix of integer polynomials (python-flint ``fmpz_mpoly``,
+one context) read over a *domain*:
+
+* :data:`POLYNOMIALS`: the fraction field ``Q(x)`` of the polynomial ring (with no
+  variables, the rationals: the work then goes to flint's ``fmpz_mat``);
+* a :class:`~coopkin_sym.exact.quotient.Quotient` ``Z[x]/(f)``: the function field of
+  the hypersurface ``f = 0`` (a number field for a univariate ``f``);
+* a :class:`~coopkin_sym.exact.quotient.Tower` ``Z[x]/(g_1, ..., g_n)``: several
+  algebraic numbers at once.
+
+Every method means the same thing on every domain (rank, nullspace, determinant over
+that field) and is checked against SymPy in ``tests/test_exact_matrix.py``, one test
+body for every domain. The kernels behind it are
+:mod:`~coopkin_sym.exact.elimination` (over ``Q(x)``) and
+:mod:`~coopkin_sym.exact.quotient` (modulo ``f``); both clear entries with the one
+row update :func:`~coopkin_sym.exact.elimination.combine`. Batches of integer matrices
+at many points are ranked modulo a word-size prime by :func:`batch_ranks`
+(:mod:`~coopkin_sym.exact.modular`): a rank modulo ``p`` never exceeds the rank over
+``Q``.
+
+Example
+-------
+>>> import flint
+>>> from coopkin_sym.exact.quotient import Quotient
+>>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+>>> (x,) = ctx.gens()
+>>> one = ctx.constant(1)
+>>> m = PolyMatrix([[x, 2 * one], [2 * one, x]], 2)
+>>> m.rank(), str(m.det())
+(2, 'x^2 - 4')
+>>> m.over(Quotient(x**2 - 4, 0)).rank()       # at x = 2 and x = -2 the rank drops
+1
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Protocol
+
+import flint
+import numpy as np
+
+from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact import modular
+from coopkin_sym.exact.quotient import nullspace_modulo, rank_modulo
+
+Poly = flint.fmpz_mpoly
+Row = list[Poly]
+
+__all__ = ["POLYNOMIALS", "Domain", "PolyMatrix", "Polynomials", "batch_ranks"]
+
+
+class Domain(Protocol):
+    """What a domain gives the matrix: rows reduced to a normal form, and a zero test
+    (``Quotient`` and ``Tower`` have both)."""
+
+    def reduce_row(self, row: Sequence[Poly]) -> list[Poly]: ...
+
+    def is_zero(self, p: Poly) -> bool: ...
+
+
+class Polynomials:
+    """The fraction field ``Q(x)`` of the integer polynomials themselves: no reduction.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> POLYNOMIALS.is_zero(ctx.constant(0)), repr(POLYNOMIALS)
+    (True, 'Q(x)')
+    """
+
+    def reduce_row(self, row: Sequence[Poly]) -> list[Poly]:
+        return list(row)
+
+    def is_zero(self, p: Poly) -> bool:
+        return p.is_zero()
+
+    def __repr__(self) -> str:
+        return "Q(x)"
+
+
+#: The default domain: polynomials read over their fraction field.
+POLYNOMIALS = Polynomials()
+
+
+class PolyMatrix:
+    """An ``m x ncols`` matrix of integer polynomials, read over ``domain``.
+
+    Parameters
+    ----------
+    rows
+        The rows, lists of ``fmpz_mpoly`` of one context.
+    ncols
+        The number of columns (needed when there is no row).
+    domain
+        :data:`POLYNOMIALS` (default), a ``Quotient`` or a ``Tower``.
+    context
+        The polynomial context, needed only when there is no row.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("L",), "degrevlex")
+    >>> (L,) = ctx.gens()
+    >>> m = PolyMatrix([[L, 2 * L, ctx.constant(0)]], 3)
+    >>> m.rank(), [[str(e) for e in v] for v in m.nullspace()]
+    (1, [['2', '-1', '0'], ['0', '0', '1']])
+    """
+
+    __slots__ = ("rows", "ncols", "domain", "context")
+
+    def __init__(self, rows: Sequence[Sequence[Poly]], ncols: int,
+                 domain: Domain = POLYNOMIALS, context=None):
+        self.rows = [list(r) for r in rows]
+        self.ncols = ncols
+        self.domain = domain
+        if context is None and self.rows and self.rows[0]:
+            context = self.rows[0][0].context()
+        self.context = context
+        if any(len(r) != ncols for r in self.rows):
+            raise ValueError(f"every row must have {ncols} entries")
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return len(self.rows), self.ncols
+
+    def over(self, domain: Domain) -> PolyMatrix:
+        """The same entries read over another domain."""
+        return PolyMatrix(self.rows, self.ncols, domain, self.context)
+
+    def columns(self, start: int, stop: int | None = None) -> PolyMatrix:
+        """The block of columns ``start:stop``."""
+        stop = self.ncols if stop is None else stop
+        return PolyMatrix([r[start:stop] for r in self.rows], stop - start, self.domain,
+                          self.context)
+
+    def _is_polynomials(self) -> bool:
+        return isinstance(self.domain, Polynomials)
+
+    def rank(self) -> int:
+        """The rank over the domain's field."""
+        if not self.rows or self.ncols == 0:
+            return 0
+        if self._is_polynomials():
+            return el.rank(self.rows, self.ncols)
+        return rank_modulo(self.rows, self.ncols, self.domain)
+
+    def nullspace(self) -> list[Row]:
+        """A basis of the right nullspace over the domain's field: primitive polynomial
+        vectors, one per free column."""
+        if self._is_polynomials():
+            return el.nullspace(self.rows, self.ncols, self.context)
+        return nullspace_modulo(self.rows, self.ncols, self.domain)
+
+    def nullspace_rref(self, column_order: Sequence[int] | None = None
+                       ) -> tuple[list[Row], list[int]]:
+        """The reduced echelon basis of the right nullspace (unique for the subspace)
+        and its pivot columns, over ``Q(x)``."""
+        self._require_polynomials("a reduced echelon nullspace")
+        return el.nullspace_rref(self.rows, self.ncols, self.context, column_order)
+
+    def rref(self, column_order: Sequence[int] | None = None, canonical: bool = True
+             ) -> tuple[list[Row], list[int]]:
+        """The reduced rows (primitive multiples of the reduced row echelon form) and
+        the pivot columns, over ``Q(x)`` (see
+        :func:`~coopkin_sym.exact.elimination.gauss_jordan`)."""
+        self._require_polynomials("a reduced row echelon form")
+        return el.gauss_jordan(self.rows, self.ncols, column_order, canonical=canonical)
+
+    def det(self) -> Poly:
+        """The determinant (square matrices), reduced in the domain."""
+        if len(self.rows) != self.ncols:
+            raise ValueError(f"a determinant needs a square matrix, not {self.shape}")
+        if not self.rows:
+            return self.context.constant(1)
+        d = el.determinant(self.rows)
+        return d if self._is_polynomials() else self.domain.reduce_row([d])[0]
+
+    def is_zero_vector(self, v: Sequence[Poly]) -> bool:
+        """Whether ``M v = 0`` in the domain."""
+        return all(self.domain.is_zero(_dot(r, v)) for r in self.rows)
+
+    def _require_polynomials(self, what: str) -> None:
+        if not self._is_polynomials():
+            raise ValueError(f"{what} is computed over Q(x) only, not over {self.domain!r}")
+
+    def __repr__(self) -> str:
+        m, n = self.shape
+        return f"PolyMatrix({m} x {n} over {self.domain!r})"
+
+
+def _dot(a: Sequence[Poly], b: Sequence[Poly]):
+    total = None
+    for x, y in zip(a, b, strict=True):
+        total = x * y if total is None else total + x * y
+    return total
+
+
+def batch_ranks(matrices: np.ndarray, p: int = modular.PRIME) -> np.ndarray:
+    """The ranks modulo ``p`` of a batch of integer matrices, shape ``(batch, m, n)``
+    (any integers; reduced modulo ``p`` here): each a lower bound on the rank over
+    ``Q``, equal to it for all but finitely many primes.
+
+    Example
+    -------
+    >>> batch = np.array([[[1, 2], [2, 4]], [[1, 0], [0, 1]]], dtype=np.int64)
+    >>> batch_ranks(batch).tolist()
+    [1, 2]
+    """
+    work = np.remainder(np.asarray(matrices, dtype=np.int64), p).transpose(1, 2, 0).copy()
+    return modular.rank_profile(work, p)[0]
