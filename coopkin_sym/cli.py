@@ -18,13 +18,13 @@ Example
 
 from __future__ import annotations
 
+import concurrent.futures
 import json
 import multiprocessing
 import os
 import signal
 import sys
 import threading
-from concurrent.futures import ProcessPoolExecutor
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
@@ -324,7 +324,7 @@ def _sweep(system, points, at, workers: int, show: bool):
         return system.sweep(points, at=at, progress=show)
 
     chunk = max(1, min(16384, -(-n // (4 * count))))
-    pool = ProcessPoolExecutor(count)
+    pool = concurrent.futures.ProcessPoolExecutor(count)  # looked up at use (tests patch it)
     try:
         result = system.sweep(points, at=at, executor=pool, progress=show, chunk=chunk)
     except BaseException:

@@ -37,8 +37,9 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.mobility import numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import NotIrrational
+from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
-from coopkin_sym.exact.quotient import Quotient, nullspace_modulo
+from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import substitute_rows
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy, poly_to_sympy
 from coopkin_sym.model.configuration import (
@@ -217,7 +218,7 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
 
     def vectors(block, ncols):
         return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]
-                for v in nullspace_modulo(block, ncols, quotient)]
+                for v in PolyMatrix(block, ncols, quotient).nullspace()]
 
     twists: list[list[sp.Expr]] = []
     contacts: list[tuple[str, list[sp.Expr]]] = []

@@ -44,8 +44,8 @@ from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import exact_expr
-from coopkin_sym.exact.quotient import eliminate_modulo, rank_modulo
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import (
     columns_to_sympy,
@@ -372,7 +372,7 @@ class Analysis:
             # scale to a common integer content: multiply the equation by den
             rows.append([c[i] * pd for c in columns] + [pn])
         k = len(columns)
-        reduced, pivots = el.gauss_jordan(rows, k + 1)
+        reduced, pivots = PolyMatrix(rows, k + 1).rref()
         if k in pivots:
             raise InfeasibleMotion(
                 f"{what} is not feasible: it is not a combination of the motions the "
@@ -497,7 +497,7 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     r = len(model.joints)
     m = len(q_rows)
     gt_rows = [row[:6] for row in q_rows]
-    c11, c11_pivots = el.nullspace_rref(gt_rows, 6, zctx)
+    c11, c11_pivots = PolyMatrix(gt_rows, 6, context=zctx).nullspace_rref()
     owners = [model.contacts[c].arm for c in row_contacts]
     constraints = [gt_rows[i] for i, a in enumerate(owners) if a is None]
     c23: list[list] = []
@@ -514,7 +514,7 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
         arm_maps.append(arm_map)
     # feasible object twists U = R(C1): those every arm can follow
     order = c11_pivots + [c for c in range(6) if c not in c11_pivots]
-    feasible, pivots = el.nullspace_rref(constraints, 6, zctx, column_order=order)
+    feasible, pivots = PolyMatrix(constraints, 6, context=zctx).nullspace_rref(order)
     coord_u = [v for v, p in zip(feasible, pivots, strict=True) if p not in c11_pivots]
     nc, ni, nr = len(feasible), len(c11), len(c23)
     nm = nc + nr
@@ -542,11 +542,11 @@ class _ArmMap:
     def build(cls, q_rows, rows: list[int], col0: int, joints: int, zctx) -> _ArmMap:
         d_rows = [[q_rows[i][col0 + k] for k in range(joints)] for i in rows]
         m_rows = [d + q_rows[i][:6] for d, i in zip(d_rows, rows, strict=True)]
-        reduced, pivots = el.gauss_jordan(m_rows, joints + 6)
+        reduced, pivots = PolyMatrix(m_rows, joints + 6).rref()
         constraints = [row[joints:] for row, p in zip(reduced, pivots, strict=True)
                        if p >= joints]
         solved = [(p, row) for row, p in zip(reduced, pivots, strict=True) if p < joints]
-        null, null_pivots = el.nullspace_rref(d_rows, joints, zctx)
+        null, null_pivots = PolyMatrix(d_rows, joints, context=zctx).nullspace_rref()
         return cls(joints, constraints, null, null_pivots, solved)
 
     def joints_for(self, u) -> list[RatFunc]:
@@ -581,7 +581,7 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
     rows, then the object rows left over from every arm are ranked together.
     """
     gt = [row[:6] for row in q_rows]
-    rank_gt = rank_modulo(gt, 6, quotient) if gt else 0
+    rank_gt = PolyMatrix(gt, 6, quotient).rank()
     owners = [model.contacts[c].arm for c in row_contacts]
     leftover = [gt[i] for i, a in enumerate(owners) if a is None]
     rank_dt = 0
@@ -591,10 +591,10 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
         rows = [q_rows[i][off:off + n] + gt[i] for i, o in enumerate(owners) if o == a]
         if not rows:
             continue
-        pivots, left = eliminate_modulo(rows, range(n), quotient)
+        pivots, left = PolyMatrix(rows, n + 6, quotient).eliminate(range(n))
         rank_dt += pivots
         leftover += [r[n:] for r in left]
-    rank_q = rank_dt + (rank_modulo(leftover, 6, quotient) if leftover else 0)
+    rank_q = rank_dt + PolyMatrix(leftover, 6, quotient).rank()
     return numbers_from_ranks(len(q_rows), len(model.joints), rank_q, rank_gt, rank_dt)
 
 

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from coopkin_sym.exact.matrix import PolyMatrix
+
 #: The seven numbers, in the order every table and file of the package uses.
 NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
@@ -76,6 +78,21 @@ def numbers_from_ranks(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) 
     2
     """
     return Numbers(*(int(n) for n in seven_numbers(m, r, rank_q, rank_gt, rank_dt)))
+
+
+def ranks_of_q(q: PolyMatrix) -> tuple[int, int, int]:
+    """The three ranks the numbers come from: of ``Q``, of its six object columns
+    (``H G^T``) and of its joint columns (``H D``), over ``q``'s domain.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("L",), "degrevlex")
+    >>> one, zero = ctx.constant(1), ctx.constant(0)
+    >>> ranks_of_q(PolyMatrix([[one] + [zero] * 6, [zero] * 6 + [one]], 7))
+    (2, 1, 1)
+    """
+    return q.rank(), q.columns(0, 6).rank(), q.columns(6).rank()
 
 
 def ranks_from_numbers(numbers, r: int) -> tuple[int, int, int]:

@@ -44,7 +44,7 @@ import numpy as np
 
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact import modular
-from coopkin_sym.exact.quotient import nullspace_modulo, rank_modulo
+from coopkin_sym.exact.quotient import eliminate_modulo, nullspace_modulo, rank_modulo
 
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
@@ -54,7 +54,17 @@ __all__ = ["POLYNOMIALS", "Domain", "PolyMatrix", "Polynomials", "batch_ranks"]
 
 class Domain(Protocol):
     """What a domain gives the matrix: rows reduced to a normal form, and a zero test
-    (``Quotient`` and ``Tower`` have both)."""
+    (``Quotient`` and ``Tower`` have both).
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.quotient import Quotient
+    >>> (x,) = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex").gens()
+    >>> domain: Domain = Quotient(x**2 - 2, 0)
+    >>> domain.is_zero(x**4 - 4), domain.is_zero(x)
+    (True, False)
+    """
 
     def reduce_row(self, row: Sequence[Poly]) -> list[Poly]: ...
 
@@ -169,6 +179,11 @@ class PolyMatrix:
         :func:`~coopkin_sym.exact.elimination.gauss_jordan`)."""
         self._require_polynomials("a reduced row echelon form")
         return el.gauss_jordan(self.rows, self.ncols, column_order, canonical=canonical)
+
+    def eliminate(self, columns: Sequence[int]) -> tuple[int, list[Row]]:
+        """Eliminate on ``columns`` only: the number of pivots found there and the
+        rows left over (zero in those columns), reduced and primitive."""
+        return eliminate_modulo(self.rows, columns, self.domain)
 
     def det(self) -> Poly:
         """The determinant (square matrices), reduced in the domain."""

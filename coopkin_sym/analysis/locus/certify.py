@@ -130,6 +130,7 @@ from coopkin_sym.exact.groebner import (
     msolve_path,
     singular_path,
 )
+from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, brief, parse_expression
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
@@ -475,7 +476,7 @@ def _chart(setup: _Setup, pi_joints: tuple[str, ...]) -> _Chart:
 
 def _rank(rows) -> int:
     rows = [r for r in rows if not all(e.is_zero() for e in r)]
-    return el.rank(rows, len(rows[0])) if rows else 0
+    return PolyMatrix(rows, len(rows[0])).rank() if rows else 0
 
 
 def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> dict[str, int]:
@@ -759,7 +760,7 @@ def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
     if comb(nr, k) * comb(nc, k) <= MAX_MINORS:
         for rs in itertools.combinations(range(nr), k):
             for cs in itertools.combinations(range(nc), k):
-                dets.append(el.determinant([[reduced[i][j] for j in cs] for i in rs]))
+                dets.append(PolyMatrix([[reduced[i][j] for j in cs] for i in rs], len(cs)).det())
     else:
         zctx = chart.zctx
         for _ in range(len(chart.names) + 3):
@@ -772,7 +773,7 @@ def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
                 right = [[zctx.constant(rng.randint(-5, 5)) for _ in range(k)]
                          for _ in range(nc)]
                 m = el.matmul(m, right, zctx)
-            dets.append(el.determinant(m))
+            dets.append(PolyMatrix(m, len(m)).det())
     return _clean([d for d in dets if not d.is_zero()], real)
 
 

@@ -88,6 +88,7 @@ from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -253,7 +254,7 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
     for arm, rows, d in _arm_blocks(ctx, q_rows):
         mats[f"HD:{arm.name}"] = d
         dt = [list(col) for col in zip(*d, strict=True)]
-        y, _ = el.nullspace_rref(dt, len(rows), zctx)
+        y, _ = PolyMatrix(dt, len(rows), context=zctx).nullspace_rref()
         if y:
             mats[f"Y:{arm.name}"] = y
         for v in y:
@@ -357,7 +358,7 @@ def _minor_combinations(rows, ctx: _Context, contents: list, deep: list | None =
         return []
     ncols = len(rows[0])
     zctx = ctx.ring.zctx
-    rank = ncols - len(el.nullspace_rref(rows, ncols, zctx)[0])
+    rank = ncols - len(PolyMatrix(rows, ncols, context=zctx).nullspace_rref()[0])
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in vars_of(ctx, e)})

@@ -68,11 +68,11 @@ from sympy.polys.numberfields.subfield import primitive_element
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.mobility import analyze
-from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks
+from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_of_q
 from coopkin_sym.analysis.sweep import Value, compile_system
 from coopkin_sym.errors import VerifyError
-from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.matrix import POLYNOMIALS, PolyMatrix
 from coopkin_sym.exact.parse import (
     NumberError,
     algebraic_half_angle,
@@ -80,7 +80,7 @@ from coopkin_sym.exact.parse import (
     parse_expression,
     parse_number,
 )
-from coopkin_sym.exact.quotient import Quotient, rank_modulo
+from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.model.configuration import (
     Configuration,
     ConfigurationError,
@@ -539,9 +539,7 @@ class _Checker:
         self._number_cache: dict[tuple, dict[str, int]] = {}
         rows = [kin.ring.clear_row(row) for row in kin.Q]
         n = 6 + self.r
-        self.generic_ranks = (el.rank(rows, n) if rows else 0,
-                              el.rank([x[:6] for x in rows], 6) if rows else 0,
-                              el.rank([x[6:] for x in rows], self.r) if rows and self.r else 0)
+        self.generic_ranks = ranks_of_q(PolyMatrix(rows, n, context=kin.ring.zctx))
         self.generic = self.numbers(self.generic_ranks)
         fixed_values: dict[str, object] = {}
         for j, (c, s) in self.config.revolute.items():
@@ -1181,7 +1179,7 @@ def _drop_polynomial(rows: list[list[flint.fmpz_mpoly]], ncols: int, rank: int,
             am.append(acc)
         amb = [[sum((row[j] * b[j][c] for j in range(ncols) if b[j][c]), zero)
                 for c in range(rank)] for row in am]
-        det = el.determinant(amb)
+        det = PolyMatrix(amb, len(amb)).det()
         if det.is_zero():
             continue
         g = det if g.is_zero() else g.gcd(det)
@@ -1198,11 +1196,7 @@ def _line_ranks(rows, quotient: Quotient | None, r: int) -> tuple[int, int, int]
     n = 6 + r
     if not rows:
         return (0, 0, 0)
-    if quotient is None:
-        return (el.rank(rows, n), el.rank([x[:6] for x in rows], 6),
-                el.rank([x[6:] for x in rows], r) if r else 0)
-    return (rank_modulo(rows, n, quotient), rank_modulo([x[:6] for x in rows], 6, quotient),
-            rank_modulo([x[6:] for x in rows], r, quotient) if r else 0)
+    return ranks_of_q(PolyMatrix(rows, n, quotient or POLYNOMIALS))
 
 
 def _real_roots_in(f: flint.fmpq_poly, domain) -> list[tuple[Fraction, Fraction]]:

@@ -18,12 +18,12 @@ import numpy as np
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
+from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_of_q
 from coopkin_sym.analysis.sweep.grid import _split_point
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import SweepError
-from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact import modular
+from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.model.configuration import (
     Configuration,
 )
@@ -74,8 +74,7 @@ class _Exact:
         for k, poly in self.entries:
             flat[k] = poly.subs(subs) if subs else poly
         rows = [flat[i * n:(i + 1) * n] for i in range(m)]
-        return (el.rank(rows, n), el.rank([r[:6] for r in rows], 6),
-                el.rank([r[6:] for r in rows], n - 6) if n > 6 else 0)
+        return ranks_of_q(PolyMatrix(rows, n, context=self.ctx))
 
 
 def _straight_line(terms: list, nvars: int, m: int, n: int):
@@ -296,9 +295,7 @@ class Compiled:
         rows = [ring.clear_row(row) for row in kin.Q]
         terms = _compile_rows(kin.Q, rows, ring, joints, self.kinds, var_of, param_vars,
                               names, n)
-        generic = (el.rank(rows, n) if rows else 0,
-                   el.rank([r[:6] for r in rows], 6) if rows else 0,
-                   el.rank([r[6:] for r in rows], n - 6) if rows else 0)
+        generic = ranks_of_q(PolyMatrix(rows, n, context=ring.zctx))
         self.generic_ranks = generic
         self.generic = self._numbers(*generic)
         flat_terms = [(k, e, c) for k, ts in terms for e, c in ts]
