@@ -47,10 +47,10 @@ q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import random
 import time
-from dataclasses import dataclass, field
 from fractions import Fraction
 from math import comb
 
@@ -69,6 +69,7 @@ from coopkin_sym.analysis.locus.algebra import (
     substitute_values,
     vars_of,
 )
+from coopkin_sym.analysis.locus.context import Place, Progress, SearchContext
 from coopkin_sym.analysis.locus.types import Component, Locus, cut_short
 from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
@@ -100,35 +101,6 @@ from coopkin_sym.exact.substitution import split_linear, substitute, substitute_
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
-
-
-@dataclass
-class _Context:
-    model: Model
-    config: Configuration
-    ring_names: tuple[str, ...]
-    kinds: dict[str, tuple[str, str]]  # ring variable -> (kind, joint or parameter)
-    row_contacts: list[int]
-    symbols: dict
-    ring: object
-    generic: Numbers
-    deadline: float | None
-    max_depth: int
-    locus: Locus
-    rng: random.Random
-    rows0: list = None  # the rows of Q with every free variable, for direct checks
-    kin: object = None  # the kinematics with every free variable
-    readings: dict = None  # equation text -> the equation in angles (shared by charts)
-    chains: dict = None  # id(component) -> (context, its linear parametrization)
-    hidden: int = 0  # how deep inside candidate sets with the enclosing numbers
-    splits: int = 0  # how deep inside zero sets of single minors (codimension >= 2)
-    pi: frozenset = frozenset()  # the joints at q = pi in this chart
-    deferred: list = field(default_factory=list)  # per level: searches run after it
-    polys: dict = field(default_factory=dict)  # equation text -> polynomial (this chart)
-    owners: dict = None  # id(component) -> the context it was found in (shared)
-
-    def expired(self) -> bool:
-        return self.deadline is not None and time.monotonic() > self.deadline
 
 
 def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = None,
@@ -193,9 +165,12 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     config = Configuration(revolute, prismatic, params, frozenset(free_joints))
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=notes)
-    ctx, q_rows = _context(model, config, locus, None, max_depth, random.Random(1992),
-                           None if timeout is None else started + timeout, {}, {})
-    ctx.owners = {}
+    chart, q_rows = _chart(model, config)
+    generic = decompose(q_rows, model, chart["row_contacts"], chart["ring"].zctx).numbers
+    ctx = SearchContext(model=model, generic=generic, max_depth=max_depth, locus=locus,
+                        rng=random.Random(1992), readings={}, chains={}, owners={},
+                        deadline=None if timeout is None else started + timeout,
+                        reporter=Progress(progress), **chart)
     locus.variables = list(ctx.ring_names)
     locus.generic = ctx.generic.as_dict()
     deadline.keep(locus)  # from here on, a time bound returns what was found
@@ -203,10 +178,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
         "component reported is then decided exactly, so a candidate can only be missed, "
         "never wrongly reported, and a miss has probability below degree/2^20 per step.")
-    reporter = _Progress(progress)
-    with reporter:
-        _explore(ctx, q_rows, [], {}, depth=0, parent=None, reporter=reporter)
-        _pi_slices(ctx, reporter, pi_size if pi_size is not None else _default_pi_size(ctx))
+    with ctx.reporter:
+        _explore(ctx, Place(rows=q_rows, equations=[], point={}, depth=0))
+        _pi_slices(ctx, pi_size if pi_size is not None else _default_pi_size(ctx))
         _settle_realness(ctx)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(
@@ -217,12 +191,10 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     return locus
 
 
-def _context(model: Model, config: Configuration, locus: Locus, generic: Numbers | None,
-             max_depth: int, rng: random.Random, deadline: float | None, readings: dict,
-             chains: dict) -> tuple[_Context, list]:
-    """The search context for ``config`` (its free joints and parameters are the
-    variables) and the cleared rows of Q there. ``generic`` is the system's generic
-    numbers (None: they are the numbers of this configuration)."""
+def _chart(model: Model, config: Configuration) -> tuple[dict, list]:
+    """The fields of a :class:`SearchContext` that belong to the chart of ``config``
+    (its free joints and parameters are the variables), and the cleared rows of Q
+    there."""
     kin = kinematics.build(model, config)
     ring = kin.ring
     q_rows = [ring.clear_row(row) for row in kin.Q]
@@ -233,15 +205,14 @@ def _context(model: Model, config: Configuration, locus: Locus, generic: Numbers
     for p in model.parameters:
         if p.name not in config.parameters:
             kinds[p.name] = ("parameter", p.name)
-    if generic is None:
-        generic = decompose(q_rows, model, kin.row_contacts, ring.zctx).numbers
-    ctx = _Context(model, config, ring.names, kinds, kin.row_contacts, kin.symbols, ring,
-                   generic, deadline, max_depth, locus, rng, q_rows, kin, readings, chains)
-    return ctx, q_rows
+    chart = {"config": config, "ring_names": ring.names, "kinds": kinds,
+             "row_contacts": kin.row_contacts, "symbols": kin.symbols, "ring": ring,
+             "rows0": q_rows, "kin": kin}
+    return chart, q_rows
 
 
 # --- candidate polynomials -------------------------------------------------------------
-def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
+def _candidates(ctx: SearchContext, q_rows) -> dict[str, list]:
     """For each matrix whose rank drop changes a number, random combinations of its
     maximal minors (a few polynomials whose common zeros are the drop set); under
     ``content:<matrix>`` the polynomials rows were divided by (each one's zero set is a
@@ -279,7 +250,7 @@ def _candidates(ctx: _Context, q_rows) -> dict[str, list]:
     return out
 
 
-def _arm_blocks(ctx: _Context, q_rows):
+def _arm_blocks(ctx: SearchContext, q_rows):
     """For each arm with contact rows: the arm, the indices of its rows of ``Q`` and
     its block ``H D`` (those rows, its joint columns)."""
     model = ctx.model
@@ -344,7 +315,7 @@ def _without_content(row, contents: list):
     return [e / g for e in row]
 
 
-def _minor_combinations(rows, ctx: _Context, contents: list, deep: list | None = None,
+def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | None = None,
                         name: str = "") -> list:
     """Random combinations of the maximal minors of ``rows`` (their common zeros are the
     set where the rank drops), after a reduction whose divisors go to ``contents``.
@@ -438,7 +409,7 @@ def _splitting_minor(rows, rank: int, zctx):
     return best
 
 
-def _common_factor_on_a_line(ctx: _Context, rows, rank: int, lines: int = 3) -> bool:
+def _common_factor_on_a_line(ctx: SearchContext, rows, rank: int, lines: int = 3) -> bool:
     """Whether two random combinations of the maximal minors may share a factor with
     real zeros.
 
@@ -476,7 +447,7 @@ def _common_factor_on_a_line(ctx: _Context, rows, rank: int, lines: int = 3) -> 
     return False
 
 
-def _random_matrix(ctx: _Context, n: int, m: int, zctx=None):
+def _random_matrix(ctx: SearchContext, n: int, m: int, zctx=None):
     c = (zctx or ctx.ring.zctx).constant
     return [[c(ctx.rng.randint(-3, 3)) for _ in range(m)] for _ in range(n)]
 
@@ -485,21 +456,21 @@ _determinant = el.determinant
 
 
 # --- exploring --------------------------------------------------------------------------
-def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
-             depth: int, parent: int | None, reporter, charts: tuple = ()) -> None:
+def _explore(ctx: SearchContext, place: Place) -> None:
     """Find the components inside the current (parametrized) set and decide them.
 
-    ``point_so_far`` maps each parametrized variable to ``(f0, f1)`` (it equals
-    ``-f0/f1``); ``charts`` are the denominators ``f1``, in the current variables: the
-    rows are valid only where none of them vanishes."""
+    ``place.point`` maps each parametrized variable to ``(f0, f1)`` (it equals
+    ``-f0/f1``); ``place.charts`` are the denominators ``f1``, in the current variables:
+    the rows are valid only where none of them vanishes."""
     if ctx.expired():
-        ctx.locus.unexplored.append(
-            f"depth {depth}{' inside ' + '; '.join(equations) if equations else ''}: not "
-            "explored, time bound reached")
+        inside = " inside " + "; ".join(place.equations) if place.equations else ""
+        ctx.locus.unexplored.append(f"depth {place.depth}{inside}: not explored, time bound "
+                                    "reached")
         return
-    base = decompose(q_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    place = place.inside(base=decompose(place.rows, ctx.model, ctx.row_contacts,
+                                        ctx.ring.zctx).numbers)
     ctx.deferred.append([])
-    cands = _candidates(ctx, q_rows)
+    cands = _candidates(ctx, place.rows)
     factors: dict[str, tuple] = {}
     splitting: set[str] = set()  # factors of single minors (see _splitting_minor)
     rests: list[list] = []
@@ -531,28 +502,26 @@ def _explore(ctx: _Context, q_rows, equations: list[str], point_so_far: dict,
             rests.append(rest)
     ordered = sorted(factors.values(), key=lambda fd: (fd[0].total_degree(), len(fd[0]),
                                                        str(fd[0])))
-    reporter.add(len(ordered))
+    ctx.reporter.add(len(ordered))
     for f, drops in ordered:
-        reporter.step(f"depth {depth}: {f}")
+        ctx.reporter.step(f"depth {place.depth}: {f}")
         if ctx.expired():
-            ctx.locus.unexplored.append(f"component {f} = 0 (depth {depth}): not decided, "
+            ctx.locus.unexplored.append(f"component {f} = 0 (depth {place.depth}): not decided, "
                                         "time bound reached")
             continue
-        if any(not c.gcd(f).is_constant() for c in charts):
+        if any(not c.gcd(f).is_constant() for c in place.charts):
             # the image of f = 0 lies where a parametrization's denominator vanishes:
             # those points are searched from the enclosing variables (_chart_points)
             continue
         split = str(f) in splitting
-        _decide_factor(ctx, q_rows, f, drops, equations, point_so_far, base, depth, parent,
-                       reporter, charts, split=split)
+        _decide_factor(ctx, place, f, drops, split=split)
     if rests:
-        _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent, charts,
-                  reporter)
+        _isolated(ctx, place, rests)
     for search in ctx.deferred.pop():
         search()
 
 
-def _note(ctx: _Context, text: str) -> None:
+def _note(ctx: SearchContext, text: str) -> None:
     """Say once in the report what was not explored."""
     if text not in ctx.locus.unexplored:
         ctx.locus.unexplored.append(text)
@@ -563,10 +532,9 @@ def _drops_text(drops: set[str]) -> list[str]:
     return sorted({names[d] for d in drops})
 
 
-def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, base, depth,
-                   parent, reporter, charts=(), split: bool = False) -> None:
+def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = False) -> None:
     """Decide the candidate ``f = 0``: a component when its numbers differ from
-    ``base``, else searched inside (``split``: a factor of a single minor, whose zero
+    ``place.base``, else searched inside (``split``: a factor of a single minor, whose zero
     set holds a drop set of codimension 2 or more)."""
     names = vars_of(ctx, f)
     f_text = poly_text(ctx, f)
@@ -578,52 +546,49 @@ def _decide_factor(ctx: _Context, q_rows, f, drops, equations, point_so_far, bas
     linear = next((n for n in names if f.degrees()[ctx.ring_names.index(n)] == 1
                    and ctx.kinds[n][0] != "parameter"), None)
     if linear is None:
-        _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, base,
-                          depth, parent)
+        _nonlinear_factor(ctx, place, f, f_text, drops)
         return
-    sub_rows, f0, f1 = _substitute_linear(ctx, q_rows, f, linear)
+    sub_rows, f0, f1 = _substitute_linear(ctx, place.rows, f, linear)
     k = ctx.ring_names.index(linear)
-    sub_charts = [substitute(c, k, f0, f1, c.degrees()[k]) for c in charts]
+    sub_charts = [substitute(c, k, f0, f1, c.degrees()[k]) for c in place.charts]
     if any(c.is_zero() for c in sub_charts):
-        ctx.locus.unexplored.append(f"{f_text} = 0 inside {'; '.join(equations)}: outside "
+        ctx.locus.unexplored.append(f"{f_text} = 0 inside {'; '.join(place.equations)}: outside "
                                     "the parametrization of the enclosing component")
         return
     sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
-    _chart_points(ctx, q_rows, f0, f1, equations + [f_text], point_so_far, base, depth,
-                  parent, charts, reporter)
+    eqs = place.equations + [f_text]
+    _chart_points(ctx, place.inside(equations=eqs), f0, f1)
     numbers = decompose(sub_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
-    sub_point = dict(point_so_far)
+    sub_point = dict(place.point)
     sub_point[linear] = (f0, f1)
-    if numbers == base:
-        _inside_candidate(ctx, sub_rows, equations + [f_text], sub_point, depth, parent,
-                          reporter, sub_charts, split=split)
+    inside = place.inside(rows=sub_rows, equations=eqs, point=sub_point, charts=sub_charts)
+    if numbers == place.base:
+        _inside_candidate(ctx, inside, split=split)
         return
     wider = _wider_component(ctx, sub_point, numbers)
     if wider is not None:  # already found, in a chart with fewer joints at pi
-        _inside_candidate(ctx, sub_rows, equations + [f_text], sub_point, wider.depth + 1,
-                          ctx.locus.components.index(wider), reporter, sub_charts)
+        _inside_candidate(ctx, inside.inside(depth=wider.depth + 1,
+                                             parent=ctx.locus.components.index(wider)))
         return
-    eqs = equations + [f_text]
-    witness = witness_linear(ctx, sub_rows, linear, f0, f1, point_so_far, numbers)
+    witness = witness_linear(ctx, sub_rows, linear, f0, f1, place.point, numbers)
     left = [n for n in ctx.ring_names if n not in sub_point]
     kind = ("isolated" if not left else "hypersurface" if len(eqs) == 1 else "subvariety")
-    comp = _component(ctx, eqs, numbers, witness, kind, drops, depth, parent,
-                      "exact over the component's function field", chain=sub_point)
-    _go_deeper(ctx, comp, sub_rows, eqs, sub_point, depth, reporter, sub_charts)
+    comp = _component(ctx, place, eqs, numbers, kind, drops,
+                      "exact over the component's function field", witness=witness,
+                      chain=sub_point)
+    _go_deeper(ctx, comp, inside)
 
 
-def _chart_points(ctx, q_rows, f0, f1, equations, point_so_far, base, depth, parent,
-                  charts, reporter) -> None:
+def _chart_points(ctx: SearchContext, place: Place, f0, f1) -> None:
     """The part of ``f1 x + f0 = 0`` that ``x = -f0/f1`` does not reach: ``f0 = f1 = 0``
     (codimension 2 when ``f1`` is not constant), searched as a set of its own."""
     if f1.is_constant():
         return
-    _isolated(ctx, q_rows, [[f0, f1]], equations, point_so_far, base, depth, parent,
-              charts, reporter)
+    _isolated(ctx, place, [[f0, f1]])
 
 
-def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, charts,
-                      why_not: str | None = None, split: bool = False) -> None:
+def _inside_candidate(ctx: SearchContext, place: Place, why_not: str | None = None,
+                      split: bool = False) -> None:
     """A candidate set whose numbers are the enclosing ones. Some candidates come from
     conditions that are sufficient, not necessary (a left nullspace basis losing rank, a
     row divisor), or hold a drop set of higher codimension (``split``: a factor of a
@@ -631,18 +596,18 @@ def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, 
     are searched too, without being reported."""
     if ctx.expired():
         return
-    if sub_point is not None and all(n in sub_point for n in ctx.ring_names):
+    if place.point is not None and all(n in place.point for n in ctx.ring_names):
         return  # a point: nothing lies deeper inside it
     if split:
-        if why_not is None and rows is not None and ctx.splits >= _MAX_SPLITS:
+        if why_not is None and place.rows is not None and ctx.splits >= _MAX_SPLITS:
             why_not = f"more than {_MAX_SPLITS} nested zero sets of single minors"
-    elif why_not is None and rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
+    elif why_not is None and place.rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
         why_not = f"more than {_HIDDEN_DEPTH} such set{'s' if _HIDDEN_DEPTH > 1 else ''} deep"
-    if why_not is None and depth > ctx.max_depth:
+    if why_not is None and place.depth > ctx.max_depth:
         why_not = f"max depth {ctx.max_depth}"
-    if why_not is not None or rows is None:
-        note = (f"inside {', '.join(equations)} (enclosing numbers there): deeper drops not "
-                f"searched ({why_not or 'no rational parametrization'})")
+    if why_not is not None or place.rows is None:
+        note = (f"inside {', '.join(place.equations)} (enclosing numbers there): deeper "
+                f"drops not searched ({why_not or 'no rational parametrization'})")
         _note(ctx, note)
         return
     def search() -> None:
@@ -651,8 +616,7 @@ def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, 
         else:
             ctx.hidden += 1
         try:
-            _explore(ctx, rows, equations, sub_point, depth, parent,
-                     reporter or _Progress(False), charts)
+            _explore(ctx, place)
         finally:
             if split:
                 ctx.splits -= 1
@@ -666,7 +630,7 @@ def _inside_candidate(ctx, rows, equations, sub_point, depth, parent, reporter, 
 _HIDDEN_DEPTH = 1
 
 
-def _substitute_linear(ctx: _Context, q_rows, f, name: str):
+def _substitute_linear(ctx: SearchContext, q_rows, f, name: str):
     """Rows of Q on ``f = 0`` with ``name = -f0/f1`` (denominators cleared row by row)."""
     k = ctx.ring_names.index(name)
     f1, f0 = split_linear(f, k)
@@ -677,14 +641,14 @@ def _substitute_linear(ctx: _Context, q_rows, f, name: str):
 _MAX_CURVED_TERMS = 3000
 
 
-def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, base, depth,
-                      parent) -> None:
+def _nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None:
     """A factor linear in no variable: its numbers over its function field (rank modulo
     ``f``), a witness on it (rational, else a real algebraic point)."""
     names = vars_of(ctx, f)
     if len(f) > _MAX_CURVED_TERMS:
+        inside = " inside " + ", ".join(place.equations) if place.equations else ""
         note = (f"a family of {len(f)} terms, degree {f.total_degree()} in "
-                f"{', '.join(names)}{' inside ' + ', '.join(equations) if equations else ''}: "
+                f"{', '.join(names)}{inside}: "
                 f"not decided (ranks modulo a polynomial of more than {_MAX_CURVED_TERMS} "
                 "terms)")
         _note(ctx, note)
@@ -697,56 +661,58 @@ def _nonlinear_factor(ctx, q_rows, f, f_text, drops, equations, point_so_far, ba
         return
     k = min((ctx.ring_names.index(n) for n in names if ctx.kinds[n][0] != "parameter"),
             key=lambda i: (f.degrees()[i], i))
-    numbers = numbers_modulo(q_rows, ctx.model, ctx.row_contacts, Quotient(f, k))
-    if numbers == base:
-        if len([n for n in ctx.ring_names if n not in point_so_far]) <= 1:
+    numbers = numbers_modulo(place.rows, ctx.model, ctx.row_contacts, Quotient(f, k))
+    if numbers == place.base:
+        if len([n for n in ctx.ring_names if n not in place.point]) <= 1:
             return
-        if ctx.hidden >= _HIDDEN_DEPTH or depth > 0 or ctx.expired():
-            _inside_candidate(ctx, None, equations + [f_text], None, depth, parent, None, ())
+        on_f = place.inside(equations=place.equations + [f_text], charts=())
+        if ctx.hidden >= _HIDDEN_DEPTH or place.depth > 0 or ctx.expired():
+            _inside_candidate(ctx, on_f.inside(rows=None, point=None))
         else:   # after the components of the enclosing level, like other candidates
-            ctx.deferred[-1].append(lambda: _inside_curved(
-                ctx, q_rows, f, k, None, equations + [f_text], point_so_far, depth, (),
-                hidden=(base, parent)))
+            ctx.deferred[-1].append(lambda: _inside_curved(ctx, on_f, f, k, None))
         return
-    comp = _component(ctx, equations + [f_text], numbers, None,
-                      "hypersurface" if not _beyond_chart(ctx, equations)
-                      else "subvariety", drops, depth, parent,
+    comp = _component(ctx, place, place.equations + [f_text], numbers,
+                      "hypersurface" if not _beyond_chart(ctx, place.equations)
+                      else "subvariety", drops,
                       "exact over the component's function field (rank modulo its "
-                      "irreducible polynomial)", real=real is True, within=point_so_far,
-                      generic_point=(point_so_far, Quotient(f, k)))
+                      "irreducible polynomial)", real=real is True, within=place.point,
+                      generic_point=(place.point, Quotient(f, k)))
     if comp is None:
         return
     point = rational_point(ctx, f, names)
     if point is not None:
-        values = complete_point(ctx, point_so_far, point)
+        values = complete_point(ctx, place.point, point)
         if values is not None and numbers_at_values(ctx, values) == numbers:
             attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
-        algebraic_witness_on(ctx, comp, f, k, point_so_far, numbers)
-    if depth > 0 or depth >= ctx.max_depth or ctx.expired():
-        _go_deeper(ctx, comp, None, None, None, depth, None, (), "no rational parametrization")
+        algebraic_witness_on(ctx, comp, f, k, place.point, numbers)
+    if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
+        _go_deeper(ctx, comp, place.inside(rows=None, point=None, charts=()),
+                   "no rational parametrization")
     else:
-        _inside_curved(ctx, q_rows, f, k, comp, equations + [f_text], point_so_far, depth)
+        _inside_curved(ctx, place.inside(equations=place.equations + [f_text], charts=()),
+                       f, k, comp)
 
 
-def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
-                   point_so_far, depth, charts=(), hidden: tuple | None = None) -> None:
+def _inside_curved(ctx: SearchContext, place: Place, f, k: int,
+                   comp: Component | None) -> None:
     """Drops inside a family ``f = 0`` of the first level (depth 0) with no rational
     parametrization, where a divisor of the rows vanishes: each block (``H G^T``, and
     ``H D`` of each arm) is reduced modulo ``f`` (a row divisible by ``f`` is zero
     there), its pivots positive everywhere eliminated, and the zero set on ``f = 0`` of
     each divisor taken out of a row is solved like any set of codimension 2. Drops cut
     out there by minors alone are not searched, and the report says so. With ``comp``
-    None, ``f = 0`` is a candidate with the enclosing numbers ``hidden = (numbers,
-    parent)``, searched one such level deep."""
-    names = {n for row in q_rows for e in row for n in vars_of(ctx, e)} | set(vars_of(ctx, f))
+    None, ``f = 0`` is a candidate with the enclosing numbers (``place.base``, in
+    ``place.parent``), searched one such level deep."""
+    names = ({n for row in place.rows for e in row for n in vars_of(ctx, e)}
+             | set(vars_of(ctx, f)))
     if comp is not None:
         index = ctx.locus.components.index(comp)
-        where, numbers, depth, parent = (f"component #{index + 1}", Numbers(**comp.numbers),
-                                         depth + 1, index)
+        where = f"component #{index + 1}"
+        place = place.inside(base=Numbers(**comp.numbers), depth=place.depth + 1,
+                             parent=index)
     else:
-        where, numbers = ", ".join(equations) + " (enclosing numbers there)", hidden[0]
-        parent = hidden[1]
+        where = ", ".join(place.equations) + " (enclosing numbers there)"
     if len(names) > 4:
         # the sets cut out there are solved in up to four variables only
         note = (f"inside {where}: deeper drops not searched (no rational parametrization, "
@@ -754,7 +720,7 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
         _note(ctx, note)
         return
     quotient = Quotient(f, k)
-    blocks = [[row[:6] for row in q_rows]] + [d for _, _, d in _arm_blocks(ctx, q_rows)]
+    blocks = [[row[:6] for row in place.rows]] + [d for _, _, d in _arm_blocks(ctx, place.rows)]
     divisors: list = []
     for rows in blocks:
         rows = [quotient.reduce_row(r) for r in rows]
@@ -771,16 +737,14 @@ def _inside_curved(ctx, q_rows, f, k: int, comp: Component | None, equations,
         return
     ctx.hidden += comp is None
     try:
-        _isolated(ctx, q_rows, [[f, g] for g in divisors], equations, point_so_far, numbers,
-                  depth, parent, charts)
+        _isolated(ctx, place, [[f, g] for g in divisors])
     finally:
         ctx.hidden -= comp is None
 
 
-def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
-              charts=(), reporter=None) -> None:
+def _isolated(ctx: SearchContext, place: Place, rests) -> None:
     """Common zeros of the remaining minor combinations (codimension 2 or more)."""
-    free = [n for n in ctx.ring_names if n not in point_so_far]
+    free = [n for n in ctx.ring_names if n not in place.point]
     rational_points: list[dict] = []
     algebraic_points: list[tuple] = []
     for polys in rests:
@@ -789,11 +753,10 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
         if not names_used:
             continue
         if len(names_used) > 2:
-            if len(names_used) <= 4 and _solve_with_parameters(
-                    ctx, q_rows, polys, names_used, equations, point_so_far, base, depth,
-                    parent, charts, reporter):
+            if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
                 continue
-            note = (f"depth {depth}: lower-dimensional drops in {len(names_used)} variables "
+            note = (f"depth {place.depth}: lower-dimensional drops in {len(names_used)} "
+                    f"variables "
                     f"({', '.join(names_used)}) not solved (solved: up to two variables, "
                     f"and up to four when the equations have at most "
                     f"{_PARAMETER_SOLVE_TERMS} terms)")
@@ -807,17 +770,13 @@ def _isolated(ctx, q_rows, rests, equations, point_so_far, base, depth, parent,
         algebraic_points += algebraic
     created = []
     for point in rational_points:
-        created.append(_decide_point(ctx, q_rows, point, None, equations, point_so_far,
-                                     base, depth, parent, charts, free, reporter))
+        created.append(_decide_point(ctx, place, point, None, free))
     for x, g, values, eqs, alpha in algebraic_points:
-        created.append(_decide_point(ctx, q_rows, values, (x, g, eqs, alpha), equations,
-                                     point_so_far, base, depth, parent, charts, free,
-                                     reporter))
-    _intersections(ctx, q_rows, [c for c in created if c is not None], point_so_far,
-                   depth, charts, free)
+        created.append(_decide_point(ctx, place, values, (x, g, eqs, alpha), free))
+    _intersections(ctx, place, [c for c in created if c is not None], free)
 
 
-def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> None:
+def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
     """Intersections of two families found together, in disjoint variables (two
     fingers stretched at once): the numbers where both hold, exactly (over the compositum
     of their fields when both are irrational and their fields are linearly disjoint)."""
@@ -833,7 +792,7 @@ def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> N
                 f"#{ctx.locus.components.index(cj) + 1} meet: not decided (their fields "
                 "are not linearly disjoint)")
             continue
-        if depth >= ctx.max_depth:
+        if place.depth >= ctx.max_depth:
             continue
         moduli = [Quotient(a[1], ctx.ring_names.index(a[0])) for a in (ai, aj) if a]
         reducer = (moduli[0] if len(moduli) == 1 else Tower(moduli)) if moduli else None
@@ -843,9 +802,9 @@ def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> N
             return substitute_values(ctx, rows, vj, aj[0] if aj else None)
 
         if any(c.is_zero() or (reducer is not None and reducer.is_zero(c))
-               for c in (here([[c]])[0][0] for c in charts)):
+               for c in (here([[c]])[0][0] for c in place.charts)):
             continue  # outside the enclosing parametrization
-        rows = here(q_rows)
+        rows = here(place.rows)
         if reducer is None:
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
         else:
@@ -856,27 +815,28 @@ def _intersections(ctx, q_rows, created, point_so_far, depth, charts, free) -> N
         kind = "isolated" if len(dims_i | dims_j) == len(free) else "subvariety"
         fields = ("Q(alpha, beta), two linearly disjoint fields" if len(moduli) == 2 else
                   "Q(alpha)" if moduli else "the function field of the free variables")
-        comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth + 1,
-                          ctx.locus.components.index(ci), f"exact over {fields}",
+        comp = _component(ctx, place.inside(depth=place.depth + 1,
+                                            parent=ctx.locus.components.index(ci)),
+                          eqs, numbers, kind, {"Q"}, f"exact over {fields}",
                           condition=f"{ci.condition}; and {cj.condition}",
-                          within=point_so_far)
+                          within=place.point)
         if comp is None:
             continue
         values = {**vi, **vj}
         if not moduli:
-            full = complete_point(ctx, point_so_far, values)
+            full = complete_point(ctx, place.point, values)
             if full is not None and numbers_at_values(ctx, full) == numbers:
                 attach_witness(ctx, comp, to_at(ctx, full), numbers)
         elif len(moduli) == 1:
             (x, g) = (ai or aj)[:2]
-            attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers)
-        elif not point_so_far:
+            attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers)
+        elif not place.point:
             attach_two_root_witness(ctx, comp, (ai[0], ai[1], vi), (aj[0], aj[1], vj),
                                     numbers)
 
 
-def _go_deeper(ctx, comp: Component | None, rows, equations, sub_point, depth, reporter,
-               charts, why_not: str | None = None) -> None:
+def _go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
+               why_not: str | None = None) -> None:
     """Search inside a new component for deeper drops, or say why it was not done."""
     if comp is None or comp.kind == "isolated":
         return
@@ -884,22 +844,20 @@ def _go_deeper(ctx, comp: Component | None, rows, equations, sub_point, depth, r
     where = f"inside component #{index + 1} ({comp.condition})"
     if len(where) > 160:
         where = f"inside component #{index + 1}"
-    if depth >= ctx.max_depth:
+    if place.depth >= ctx.max_depth:
         ctx.locus.unexplored.append(f"{where}: deeper drops not explored (max depth "
                                     f"{ctx.max_depth})")
     elif why_not is not None:
         ctx.locus.unexplored.append(f"{where}: deeper drops not explored ({why_not})")
     else:
-        _explore(ctx, rows, equations, sub_point, depth + 1, index,
-                 reporter or _Progress(False), charts)
+        _explore(ctx, place.inside(depth=place.depth + 1, parent=index))
 
 
 # the largest minor combination (in terms) solved with parameters
 _PARAMETER_SOLVE_TERMS = 400
 
 
-def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, point_so_far,
-                           base, depth, parent, charts, reporter=None) -> bool:
+def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[str]) -> bool:
     """Codimension-2 families in three or four variables, decided exactly.
 
     Two variables ``x, y`` are solved over the field of the others (the parameters):
@@ -928,11 +886,9 @@ def _solve_with_parameters(ctx, q_rows, polys, names: list[str], equations, poin
                 continue
             hx = x if h.degrees()[kx] else _variable_to_solve(ctx, h, exclude=(y,))
             if h.degrees()[ctx.ring_names.index(hx)] == 1:
-                _solve_linear_x(ctx, q_rows, polys, h, hx, y, equations, point_so_far, base,
-                                depth, parent, charts, reporter)
+                _solve_linear_x(ctx, place, polys, h, hx, y)
             else:
-                _solve_curved_x(ctx, q_rows, polys, h, hx, y, equations, point_so_far, base,
-                                depth, parent, charts, reporter)
+                _solve_curved_x(ctx, place, polys, h, hx, y)
         return True
     return False
 
@@ -966,8 +922,7 @@ def _off_charts(charts, substitute, quotient=None) -> bool:
     return False
 
 
-def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
-                    parent, charts, reporter=None) -> None:
+def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
     kx, ky_first = ctx.ring_names.index(x), ctx.ring_names.index(y)
     y_first = y
     h1, h0 = split_linear(h, kx)
@@ -978,8 +933,8 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             common = p if common is None else common.gcd(p)
     if common is None or common.is_constant():
         return
-    rows_x = substitute_rows(q_rows, kx, h0, h1)
-    inner = dict(point_so_far)
+    rows_x = substitute_rows(place.rows, kx, h0, h1)
+    inner = dict(place.point)
     inner[x] = (h0, h1)
     _, factors = factor(common)
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
@@ -1003,39 +958,40 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
                 c = at_x(c)
                 return substitute(c, ky, k0, k1, c.degrees()[ky])
 
-            if _off_charts([*charts, h1], at_xy):
+            if _off_charts([*place.charts, h1], at_xy):
                 continue
             rows = substitute_rows(rows_x, ky, k0, k1)
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
             decided = "exact over the family's function field (two substitutions)"
-            if numbers == base:
+            if numbers == place.base:
                 sub_point = dict(inner)
                 sub_point[y] = (k0, k1)
-                sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
+                sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
                                    not c.is_constant()) + ((k1,) if not k1.is_constant()
                                                            else ())
-                _inside_candidate(ctx, rows, equations + [poly_text(ctx, h),
-                                                          poly_text(ctx, k)],
-                                  sub_point, depth, parent, reporter, sub_charts)
+                _inside_candidate(ctx, place.inside(
+                    rows=rows, equations=place.equations + [poly_text(ctx, h),
+                                                            poly_text(ctx, k)],
+                    point=sub_point, charts=sub_charts))
                 continue
         else:
             quotient = Quotient(k, ky)
-            if _off_charts([*charts, h1], at_x, quotient):
+            if _off_charts([*place.charts, h1], at_x, quotient):
                 continue
             numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
             decided = ("exact over the family's function field (a substitution, then "
                        "ranks modulo its irreducible polynomial)")
-        if numbers == base:
-            _inside_candidate(ctx, None, equations + [poly_text(ctx, h), poly_text(ctx, k)],
-                              None, depth, parent, None, ())
+        eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, k)]
+        if numbers == place.base:
+            _inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
+                                                charts=()))
             continue
-        eqs = equations + [poly_text(ctx, h), poly_text(ctx, k)]
         chain = None
         if k.degrees()[ky] == 1:
             chain = dict(inner)
             chain[y] = (k0, k1)
-        comp = _component(ctx, eqs, numbers, None, "subvariety", {"Q"}, depth, parent,
-                          decided, chain=chain, within=inner,
+        comp = _component(ctx, place, eqs, numbers, "subvariety", {"Q"}, decided,
+                          chain=chain, within=inner,
                           generic_point=None if chain is not None else (inner, quotient))
         if comp is None:
             continue
@@ -1043,23 +999,26 @@ def _solve_linear_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
         if k.degrees()[ky] == 1:
             sub_point = dict(inner)
             sub_point[y] = (k0, k1)
-            sub_charts = tuple(c for c in (at_xy(c) for c in [*charts, h1]) if
+            sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
                                not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
-            _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, sub_charts)
-        elif depth > 0 or depth >= ctx.max_depth or ctx.expired():
-            _go_deeper(ctx, comp, None, eqs, None, depth, reporter, charts,
+            _go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point,
+                                               charts=sub_charts))
+        elif place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
+            _go_deeper(ctx, comp, place.inside(rows=None, equations=eqs, point=None),
                        "no rational parametrization")
         else:
-            _inside_curved(ctx, rows_x, k, ky, comp, eqs, inner, depth,
-                           (*charts, h1) if not h1.is_constant() else charts)
+            _inside_curved(ctx, place.inside(
+                rows=rows_x, equations=eqs, point=inner,
+                charts=(*place.charts, h1) if not h1.is_constant() else place.charts),
+                k, ky, comp)
 
 
-def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, depth,
-                    parent, charts, reporter=None, swapped: bool = False) -> None:
+def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
+                    swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
-    if _enclosing_numbers_at_a_point(ctx, q_rows, polys, h, x, y, base):
-        note = (f"inside {', '.join(equations + [poly_text(ctx, h)])}, {y} a common root "
-                "of the minors (enclosing numbers there): deeper drops not searched (no "
+    if _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y):
+        note = (f"inside {', '.join(place.equations + [poly_text(ctx, h)])}, {y} a common "
+                "root of the minors (enclosing numbers there): deeper drops not searched (no "
                 "rational parametrization)")
         _note(ctx, note)
         return
@@ -1079,54 +1038,52 @@ def _solve_curved_x(ctx, q_rows, polys, h, x, y, equations, point_so_far, base, 
             if _no_real_points(ctx, n):
                 continue
             if n.degrees()[ky] == 1:
-                _solve_linear_x(ctx, q_rows, [*polys, h], n, y, x, equations, point_so_far,
-                                base, depth, parent, charts, reporter)
+                _solve_linear_x(ctx, place, [*polys, h], n, y, x)
             else:
-                _solve_curved_x(ctx, q_rows, [*polys, h], n, y, x, equations,
-                                point_so_far, base, depth, parent, charts, reporter,
-                                swapped=True)
+                _solve_curved_x(ctx, place, [*polys, h], n, y, x, swapped=True)
         return
     if len(common) > 2:
-        note = (f"depth {depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} values of "
-                f"{y} share each point: not solved")
+        note = (f"depth {place.depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} "
+                f"values of {y} share each point: not solved")
         _note(ctx, note)
         return
     if len(common) < 2:
         return
     c0, c1 = smallest_fraction(*common, quotient)  # y = -c0/c1, c1 free of x
-    if _off_charts([*charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
+    if _off_charts([*place.charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
                    quotient):
         return
-    rows = substitute_rows(q_rows, ky, c0, c1)
+    rows = substitute_rows(place.rows, ky, c0, c1)
     numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
-    if numbers == base:
-        _inside_candidate(ctx, None, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)],
-                          None, depth, parent, None, ())
+    eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, y_eq)]
+    if numbers == place.base:
+        _inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None, charts=()))
         return
-    inner = dict(point_so_far)
+    inner = dict(place.point)
     inner[y] = (c0, c1)
-    comp = _component(ctx, equations + [poly_text(ctx, h), poly_text(ctx, y_eq)], numbers, None,
-                      "subvariety", {"Q"}, depth, parent,
+    comp = _component(ctx, place, eqs, numbers, "subvariety", {"Q"},
                       "exact over the family's function field (ranks modulo its "
                       "irreducible polynomial)", within=inner,
                       generic_point=(inner, quotient))
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)
-    if depth > 0 or depth >= ctx.max_depth or ctx.expired():
-        _go_deeper(ctx, comp, None, None, None, depth, reporter, charts,
+    if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
+        _go_deeper(ctx, comp, place.inside(rows=None, point=None),
                    "no rational parametrization")
     else:
-        _inside_curved(ctx, rows, h, kx, comp, comp.equations, inner, depth,
-                       (*charts, c1) if not c1.is_constant() else charts)
+        _inside_curved(ctx, place.inside(
+            rows=rows, equations=comp.equations, point=inner,
+            charts=(*place.charts, c1) if not c1.is_constant() else place.charts),
+            h, kx, comp)
 
 
 # parameters of a family set to random integers of at most this size
 _SPECIALIZE_BOUND = 1 << 16
 
 
-def _enclosing_numbers_at_a_point(ctx, q_rows, polys, h, x, y, base: Numbers) -> bool:
+def _enclosing_numbers_at_a_point(ctx: SearchContext, place: Place, polys, h, x, y) -> bool:
     """Whether the family ``h = 0`` (``x`` curved), ``y`` a common root of ``polys``,
     has the enclosing numbers, shown at one point of it: the other variables set to
     random integers, ``x`` a root of a factor of ``h`` there, ``y`` from the gcd over
@@ -1149,12 +1106,12 @@ def _enclosing_numbers_at_a_point(ctx, q_rows, polys, h, x, y, base: Numbers) ->
     common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient)
     if len(common) != 2:
         return False
-    rows = substitute_rows(substitute_values(ctx, q_rows, values), ky, *common)
-    return numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient) == base
+    rows = substitute_rows(substitute_values(ctx, place.rows, values), ky, *common)
+    return numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient) == place.base
 
 
-def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far, base,
-                  depth, parent, charts, free, reporter=None) -> tuple | None:
+def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
+                  free) -> tuple | None:
     """The numbers on the set where some coordinates are fixed (rationals, or
     polynomials over Q in a root ``x`` of ``g`` when ``algebraic = (x, g, equations,
     alpha)``, ``alpha`` naming what ``x`` stands for), every
@@ -1164,79 +1121,81 @@ def _decide_point(ctx, q_rows, values: dict, algebraic, equations, point_so_far,
         x, g, _, _ = algebraic
         quotient = Quotient(g, ctx.ring_names.index(x))
     x = algebraic[0] if algebraic is not None else None
-    for c in charts:
+    for c in place.charts:
         c_here = substitute_values(ctx, [[c]], values, x)[0][0]
         if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
             return None  # outside the enclosing parametrization
-    rows = substitute_values(ctx, q_rows, values, x)
+    rows = substitute_values(ctx, place.rows, values, x)
     if quotient is None:
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     else:
         numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
-    eqs = list(equations)
+    eqs = list(place.equations)
     if algebraic is not None:
         eqs += [poly_text(ctx, e) for e in algebraic[2]]
     else:
         eqs += [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
     dims = set(values) | ({x} if x is not None else set())
     kind = "isolated" if len(dims) == len(free) else "subvariety"
-    if numbers == base:
+    if numbers == place.base:
         if kind == "subvariety":
-            sub_point = dict(point_so_far)
+            sub_point = dict(place.point)
             zctx = ctx.ring.zctx
             if algebraic is None:
                 for n, v in values.items():
                     sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
-            _inside_candidate(ctx, rows if algebraic is None else None, eqs, sub_point,
-                              depth, parent, reporter, charts)
+            _inside_candidate(ctx, place.inside(rows=rows if algebraic is None else None,
+                                                equations=eqs, point=sub_point))
         return None
     if algebraic is None:
-        chain = dict(point_so_far)
+        chain = dict(place.point)
         for n, v in values.items():
             chain[n] = (ctx.ring.zctx.constant(-v.numerator),
                         ctx.ring.zctx.constant(v.denominator))
-        comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
+        comp = _component(ctx, place, eqs, numbers, kind, {"Q"},
                           "exact at the point" if kind == "isolated" else
                           "exact over the function field of the free variables",
                           chain=chain)
         if comp is None:
             return None
         for offset in range(6):
-            full = complete_point(ctx, point_so_far, values, offset)
+            full = complete_point(ctx, place.point, values, offset)
             if full is not None and numbers_at_values(ctx, full) == numbers:
                 attach_witness(ctx, comp, to_at(ctx, full), numbers)
                 break
-        sub_point = dict(point_so_far)
+        sub_point = dict(place.point)
         zctx = ctx.ring.zctx
         for n, v in values.items():
             sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
-        _go_deeper(ctx, comp, rows, eqs, sub_point, depth, reporter, charts)
+        _go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point))
         return comp, values, None
     x, g, eq_polys, alpha = algebraic
     condition = algebraic_condition(ctx, x, g, values)
-    if equations:
-        inside = _condition(ctx, equations)
+    if place.equations:
+        inside = _condition(ctx, place.equations)
         condition = " or ".join(f"{inside}, {part}" for part in condition.split(" or "))
     m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
                                                                 sp.Symbol("alpha")))
-    comp = _component(ctx, eqs, numbers, None, kind, {"Q"}, depth, parent,
+    comp = _component(ctx, place, eqs, numbers, kind, {"Q"},
                       f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
-                      "conjugate point at once)", condition=condition, within=point_so_far)
+                      "conjugate point at once)", condition=condition, within=place.point)
     if comp is None:
         return None
-    attach_algebraic_witness(ctx, comp, x, g, values, point_so_far, numbers, alpha)
-    _go_deeper(ctx, comp, rows, eqs, None, depth, reporter, charts,
+    attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
+    _go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
                "a family with irrational coordinates; only its intersections with the "
                "families found with it")
     return comp, values, (x, g)
 
 
 # --- components -------------------------------------------------------------------------
-def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, parent,
-               decided, condition: str | None = None, real: bool = True,
-               chain: dict | None = None, within: dict | None = None,
+def _component(ctx: SearchContext, place: Place, equations: list[str], numbers: Numbers,
+               kind: str, drops, decided: str, *, witness: dict | None = None,
+               condition: str | None = None, real: bool = True, chain: dict | None = None,
+               within: dict | None = None,
                generic_point: tuple | None = None) -> Component | None:
-    """Record a component (None when the same set is already recorded). ``chain`` is
+    """Record a component found at ``place`` (its depth and parent; None when the same
+    set is already recorded). ``chain`` is
     its parametrization by successive linear substitutions (variable -> ``(f0, f1)``,
     the variable equals ``-f0/f1``), used to recognize the same set found twice;
     ``within``, when there is no chain, the parametrization of the set it was found
@@ -1263,8 +1222,8 @@ def _component(ctx, equations, numbers: Numbers, witness, kind, drops, depth, pa
     comp = Component(equations=equations, numbers=here, witness=None, real=real,
                      kind=kind, condition=condition or _condition(ctx, equations),
                      drops=_drops_text(
-                         drops), changes=changes, decided=decided, depth=depth,
-                     parent=parent,
+                         drops), changes=changes, decided=decided, depth=place.depth,
+                     parent=place.parent,
                      outside=_denominators(ctx, chain if chain is not None else within,
                                            equations))
     if witness is not None:
@@ -1407,7 +1366,7 @@ def _condition(ctx, equations: list[str]) -> str:
     return ", ".join(ctx.readings.get(eq, f"{eq} = 0") for eq in equations)
 
 
-def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
+def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
     """Every subset of the free revolute joints at q = pi, where t = tan(q/2) is
     infinite: each slice is a system in the other variables, searched like the t chart
     (its generic numbers, and every drop inside it, at every depth). A component there
@@ -1417,22 +1376,21 @@ def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
     rev = [name for kind, name in ctx.kinds.values() if kind == "revolute"]
     subsets = [s for size in range(1, len(rev) + 1)
                for s in itertools.combinations(rev, size)]
-    reporter.add(len(subsets))
+    ctx.reporter.add(len(subsets))
     for subset in subsets:
         where = ", ".join(f"{n} = pi" for n in subset)
         if ctx.expired():
             ctx.locus.unexplored.append(f"{where}: not searched, time bound reached")
             continue
-        reporter.step(where)
+        ctx.reporter.step(where)
         revolute = dict(ctx.config.revolute)
         for n in subset:
             revolute[n] = (sp.Integer(-1), sp.Integer(0))
         config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters,
                                ctx.config.free - set(subset))
-        sub, rows = _context(ctx.model, config, ctx.locus, ctx.generic, ctx.max_depth,
-                             ctx.rng, ctx.deadline, ctx.readings, ctx.chains)
-        sub.pi = frozenset(subset)
-        sub.owners = ctx.owners
+        chart, rows = _chart(ctx.model, config)
+        sub = dataclasses.replace(ctx, **chart, pi=frozenset(subset), hidden=0, splits=0,
+                                  deferred=[], polys={})
         equations = [f"s_{n}" for n in subset]
         for n in subset:
             ctx.readings[f"s_{n}"] = f"{n} = pi"
@@ -1443,7 +1401,8 @@ def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
             parent, depth = ctx.locus.components.index(wider), 1
         elif numbers != ctx.generic:
             kind = "chart" if sub.ring_names else "isolated"
-            comp = _component(sub, equations, numbers, None, kind, {"Q"}, 0, None,
+            comp = _component(sub, Place(rows=rows, equations=[], point={}, depth=0),
+                              equations, numbers, kind, {"Q"},
                               "exact over the function field of the other variables"
                               if sub.ring_names else "exact at the point",
                               condition=where)
@@ -1466,58 +1425,28 @@ def _pi_slices(ctx: _Context, reporter, pi_size: int | None = None) -> None:
                 f"searched (sets of joints at pi are searched inside up to {pi_size} at "
                 "once: pi_size)")
             continue
-        _explore(sub, rows, equations, {}, depth, parent, reporter)
+        _explore(sub, Place(rows=rows, equations=equations, point={}, depth=depth,
+                            parent=parent))
     if rev:
         ctx.locus.notes.append(
             "s_q = cot(q/2): an equation s_q (= 0) is q = pi, outside the chart of t_q; "
             "every set of joints at pi is searched like the t chart.")
 
 
-def _default_pi_size(ctx: _Context) -> int | None:
+def _default_pi_size(ctx: SearchContext) -> int | None:
     """How many joints at pi at once are searched inside by default: every set for up
     to four free revolute joints, then fewer as the number of sets grows (2^r - 1)."""
     rev = sum(1 for kind, _ in ctx.kinds.values() if kind == "revolute")
     return None if rev <= 4 else 2 if rev <= 6 else 1 if rev <= 8 else 0
 
 
-def _settle_realness(ctx: _Context) -> None:
+def _settle_realness(ctx: SearchContext) -> None:
     """A component is called real only with a real witness (rational, or algebraic in
     an isolating interval); one without is marked as undecided, never as real (those
     proved to have no real points were dropped when found)."""
     for c in ctx.locus.components:
         c.real = c.witness is not None or c.algebraic_witness is not None
         c.real_points = "witness" if c.real else "undecided"
-
-
-class _Progress:
-    """A rich progress bar on standard error, or nothing."""
-
-    def __init__(self, enabled: bool):
-        self.enabled = enabled
-        self._progress = None
-        self._task = None
-
-    def __enter__(self):
-        if self.enabled:
-            from rich.progress import Progress
-
-            self._progress = Progress(transient=True)
-            self._progress.__enter__()
-            self._task = self._progress.add_task("locus", total=0)
-        return self
-
-    def __exit__(self, *exc):
-        if self._progress is not None:
-            self._progress.__exit__(*exc)
-
-    def add(self, n: int) -> None:
-        if self._progress is not None:
-            total = self._progress.tasks[0].total or 0
-            self._progress.update(self._task, total=total + n)
-
-    def step(self, text: str) -> None:
-        if self._progress is not None:
-            self._progress.update(self._task, advance=1, description=text[:60])
 
 
 __all__ = ["LocusError", "compute_locus"]
