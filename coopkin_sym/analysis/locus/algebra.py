@@ -22,6 +22,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text
@@ -41,11 +42,11 @@ def normalize(f):
     return f / f.context().constant(c) if c != 1 else f
 
 
-def vars_of(ctx, f) -> list[str]:
+def vars_of(ctx: SearchContext, f) -> list[str]:
     return [n for n, d in zip(ctx.ring_names, f.degrees(), strict=True) if d > 0]
 
 
-def poly_text(ctx, f) -> str:
+def poly_text(ctx: SearchContext, f) -> str:
     """``f`` as text; its reading in angles is kept in ``ctx.readings`` (when the
     context has one) so that conditions never parse text back."""
     text = sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
@@ -58,7 +59,7 @@ def poly_text(ctx, f) -> str:
     return text
 
 
-def read_poly(ctx, f, text: str) -> str:
+def read_poly(ctx: SearchContext, f, text: str) -> str:
     """The condition ``f = 0`` in angles where it reads simply (``q2 = pi/2``,
     ``q1 = -q2``, ``q1 + q2 = pi (mod 2*pi)``, ``d4 = 1/2``), else ``"<text> = 0"``.
 
@@ -90,7 +91,7 @@ def read_poly(ctx, f, text: str) -> str:
     return f"{text} = 0"
 
 
-def has_real_point(ctx, f, names) -> bool | None:
+def has_real_point(ctx: SearchContext, f, names) -> bool | None:
     """True when a real point of ``f = 0`` is found (a real root of a restriction to
     rational values of the other variables), False when ``f`` is proved to have no real
     zero (:func:`no_real_zeros`), None when undecided."""
@@ -161,7 +162,7 @@ def _real_root_count(f, k: int) -> int:
     return sp.Poly(coeffs[::-1], sp.Symbol("y")).count_roots()
 
 
-def rational_point(ctx, f, names) -> dict[str, Fraction] | None:
+def rational_point(ctx: SearchContext, f, names) -> dict[str, Fraction] | None:
     expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
     syms = [ctx.symbols[n] for n in names]
     for x_idx in range(len(syms)):
@@ -182,14 +183,14 @@ def rational_point(ctx, f, names) -> dict[str, Fraction] | None:
     return None
 
 
-def name_of(ctx, symbol_name: str) -> str:
+def name_of(ctx: SearchContext, symbol_name: str) -> str:
     for n, s in ctx.symbols.items():
         if str(s) == symbol_name:
             return n
     return symbol_name
 
 
-def as_poly(ctx, v, x: str | None):
+def as_poly(ctx: SearchContext, v, x: str | None):
     """A coordinate value (``Fraction``, or ``fmpq_poly`` in ``x``) as ``(P, c)``:
     an integer polynomial in the ring and a positive integer with ``v = P/c``."""
     zctx = ctx.ring.zctx
@@ -206,7 +207,7 @@ def as_poly(ctx, v, x: str | None):
     return zctx.from_dict(terms), den
 
 
-def substitute_values(ctx, rows, values: dict, x: str | None = None):
+def substitute_values(ctx: SearchContext, rows, values: dict, x: str | None = None):
     """``rows`` with each variable in ``values`` replaced (rationals, or polynomials in
     the algebraic variable ``x``), rows scaled by the cleared denominators. A value for
     ``x`` itself (a polynomial in its own slot) goes first, so the others' values,
@@ -219,7 +220,7 @@ def substitute_values(ctx, rows, values: dict, x: str | None = None):
     return rows
 
 
-def solve_small(ctx, polys, names: list[str]):
+def solve_small(ctx: SearchContext, polys, names: list[str]):
     """Common zeros of ``polys`` in one or two variables, exactly: the rational points,
     the real algebraic ones as ``(x, g, {y: r(x)}, equations, alpha)`` (``g``
     irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
@@ -235,7 +236,7 @@ def solve_small(ctx, polys, names: list[str]):
     return solve_two(ctx, polys, names)
 
 
-def solve_two(ctx, polys, names: list[str]):
+def solve_two(ctx: SearchContext, polys, names: list[str]):
     """:func:`solve_small` for two variables, eliminating the second: ``x`` must
     generate each point's field (else the point is left unresolved)."""
     zctx = ctx.ring.zctx
@@ -282,7 +283,7 @@ def solve_two(ctx, polys, names: list[str]):
     return points, algebraic, unresolved
 
 
-def solve_sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
+def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
     """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
     (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
     point's field. Returns ``(y, m(z), {y: z - c r(z), x: r(z)}, equations)`` with the
@@ -330,20 +331,20 @@ def solve_sheared(ctx, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple
     return []
 
 
-def linear_equation(ctx, name: str, value: Fraction):
+def linear_equation(ctx: SearchContext, name: str, value: Fraction):
     zctx = ctx.ring.zctx
     return zctx.constant(value.denominator) * zctx.gens()[ctx.ring_names.index(name)] - \
         zctx.constant(value.numerator)
 
 
-def value_equation(ctx, name: str, value, x: str):
+def value_equation(ctx: SearchContext, name: str, value, x: str):
     """``den * name - P(x)`` for ``name = P(x)/den``."""
     zctx = ctx.ring.zctx
     num, den = as_poly(ctx, value, x)
     return zctx.constant(den) * zctx.gens()[ctx.ring_names.index(name)] - num
 
 
-def univariate(ctx, g, x: str) -> flint.fmpq_poly:
+def univariate(ctx: SearchContext, g, x: str) -> flint.fmpq_poly:
     k = ctx.ring_names.index(x)
     coeffs = [0] * (g.degrees()[k] + 1)
     for mon, c in g.to_dict().items():
@@ -351,7 +352,7 @@ def univariate(ctx, g, x: str) -> flint.fmpq_poly:
     return flint.fmpq_poly(coeffs)
 
 
-def coefficients_in(ctx, p, kx: int, ky: int) -> list:
+def coefficients_in(ctx: SearchContext, p, kx: int, ky: int) -> list:
     """``p(x, y)`` as a list of polynomials in ``x`` (``fmpq_poly``), by power of y."""
     by_y: dict[int, dict[int, int]] = {}
     for mon, c in p.to_dict().items():
@@ -366,7 +367,7 @@ def coefficients_in(ctx, p, kx: int, ky: int) -> list:
     return out
 
 
-def roots(ctx, g, name: str):
+def roots(ctx: SearchContext, g, name: str):
     """Rational roots of a univariate polynomial ``g`` (in ``name``), and its
     irreducible factors of higher degree that have real roots (those without are
     listed as dropped)."""
@@ -390,7 +391,7 @@ def roots(ctx, g, name: str):
     return roots, curved
 
 
-def linearly_disjoint(ctx, g1, x1: str, g2, x2: str) -> bool:
+def linearly_disjoint(ctx: SearchContext, g1, x1: str, g2, x2: str) -> bool:
     """Whether the roots of the irreducible univariate ``g1`` (in ``x1``) and ``g2`` (in
     ``x2``) generate linearly disjoint fields: some ``alpha + c beta`` (small ``c``)
     has degree ``deg g1 * deg g2`` over Q (its minimal polynomial, a resultant, is

@@ -893,7 +893,7 @@ def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[
     return False
 
 
-def _variable_to_solve(ctx, f, exclude=()) -> str:
+def _variable_to_solve(ctx: SearchContext, f, exclude=()) -> str:
     """A variable of ``f`` to solve it for: the first in which it is linear, else the
     first of lowest degree (variables in ``exclude`` last)."""
     degrees = f.degrees()
@@ -903,7 +903,7 @@ def _variable_to_solve(ctx, f, exclude=()) -> str:
     return names[0]
 
 
-def _no_real_points(ctx, f) -> bool:
+def _no_real_points(ctx: SearchContext, f) -> bool:
     """Whether ``f = 0`` has no real points (then it is listed as dropped)."""
     if has_real_point(ctx, f, vars_of(ctx, f)) is not False:
         return False
@@ -1236,7 +1236,7 @@ def _component(ctx: SearchContext, place: Place, equations: list[str], numbers: 
     return comp
 
 
-def _vanish_at(ctx, comp: Component, point: dict, quotient) -> bool:
+def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bool:
     """Whether every equation of ``comp`` (recorded in this chart) vanishes at the
     generic point given by the parametrization ``point`` and, when not None, the
     ``quotient`` by an irreducible polynomial."""
@@ -1252,14 +1252,14 @@ def _vanish_at(ctx, comp: Component, point: dict, quotient) -> bool:
     return True
 
 
-def _beyond_chart(ctx, equations: list[str]) -> list[str]:
+def _beyond_chart(ctx: SearchContext, equations: list[str]) -> list[str]:
     """The equations other than those of the chart (``s_<joint>`` for the joints at
     q = pi here)."""
     chart = {f"s_{n}" for n in ctx.pi}
     return [e for e in equations if e not in chart]
 
 
-def _denominators(ctx, chain: dict | None, equations: list[str]) -> list[str]:
+def _denominators(ctx: SearchContext, chain: dict | None, equations: list[str]) -> list[str]:
     """The irreducible factors of the denominators of a linear parametrization: its
     image is the set where the equations hold and none of them vanishes (where one
     does, the equations may hold on a wider set, searched apart by
@@ -1291,7 +1291,7 @@ def _on_chain(p, ctx, chain: dict):
     return p
 
 
-def _contained(ctx, inner: dict, outer: dict) -> bool:
+def _contained(ctx: SearchContext, inner: dict, outer: dict) -> bool:
     """Whether the set of chain ``inner`` lies in the set of chain ``outer`` (both in
     the variables of ``ctx``): every relation ``f1 x + f0`` of ``outer`` vanishes on
     ``inner``, and no denominator ``f1`` of ``outer`` does."""
@@ -1305,7 +1305,7 @@ def _contained(ctx, inner: dict, outer: dict) -> bool:
     return True
 
 
-def _wider_component(ctx, chain: dict, numbers: Numbers) -> Component | None:
+def _wider_component(ctx: SearchContext, chain: dict, numbers: Numbers) -> Component | None:
     """A component with the same numbers, recorded in a chart with fewer joints at pi,
     that contains the set of ``chain`` (in a chart with joints at pi) because its
     equations do not involve the joints at pi here (so they hold there as they are);
@@ -1350,7 +1350,7 @@ def _transfer(p, source, target):
     return target.ring.zctx.from_dict(terms)
 
 
-def _within(ctx, chain: dict, other: Component, numbers: Numbers) -> bool:
+def _within(ctx: SearchContext, chain: dict, other: Component, numbers: Numbers) -> bool:
     """Whether the set of ``chain`` lies in component ``other`` of the same chart with
     the same numbers (then it adds nothing: drops deeper inside it are deeper inside
     ``other`` and searched there)."""
@@ -1360,7 +1360,7 @@ def _within(ctx, chain: dict, other: Component, numbers: Numbers) -> bool:
     return _contained(ctx, chain, known[1])
 
 
-def _condition(ctx, equations: list[str]) -> str:
+def _condition(ctx: SearchContext, equations: list[str]) -> str:
     """The equations in angles where they read simply (see
     :func:`~coopkin_sym.analysis.locus.algebra.read_poly`)."""
     return ", ".join(ctx.readings.get(eq, f"{eq} = 0") for eq in equations)

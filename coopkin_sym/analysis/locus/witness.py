@@ -27,6 +27,7 @@ import sympy as sp
 from coopkin_sym.analysis.floatcheck import float_numbers
 from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
+from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
 from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
@@ -41,7 +42,8 @@ from coopkin_sym.model.configuration import Configuration
 FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 
 
-def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: int = 0):
+def complete_point(ctx: SearchContext, point_so_far: dict, point: dict[str, Fraction],
+                   offset: int = 0):
     """A full point: the given coordinates, nice values for the others, then the
     parametrized coordinates of enclosing components (``x = -f0/f1``)."""
     values = dict(point)
@@ -57,7 +59,7 @@ def complete_point(ctx, point_so_far: dict, point: dict[str, Fraction], offset: 
     return values
 
 
-def nice_value(ctx, name: str, k: int) -> Fraction:
+def nice_value(ctx: SearchContext, name: str, k: int) -> Fraction:
     """The ``k``-th nice value for variable ``name``: parameters are lengths, so they
     get positive ones."""
     v = NICE[k % len(NICE)]
@@ -77,7 +79,7 @@ def eval_at(p, args: list[Fraction]) -> Fraction:
     return total
 
 
-def witness_linear(ctx, sub_rows, name, f0, f1, point_so_far, numbers):
+def witness_linear(ctx: SearchContext, sub_rows, name, f0, f1, point_so_far, numbers):
     """A rational point of the component where the numbers are the component's."""
     others = [n for n in ctx.ring_names if n != name and n not in point_so_far]
     tries = itertools.islice(itertools.product(NICE, repeat=len(others)), 200)
@@ -93,14 +95,14 @@ def witness_linear(ctx, sub_rows, name, f0, f1, point_so_far, numbers):
     return None
 
 
-def numbers_at_values(ctx, values: dict[str, Fraction]) -> Numbers | None:
+def numbers_at_values(ctx: SearchContext, values: dict[str, Fraction]) -> Numbers | None:
     at = to_at(ctx, values)
     if at is None:
         return None
     return analyze(ctx.model, Configuration.parse(ctx.model, at)).numbers
 
 
-def to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
+def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> dict[str, str] | None:
     """A full point in ``--at`` syntax (joints set by the caller and fixed values
     included)."""
     out: dict[str, str] = {}
@@ -125,8 +127,8 @@ def to_at(ctx, values: dict[str, Fraction]) -> dict[str, str] | None:
     return out
 
 
-def complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, values: dict,
-                        offset: int = 0) -> dict | None:
+def complete_algebraic(ctx: SearchContext, point_so_far: dict, x: str, field: NumberField,
+                       values: dict, offset: int = 0) -> dict | None:
     """A full point over ``Q(alpha)``: every variable but ``x`` as an element (a
     polynomial in ``x`` of degree below ``deg g``); nice rationals for the free ones."""
     full = {n: field.element(v if not isinstance(v, Fraction) else
@@ -144,7 +146,7 @@ def complete_algebraic(ctx, point_so_far: dict, x: str, field: NumberField, valu
     return full
 
 
-def eval_in(ctx, p, values: dict, x: str, field: NumberField):
+def eval_in(ctx: SearchContext, p, values: dict, x: str, field: NumberField):
     """``p`` at a point over ``Q(alpha)`` (``x`` is alpha itself)."""
     args = [flint.fmpq_poly([0, 1]) if n == x and n not in values else
             values.get(n, flint.fmpq_poly(0))
@@ -159,7 +161,7 @@ def eval_in(ctx, p, values: dict, x: str, field: NumberField):
     return field.element(total)
 
 
-def numbers_at_algebraic(ctx, x: str, g, full: dict) -> Numbers:
+def numbers_at_algebraic(ctx: SearchContext, x: str, g, full: dict) -> Numbers:
     """The numbers at a point over ``Q(alpha)``, by a direct exact analysis: the rows of
     ``Q`` with every free variable (nothing from the locus search) evaluated there."""
     rows = substitute_values(ctx, ctx.rows0, full, x)
@@ -182,7 +184,7 @@ def value_near(v, a: Fraction) -> Fraction:
                Fraction(0))
 
 
-def algebraic_point_text(ctx, values: dict, root: RealRoot, x: str,
+def algebraic_point_text(ctx: SearchContext, values: dict, root: RealRoot, x: str,
                           only: set[str] | None = None) -> dict[str, str]:
     """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf)."""
     expr = root.expression()
@@ -195,7 +197,7 @@ def algebraic_point_text(ctx, values: dict, root: RealRoot, x: str,
     return out
 
 
-def algebraic_condition(ctx, x: str, g, values: dict) -> str:
+def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> str:
     """The real points of an algebraic component, in angles where they read simply."""
     names = {x, *values}
     roots = RealRoot.all_of(univariate(ctx, g, x).coeffs())
@@ -218,7 +220,7 @@ def readable(name: str, exact: str, kind: str) -> str:
     return f"{name} \u2248 {value:.4g}"
 
 
-def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
+def attach_algebraic_witness(ctx: SearchContext, comp: Component, x: str, g, values: dict,
                               point_so_far: dict, numbers: Numbers,
                               alpha: str | None = None) -> None:
     """A witness at a real root of ``g``: exact coordinates (radicals or ``CRootOf``),
@@ -263,14 +265,14 @@ def attach_algebraic_witness(ctx, comp: Component, x: str, g, values: dict,
         return
 
 
-def algebraic_witness_on(ctx, comp: Component, f, k: int, point_so_far: dict,
+def algebraic_witness_on(ctx: SearchContext, comp: Component, f, k: int, point_so_far: dict,
                          numbers: Numbers) -> None:
     """A witness on the hypersurface ``f = 0``: nice rationals for the other variables,
     ``x_k`` a root of what is left (see :func:`family_witness`)."""
     family_witness(ctx, comp, f, ctx.ring_names[k], point_so_far, numbers)
 
 
-def fixed_at(ctx) -> dict[str, str]:
+def fixed_at(ctx: SearchContext) -> dict[str, str]:
     """The joints and parameters the locus was asked to hold fixed, in ``--at`` syntax."""
     out: dict[str, str] = {}
     config = ctx.config
@@ -284,7 +286,7 @@ def fixed_at(ctx) -> dict[str, str]:
     return out
 
 
-def algebraic_motions(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
+def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot, numbers: Numbers,
                       changes) -> WitnessMotions:
     """What an irrational witness shows: the exact motions behind the changed ``Ni`` and
     ``Nr`` for a quadratic field (the counts alone otherwise)."""
@@ -298,7 +300,7 @@ def algebraic_motions(ctx, full: dict, x: str, g, root: RealRoot, numbers: Numbe
                           motions=motions)
 
 
-def float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Numbers,
+def float_image_checks(ctx: SearchContext, approx_at: dict[str, str], analysis, numbers: Numbers,
                         comp_equations: list[str]):
     """Float checks at the float image of an irrational witness (a rational point
     within 1e-40 of it stands in for it; its float64 image is the same), where the
@@ -315,7 +317,8 @@ def float_image_checks(ctx, approx_at: dict[str, str], analysis, numbers: Number
     return out
 
 
-def attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbers) -> None:
+def attach_witness(ctx: SearchContext, comp: Component, witness: dict[str, str],
+                   numbers: Numbers) -> None:
     """A rational witness, checked by a direct exact analysis, with its float checks."""
     analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
     comp.witness = witness
@@ -325,7 +328,7 @@ def attach_witness(ctx, comp: Component, witness: dict[str, str], numbers: Numbe
     comp.float_checks = float_checks(ctx, witness, analysis, comp.equations)
 
 
-def float_checks(ctx, witness: dict[str, str], analysis,
+def float_checks(ctx: SearchContext, witness: dict[str, str], analysis,
                   equations: list[str] = ()) -> list[FloatCheck]:
     """Float ranks at the witness, at points near it, and with lengths rescaled. The
     nearby points move a revolute joint of the component's last equation (so they leave
@@ -373,7 +376,8 @@ def nudged_angle(text: str, distance: float) -> str:
     return f"2*atan({t.numerator}/{t.denominator})"
 
 
-def family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Numbers) -> None:
+def family_witness(ctx: SearchContext, comp: Component, f, x: str, inner: dict,
+                   numbers: Numbers) -> None:
     """A witness on a family ``f(x, params) = 0`` (the other coordinates given by
     ``inner``): nice values for the parameters, then a rational root of what is left
     in ``x`` if there is one, else a real algebraic one."""
@@ -401,7 +405,7 @@ def family_witness(ctx, comp: Component, f, x: str, inner: dict, numbers: Number
                 return
 
 
-def attach_two_root_witness(ctx, comp: Component, first: tuple, second: tuple,
+def attach_two_root_witness(ctx: SearchContext, comp: Component, first: tuple, second: tuple,
                             numbers: Numbers) -> None:
     """A witness of the intersection of two families with irrational coordinates in
     disjoint variables: ``first`` and ``second`` are ``(x, g, values)`` (values
