@@ -37,6 +37,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.mobility import numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import NotIrrational
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
 from coopkin_sym.exact.quotient import Quotient
@@ -158,7 +159,7 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     minimal, coeffs, reps = primitive_element([irrational[n] for n in names], _ALPHA,
                                               ex=True)
     alpha = sp.radsimp(sum(c * irrational[n] for c, n in zip(coeffs, names, strict=True)))
-    x = f"t_{names[0]}"
+    x = tangent_name(names[0])
     kx = kin.ring.names.index(x)
     coeffs_g = [sp.Rational(c) for c in sp.Poly(minimal, _ALPHA).all_coeffs()[::-1]]
     scale = sp.ilcm(*[c.q for c in coeffs_g])
@@ -167,14 +168,14 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     # first, then the others (polynomials in alpha) are put in
     order = sorted(range(len(names)), key=lambda i: i != 0)
     for i in order:
-        k = kin.ring.names.index(f"t_{names[i]}")
+        k = kin.ring.names.index(tangent_name(names[i]))
         rep = [sp.Rational(c) for c in reps[i]][::-1]
         den = sp.ilcm(*[c.q for c in rep]) if rep else 1
         num = _in_slot(kin.ring.zctx, [c * den for c in rep], kx)
         rows = substitute_rows(rows, k, -num, kin.ring.zctx.constant(int(den)))
     quotient = Quotient(g, kx)
     numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
-    values = {kin.symbols[f"t_{n}"]: irrational[n] for n in names}
+    values = {kin.symbols[tangent_name(n)]: irrational[n] for n in names}
     motions = point_motions(model, numbers, rows, quotient, kin, values,
                             degree=sp.degree(minimal, _ALPHA))
     given = {**{n: str(v) for n, v in rational}, **{n: str(dict(split_assignments(

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.ring import Frac, Ring
@@ -97,7 +98,7 @@ def ring_for(model: Model, config: Configuration) -> tuple[Ring, dict[str, sp.Sy
     symbols: dict[str, sp.Symbol] = {}
     for j in model.joints:
         if j.name in config.free:
-            v = f"t_{j.name}" if j.type == "revolute" else j.name
+            v = tangent_name(j.name) if j.type == "revolute" else j.name
             names.append(v)
             symbols[v] = sp.Symbol(v, real=True)
             if j.type == "revolute":
@@ -139,7 +140,7 @@ class _Builder:
                 d = self.num(self.config.prismatic.get(joint.name, 0))
             return ident, [d * a for a in axis]
         if joint.name in self.config.free:
-            k = ring.den_names.index(f"t_{joint.name}")
+            k = ring.den_names.index(tangent_name(joint.name))
             c, s = ring.cos_of(k), ring.sin_of(k)
         else:
             cv, sv = self.config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))

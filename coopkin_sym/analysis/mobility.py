@@ -43,6 +43,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import exact_expr
@@ -284,7 +285,7 @@ class Analysis:
         >>> a.in_angles(a.C12).T
         Matrix([[-L*cos(q1), -L*sin(q1), 0, 0, 0, sin(q1)]])
         """
-        kinds = {f"t_{j.name}": j.name for j in self.model.joints if j.type == "revolute"}
+        kinds = {tangent_name(j.name): j.name for j in self.model.joints if j.type == "revolute"}
         tsyms = {self.kinematics.symbols[n]: sp.Symbol(q, real=True)
                  for n, q in kinds.items() if n in self.kinematics.symbols}
         if not tsyms:

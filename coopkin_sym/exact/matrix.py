@@ -11,7 +11,7 @@ one context) read over a *domain*:
   algebraic numbers at once.
 
 Every method means the same thing on every domain (rank, nullspace, determinant over
-that field) and is checked against SymPy in ``tests/test_exact_matrix.py``, one test
+that field) and is checked against SymPy in ``tests/exact/test_exact_matrix.py``, one test
 body for every domain. The kernels behind it are
 :mod:`~coopkin_sym.exact.elimination` (over ``Q(x)``) and
 :mod:`~coopkin_sym.exact.quotient` (modulo ``f``); both clear entries with the one

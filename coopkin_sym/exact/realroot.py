@@ -22,6 +22,8 @@ from fractions import Fraction
 
 import sympy as sp
 
+from coopkin_sym.exact.angles import algebraic_angle
+
 _T = sp.Symbol("t")
 
 
@@ -101,40 +103,13 @@ class RealRoot:
         return bool(expr > lo) and bool(expr <= hi)
 
     def angle(self) -> sp.Expr:
-        """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``: see :func:`angle_of`."""
-        return angle_of(self.expression())
+        """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``: see
+        :func:`~coopkin_sym.exact.angles.algebraic_angle`."""
+        return algebraic_angle(self.expression())
 
     def angle_text(self) -> str:
         """:meth:`angle` in ``--at`` syntax."""
         return sp.sstr(self.angle())
 
 
-def angle_of(tangent: sp.Expr) -> sp.Expr:
-    """``2 atan(tangent)`` for an algebraic ``tangent``, as a rational multiple of pi
-    when it is one (checked exactly: ``tan(q/2) - tangent`` has minimal polynomial
-    ``t``), else left as ``2*atan(tangent)``.
-
-    Example
-    -------
-    >>> angle_of(sp.sqrt(2) - 1), angle_of(sp.sqrt(2))
-    (pi/4, 2*atan(sqrt(2)))
-    """
-    plain = 2 * sp.atan(tangent)
-    try:
-        # a candidate multiple of pi from the value (only a guess: checked exactly below)
-        ratio = Fraction(float(plain / sp.pi)).limit_denominator(_PI_DENOMINATOR)  # float-ok
-        if abs(float(plain / sp.pi) - ratio) > 1e-12:  # float-ok: no candidate
-            return plain
-        guess = sp.pi * sp.Rational(ratio.numerator, ratio.denominator)
-        if sp.minimal_polynomial(sp.tan(guess / 2) - tangent, _T) != _T:
-            return plain
-    except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):
-        return plain
-    return guess
-
-
-# the largest denominator of a multiple of pi recognised in an angle
-_PI_DENOMINATOR = 120
-
-
-__all__ = ["RealRoot", "angle_of"]
+__all__ = ["RealRoot"]

@@ -34,6 +34,7 @@ import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
 from coopkin_sym.errors import ModelError
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.examples import example_path, list_examples
 from coopkin_sym.model.trees import TreeError, check_tree, read_file
@@ -362,7 +363,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
         problems.append("arms: at least one arm with one joint is needed")
 
     for jname, jpath in joint_paths.items():
-        clash = f"t_{jname}"
+        clash = tangent_name(jname)
         if clash in names.where:
             problems.append(f"{names.where[clash]}: name '{clash}' clashes with the "
                             f"half-angle variable t_{jname} of joint {jname} ({jpath})")

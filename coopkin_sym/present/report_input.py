@@ -45,6 +45,7 @@ from pydantic import (
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportInputError
+from coopkin_sym.exact.angles import cotangent_name
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
@@ -253,8 +254,8 @@ class _Checker:
                 seen.add(v)
                 self.variables.append(v)
         # s_<joint> = cot(q/2), the chart at q = pi, for every t_<joint>
-        self.variables += [f"s_{v[2:]}" for v in list(self.variables)
-                           if v.startswith("t_") and f"s_{v[2:]}" not in seen]
+        self.variables += [cotangent_name(v[2:]) for v in list(self.variables)
+                           if v.startswith("t_") and cotangent_name(v[2:]) not in seen]
         self.numbers("generic", locus.generic)
         self.assignments("fixed", locus.fixed)
         if not math.isfinite(locus.seconds) or locus.seconds < 0:  # float-ok: a check

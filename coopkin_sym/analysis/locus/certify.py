@@ -122,6 +122,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks
 from coopkin_sym.errors import CertifyError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.angles import cotangent_name
 from coopkin_sym.exact.groebner import (
     EXTRA_HINT,
     Verdict,
@@ -343,7 +344,7 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
                            f" but the system with {config.at_text() or 'nothing'} fixed has "
                            f"{', '.join(base.names) or 'none'}: certify with the values "
                            "the locus was computed with")
-    setup.full_names = tuple(base.names) + tuple(f"s_{j}" for j in revolute)
+    setup.full_names = tuple(base.names) + tuple(cotangent_name(j) for j in revolute)
     cert = Certificate(system=model.name)
     setup.components = _read_components(locus, setup.full_names, cert.notes)
     setup.conditions = _read_conditions(locus, setup.full_names, cert.notes)

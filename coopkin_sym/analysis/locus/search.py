@@ -88,6 +88,7 @@ from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.angles import cotangent_name, tangent_name
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.quotient import (
@@ -201,7 +202,7 @@ def _chart(model: Model, config: Configuration) -> tuple[dict, list]:
     kinds: dict[str, tuple[str, str]] = {}
     for j in model.joints:
         if j.name in config.free:
-            kinds[f"t_{j.name}" if j.type == "revolute" else j.name] = (j.type, j.name)
+            kinds[tangent_name(j.name) if j.type == "revolute" else j.name] = (j.type, j.name)
     for p in model.parameters:
         if p.name not in config.parameters:
             kinds[p.name] = ("parameter", p.name)
@@ -1255,7 +1256,7 @@ def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bo
 def _beyond_chart(ctx: SearchContext, equations: list[str]) -> list[str]:
     """The equations other than those of the chart (``s_<joint>`` for the joints at
     q = pi here)."""
-    chart = {f"s_{n}" for n in ctx.pi}
+    chart = {cotangent_name(n) for n in ctx.pi}
     return [e for e in equations if e not in chart]
 
 
@@ -1391,9 +1392,9 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
         chart, rows = _chart(ctx.model, config)
         sub = dataclasses.replace(ctx, **chart, pi=frozenset(subset), hidden=0, splits=0,
                                   deferred=[], polys={})
-        equations = [f"s_{n}" for n in subset]
+        equations = [cotangent_name(n) for n in subset]
         for n in subset:
-            ctx.readings[f"s_{n}"] = f"{n} = pi"
+            ctx.readings[cotangent_name(n)] = f"{n} = pi"
         numbers = decompose(rows, ctx.model, sub.row_contacts, sub.ring.zctx).numbers
         parent, depth = None, 0
         wider = _wider_component(sub, {}, numbers)

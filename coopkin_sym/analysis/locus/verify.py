@@ -71,6 +71,7 @@ from coopkin_sym.analysis.mobility import analyze
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_of_q
 from coopkin_sym.analysis.sweep import Value, compile_system
 from coopkin_sym.errors import VerifyError
+from coopkin_sym.exact.angles import cotangent_name, tangent_name
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import POLYNOMIALS, PolyMatrix
 from coopkin_sym.exact.parse import (
@@ -316,7 +317,7 @@ class _Equations:
         self.role: list[tuple[int, str]] = []     # ring variable -> (free index, t|s|x)
         for i, v in enumerate(free):
             if v.kind == "revolute":
-                names += [f"t_{v.source}", f"s_{v.source}"]
+                names += [tangent_name(v.source), cotangent_name(v.source)]
                 self.role += [(i, "t"), (i, "s")]
             else:
                 names.append(v.name)
@@ -327,8 +328,8 @@ class _Equations:
         self.symbols: dict[str, sp.Symbol] = {}
         for j in model.joints:
             if j.type == "revolute":
-                self.symbols[f"t_{j.name}"] = sp.Symbol(f"t_{j.name}")
-                self.symbols[f"s_{j.name}"] = sp.Symbol(f"s_{j.name}")
+                self.symbols[tangent_name(j.name)] = sp.Symbol(tangent_name(j.name))
+                self.symbols[cotangent_name(j.name)] = sp.Symbol(cotangent_name(j.name))
             else:
                 self.symbols[j.name] = sp.Symbol(j.name)
         for p in model.parameters:
@@ -459,7 +460,7 @@ class _Line:
     def text(self, free: list[_Var]) -> dict[str, str]:
         out = {}
         for v, (chart, c) in zip(free, self.coords, strict=True):
-            name = f"s_{v.source}" if chart == "s" else v.name
+            name = cotangent_name(v.source) if chart == "s" else v.name
             out[name] = _poly_text(c)
         return out
 

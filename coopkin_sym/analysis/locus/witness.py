@@ -10,7 +10,7 @@ near (1e-6, 1e-9, 1e-12 rad) and with lengths rescaled.
 
 Example
 -------
->>> nudged_angle("pi/2", 1e-6).startswith("2*atan(")
+>>> ExactAngle.parse("pi/2", "q1").nudged(1e-6).text.startswith("2*atan(")
 True
 """
 
@@ -19,7 +19,7 @@ from __future__ import annotations
 import itertools
 import re
 from fractions import Fraction
-from math import atan, pi, tan
+from math import pi
 
 import flint
 import sympy as sp
@@ -31,10 +31,11 @@ from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
 from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.exact.angles import ExactAngle, algebraic_angle
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import angle_text, parse_angle, parse_expression
+from coopkin_sym.exact.parse import angle_text, parse_expression
 from coopkin_sym.exact.quotient import Quotient, Tower
-from coopkin_sym.exact.realroot import RealRoot, angle_of
+from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.exact.substitution import substitute
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 from coopkin_sym.model.configuration import Configuration
@@ -193,7 +194,7 @@ def algebraic_point_text(ctx: SearchContext, values: dict, root: RealRoot, x: st
         if only is not None and n not in only:
             continue
         v = expr if n == x and n not in values else value_expr(values[n], expr)
-        out[name] = sp.sstr(angle_of(v)) if kind == "revolute" else sp.sstr(v)
+        out[name] = sp.sstr(algebraic_angle(v)) if kind == "revolute" else sp.sstr(v)
     return out
 
 
@@ -346,7 +347,7 @@ def float_checks(ctx: SearchContext, witness: dict[str, str], analysis,
         if joint is None:
             break
         point = dict(witness)
-        point[joint] = nudged_angle(point[joint], distance)
+        point[joint] = ExactAngle.parse(point[joint], "witness").nudged(distance).text
         near = analyze(ctx.model, Configuration.parse(ctx.model, point))
         checks.append(FloatCheck(distance, scale, point, near.numbers.as_dict(),
                                  float_numbers(near)))
@@ -356,24 +357,13 @@ def float_checks(ctx: SearchContext, witness: dict[str, str], analysis,
                 point = dict(witness)
                 point[p.name] = value
                 if distance and joint is not None:
-                    point[joint] = nudged_angle(point[joint], distance)
+                    point[joint] = ExactAngle.parse(point[joint], "witness").nudged(distance).text
                 elif distance:
                     continue
                 a = analyze(ctx.model, Configuration.parse(ctx.model, point))
                 checks.append(FloatCheck(distance, f"{p.name}={value}", point,
                                          a.numbers.as_dict(), float_numbers(a)))
     return checks
-
-
-def nudged_angle(text: str, distance: float) -> str:
-    """An exact angle about ``distance`` radians above ``text`` (a rational tangent
-    half-angle; the float only chooses it)."""
-    c, s = parse_angle(text, "witness")
-    q = float(sp.atan2(s, c)) + distance  # float-ok: choosing a nearby exact angle
-    t = Fraction(tan(q / 2))  # float-ok: the binary float is itself an exact rational
-    if abs(2 * atan(float(t)) - q) > pi:  # float-ok
-        t = -t
-    return f"2*atan({t.numerator}/{t.denominator})"
 
 
 def family_witness(ctx: SearchContext, comp: Component, f, x: str, inner: dict,

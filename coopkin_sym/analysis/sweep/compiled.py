@@ -23,6 +23,7 @@ from coopkin_sym.analysis.sweep.grid import _split_point
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact import modular
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.model.configuration import (
     Configuration,
@@ -283,7 +284,7 @@ class Compiled:
         n = self.n = 6 + self.r
         var_of = {}
         for j, kind in zip(joints, self.kinds, strict=True):
-            var_of[j] = ring.names.index(f"t_{j}" if kind == "revolute" else j)
+            var_of[j] = ring.names.index(tangent_name(j) if kind == "revolute" else j)
         param_vars = [i for i, nm in enumerate(ring.names) if nm not in
                       {ring.names[v] for v in var_of.values()}]
         names = []

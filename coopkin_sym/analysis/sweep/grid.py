@@ -14,8 +14,9 @@ import numpy as np
 import sympy as sp
 
 from coopkin_sym import limits
-from coopkin_sym.analysis.sweep.values import SNAP_BOUND, Value, _pi_text, _snap, _tangent_of
+from coopkin_sym.analysis.sweep.values import SNAP_BOUND, Value, _pi_text, _tangent_of
 from coopkin_sym.errors import SweepError
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, brief, parse_angle, parse_expression
 from coopkin_sym.model.configuration import (
     ConfigurationError,
@@ -238,6 +239,9 @@ def _angle_levels(lo: sp.Expr, hi: sp.Expr, count: int, bound: float,  # float-o
 
 
 def _snapped(requested: str, q: float, bound: float) -> Value:  # float-ok
-    a, b, err = _snap(q, bound)
-    exact = Value.from_tangent(None if b == 0 else Fraction(a, b))
+    try:
+        angle, err = ExactAngle.snap(q, bound)
+    except ValueError as exc:  # pragma: no cover - a convergent always meets the bound
+        raise SweepError(str(exc)) from None
+    exact = Value.from_tangent(angle.tangent)
     return Value(exact.text, exact.num, exact.den, requested, err)

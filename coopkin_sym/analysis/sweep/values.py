@@ -7,11 +7,10 @@ choose the rational). See :mod:`coopkin_sym.analysis.sweep`.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from fractions import Fraction
 
-from coopkin_sym.errors import SweepError
+from coopkin_sym.exact.angles import ExactAngle
 
 #: Largest angle change allowed when a grid angle is snapped to a rational tan(q/2).
 SNAP_BOUND = 1e-9  # float-ok: a tolerance for choosing snapped angles, never for ranks
@@ -43,20 +42,19 @@ class Value:
     error: float | None = None  # float-ok: reported distance of a snapped angle
 
     @classmethod
+    def from_angle(cls, angle: ExactAngle) -> Value:
+        """The value of an exact angle."""
+        return cls(angle.text, angle.num, angle.den)
+
+    @classmethod
     def from_tangent(cls, t: Fraction | int | None) -> Value:
         """The angle with ``tan(q/2) = t`` (``None``: ``q = pi``)."""
-        if t is None:
-            return cls("pi", 1, 0)
-        t = Fraction(t)
-        named = {0: "0", 1: "pi/2", -1: "-pi/2"}
-        text = named.get(t, f"2*atan({t})")
-        return cls(text, t.numerator, t.denominator)
+        return cls.from_angle(ExactAngle.from_tangent(t))
 
     @classmethod
     def from_cos_sin(cls, cos, sin) -> Value:
         """The angle with exact rational ``(cos q, sin q)``."""
-        c, s = Fraction(str(cos)), Fraction(str(sin))
-        return cls.from_tangent(None if c == -1 else s / (1 + c))
+        return cls.from_angle(ExactAngle.from_cos_sin(cos, sin))
 
     @property
     def snapped(self) -> bool:
@@ -73,36 +71,6 @@ def _tangent_of(ratio: Fraction) -> Fraction | None | bool:
     table = {Fraction(0): Fraction(0), Fraction(1, 2): Fraction(1), Fraction(1): None,
              Fraction(3, 2): Fraction(-1)}
     return table.get(r, False)
-
-
-def _snap(q: float, bound: float) -> tuple[int, int, float]:  # float-ok: snapping only
-    """Homogeneous ``(a, b)`` with ``|2 atan2(a, b) - q| <= bound``: the first continued
-    fraction convergent of ``tan(q/2)`` (of ``cot(q/2)`` beyond 1) that meets the bound."""
-    q = math.remainder(q, 2 * math.pi)  # float-ok
-    t = math.tan(q / 2)  # float-ok
-    inverse = abs(t) > 1  # float-ok
-    for f in _convergents(Fraction(1 / t if inverse else t)):  # float-ok
-        if inverse:
-            a, b = (1, 0) if f == 0 else (f.denominator * (1 if f > 0 else -1),
-                                          abs(f.numerator))
-        else:
-            a, b = f.numerator, f.denominator
-        err = abs(math.remainder(2 * math.atan2(a, b) - q, 2 * math.pi))  # float-ok
-        if err <= bound:  # float-ok
-            return a, b, err
-    raise SweepError(f"cannot snap the angle {q!r} within {bound} rad")  # pragma: no cover
-
-
-def _convergents(x: Fraction):
-    """The continued fraction convergents of ``x``, in order (the last is ``x``)."""
-    p, q = x.numerator, x.denominator
-    h0, h1, k0, k1 = 0, 1, 1, 0
-    while q:
-        a, r = divmod(p, q)
-        h0, h1 = h1, a * h1 + h0
-        k0, k1 = k1, a * k1 + k0
-        yield Fraction(h1, k1)
-        p, q = q, r
 
 
 def _pi_text(ratio: Fraction) -> str:

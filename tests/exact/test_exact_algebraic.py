@@ -14,6 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from sympy.polys.matrices import DomainMatrix
 
+from coopkin_sym.exact.angles import algebraic_angle as angle_of
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.quotient import (
     Quotient,
@@ -21,7 +22,7 @@ from coopkin_sym.exact.quotient import (
     rank_modulo,
     smallest_fraction,
 )
-from coopkin_sym.exact.realroot import RealRoot, angle_of
+from coopkin_sym.exact.realroot import RealRoot
 
 CTX = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
 X, Y = CTX.gens()

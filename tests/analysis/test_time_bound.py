@@ -22,7 +22,7 @@ from coopkin_sym.exact import elimination as el
 from coopkin_sym.model.builders import spatial_hand
 
 runner = CliRunner()
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_the_deadline_is_cheap_nested_and_keeps_partial_results():

@@ -24,7 +24,7 @@ from coopkin_sym.present.sentences import component_sentences
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 # both links on the contact line: the object gains a rotation about z (checked by
-# hand in tests/test_mobility.py::test_singular_configuration_found_exactly)
+# hand in tests/analysis/test_mobility.py::test_singular_configuration_found_exactly)
 CASE1_ON_LINE = {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 1}
 # c1 and c2 at the same point: two point contacts make a spherical joint, so with the
 # joints locked the object can still turn about that point (Ni = 3)
