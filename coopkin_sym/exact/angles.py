@@ -29,6 +29,7 @@ from fractions import Fraction
 import sympy as sp
 
 from coopkin_sym.exact.parse import angle_text, parse_angle
+from coopkin_sym.exact.rationals import to_sympy
 
 __all__ = ["COTANGENT_PREFIX", "TANGENT_PREFIX", "ExactAngle", "algebraic_angle",
            "cotangent_name", "joint_of", "tangent_name"]
@@ -208,7 +209,7 @@ def algebraic_angle(tangent: sp.Expr) -> sp.Expr:
         ratio = Fraction(float(plain / sp.pi)).limit_denominator(_PI_DENOMINATOR)  # float-ok
         if abs(float(plain / sp.pi) - ratio) > 1e-12:  # float-ok: no candidate
             return plain
-        guess = sp.pi * sp.Rational(ratio.numerator, ratio.denominator)
+        guess = sp.pi * to_sympy(ratio)
         if sp.minimal_polynomial(sp.tan(guess / 2) - tangent, _T) != _T:
             return plain
     except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):

@@ -46,6 +46,7 @@ import sympy as sp
 
 from coopkin_sym import limits
 from coopkin_sym.errors import NumberError
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 __all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
            "exact_expr", "parse_angle", "parse_expression", "parse_number"]
@@ -309,7 +310,7 @@ class _Reader:
         sums, products and integer powers, as ``_RF`` with every budget applied;
         ``None`` (or, with ``strict``, an error) for anything else."""
         if isinstance(expr, sp.Rational):
-            return self.constant(Fraction(int(expr.p), int(expr.q)))
+            return self.constant(to_fraction(expr))
         if isinstance(expr, sp.Symbol):
             if expr.name in self.symbols:
                 return self.symbol(expr.name)
@@ -398,7 +399,7 @@ class _Reader:
                     p, q = math.isqrt(r.numerator), math.isqrt(r.denominator)
                     if p * p == r.numerator and q * q == r.denominator:
                         return self.constant(Fraction(p, q))
-                value = sp.Rational(r.numerator, r.denominator)
+                value = to_sympy(r)
                 if max(_digits(r.numerator), _digits(r.denominator)) > 50:
                     return _Sym(sp.Pow(value, sp.Rational(1, 2), evaluate=False))
                 return self.sym(sp.sqrt(value))
@@ -936,7 +937,7 @@ def _angle_parts(q: sp.Expr) -> _AngleParts:
         if not coeff.is_Rational:
             parts.other.append(term)
             continue
-        k = Fraction(int(coeff.p), int(coeff.q))
+        k = to_fraction(coeff)
         if rest == 1:
             parts.radians += k
         elif rest is sp.pi:
@@ -1135,7 +1136,7 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
         point, tangent = _sympy_point(q)
     if point is not None:
         c, s = point
-        return sp.Rational(c.numerator, c.denominator), sp.Rational(s.numerator,
+        return to_sympy(c), sp.Rational(s.numerator,
                                                                       s.denominator)
     message = (f"angle {shown} is not exact: tan(q/2) = {tangent} is irrational; exact "
                f"angles have a rational tan(q/2)")
@@ -1172,7 +1173,7 @@ def _tangent_point(t: sp.Expr) -> tuple[tuple[Fraction, Fraction] | None, str]:
         return (Fraction(-1), Fraction(0)), "zoo"
     if not t.is_Rational:
         return None, _sympy_text(t)[:80]
-    r = Fraction(int(t.p), int(t.q))
+    r = to_fraction(t)
     return ((1 - r * r) / (1 + r * r), 2 * r / (1 + r * r)), sp.sstr(t)
 
 
@@ -1221,7 +1222,7 @@ def _nearest_angles(q: sp.Expr) -> list[str]:
         if approx is None:
             cos, sin = sp.Integer(-1), sp.Integer(0)
         else:
-            tr = sp.Rational(approx.numerator, approx.denominator)
+            tr = to_sympy(approx)
             cos, sin = (1 - tr**2) / (1 + tr**2), 2 * tr / (1 + tr**2)
         text = angle_text(cos, sin)
         angle = math.atan2(float(sin), float(cos))  # float-ok: shown to the user
@@ -1281,7 +1282,7 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
         if c == -1:
             raise NumberError(where, f"{shown}: tan(q/2) is infinite")
         t = s / (1 + c)
-        return sp.Rational(t.numerator, t.denominator)
+        return to_sympy(t)
     bound = _degree_bound(parts)
     if bound is not None and bound > limits.MAX_ANGLE_DEGREE:
         raise NumberError(where, f"angle {shown}: tan(q/2) may have degree up to {bound} "

@@ -23,6 +23,7 @@ from fractions import Fraction
 import sympy as sp
 
 from coopkin_sym.exact.angles import algebraic_angle
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 _T = sp.Symbol("t")
 
@@ -52,8 +53,8 @@ class RealRoot:
         poly = cls._poly_of(coeffs)
         out = []
         for i, ((lo, hi), _m) in enumerate(poly.intervals()):
-            out.append(cls(tuple(int(c) for c in coeffs), Fraction(int(lo.p), int(lo.q)),
-                           Fraction(int(hi.p), int(hi.q)), i))
+            out.append(cls(tuple(int(c) for c in coeffs), to_fraction(lo),
+                           to_fraction(hi), i))
         return out
 
     @staticmethod
@@ -73,10 +74,10 @@ class RealRoot:
         if self.lo == self.hi or self.hi - self.lo <= width:
             return self.lo, self.hi
         lo, hi = self._poly_of(self.coeffs).refine_root(
-            sp.Rational(self.lo.numerator, self.lo.denominator),
-            sp.Rational(self.hi.numerator, self.hi.denominator),
-            eps=sp.Rational(width.numerator, width.denominator))
-        return Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q))
+            to_sympy(self.lo),
+            to_sympy(self.hi),
+            eps=to_sympy(width))
+        return to_fraction(lo), to_fraction(hi)
 
     def approximation(self, width: Fraction = Fraction(1, 10**40)) -> Fraction:
         """A rational within ``width`` of the root."""
@@ -98,8 +99,8 @@ class RealRoot:
         return sp.CRootOf(poly.as_expr(), self.index)
 
     def _contains(self, expr: sp.Expr) -> bool:
-        lo = sp.Rational(self.lo.numerator, self.lo.denominator)
-        hi = sp.Rational(self.hi.numerator, self.hi.denominator)
+        lo = to_sympy(self.lo)
+        hi = to_sympy(self.hi)
         return bool(expr > lo) and bool(expr <= hi)
 
     def angle(self) -> sp.Expr:

@@ -22,6 +22,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from coopkin_sym.exact.rationals import to_fmpq, to_sympy
 from coopkin_sym.exact.ring import Frac, Ring
 
 
@@ -61,11 +62,11 @@ def poly_from_sympy(expr, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> flint
     if isinstance(expr, int):
         expr = sp.Integer(expr)
     elif isinstance(expr, Fraction):
-        expr = sp.Rational(expr.numerator, expr.denominator)
+        expr = to_sympy(expr)
     if not isinstance(expr, sp.Expr):
         raise ValueError(f"a {type(expr).__name__} is not a number")
     if expr.is_Rational:
-        return ring.qctx.constant(flint.fmpq(int(expr.p), int(expr.q)))
+        return ring.qctx.constant(to_fmpq(expr))
     index = {symbols[n]: k for k, n in enumerate(ring.names)}
     used = sorted(expr.free_symbols, key=lambda s: index.get(s, -1))
     if not used or any(s not in index for s in used):

@@ -26,6 +26,7 @@ from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
@@ -170,14 +171,14 @@ def rational_point(ctx: SearchContext, f, names) -> dict[str, Fraction] | None:
         others_syms = [s for i, s in enumerate(syms) if i != x_idx]
         for values in itertools.islice(itertools.product(NICE, repeat=len(others_syms)),
                                        60):
-            sub = {s: sp.Rational(v.numerator, v.denominator)
+            sub = {s: to_sympy(v)
                    for s, v in zip(others_syms, values, strict=True)}
             uni = sp.Poly(expr.subs(sub), x)
             if uni.degree() <= 0:
                 continue
             roots = [r for r in sp.roots(uni, filter="Q") if r.is_Rational]
             if roots:
-                point = {str(s): Fraction(int(v.p), int(v.q)) for s, v in sub.items()}
+                point = {str(s): to_fraction(v) for s, v in sub.items()}
                 point[str(x)] = Fraction(int(roots[0].p), int(roots[0].q))
                 return {name_of(ctx, k): v for k, v in point.items()}
     return None

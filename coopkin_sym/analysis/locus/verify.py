@@ -82,6 +82,7 @@ from coopkin_sym.exact.parse import (
     parse_number,
 )
 from coopkin_sym.exact.quotient import Quotient
+from coopkin_sym.exact.rationals import to_fmpq, to_fraction, to_sympy
 from coopkin_sym.model.configuration import (
     Configuration,
     ConfigurationError,
@@ -443,7 +444,7 @@ class _Equations:
 def _fmpq(x) -> flint.fmpq:
     if not isinstance(x, Fraction | int):
         x = sp.Rational(x)
-        return flint.fmpq(int(x.p), int(x.q))
+        return to_fmpq(x)
     x = Fraction(x)
     return flint.fmpq(x.numerator, x.denominator)
 
@@ -478,14 +479,14 @@ class _Line:
 def _eval_q(p: flint.fmpq_poly, x: Fraction) -> Fraction:
     acc = Fraction(0)
     for c in reversed(p.coeffs()):
-        acc = acc * x + Fraction(int(c.p), int(c.q))
+        acc = acc * x + to_fraction(c)
     return acc
 
 
 def _poly_text(p: flint.fmpq_poly, var: str = "lam") -> str:
-    coeffs = [Fraction(int(c.p), int(c.q)) for c in p.coeffs()]
+    coeffs = [to_fraction(c) for c in p.coeffs()]
     x = sp.Symbol(var)
-    return sp.sstr(sum((sp.Rational(c.numerator, c.denominator) * x**i
+    return sp.sstr(sum((to_sympy(c) * x**i
                         for i, c in enumerate(coeffs)), sp.Integer(0)))
 
 
@@ -597,7 +598,7 @@ class _Checker:
             terms = poly.to_dict()
             slope = next(c for m, c in terms.items() if m[k] == 1)
             const = next((c for m, c in terms.items() if m[k] == 0), flint.fmpq(0))
-            value = -Fraction(int(const.p), int(const.q)) / Fraction(int(slope.p),
+            value = -to_fraction(const) / Fraction(int(slope.p),
                                                                        int(slope.q))
             i, role = self.role_of(k)
             if role == "s":
@@ -989,7 +990,7 @@ def _on_curve(checker: _Checker, index: int, curve: _Line,
 
 def _frac(x) -> Fraction:
     x = sp.Rational(x)
-    return Fraction(int(x.p), int(x.q))
+    return to_fraction(x)
 
 
 # the grid
@@ -1208,9 +1209,9 @@ def _real_roots_in(f: flint.fmpq_poly, domain) -> list[tuple[Fraction, Fraction]
     lo, hi = domain
     kwargs = {}
     if lo is not None:
-        kwargs["inf"] = sp.Rational(lo.numerator, lo.denominator)
+        kwargs["inf"] = to_sympy(lo)
     if hi is not None:
-        kwargs["sup"] = sp.Rational(hi.numerator, hi.denominator)
+        kwargs["sup"] = to_sympy(hi)
     out = []
     for (a, b), _ in poly.intervals(**kwargs):
         out.append((Fraction(int(sp.Rational(a).p), int(sp.Rational(a).q)),
@@ -1278,7 +1279,7 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
         fq = _from_mpoly(f)
         if fq.degree() == 1:
             c0, c1 = fq.coeffs()
-            lam = -Fraction(int(c0.p), int(c0.q)) / Fraction(int(c1.p), int(c1.q))
+            lam = -to_fraction(c0) / to_fraction(c1)
             lo, hi = line.domain
             if (lo is not None and lam <= lo) or (hi is not None and lam >= hi):
                 continue

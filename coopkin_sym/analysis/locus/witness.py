@@ -35,6 +35,7 @@ from coopkin_sym.exact.angles import ExactAngle, algebraic_angle
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text, parse_expression
 from coopkin_sym.exact.quotient import Quotient, Tower
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.exact.substitution import substitute
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
@@ -118,7 +119,7 @@ def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> dict[str, str] | N
         if v is None or (kind == "parameter" and v <= 0):
             return None
         if kind == "revolute":
-            t = sp.Rational(v.numerator, v.denominator)
+            t = to_sympy(v)
             out[name] = angle_text((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
         else:
             out[name] = f"{v.numerator}" if v.denominator == 1 else f"{v.numerator}/" \
@@ -173,7 +174,7 @@ def numbers_at_algebraic(ctx: SearchContext, x: str, g, full: dict) -> Numbers:
 def value_expr(v, root: sp.Expr) -> sp.Expr:
     """An element of ``Q(alpha)`` (polynomial in alpha) at the real root ``root``."""
     if isinstance(v, Fraction):
-        return sp.Rational(v.numerator, v.denominator)
+        return to_sympy(v)
     coeffs = [sp.Rational(int(c.p), int(c.q)) for c in v.coeffs()]
     return sp.radsimp(sp.expand(sum(c * root**i for i, c in enumerate(coeffs))))
 
@@ -181,7 +182,7 @@ def value_expr(v, root: sp.Expr) -> sp.Expr:
 def value_near(v, a: Fraction) -> Fraction:
     if isinstance(v, Fraction):
         return v
-    return sum((Fraction(int(c.p), int(c.q)) * a**i for i, c in enumerate(v.coeffs())),
+    return sum((to_fraction(c) * a**i for i, c in enumerate(v.coeffs())),
                Fraction(0))
 
 

@@ -18,6 +18,7 @@ from coopkin_sym.analysis.sweep.values import SNAP_BOUND, Value, _pi_text, _tang
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, brief, parse_angle, parse_expression
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.model.configuration import (
     ConfigurationError,
     split_assignments,
@@ -196,7 +197,7 @@ def grid(system: Model | Any, axes: str | Mapping[str, tuple], *,
             if not all(e.is_Rational for e in ends):
                 raise SweepError(f"{where}: a prismatic range must have rational ends "
                                  f"(got {lo}..{hi})")
-            a, b = (Fraction(int(e.p), int(e.q)) for e in ends)
+            a, b = (to_fraction(e) for e in ends)
             step = (b - a) / (count - 1) if count > 1 else Fraction(0)
             vals = [a + step * k for k in range(int(count))]
             levels.append(tuple(Value(str(v), v.numerator, v.denominator) for v in vals))
@@ -209,7 +210,7 @@ def _angle_levels(lo: sp.Expr, hi: sp.Expr, count: int, bound: float,  # float-o
     steps = [Fraction(k, count - 1) if count > 1 else Fraction(0) for k in range(count)]
     rlo, rhi = lo / sp.pi, hi / sp.pi
     if rlo.is_Rational and rhi.is_Rational:          # multiples of pi: decided by Niven
-        a, b = Fraction(int(rlo.p), int(rlo.q)), Fraction(int(rhi.p), int(rhi.q))
+        a, b = to_fraction(rlo), to_fraction(rhi)
         for s in steps:
             ratio = a + (b - a) * s
             text = _pi_text(ratio)
@@ -221,7 +222,7 @@ def _angle_levels(lo: sp.Expr, hi: sp.Expr, count: int, bound: float,  # float-o
                 yield _snapped(text, float(ratio) * math.pi, bound)  # float-ok
         return
     for s in steps:
-        q = lo + (hi - lo) * sp.Rational(s.numerator, s.denominator)
+        q = lo + (hi - lo) * to_sympy(s)
         text = sp.sstr(q)
         if q.is_Rational:                             # tan(x) is irrational at x != 0
             if q == 0:
