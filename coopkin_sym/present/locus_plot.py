@@ -46,7 +46,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import PlotError
-from coopkin_sym.exact.parse import NumberError, parse_angle, parse_expression, parse_number
+from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -125,21 +125,17 @@ def _kinds(locus: Locus, system: Any) -> _Kinds:
     return out
 
 
-@functools.lru_cache(maxsize=4096)
-def _parse(text: str, names: tuple[str, ...]) -> sp.Expr:
-    try:
-        return parse_expression(text, names, "equation")
-    except NumberError as exc:
-        raise PlotError(str(exc)) from None
-
-
 def _names(locus: Locus, kinds: _Kinds) -> tuple[str, ...]:
     extra = [v for j in kinds.joints for v in kinds.variables(j)] + kinds.parameters
     return tuple(dict.fromkeys([*locus.variables, *extra]))
 
 
 def _equations(c: Component, names: tuple[str, ...]) -> list[sp.Expr]:
-    return [_parse(e, names) for e in c.equations]
+    """The component's equations, exactly, as SymPy expressions to draw."""
+    try:
+        return [p.to_sympy() for p in c.equation_polynomials(names)]
+    except NumberError as exc:
+        raise PlotError(str(exc)) from None
 
 
 def _free(c: Component, names: tuple[str, ...]) -> set[str]:

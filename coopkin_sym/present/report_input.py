@@ -47,6 +47,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportInputError
 from coopkin_sym.exact.angles import cotangent_name
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
 
@@ -158,7 +159,8 @@ def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str
 # component keeps the exact data instead ("shown"), which a report does not carry
 _ComponentIn = _model_of(Component, _COMPONENT_TYPES,
                          {"meaning": (list[StrictStr], Field(default_factory=list))},
-                         "_ComponentIn", skip=("shown", "stated_meaning"))
+                         "_ComponentIn", skip=("shown", "stated_meaning", "polynomials",
+                                               "outside_polynomials"))
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
                      {"float_summary": (dict[StrictStr, StrictInt] | None, None),
                       "completeness": (StrictStr | None, None)},
@@ -378,15 +380,27 @@ def validate_report(data: Mapping | str) -> Locus:
     checker.run(parsed)
     if checker.problems:
         raise ReportInputError(checker.problems)
-    return _to_locus(parsed)
+    return _to_locus(parsed, checker.variables)
 
 
-def _to_locus(parsed) -> Locus:
+def _to_locus(parsed, names: list[str]) -> Locus:
     comps = []
-    for c in parsed.components:
+    for i, c in enumerate(parsed.components):
         values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)
-                  if f.name not in ("shown", "stated_meaning")}
+                  if f.name not in ("shown", "stated_meaning", "polynomials",
+                                    "outside_polynomials")}
         values["stated_meaning"] = list(c.meaning)
+        # the one reading of the report's polynomials (already checked above)
+        where = f"components[{i}]"
+        try:
+            values["polynomials"] = [
+                NamedPolynomial.parse(e, names, f"{where}.equations[{k}]")
+                for k, e in enumerate(c.equations)]
+            values["outside_polynomials"] = [
+                NamedPolynomial.parse(e, names, f"{where}.outside[{k}]")
+                for k, e in enumerate(c.outside)]
+        except NumberError as exc:
+            raise ReportInputError([str(exc)]) from None
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
         if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
             values["parent"] = c.parent - 1

@@ -302,6 +302,14 @@ def test_json_contract_and_round_trip(case1):
         back = locus_from_json(data)
         assert [c.equations for c in back.components] == [c.equations
                                                           for c in locus.components]
+        # the exact polynomials: read back from the report's text, they are the ones
+        # the search kept; each prints as the equation's text
+        names = list(locus.variables)
+        assert [c.equation_polynomials(names) for c in back.components] == \
+            [c.equation_polynomials(names) for c in locus.components]
+        for c in [*back.components, *(c for c in locus.components if c.polynomials)]:
+            assert [p.text for p in c.polynomials] == c.equations
+            assert [p.text for p in c.outside_polynomials] == c.outside
     data = json.loads(render_json(hand_made()))
     assert data["components"][0]["witness"] == {"q1": "-pi/2", "q2": "-pi/2"}
     assert data["components"][2]["witness"] is None

@@ -107,6 +107,7 @@ Example
 from __future__ import annotations
 
 import itertools
+import math
 import random
 import time
 from dataclasses import asdict, dataclass, field
@@ -132,7 +133,8 @@ from coopkin_sym.exact.groebner import (
     singular_path,
 )
 from coopkin_sym.exact.matrix import PolyMatrix
-from coopkin_sym.exact.parse import NumberError, brief, parse_expression
+from coopkin_sym.exact.parse import NumberError
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -489,31 +491,20 @@ def _numbers_text(numbers) -> str:
 
 
 # --- reading the locus -------------------------------------------------------------------
+def _integer_terms(poly: NamedPolynomial, names: tuple[str, ...]) -> dict:
+    """An exact polynomial as a primitive integer exponent map over ``names`` (rational
+    coefficients are scaled to integers)."""
+    terms = poly.exponents(names)
+    scale = 1
+    for c in terms.values():
+        scale = math.lcm(scale, c.denominator)
+    return {monom: int(c * scale) for monom, c in terms.items()}
+
+
 def _integer_polynomial(text: str, names: tuple[str, ...], where: str) -> dict:
-    """An equation read by the package's parser, as a primitive integer exponent map
-    over ``names`` (a polynomial with rational coefficients is scaled)."""
-    expr = parse_expression(text, names, where)
-    num, den = sp.fraction(sp.together(expr))
-    symbols = [sp.Symbol(n) for n in names]
-    if den.free_symbols or not den.is_Rational:
-        raise NumberError(where, f"{brief(text)} is not a polynomial (it divides by "
-                                 f"{brief(str(den))})")
-    try:
-        poly = sp.Poly(num, *symbols, domain=sp.QQ) if symbols else None
-    except (sp.PolynomialError, sp.CoercionFailed):
-        poly = None
-    if poly is None and not symbols and num.is_Rational:
-        terms = [((), sp.Rational(num))]
-    elif poly is None:
-        raise NumberError(where, f"{brief(text)} is not a polynomial with rational "
-                                 "coefficients")
-    else:
-        terms = poly.terms()
-    scale = sp.Integer(1)
-    for _, c in terms:
-        scale = sp.ilcm(scale, sp.Rational(c).q)
-    return {tuple(int(e) for e in monom): int(sp.Rational(c) * scale)
-            for monom, c in terms if c}
+    """A polynomial written in the locus (a parameter condition), read by the one
+    parser, as :func:`_integer_terms`."""
+    return _integer_terms(NamedPolynomial.parse(text, names, where), names)
 
 
 def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
@@ -523,10 +514,11 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
     out = []
     for i, comp in enumerate(locus.components):
         try:
-            eqs = [_integer_polynomial(text, names, f"component #{i + 1}, equation {k + 1}")
-                   for k, text in enumerate(comp.equations)]
-            outs = [_integer_polynomial(text, names, f"component #{i + 1}, outside {k + 1}")
-                    for k, text in enumerate(comp.outside)]
+            where = f"component #{i + 1}, "
+            eqs = [_integer_terms(poly, names)
+                   for poly in comp.equation_polynomials(names, where)]
+            outs = [_integer_terms(poly, names)
+                    for poly in comp.outside_polynomials_of(names, where)]
             # the component is the closure of V(equations) minus V(outside): it is
             # V(equations) when no outside polynomial vanishes there (a unit ideal);
             # otherwise it can be smaller, and reading it as V(equations) could prove a

@@ -88,9 +88,10 @@ from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
-from coopkin_sym.exact.angles import cotangent_name, tangent_name
+from coopkin_sym.exact.angles import COTANGENT_PREFIX, cotangent_name, joint_of, tangent_name
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -1227,6 +1228,8 @@ def _component(ctx: SearchContext, place: Place, equations: list[str], numbers: 
                      parent=place.parent,
                      outside=_denominators(ctx, chain if chain is not None else within,
                                            equations))
+    comp.polynomials = [_named(ctx, text) for text in comp.equations]
+    comp.outside_polynomials = [_named(ctx, text) for text in comp.outside]
     if witness is not None:
         attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
@@ -1235,6 +1238,21 @@ def _component(ctx: SearchContext, place: Place, equations: list[str], numbers: 
     if chain is not None:
         ctx.chains[id(comp)] = (ctx, dict(chain))
     return comp
+
+
+def _named(ctx: SearchContext, text: str) -> NamedPolynomial:
+    """The exact polynomial behind an equation text of this chart: kept when the text
+    was written (:func:`~coopkin_sym.analysis.locus.algebra.poly_text`), or the
+    variable ``s_<joint>`` of a chart at q = pi."""
+    p = ctx.polys.get(text)
+    if p is not None:
+        return NamedPolynomial.from_flint(p, ctx.ring_names)
+    if text.startswith(COTANGENT_PREFIX) and joint_of(text) in ctx.pi:
+        return NamedPolynomial.variable(text)
+    # not expected: every equation is written from a polynomial of this chart; its text
+    # then reads back exactly through the one parser
+    names = [*ctx.ring_names, *(cotangent_name(j) for j in sorted(ctx.pi))]
+    return NamedPolynomial.parse(text, names, "equation")
 
 
 def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bool:

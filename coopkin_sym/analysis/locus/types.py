@@ -17,15 +17,20 @@ from __future__ import annotations
 
 import copy
 import time
+from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.errors import TimeLimitReached
+from coopkin_sym.exact.polynomial import NamedPolynomial
 
 if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.irrational import PointMotions
     from coopkin_sym.analysis.mobility import Analysis
     from coopkin_sym.analysis.numbers import Numbers
+
+# exact data and read-back text a component's JSON does not carry
+_NOT_IN_JSON = ("shown", "stated_meaning", "polynomials", "outside_polynomials")
 
 #: What a locus without a completeness certificate says about its completeness.
 NOT_CERTIFIED = "completeness not certified (run with --certify)"
@@ -164,17 +169,51 @@ class Component:
     real_points: str = ""
     outside: list[str] = field(default_factory=list)
     shown: Any = field(default=None, repr=False, compare=False)
+    polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
+                                                      compare=False)
+    outside_polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
+                                                              compare=False)
+
+    def equation_polynomials(self, names: Sequence[str], where: str = ""
+                             ) -> list[NamedPolynomial]:
+        """The equations as exact polynomials: those the search found them as, or, for
+        a component written by hand (or whose texts were changed since), read from
+        :attr:`equations` by the package's one parser (only ``names`` may appear;
+        ``where`` starts the entry an error names).
+
+        Example
+        -------
+        >>> c = Component(["t_q1 - t_q2"], {"Nm": 3}, None, True)
+        >>> [p.variables for p in c.equation_polynomials(["t_q1", "t_q2"])]
+        [('t_q1', 't_q2')]
+        """
+        return _exact(self.polynomials, self.equations, names, f"{where}equation")
+
+    def outside_polynomials_of(self, names: Sequence[str], where: str = ""
+                               ) -> list[NamedPolynomial]:
+        """:attr:`outside` as exact polynomials (see :meth:`equation_polynomials`)."""
+        return _exact(self.outside_polynomials, self.outside, names, f"{where}outside")
 
     def to_json(self) -> dict:
         """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1). The
         sentences are not data: the presentation layer adds them as ``"meaning"``."""
         out = {f.name: copy.deepcopy(getattr(self, f.name)) for f in fields(self)
-               if f.name not in ("shown", "stated_meaning")}
+               if f.name not in _NOT_IN_JSON}
         if self.parent is not None:
             out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
         return out
+
+
+def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence[str],
+           what: str) -> list[NamedPolynomial]:
+    """The exact polynomials of a component's texts: those kept by the search while
+    they still print as the texts, else the texts read by the one parser."""
+    if kept is not None and [p.text for p in kept] == list(texts):
+        return list(kept)
+    return [NamedPolynomial.parse(text, names, f"{what} {k + 1}")
+            for k, text in enumerate(texts)]
 
 
 @dataclass

@@ -51,12 +51,10 @@ Example
 from __future__ import annotations
 
 import functools
-import io
 import itertools
 import math
 import random
 import time
-import tokenize
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from fractions import Fraction
@@ -81,6 +79,7 @@ from coopkin_sym.exact.parse import (
     parse_expression,
     parse_number,
 )
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.rationals import to_fmpq, to_fraction, to_sympy
 from coopkin_sym.model.configuration import (
@@ -279,30 +278,6 @@ class _Var:
 
 
 # --- equations --------------------------------------------------------------------------
-def _terms(text: str, where: str) -> list[str]:
-    """The top-level terms of a sum, signs kept (``"a - b*(c + d)"`` ->
-    ``["a", "- b*(c + d)"]``): each is parsed on its own by the whitelist parser."""
-    try:
-        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
-    except (tokenize.TokenError, SyntaxError, IndentationError):
-        raise VerifyError(f"{where}: {text!r} cannot be parsed") from None
-    cuts, depth, previous = [0], 0, None
-    for tok in tokens:
-        if tok.type in (tokenize.NEWLINE, tokenize.NL, tokenize.ENDMARKER):
-            continue
-        if tok.string == "(":
-            depth += 1
-        elif tok.string == ")":
-            depth -= 1
-        elif (tok.string in "+-" and depth == 0 and previous is not None
-              and (previous.type in (tokenize.NAME, tokenize.NUMBER)
-                   or previous.string == ")")):
-            cuts.append(tok.start[1])
-        previous = tok
-    cuts.append(len(text))
-    return [text[a:b] for a, b in itertools.pairwise(cuts) if text[a:b].strip()]
-
-
 class _Equations:
     """Component equations as polynomials in the free variables' charts.
 
@@ -336,23 +311,26 @@ class _Equations:
         for p in model.parameters:
             self.symbols[p.name] = sp.Symbol(p.name)
 
-    def parse(self, text: str, where: str) -> tuple[flint.fmpq_mpoly, list[int]] | None:
-        """``(polynomial, ring variables used)``, or None when the equation is undefined
-        at the fixed values."""
-        if not isinstance(text, str):
-            raise VerifyError(f"{where}: expected a polynomial as text, got {text!r}")
-        poly = self.ctx.constant(0)
-        for term in _terms(text, where):
-            try:
-                expr = parse_number(term, self.symbols, where)
-            except NumberError as exc:
-                raise VerifyError(str(exc)) from None
-            converted = self._convert(expr, where)
+    def polynomial(self, poly: NamedPolynomial, where: str
+                   ) -> tuple[flint.fmpq_mpoly, list[int]] | None:
+        """``(polynomial, ring variables used)`` of an equation of the locus (an exact
+        polynomial over its variables), or None when it is undefined at the fixed
+        values. Term by term: each monomial is put in the ring, or its fixed values
+        substituted."""
+        out = self.ctx.constant(0)
+        for exps, c in poly.terms:
+            factors = [to_sympy(c)]
+            for name, e in zip(poly.variables, exps, strict=True):
+                if name not in self.symbols:
+                    raise VerifyError(f"{where}: {name} is neither a free variable of the "
+                                      "locus nor a joint or parameter of the model")
+                factors.append(self.symbols[name] ** e)
+            converted = self._convert(sp.Mul(*factors), where)
             if converted is None:
                 return None
-            poly += converted
-        used = [k for k, d in enumerate(poly.degrees()) if d] if self.names else []
-        return poly, used
+            out += converted
+        used = [k for k, d in enumerate(out.degrees()) if d] if self.names else []
+        return out, used
 
     def _convert(self, expr: sp.Expr, where: str):
         syms = sorted(expr.free_symbols, key=lambda s: s.name)
@@ -561,15 +539,21 @@ class _Checker:
             empty = False
             if not comp.equations:
                 raise VerifyError(f"component {i + 1}: no equations")
-            for k, text in enumerate(comp.equations):
-                eq = self.equations.parse(text, f"component {i + 1}, equation {k + 1}")
+            names = list(self.equations.symbols)
+            try:
+                polys = comp.equation_polynomials(names, f"component {i + 1}, ")
+                outside = comp.outside_polynomials_of(names, f"component {i + 1}, ")
+            except NumberError as exc:
+                raise VerifyError(str(exc)) from None
+            for k, poly in enumerate(polys):
+                eq = self.equations.polynomial(poly, f"component {i + 1}, equation {k + 1}")
                 if eq is None:
                     empty = True
                 else:
                     eqs.append(eq)
             outs = []
-            for k, text in enumerate(comp.outside):
-                out = self.equations.parse(text, f"component {i + 1}, outside {k + 1}")
+            for k, poly in enumerate(outside):
+                out = self.equations.polynomial(poly, f"component {i + 1}, outside {k + 1}")
                 if out is not None:      # undefined at the fixed values: never vanishes
                     outs.append(out)
             self.outside.append(outs)

@@ -1,0 +1,138 @@
+"""Polynomials over named variables, independent of any ring: how a locus keeps its
+equations exactly.
+
+A :class:`NamedPolynomial` is a polynomial with rational coefficients in variables
+given by name (``t_q1``, ``q4``, ``L``, ``s_q2``). It does not belong to a python-flint
+context, so components found in different charts of a search (whose rings differ)
+share one form, it pickles and compares as plain data, and it converts to a flint
+polynomial over any list of names that holds its variables, or to SymPy. Text becomes
+one only through the package's one parser (:meth:`NamedPolynomial.parse`).
+
+Example
+-------
+>>> p = NamedPolynomial.parse("t_q1**2 + 4*t_q1 + 1", ["t_q1", "t_q2"], "equation")
+>>> p.variables, p.exponents(("t_q2", "t_q1"))
+(('t_q1',), {(0, 0): Fraction(1, 1), (0, 1): Fraction(4, 1), (0, 2): Fraction(1, 1)})
+>>> p.text
+'t_q1**2 + 4*t_q1 + 1'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy as sp
+
+from coopkin_sym.errors import NumberError
+from coopkin_sym.exact.parse import brief, parse_expression
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
+
+__all__ = ["NamedPolynomial"]
+
+
+@dataclass(frozen=True)
+class NamedPolynomial:
+    """``sum c * prod(names[i] ** e[i])`` over the terms ``(e, c)``, exactly.
+
+    ``variables`` are the names it uses (in first-seen order); ``terms`` maps exponent
+    tuples over ``variables`` to nonzero rational coefficients, sorted.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> p = NamedPolynomial.from_flint(3 * y**2 - 1, ("x", "y"))
+    >>> p.variables, p.text, NamedPolynomial.variable("s_q1").text
+    (('y',), '3*y**2 - 1', 's_q1')
+    """
+
+    variables: tuple[str, ...]
+    terms: tuple[tuple[tuple[int, ...], Fraction], ...]
+
+    @classmethod
+    def _build(cls, names: Sequence[str], terms: Mapping[tuple[int, ...], object]
+               ) -> NamedPolynomial:
+        used = [k for k in range(len(names)) if any(e[k] for e in terms)]
+        out: dict[tuple[int, ...], Fraction] = {}
+        for exps, c in terms.items():
+            c = to_fraction(c)
+            if c:
+                key = tuple(exps[k] for k in used)
+                out[key] = out.get(key, Fraction(0)) + c
+        return cls(tuple(names[k] for k in used),
+                   tuple(sorted((e, c) for e, c in out.items() if c)))
+
+    @classmethod
+    def from_flint(cls, p, names: Sequence[str]) -> NamedPolynomial:
+        """A python-flint polynomial (``fmpz_mpoly`` or ``fmpq_mpoly``) whose context's
+        variables are ``names``."""
+        return cls._build(tuple(names), {tuple(int(e) for e in m): c
+                                         for m, c in p.to_dict().items()})
+
+    @classmethod
+    def variable(cls, name: str) -> NamedPolynomial:
+        """The polynomial ``name`` itself."""
+        return cls((name,), (((1,), Fraction(1)),))
+
+    @classmethod
+    def from_sympy(cls, expr: sp.Expr, where: str = "polynomial") -> NamedPolynomial:
+        """A SymPy polynomial expression with rational coefficients."""
+        symbols = sorted(expr.free_symbols, key=lambda s: s.name)
+        try:
+            poly = sp.Poly(expr, *symbols, domain=sp.QQ) if symbols else None
+        except (sp.PolynomialError, sp.CoercionFailed):
+            poly = None
+        if poly is None:
+            if symbols or not expr.is_Rational:
+                raise NumberError(where, f"{brief(sp.sstr(expr))} is not a polynomial with "
+                                         "rational coefficients")
+            return cls._build((), {(): to_sympy(expr)} if expr != 0 else {})
+        return cls._build(tuple(s.name for s in symbols),
+                          {tuple(m): to_sympy(c) for m, c in poly.terms()})
+
+    @classmethod
+    def parse(cls, text: str, names: Sequence[str], where: str) -> NamedPolynomial:
+        """A polynomial from text, through the package's one parser (only ``names``
+        may appear)."""
+        expr = parse_expression(text, list(names), where)
+        num, den = sp.fraction(sp.together(expr))
+        if den.free_symbols or not den.is_Rational:
+            raise NumberError(where, f"{brief(text)} is not a polynomial (it divides by "
+                                     f"{brief(str(den))})")
+        return cls.from_sympy(sp.expand(num / den), where)
+
+    def exponents(self, names: Sequence[str]) -> dict[tuple[int, ...], Fraction]:
+        """The terms as exponent tuples over ``names`` (which must hold every
+        variable)."""
+        missing = [v for v in self.variables if v not in names]
+        if missing:
+            raise NumberError("polynomial", f"{self.text} uses {', '.join(missing)}, "
+                                            f"not among {', '.join(names) or 'no names'}")
+        index = [list(names).index(v) for v in self.variables]
+        out = {}
+        for exps, c in self.terms:
+            full = [0] * len(names)
+            for k, e in zip(index, exps, strict=True):
+                full[k] = e
+            out[tuple(full)] = c
+        return out
+
+    def to_sympy(self, symbols: Mapping[str, sp.Symbol] | None = None) -> sp.Expr:
+        """The polynomial as a SymPy expression (symbols by name, created when not
+        given)."""
+        syms = [symbols[v] if symbols and v in symbols else sp.Symbol(v)
+                for v in self.variables]
+        return sp.Add(*[to_sympy(c) * sp.Mul(*[s**e for s, e in zip(syms, exps,
+                                                                    strict=True)])
+                        for exps, c in self.terms])
+
+    @property
+    def text(self) -> str:
+        """The polynomial as text (SymPy's printing)."""
+        return sp.sstr(self.to_sympy())
+
+    def is_zero(self) -> bool:
+        return not self.terms
