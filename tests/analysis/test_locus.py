@@ -240,6 +240,7 @@ def three_fingers():
     return model, compute_locus(coopkin_sym.load(model))
 
 
+@pytest.mark.slow  # 15 to 45 s: left out of the quick suite (-m 'not slow')
 def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
     model, locus = three_fingers
     assert locus.generic == {"Nm": 6, "Nc": 3, "Ni": 0, "Nr": 3, "Ng": 3, "Nd": 3, "Nh": 0}
@@ -320,6 +321,7 @@ def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
         assert sp.simplify(sp.radsimp(expr)) == 0
 
 
+@pytest.mark.slow  # 15 to 45 s: left out of the quick suite (-m 'not slow')
 def test_irrational_witnesses_reanalyzed_from_their_text():
     """Each algebraic witness, read back from its --at text by the independent
     number-field path (fresh kinematics, a primitive element), has the reported
@@ -343,6 +345,7 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
         assert checked >= 1
 
 
+@pytest.mark.slow  # 15 to 45 s: left out of the quick suite (-m 'not slow')
 def test_case2_all_eight_joints_hand_checked():
     """Paper case 2, every joint free (one level of recursion).
 

@@ -367,7 +367,8 @@ EXAMPLES = [
 
 
 @pytest.mark.parametrize("name", [
-    pytest.param(name, marks=[pytest.mark.xfail(strict=True, reason=why)] if why else [])
+    pytest.param(name, marks=([pytest.mark.xfail(strict=True, reason=why)] if why else [])
+                 + ([pytest.mark.slow] if name.startswith("paper-case2") else []))
     for name, why in EXAMPLES])
 def test_search_on_shipped_examples_verifies(name):
     system = coopkin_sym.load(name)
