@@ -28,11 +28,14 @@ from fractions import Fraction
 
 import sympy as sp
 
-from coopkin_sym.exact.parse import angle_text, parse_angle
+from coopkin_sym.exact.parse import parse_angle
 from coopkin_sym.exact.rationals import to_sympy
 
 __all__ = ["COTANGENT_PREFIX", "TANGENT_PREFIX", "ExactAngle", "algebraic_angle",
            "cotangent_name", "joint_of", "tangent_name"]
+
+# the angles written by name rather than as 2*atan(t)
+_NAMED = {Fraction(0): "0", Fraction(1): "pi/2", Fraction(-1): "-pi/2"}
 
 #: The ring variable of a revolute joint is ``t_<joint>`` = tan(q/2) ...
 TANGENT_PREFIX = "t_"
@@ -154,8 +157,12 @@ class ExactAngle:
 
     @property
     def text(self) -> str:
-        """The angle in ``--at`` syntax (``0``, ``pi/2``, ``pi``, ``2*atan(p/q)``)."""
-        return angle_text(*self.cos_sin)
+        """The angle in ``--at`` syntax (``0``, ``pi/2``, ``-pi/2``, ``pi``,
+        ``2*atan(p/q)``), as :func:`~coopkin_sym.exact.parse.angle_text` writes it."""
+        t = self.tangent
+        if t is None:
+            return "pi"
+        return _NAMED.get(t, f"2*atan({t})")
 
     def radians(self) -> float:  # float-ok: for choosing and for pictures only
         """The angle in radians, in ``(-pi, pi]`` (a float)."""

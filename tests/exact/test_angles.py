@@ -17,6 +17,7 @@ from coopkin_sym.exact.angles import (
     joint_of,
     tangent_name,
 )
+from coopkin_sym.exact.parse import angle_text
 
 tangents = st.fractions(min_value=-10**6, max_value=10**6, max_denominator=10**6)
 
@@ -29,6 +30,13 @@ def test_text_reads_back_to_the_same_angle(t):
     assert again.tangent == t
     c, s = angle.cos_sin
     assert c**2 + s**2 == 1                     # exactly on the circle
+
+
+@given(tangents)
+@settings(max_examples=200, deadline=None)
+def test_text_is_what_the_parser_module_writes(t):
+    angle = ExactAngle.from_tangent(t)
+    assert angle.text == angle_text(*angle.cos_sin)
 
 
 def test_pi_and_the_named_angles():
