@@ -105,8 +105,8 @@ def _reference(case: Case, rows, n) -> DomainMatrix:
 def poly_to_sympy_plain(p, syms):
     if not syms:
         return sp.Integer(int(p.coeffs()[0])) if not p.is_zero() else sp.Integer(0)
-    return sp.Add(*[sp.Integer(int(c)) * sp.Mul(*[s**e for s, e in zip(syms, mon,
-                                                                           strict=True)])
+    return sp.Add(*[sp.Integer(int(c)) * sp.Mul(*[s**int(e) for s, e in zip(syms, mon,
+                                                                                strict=True)])
                     for mon, c in p.to_dict().items()])
 
 
