@@ -92,7 +92,7 @@ def ranks_of_q(q: PolyMatrix) -> tuple[int, int, int]:
     >>> ranks_of_q(PolyMatrix([[one] + [zero] * 6, [zero] * 6 + [one]], 7))
     (2, 1, 1)
     """
-    return q.rank(), q.columns(0, 6).rank(), q.columns(6).rank()
+    return q.split_ranks(6)
 
 
 def ranks_from_numbers(numbers, r: int) -> tuple[int, int, int]:

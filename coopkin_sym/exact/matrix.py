@@ -36,6 +36,7 @@ Example
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from typing import Protocol
 
@@ -49,7 +50,8 @@ from coopkin_sym.exact.quotient import eliminate_modulo, nullspace_modulo, rank_
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
 
-__all__ = ["POLYNOMIALS", "Domain", "PolyMatrix", "Polynomials", "batch_ranks"]
+__all__ = ["POLYNOMIALS", "Domain", "PolyMatrix", "Polynomials", "batch_rank_profile",
+           "batch_ranks"]
 
 
 class Domain(Protocol):
@@ -120,7 +122,7 @@ class PolyMatrix:
     (1, [['2', '-1', '0'], ['0', '0', '1']])
     """
 
-    __slots__ = ("rows", "ncols", "domain", "context")
+    __slots__ = ("rows", "ncols", "domain", "context", "_integers")
 
     def __init__(self, rows: Sequence[Sequence[Poly]], ncols: int,
                  domain: Domain = POLYNOMIALS, context=None):
@@ -130,28 +132,73 @@ class PolyMatrix:
         if context is None and self.rows and self.rows[0]:
             context = self.rows[0][0].context()
         self.context = context
+        self._integers: flint.fmpz_mat | None = None
         if any(len(r) != ncols for r in self.rows):
             raise ValueError(f"every row must have {ncols} entries")
 
+    @classmethod
+    def from_integers(cls, nrows: int, ncols: int, entries: Sequence[int]) -> PolyMatrix:
+        """An integer matrix (row-major ``entries``), kept as flint's ``fmpz_mat``: the
+        rationals' path, with no polynomial built (the sweep's exact rechecks).
+
+        Example
+        -------
+        >>> m = PolyMatrix.from_integers(2, 3, [1, 2, 3, 2, 4, 6])
+        >>> m.rank(), m.columns(2).rank(), m.shape
+        (1, 1, (2, 3))
+        """
+        out = object.__new__(cls)          # no polynomial rows: nothing to check
+        out.rows, out.ncols, out.domain, out.context = [], ncols, POLYNOMIALS, None
+        out._integers = flint.fmpz_mat(nrows, ncols, entries)
+        return out
+
+    def _integer_columns(self, start: int, stop: int) -> PolyMatrix:
+        out = PolyMatrix([], stop - start)
+        out._integers = self._integers * _selection(self.ncols, start, stop)
+        return out
+
     @property
     def shape(self) -> tuple[int, int]:
+        if self._integers is not None:
+            return self._integers.nrows(), self.ncols
         return len(self.rows), self.ncols
 
     def over(self, domain: Domain) -> PolyMatrix:
         """The same entries read over another domain."""
+        self._require_rows("over")
         return PolyMatrix(self.rows, self.ncols, domain, self.context)
 
     def columns(self, start: int, stop: int | None = None) -> PolyMatrix:
         """The block of columns ``start:stop``."""
         stop = self.ncols if stop is None else stop
+        if self._integers is not None:
+            return self._integer_columns(start, stop)
         return PolyMatrix([r[start:stop] for r in self.rows], stop - start, self.domain,
                           self.context)
+
+    def split_ranks(self, split: int) -> tuple[int, int, int]:
+        """The ranks of the whole matrix, of its first ``split`` columns and of the
+        others (one call: the sweep asks this at every point).
+
+        Example
+        -------
+        >>> PolyMatrix.from_integers(2, 3, [1, 0, 0, 0, 0, 1]).split_ranks(2)
+        (2, 1, 1)
+        """
+        if self._integers is not None:
+            m = self._integers
+            n = self.ncols
+            rest = (m * _selection(n, split, n)).rank() if n > split else 0
+            return m.rank(), (m * _selection(n, 0, split)).rank(), rest
+        return self.rank(), self.columns(0, split).rank(), self.columns(split).rank()
 
     def _is_polynomials(self) -> bool:
         return isinstance(self.domain, Polynomials)
 
     def rank(self) -> int:
         """The rank over the domain's field."""
+        if self._integers is not None:
+            return self._integers.rank() if self.ncols else 0
         if not self.rows or self.ncols == 0:
             return 0
         if self._is_polynomials():
@@ -161,6 +208,7 @@ class PolyMatrix:
     def nullspace(self) -> list[Row]:
         """A basis of the right nullspace over the domain's field: primitive polynomial
         vectors, one per free column."""
+        self._require_rows("nullspace")
         if self._is_polynomials():
             return el.nullspace(self.rows, self.ncols, self.context)
         return nullspace_modulo(self.rows, self.ncols, self.domain)
@@ -169,6 +217,7 @@ class PolyMatrix:
                        ) -> tuple[list[Row], list[int]]:
         """The reduced echelon basis of the right nullspace (unique for the subspace)
         and its pivot columns, over ``Q(x)``."""
+        self._require_rows("nullspace_rref")
         self._require_polynomials("a reduced echelon nullspace")
         return el.nullspace_rref(self.rows, self.ncols, self.context, column_order)
 
@@ -177,16 +226,19 @@ class PolyMatrix:
         """The reduced rows (primitive multiples of the reduced row echelon form) and
         the pivot columns, over ``Q(x)`` (see
         :func:`~coopkin_sym.exact.elimination.gauss_jordan`)."""
+        self._require_rows("rref")
         self._require_polynomials("a reduced row echelon form")
         return el.gauss_jordan(self.rows, self.ncols, column_order, canonical=canonical)
 
     def eliminate(self, columns: Sequence[int]) -> tuple[int, list[Row]]:
         """Eliminate on ``columns`` only: the number of pivots found there and the
         rows left over (zero in those columns), reduced and primitive."""
+        self._require_rows("eliminate")
         return eliminate_modulo(self.rows, columns, self.domain)
 
     def det(self) -> Poly:
         """The determinant (square matrices), reduced in the domain."""
+        self._require_rows("det")
         if len(self.rows) != self.ncols:
             raise ValueError(f"a determinant needs a square matrix, not {self.shape}")
         if not self.rows:
@@ -196,7 +248,13 @@ class PolyMatrix:
 
     def is_zero_vector(self, v: Sequence[Poly]) -> bool:
         """Whether ``M v = 0`` in the domain."""
+        self._require_rows("is_zero_vector")
         return all(self.domain.is_zero(_dot(r, v)) for r in self.rows)
+
+    def _require_rows(self, what: str) -> None:
+        if self._integers is not None:
+            raise ValueError(f"{what}: a matrix built from_integers gives its rank and "
+                             "column blocks only")
 
     def _require_polynomials(self, what: str) -> None:
         if not self._is_polynomials():
@@ -205,6 +263,13 @@ class PolyMatrix:
     def __repr__(self) -> str:
         m, n = self.shape
         return f"PolyMatrix({m} x {n} over {self.domain!r})"
+
+
+@functools.lru_cache(maxsize=64)
+def _selection(n: int, start: int, stop: int) -> flint.fmpz_mat:
+    """The ``n x (stop - start)`` matrix that picks columns ``start:stop``."""
+    return flint.fmpz_mat(n, stop - start, [int(i == j + start) for i in range(n)
+                                             for j in range(stop - start)])
 
 
 def _dot(a: Sequence[Poly], b: Sequence[Poly]):
@@ -227,3 +292,18 @@ def batch_ranks(matrices: np.ndarray, p: int = modular.PRIME) -> np.ndarray:
     """
     work = np.remainder(np.asarray(matrices, dtype=np.int64), p).transpose(1, 2, 0).copy()
     return modular.rank_profile(work, p)[0]
+
+
+def batch_rank_profile(matrices: np.ndarray, p: int = modular.PRIME,
+                       prefix: int | None = None) -> tuple[np.ndarray, np.ndarray | None]:
+    """Ranks modulo ``p`` of a batch in the sweep's own layout, ``(m, n, batch)``
+    residues (overwritten), and with ``prefix`` the ranks of the first ``prefix``
+    columns too (see :func:`~coopkin_sym.exact.modular.rank_profile`).
+
+    Example
+    -------
+    >>> a = np.array([[[0, 1], [1, 1]], [[1, 2], [2, 4]]]).transpose(1, 2, 0)
+    >>> [r.tolist() for r in batch_rank_profile(a, 7, prefix=1)]
+    [[2, 1], [1, 1]]
+    """
+    return modular.rank_profile(matrices, p, prefix)

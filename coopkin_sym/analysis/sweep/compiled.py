@@ -53,11 +53,6 @@ class _Exact:
             self.entries = [(k, self.ctx.from_dict(dict(t))) for k, t in plan["terms"]]
         else:
             self.program = _straight_line(plan["terms"], plan["nvars"], self.m, self.n)
-            n = self.n                          # column selections, applied in C
-            self.first = flint.fmpz_mat(n, 6, [int(i == j) for i in range(n)
-                                               for j in range(6)])
-            self.last = flint.fmpz_mat(n, n - 6, [int(i == j + 6) for i in range(n)
-                                                  for j in range(n - 6)])
 
     def ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
         """Exact ranks of ``Q``, of its first 6 and of its last ``r`` columns."""
@@ -66,9 +61,7 @@ class _Exact:
             return 0, 0, 0
         args = _joint_vector(self.kinds, pairs)
         if not self.params:
-            full = flint.fmpz_mat(m, n, self.program(args))
-            return (full.rank(), (full * self.first).rank(),
-                    (full * self.last).rank() if n > 6 else 0)
+            return ranks_of_q(PolyMatrix.from_integers(m, n, self.program(args)))
         subs = {i: flint.fmpz(args[i]) for i in range(self.njv)}
         zero = self.ctx.constant(0)
         flat = [zero] * (m * n)

@@ -19,6 +19,7 @@ from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact import modular
+from coopkin_sym.exact.matrix import batch_rank_profile
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.model.model import Model, model_of
 
@@ -56,10 +57,10 @@ def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
                                 values, p).reshape(m, n, size)
         block = ranks[start:start + size]
         if colsr or cols6:
-            rq, rr = modular.rank_profile(flat[:, colsr + cols6, :], p, prefix=len(colsr))
+            rq, rr = batch_rank_profile(flat[:, colsr + cols6, :], p, prefix=len(colsr))
             block[:, 0], block[:, 2] = rq, rr
         if cols6:
-            block[:, 1] = modular.rank_profile(flat[:, cols6, :], p)[0]
+            block[:, 1] = batch_rank_profile(flat[:, cols6, :], p)[0]
     if (ranks > generic).any():  # pragma: no cover - impossible: rank mod p <= rank
         raise AssertionError("a rank modulo p exceeds the generic rank")
     doubt = np.flatnonzero((ranks != generic).any(axis=1))
