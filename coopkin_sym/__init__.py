@@ -15,24 +15,37 @@ Example
 (2, 1)
 """
 
-from coopkin_sym.analysis.mobility import Analysis, BlockTooLarge, InfeasibleMotion, Motion
+from coopkin_sym.analysis.irrational import IrrationalAnalysis
+from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.analysis.mobility import Analysis, Motion
 from coopkin_sym.analysis.numbers import Numbers
-from coopkin_sym.errors import CoopkinError
-from coopkin_sym.model.configuration import Configuration, ConfigurationError
-from coopkin_sym.model.model import Model, ModelError
+from coopkin_sym.analysis.sweep import SweepResult
+from coopkin_sym.errors import (
+    BlockTooLarge,
+    ConfigurationError,
+    CoopkinError,
+    InfeasibleMotion,
+    ModelError,
+)
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model
 from coopkin_sym.system import System, load
 
 __all__ = [
     "Analysis",
     "BlockTooLarge",
+    "Component",
     "Configuration",
     "ConfigurationError",
     "CoopkinError",
     "InfeasibleMotion",
+    "IrrationalAnalysis",
+    "Locus",
     "Model",
     "ModelError",
     "Motion",
     "Numbers",
+    "SweepResult",
     "System",
     "load",
 ]
