@@ -28,14 +28,11 @@ from fractions import Fraction
 
 import sympy as sp
 
-from coopkin_sym.exact.parse import parse_angle
+from coopkin_sym.exact.parse import parse_angle, tangent_text
 from coopkin_sym.exact.rationals import to_sympy
 
 __all__ = ["COTANGENT_PREFIX", "TANGENT_PREFIX", "ExactAngle", "algebraic_angle",
            "cotangent_name", "joint_of", "tangent_name"]
-
-# the angles written by name rather than as 2*atan(t)
-_NAMED = {Fraction(0): "0", Fraction(1): "pi/2", Fraction(-1): "-pi/2"}
 
 #: The ring variable of a revolute joint is ``t_<joint>`` = tan(q/2) ...
 TANGENT_PREFIX = "t_"
@@ -159,10 +156,7 @@ class ExactAngle:
     def text(self) -> str:
         """The angle in ``--at`` syntax (``0``, ``pi/2``, ``-pi/2``, ``pi``,
         ``2*atan(p/q)``), as :func:`~coopkin_sym.exact.parse.angle_text` writes it."""
-        t = self.tangent
-        if t is None:
-            return "pi"
-        return _NAMED.get(t, f"2*atan({t})")
+        return tangent_text(self.tangent)
 
     def radians(self) -> float:  # float-ok: for choosing and for pictures only
         """The angle in radians, in ``(-pi, pi]`` (a float)."""
@@ -178,7 +172,8 @@ class ExactAngle:
         >>> 0 < moved.radians() - math.pi / 2 < 2e-6
         True
         """
-        q = self.radians() + distance  # float-ok
+        cos, sin = self.cos_sin
+        q = float(sp.atan2(sin, cos)) + distance  # float-ok: correctly rounded, then moved
         # 2 atan(tan(q/2)) is q up to a whole turn, on either side of pi
         return ExactAngle.from_tangent(Fraction(math.tan(q / 2)))  # float-ok: exact value
 

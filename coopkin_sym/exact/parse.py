@@ -1335,7 +1335,19 @@ def angle_text(cos: object, sin: object) -> str:
     if c**2 + s**2 != 1:
         raise NumberError("angle", f"cos = {c}, sin = {s} is not a point on the unit "
                                    f"circle")
-    named = {(1, 0): "0", (0, 1): "pi/2", (0, -1): "-pi/2", (-1, 0): "pi"}
-    if (c, s) in named:
-        return named[(c, s)]
-    return f"2*atan({s / (1 + c)})"
+    return tangent_text(None if c == -1 else Fraction(int(s.p), int(s.q))
+                        / Fraction(int((1 + c).p), int((1 + c).q)))
+
+
+def tangent_text(t: Fraction | None) -> str:
+    """The angle with ``tan(q/2) = t`` (None: ``q = pi``) as :func:`angle_text` writes
+    it: ``"0"``, ``"pi/2"``, ``"-pi/2"``, ``"pi"``, else ``"2*atan(p/q)"``.
+
+    Example
+    -------
+    >>> tangent_text(Fraction(-1, 3)), tangent_text(None)
+    ('2*atan(-1/3)', 'pi')
+    """
+    if t is None:
+        return "pi"
+    return {0: "0", 1: "pi/2", -1: "-pi/2"}.get(t, f"2*atan({t})")

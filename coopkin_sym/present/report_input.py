@@ -30,6 +30,7 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
+import sympy as sp
 from pydantic import (
     BaseModel,
     ConfigDict,
@@ -200,6 +201,7 @@ class _Checker:
         self.tree = tree
         self.problems: list[str] = []
         self.variables: list[str] = []
+        self.polynomials: dict[str, NamedPolynomial] = {}  # entry -> its polynomial
 
     def add(self, where: str, message: str) -> None:
         self.problems.append(f"{where}: {message}")
@@ -222,6 +224,11 @@ class _Checker:
             return
         if polynomial and not expr.is_polynomial(*[s for s in expr.free_symbols]):
             self.add(where, f"{brief(text)} is not a polynomial")
+        elif polynomial:
+            try:  # read once: the component keeps it
+                self.polynomials[where] = NamedPolynomial.from_sympy(sp.expand(expr), where)
+            except NumberError as exc:
+                self.problems.append(str(exc))
 
     def numbers(self, where: str, numbers: Mapping[str, int]) -> None:
         for key, value in numbers.items():
@@ -380,27 +387,22 @@ def validate_report(data: Mapping | str) -> Locus:
     checker.run(parsed)
     if checker.problems:
         raise ReportInputError(checker.problems)
-    return _to_locus(parsed, checker.variables)
+    return _to_locus(parsed, checker.polynomials)
 
 
-def _to_locus(parsed, names: list[str]) -> Locus:
+def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
     comps = []
     for i, c in enumerate(parsed.components):
         values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)
                   if f.name not in ("shown", "stated_meaning", "polynomials",
                                     "outside_polynomials")}
         values["stated_meaning"] = list(c.meaning)
-        # the one reading of the report's polynomials (already checked above)
+        # the report's polynomials, as the checker read them
         where = f"components[{i}]"
-        try:
-            values["polynomials"] = [
-                NamedPolynomial.parse(e, names, f"{where}.equations[{k}]")
-                for k, e in enumerate(c.equations)]
-            values["outside_polynomials"] = [
-                NamedPolynomial.parse(e, names, f"{where}.outside[{k}]")
-                for k, e in enumerate(c.outside)]
-        except NumberError as exc:
-            raise ReportInputError([str(exc)]) from None
+        values["polynomials"] = [polynomials[f"{where}.equations[{k}]"]
+                                 for k in range(len(c.equations))]
+        values["outside_polynomials"] = [polynomials[f"{where}.outside[{k}]"]
+                                         for k in range(len(c.outside))]
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
         if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
             values["parent"] = c.parent - 1

@@ -119,8 +119,7 @@ def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> dict[str, str] | N
         if v is None or (kind == "parameter" and v <= 0):
             return None
         if kind == "revolute":
-            t = to_sympy(v)
-            out[name] = angle_text((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
+            out[name] = ExactAngle.from_tangent(v).text
         else:
             out[name] = f"{v.numerator}" if v.denominator == 1 else f"{v.numerator}/" \
                 f"{v.denominator}"
