@@ -51,8 +51,12 @@ from coopkin_sym.present.report import (
     parse_pairs,
     write_report,
 )
-from coopkin_sym.present.sentences import irrational_sentences
-from coopkin_sym.present.text import analysis_latex, analysis_text, irrational_text
+from coopkin_sym.present.text import (
+    analysis_json,
+    analysis_latex,
+    analysis_text,
+    irrational_text,
+)
 from coopkin_sym.system import load
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
@@ -89,12 +93,10 @@ def analyze(
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
         result = system.analyze(at, generic=generic, free=free_joints)
-        if not isinstance(result, IrrationalAnalysis):
-            text = (json.dumps(result.as_json(), indent=2) if as_json else
-                    analysis_latex(result) if latex else analysis_text(result))
-        elif as_json:
-            text = json.dumps({**result.as_json(), "meaning": irrational_sentences(result)},
-                              indent=2)
+        if as_json:
+            text = analysis_json(result)
+        elif not isinstance(result, IrrationalAnalysis):
+            text = analysis_latex(result) if latex else analysis_text(result)
         else:
             text = irrational_text(result)
     except USER_ERRORS as exc:

@@ -103,14 +103,11 @@ class IrrationalAnalysis:
     joints: tuple[str, ...]
 
     def as_json(self) -> dict:
-        """The JSON of ``coopkin analyze`` here, without the sentences (the
-        presentation layer adds them as ``"meaning"``)."""
+        """The JSON of ``coopkin analyze`` here, without words (the presentation
+        layer adds why the blocks are ``"omitted"`` and the sentences as ``"meaning"``)."""
         return {"numbers": self.numbers.as_dict(), "blocks": {},
                 "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
-                          "tangents": self.tangents},
-                "omitted": {"blocks": "at a configuration with irrational coordinates only "
-                                      "the numbers (and their motions in words) are "
-                                      "computed"}}
+                          "tangents": self.tangents}}
 
 
 def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:

@@ -45,6 +45,7 @@ from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_express
 from coopkin_sym.present.draw import draw_system
 from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
+from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report_input import ReportInputError, validate_report
 from coopkin_sym.present.sentences import component_sentences
 
@@ -348,7 +349,7 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     else:
         items.append([("strong", "Witness:"), _t(" "), _t("none with rational coordinates")])
     if c.decided:
-        items.append([("strong", "Decided:"), _t(" "), _t(c.decided)])
+        items.append([("strong", "Decided:"), _t(" "), _t(remark_text(c.decided))])
     out.append(_List(items))
     meaning = component_sentences(c)
     if meaning:
@@ -562,17 +563,17 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
         else:
             out.append(_P([_t("No plots: no real component to draw.")]))
     out.append(_H(2, "Parameter conditions", "parameters"))
-    out.extend(_list_or(locus.parameter_conditions,
+    out.extend(_list_or(remark_texts(locus.parameter_conditions),
                         "None: no degeneracy that involves the parameters alone.", True))
     out.append(_H(2, "Dropped factors (no real points)", "dropped"))
-    out.extend(_list_or(locus.dropped, "None.", True))
+    out.extend(_list_or(remark_texts(locus.dropped), "None.", True))
     out.append(_H(2, "Not explored", "unexplored"))
-    out.extend(_list_or(locus.unexplored, "Nothing: the search finished within its "
+    out.extend(_list_or(remark_texts(locus.unexplored), "Nothing: the search finished within its "
                                           "bounds."))
     out.extend(_certificate_blocks(locus))
     if locus.notes:
         out.append(_H(2, "Notes", "notes"))
-        out.extend(_list_or(locus.notes, ""))
+        out.extend(_list_or(remark_texts(locus.notes), ""))
     return out
 
 
@@ -919,13 +920,19 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
 
 
 def _with_meaning(data: dict, component: Component) -> dict:
-    """A component's JSON with its sentences as ``"meaning"``, after ``"changes"``."""
+    """A component's JSON with its sentences as ``"meaning"``, after ``"changes"``, and
+    how its numbers were decided in words."""
     out = {}
     for key, value in data.items():
         out[key] = value
         if key == "changes":
             out["meaning"] = component_sentences(component)
+    out["decided"] = remark_text(component.decided)
     return out
+
+
+# the lists of remarks a locus holds, written as sentences
+_REMARK_LISTS = ("parameter_conditions", "dropped", "unexplored", "notes")
 
 
 def render_json(locus: Locus, verification: Mapping | None = None) -> str:
@@ -939,6 +946,8 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     ['certificate', 'completeness', 'components', 'dropped']
     """
     data = locus.to_json()
+    for key in _REMARK_LISTS:
+        data[key] = remark_texts(getattr(locus, key))
     data["components"] = [_with_meaning(d, c)
                           for d, c in zip(data["components"], locus.components, strict=True)]
     if verification is not None:

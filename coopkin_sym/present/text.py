@@ -10,6 +10,7 @@ True
 
 from __future__ import annotations
 
+import json
 import re
 
 import sympy as sp
@@ -18,7 +19,12 @@ from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
-__all__ = ["analysis_latex", "analysis_text", "block_table", "irrational_text"]
+__all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
+           "irrational_text"]
+
+# why an analysis at an irrational point has no blocks
+_IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the numbers "
+                       "(and their motions in words) are computed")
 
 
 def analysis_text(a: Analysis) -> str:
@@ -124,3 +130,21 @@ def irrational_text(result: IrrationalAnalysis) -> str:
     lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
                   "(the numbers are exact; use a rational configuration for C11..C23)."]
     return "\n".join(lines)
+
+
+def analysis_json(result: Analysis | IrrationalAnalysis) -> str:
+    """What ``coopkin analyze --json`` prints: the analysis's data (at an irrational
+    point, with why the blocks are omitted and the sentences as ``"meaning"``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> data = json.loads(analysis_json(load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")))
+    >>> data["numbers"]["Nm"], sorted(data["omitted"])
+    (3, ['blocks'])
+    """
+    if not isinstance(result, IrrationalAnalysis):
+        return json.dumps(result.as_json(), indent=2)
+    data = {**result.as_json(), "omitted": {"blocks": _IRRATIONAL_OMITTED},
+            "meaning": irrational_sentences(result)}
+    return json.dumps(data, indent=2)

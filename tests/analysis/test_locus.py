@@ -18,8 +18,10 @@ from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
 import coopkin_sym.model.examples
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.search import LocusError, compute_locus
 from coopkin_sym.model.builders import planar_hand
+from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.sentences import component_sentences
 
 CASE1_GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
@@ -56,8 +58,10 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
     c = found[COINCIDENT]
     assert c.numbers == CASE1_COINCIDENT
     assert c.condition == "q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6"
-    assert c.decided.startswith("exact over Q(alpha), alpha = t_q1 a root of "
-                                "alpha**2 + 4*alpha + 1")
+    assert c.decided == Remark.of("decided_algebraic", variable="t_q1",
+                                  minimal_polynomial="alpha**2 + 4*alpha + 1")
+    assert remark_text(c.decided) == ("exact over Q(alpha), alpha = t_q1 a root of "
+                                      "alpha**2 + 4*alpha + 1 (every conjugate point at once)")
     assert c.witness is None  # no rational point (DESIGN: witness only when rational)
     w = c.algebraic_witness
     assert w["point"] == {"L": "1", "q1": "-5*pi/6", "q2": "5*pi/6"}
@@ -98,9 +102,11 @@ def test_case1_witnesses_are_confirmed_by_an_independent_analysis(case1):
 
 
 def test_case1_drops_non_real_factors_and_leaves_nothing_unexplored(case1):
-    assert "t_q1**2 + 1 = 0 (no real points)" in case1.dropped
+    assert Remark.of("no_real_points", polynomial="t_q1**2 + 1") in case1.dropped
+    assert "t_q1**2 + 1 = 0 (no real points)" in remark_texts(case1.dropped)
     assert case1.unexplored == []
-    assert any("L = 1" in n for n in case1.notes)
+    assert Remark.of("uniform_scaling", parameter="L") in case1.notes
+    assert any("L = 1" in n for n in remark_texts(case1.notes))
 
 
 def test_float_rank_tests_fail_near_the_locus_with_rescaled_lengths(case1):
@@ -192,7 +198,9 @@ def test_recursion_finds_the_codimension_two_drop():
 def test_max_depth_bounds_the_search_and_says_so():
     locus = compute_locus(coopkin_sym.load(TWO_FINGERS), max_depth=0)
     assert all(c.depth == 0 for c in locus.components)
-    assert any("max depth 0" in u for u in locus.unexplored)
+    deeper = [u for u in locus.unexplored if u.kind == "deeper_not_explored"]
+    assert deeper and all(u["reason"] == "max_depth" and u["bound"] == 0 for u in deeper)
+    assert any("max depth 0" in u for u in remark_texts(locus.unexplored))
 
 
 def test_a_locus_needs_a_free_joint():
@@ -216,7 +224,7 @@ def test_function_field_rank_agrees_with_the_parametrization():
     locus = compute_locus(system, max_depth=0)
     curve = "t_q1**2*t_q2 - t_q1**2 + 2*t_q1*t_q2 + 2*t_q1 - t_q2 + 1"
     (comp,) = [c for c in locus.components if c.equations == [curve]]
-    assert comp.decided == "exact over the component's function field"
+    assert comp.decided == Remark.of("decided_function_field")
     config = Configuration.parse(system.model, "L=1", free=["q1", "q2"])
     kin = kinematics.build(system.model, config)
     rows = [kin.ring.clear_row(r) for r in kin.Q]
@@ -252,7 +260,7 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
         ("f1", "f2"), ("f1", "f3"), ("f2", "f3")}
     for c in pairs:
         assert c.changes == {"Nc": (3, 1), "Nr": (3, 5), "Nd": (3, 5)}
-        assert c.witness_checked and c.decided.startswith("exact over Q(alpha, beta)")
+        assert c.witness_checked and c.decided == Remark.of("decided_joined_fields", fields=2)
     for i, c in enumerate(locus.components[:3], start=1):
         # a finger whose tip and joints 2, 3 line up: codimension 2, irrational angles
         names = {f"t_f{i}_2", f"t_f{i}_3"}
@@ -267,7 +275,7 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
         assert set().union(*(e.free_symbols for e in eqs)) == set(syms)
     # what is not decided is said, with the reason: only families too large to reduce
     # modulo (the contact points in line, HG^T: a hypersurface of 12824 terms)
-    undecided = [u for u in locus.unexplored if "not decided" in u]
+    undecided = [u for u in remark_texts(locus.unexplored) if "not decided" in u]
     assert all("ranks modulo a polynomial of more than 3000 terms" in u for u in undecided)
 
 

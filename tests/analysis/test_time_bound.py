@@ -20,6 +20,7 @@ from coopkin_sym.errors import CoopkinError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.model.builders import spatial_hand
+from coopkin_sym.present.remarks import remark_texts
 
 runner = CliRunner()
 ROOT = Path(__file__).resolve().parents[2]
@@ -66,7 +67,8 @@ def test_locus_timeout_bounds_the_whole_run_and_keeps_what_was_found():
     start = time.monotonic()
     result = compute_locus(system, timeout=1.0)
     assert time.monotonic() - start < 6          # the bound plus the last step
-    cut = [u for u in result.unexplored if "time bound of 1 s reached" in u]
+    assert any(u.kind == "time_whole_run" and u["seconds"] == 1.0 for u in result.unexplored)
+    cut = [u for u in remark_texts(result.unexplored) if "time bound of 1 s reached" in u]
     assert cut and "not explored" in cut[0]
     assert result.generic["Nm"] >= 0
 
@@ -77,7 +79,7 @@ def test_locus_timeout_is_enforced_inside_another_bound():
     with deadline.time_limit(600, "caller"):
         result = compute_locus(system, timeout=1.0)
     assert time.monotonic() - start < 6
-    assert any("time bound of 1 s reached" in u for u in result.unexplored)
+    assert any("time bound of 1 s reached" in u for u in remark_texts(result.unexplored))
 
 
 def test_locus_timeout_before_the_generic_numbers_is_an_error():

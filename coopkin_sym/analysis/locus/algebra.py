@@ -23,6 +23,7 @@ import flint
 import sympy as sp
 
 from coopkin_sym.analysis.locus.context import SearchContext
+from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text
@@ -251,7 +252,7 @@ def solve_two(ctx: SearchContext, polys, names: list[str]):
         g = g.gcd(polys[0].resultant(p, y))
     points: list[dict] = []
     algebraic: list[tuple] = []
-    unresolved: list[str] = []
+    unresolved: list[Remark] = []
     if g.is_zero() or g.is_constant():
         return points, algebraic, unresolved
     k = ctx.ring_names.index(x)
@@ -279,8 +280,9 @@ def solve_two(ctx: SearchContext, polys, names: list[str]):
             if sheared:
                 algebraic += sheared
             else:
-                unresolved.append(f"where {poly_text(ctx, h)} = 0 and {len(common) - 1} values "
-                                  f"of {y} share each {x}")
+                unresolved.append(Remark.of(
+                    "shared_values_undecided", polynomial=poly_text(ctx, h),
+                    count=len(common) - 1, variable=y, over=x))
     return points, algebraic, unresolved
 
 
@@ -386,9 +388,8 @@ def roots(ctx: SearchContext, g, name: str):
             if RealRoot.all_of(univariate(ctx, f, name).coeffs()):
                 curved.append(normalize(f))
             else:
-                text = f"{poly_text(ctx, f)} = 0 (no real points)"
-                if text not in ctx.locus.dropped:
-                    ctx.locus.dropped.append(text)
+                add_once(ctx.locus.dropped,
+                         Remark.of("no_real_points", polynomial=poly_text(ctx, f)))
     return roots, curved
 
 

@@ -118,6 +118,7 @@ import flint
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import CertifyError, TimeLimitReached
@@ -546,8 +547,11 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
 
 def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[str]) -> list[dict]:
     out = []
-    for k, text in enumerate(locus.parameter_conditions):
-        left, _, right = text.partition("=")
+    for k, condition in enumerate(locus.parameter_conditions):
+        if isinstance(condition, Remark):  # computed: its polynomial vanishes
+            left, right = condition["polynomial"], "0"
+        else:                              # read back from a report: "lhs = rhs"
+            left, _, right = condition.partition("=")
         try:
             lhs = _integer_polynomial(left, names, f"parameter condition {k + 1}")
             rhs = _integer_polynomial(right or "0", names, f"parameter condition {k + 1}")

@@ -70,6 +70,7 @@ from coopkin_sym.analysis.locus.algebra import (
     vars_of,
 )
 from coopkin_sym.analysis.locus.context import Place, Progress, SearchContext
+from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.types import Component, Locus, cut_short
 from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
@@ -142,14 +143,12 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     started = time.monotonic()
     model: Model = model_of(system)
     fixed = Configuration.parse(model, at)
-    notes: list[str] = []
+    notes: list[Remark | str] = []
     params = dict(fixed.parameters)
     free_params = [p for p in model.parameters if p.name not in params]
     if len(free_params) == 1 and len(model.parameters) == 1:
         params[free_params[0].name] = sp.Integer(1)
-        notes.append(f"Every length is a multiple of {free_params[0].name}: uniform scaling "
-                     f"changes no number, so {free_params[0].name} = 1 (equations in "
-                     f"prismatic displacements are in units of {free_params[0].name}).")
+        notes.append(Remark.of("uniform_scaling", parameter=free_params[0].name))
     free_joints = [j.name for j in model.joints
                    if j.name not in fixed.revolute and j.name not in fixed.prismatic]
     if free is not None:
@@ -176,19 +175,13 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     locus.variables = list(ctx.ring_names)
     locus.generic = ctx.generic.as_dict()
     deadline.keep(locus)  # from here on, a time bound returns what was found
-    locus.notes.append(
-        "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
-        "component reported is then decided exactly, so a candidate can only be missed, "
-        "never wrongly reported, and a miss has probability below degree/2^20 per step.")
+    locus.notes.append(Remark.of("candidates_probabilistic"))
     with ctx.reporter:
         _explore(ctx, Place(rows=q_rows, equations=[], point={}, depth=0))
         _pi_slices(ctx, pi_size if pi_size is not None else _default_pi_size(ctx))
         _settle_realness(ctx)
     if any(c.algebraic_witness for c in locus.components):
-        locus.notes.append(
-            "A witness with irrational coordinates is decided over Q(alpha); its float "
-            "checks use a rational point within 1e-40 of it (the same float64 image), "
-            "with the witness's own exact numbers at distance 0.")
+        locus.notes.append(Remark.of("irrational_witness_floats"))
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 
@@ -346,14 +339,10 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
                 deep.append(minor)
         if not _common_factor_on_a_line(ctx, rows, rank):
             if minor is None:
-                why = (f"more than {_MAX_SPLITS} nested zero sets of single minors"
-                       if ctx.splits >= _MAX_SPLITS else
-                       f"minors larger than {_MAX_SPLIT_RANK} x {_MAX_SPLIT_RANK}, or "
-                       f"more than {_MAX_SPLIT_MINORS} of them")
-                note = (f"rank drops of codimension 2 or more of a {len(rows)} x {ncols} "
-                        f"block ({name or 'a block'}) in {nvars} variables: not solved "
-                        f"({why})")
-                _note(ctx, note)
+                splits = ctx.splits >= _MAX_SPLITS
+                _note(ctx, "block_not_solved", rows=len(rows), columns=ncols, block=name,
+                      variables=nvars, limit="splits" if splits else "minors",
+                      bound=_MAX_SPLITS if splits else (_MAX_SPLIT_RANK, _MAX_SPLIT_MINORS))
             return []
     count = nvars + 1 if nvars <= 2 else 3
     polys = []
@@ -465,9 +454,8 @@ def _explore(ctx: SearchContext, place: Place) -> None:
     ``-f0/f1``); ``place.charts`` are the denominators ``f1``, in the current variables:
     the rows are valid only where none of them vanishes."""
     if ctx.expired():
-        inside = " inside " + "; ".join(place.equations) if place.equations else ""
-        ctx.locus.unexplored.append(f"depth {place.depth}{inside}: not explored, time bound "
-                                    "reached")
+        ctx.locus.unexplored.append(Remark.of("time_depth", depth=place.depth,
+                                              equations=place.equations))
         return
     place = place.inside(base=decompose(place.rows, ctx.model, ctx.row_contacts,
                                         ctx.ring.zctx).numbers)
@@ -508,8 +496,8 @@ def _explore(ctx: SearchContext, place: Place) -> None:
     for f, drops in ordered:
         ctx.reporter.step(f"depth {place.depth}: {f}")
         if ctx.expired():
-            ctx.locus.unexplored.append(f"component {f} = 0 (depth {place.depth}): not decided, "
-                                        "time bound reached")
+            ctx.locus.unexplored.append(Remark.of("time_component", polynomial=str(f),
+                                                  depth=place.depth))
             continue
         if any(not c.gcd(f).is_constant() for c in place.charts):
             # the image of f = 0 lies where a parametrization's denominator vanishes:
@@ -523,10 +511,9 @@ def _explore(ctx: SearchContext, place: Place) -> None:
         search()
 
 
-def _note(ctx: SearchContext, text: str) -> None:
-    """Say once in the report what was not explored."""
-    if text not in ctx.locus.unexplored:
-        ctx.locus.unexplored.append(text)
+def _note(ctx: SearchContext, kind: str, **facts) -> None:
+    """Say once in the report what was not explored (a :class:`Remark` of ``kind``)."""
+    add_once(ctx.locus.unexplored, Remark.of(kind, **facts))
 
 
 def _drops_text(drops: set[str]) -> list[str]:
@@ -541,9 +528,8 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     names = vars_of(ctx, f)
     f_text = poly_text(ctx, f)
     if all(ctx.kinds[n][0] == "parameter" for n in names):
-        text = f"{f_text} = 0"
-        if text not in ctx.locus.parameter_conditions:
-            ctx.locus.parameter_conditions.append(text)
+        add_once(ctx.locus.parameter_conditions,
+                 Remark.of("parameter_condition", polynomial=f_text))
         return
     linear = next((n for n in names if f.degrees()[ctx.ring_names.index(n)] == 1
                    and ctx.kinds[n][0] != "parameter"), None)
@@ -554,8 +540,8 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     k = ctx.ring_names.index(linear)
     sub_charts = [substitute(c, k, f0, f1, c.degrees()[k]) for c in place.charts]
     if any(c.is_zero() for c in sub_charts):
-        ctx.locus.unexplored.append(f"{f_text} = 0 inside {'; '.join(place.equations)}: outside "
-                                    "the parametrization of the enclosing component")
+        ctx.locus.unexplored.append(Remark.of("outside_parametrization", polynomial=f_text,
+                                              equations=place.equations))
         return
     sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
     eqs = place.equations + [f_text]
@@ -576,7 +562,7 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     left = [n for n in ctx.ring_names if n not in sub_point]
     kind = ("isolated" if not left else "hypersurface" if len(eqs) == 1 else "subvariety")
     comp = _component(ctx, place, eqs, numbers, kind, drops,
-                      "exact over the component's function field", witness=witness,
+                      Remark.of("decided_function_field"), witness=witness,
                       chain=sub_point)
     _go_deeper(ctx, comp, inside)
 
@@ -589,8 +575,7 @@ def _chart_points(ctx: SearchContext, place: Place, f0, f1) -> None:
     _isolated(ctx, place, [[f0, f1]])
 
 
-def _inside_candidate(ctx: SearchContext, place: Place, why_not: str | None = None,
-                      split: bool = False) -> None:
+def _inside_candidate(ctx: SearchContext, place: Place, split: bool = False) -> None:
     """A candidate set whose numbers are the enclosing ones. Some candidates come from
     conditions that are sufficient, not necessary (a left nullspace basis losing rank, a
     row divisor), or hold a drop set of higher codimension (``split``: a factor of a
@@ -600,17 +585,17 @@ def _inside_candidate(ctx: SearchContext, place: Place, why_not: str | None = No
         return
     if place.point is not None and all(n in place.point for n in ctx.ring_names):
         return  # a point: nothing lies deeper inside it
+    reason, bound = None, None
     if split:
-        if why_not is None and place.rows is not None and ctx.splits >= _MAX_SPLITS:
-            why_not = f"more than {_MAX_SPLITS} nested zero sets of single minors"
-    elif why_not is None and place.rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
-        why_not = f"more than {_HIDDEN_DEPTH} such set{'s' if _HIDDEN_DEPTH > 1 else ''} deep"
-    if why_not is None and place.depth > ctx.max_depth:
-        why_not = f"max depth {ctx.max_depth}"
-    if why_not is not None or place.rows is None:
-        note = (f"inside {', '.join(place.equations)} (enclosing numbers there): deeper "
-                f"drops not searched ({why_not or 'no rational parametrization'})")
-        _note(ctx, note)
+        if place.rows is not None and ctx.splits >= _MAX_SPLITS:
+            reason, bound = "nested_splits", _MAX_SPLITS
+    elif place.rows is not None and ctx.hidden >= _HIDDEN_DEPTH:
+        reason, bound = "hidden_depth", _HIDDEN_DEPTH
+    if reason is None and place.depth > ctx.max_depth:
+        reason, bound = "max_depth", ctx.max_depth
+    if reason is not None or place.rows is None:
+        _note(ctx, "enclosing_not_searched", equations=place.equations,
+              reason=reason or "no_parametrization", bound=bound)
         return
     def search() -> None:
         if split:
@@ -648,18 +633,12 @@ def _nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> Non
     ``f``), a witness on it (rational, else a real algebraic point)."""
     names = vars_of(ctx, f)
     if len(f) > _MAX_CURVED_TERMS:
-        inside = " inside " + ", ".join(place.equations) if place.equations else ""
-        note = (f"a family of {len(f)} terms, degree {f.total_degree()} in "
-                f"{', '.join(names)}{inside}: "
-                f"not decided (ranks modulo a polynomial of more than {_MAX_CURVED_TERMS} "
-                "terms)")
-        _note(ctx, note)
+        _note(ctx, "family_too_large", terms=len(f), degree=f.total_degree(),
+              variables=names, equations=place.equations, bound=_MAX_CURVED_TERMS)
         return
     real = has_real_point(ctx, f, names)
     if real is False:
-        text = f"{f_text} = 0 (no real points)"
-        if text not in ctx.locus.dropped:
-            ctx.locus.dropped.append(text)
+        add_once(ctx.locus.dropped, Remark.of("no_real_points", polynomial=f_text))
         return
     k = min((ctx.ring_names.index(n) for n in names if ctx.kinds[n][0] != "parameter"),
             key=lambda i: (f.degrees()[i], i))
@@ -676,8 +655,7 @@ def _nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> Non
     comp = _component(ctx, place, place.equations + [f_text], numbers,
                       "hypersurface" if not _beyond_chart(ctx, place.equations)
                       else "subvariety", drops,
-                      "exact over the component's function field (rank modulo its "
-                      "irreducible polynomial)", real=real is True, within=place.point,
+                      Remark.of("decided_modulo_family"), real=real is True, within=place.point,
                       generic_point=(place.point, Quotient(f, k)))
     if comp is None:
         return
@@ -690,7 +668,7 @@ def _nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> Non
         algebraic_witness_on(ctx, comp, f, k, place.point, numbers)
     if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
         _go_deeper(ctx, comp, place.inside(rows=None, point=None, charts=()),
-                   "no rational parametrization")
+                   "no_parametrization")
     else:
         _inside_curved(ctx, place.inside(equations=place.equations + [f_text], charts=()),
                        f, k, comp)
@@ -710,16 +688,14 @@ def _inside_curved(ctx: SearchContext, place: Place, f, k: int,
              | set(vars_of(ctx, f)))
     if comp is not None:
         index = ctx.locus.components.index(comp)
-        where = f"component #{index + 1}"
+        where = dict(component=index, equations=())
         place = place.inside(base=Numbers(**comp.numbers), depth=place.depth + 1,
                              parent=index)
     else:
-        where = ", ".join(place.equations) + " (enclosing numbers there)"
+        where = dict(component=None, equations=place.equations)
     if len(names) > 4:
         # the sets cut out there are solved in up to four variables only
-        note = (f"inside {where}: deeper drops not searched (no rational parametrization, "
-                f"and {len(names)} variables)")
-        _note(ctx, note)
+        _note(ctx, "too_many_variables", variables=len(names), **where)
         return
     quotient = Quotient(f, k)
     blocks = [[row[:6] for row in place.rows]] + [d for _, _, d in _arm_blocks(ctx, place.rows)]
@@ -731,10 +707,7 @@ def _inside_curved(ctx: SearchContext, place: Place, f, k: int,
                                 contents)
         divisors += [g for g in contents if not g.is_constant() and not quotient.is_zero(g)
                      and g not in divisors]
-    note = (f"inside {where}: only where a divisor of the rows vanishes was searched (drops "
-            "cut out by minors alone not searched: a family with no rational "
-            "parametrization)")
-    _note(ctx, note)
+    _note(ctx, "divisors_only", **where)
     if not divisors:
         return
     ctx.hidden += comp is None
@@ -757,17 +730,12 @@ def _isolated(ctx: SearchContext, place: Place, rests) -> None:
         if len(names_used) > 2:
             if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
                 continue
-            note = (f"depth {place.depth}: lower-dimensional drops in {len(names_used)} "
-                    f"variables "
-                    f"({', '.join(names_used)}) not solved (solved: up to two variables, "
-                    f"and up to four when the equations have at most "
-                    f"{_PARAMETER_SOLVE_TERMS} terms)")
-            _note(ctx, note)
+            _note(ctx, "lower_dimensional_not_solved", depth=place.depth,
+                  variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
             continue
         points, algebraic, unresolved = solve_small(ctx, polys, names_used)
-        for text in unresolved:
-            note = f"real points {text}: numbers not decided"
-            _note(ctx, note)
+        for remark in unresolved:
+            add_once(ctx.locus.unexplored, remark)
         rational_points += points
         algebraic_points += algebraic
     created = []
@@ -789,10 +757,9 @@ def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
         if dims_i & dims_j or ctx.expired():
             continue
         if ai and aj and not linearly_disjoint(ctx, ai[1], ai[0], aj[1], aj[0]):
-            ctx.locus.unexplored.append(
-                f"where components #{ctx.locus.components.index(ci) + 1} and "
-                f"#{ctx.locus.components.index(cj) + 1} meet: not decided (their fields "
-                "are not linearly disjoint)")
+            ctx.locus.unexplored.append(Remark.of(
+                "fields_not_disjoint", first=ctx.locus.components.index(ci),
+                second=ctx.locus.components.index(cj)))
             continue
         if place.depth >= ctx.max_depth:
             continue
@@ -815,11 +782,10 @@ def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
             continue
         eqs = ci.equations + [e for e in cj.equations if e not in ci.equations]
         kind = "isolated" if len(dims_i | dims_j) == len(free) else "subvariety"
-        fields = ("Q(alpha, beta), two linearly disjoint fields" if len(moduli) == 2 else
-                  "Q(alpha)" if moduli else "the function field of the free variables")
         comp = _component(ctx, place.inside(depth=place.depth + 1,
                                             parent=ctx.locus.components.index(ci)),
-                          eqs, numbers, kind, {"Q"}, f"exact over {fields}",
+                          eqs, numbers, kind, {"Q"},
+                          Remark.of("decided_joined_fields", fields=len(moduli)),
                           condition=f"{ci.condition}; and {cj.condition}",
                           within=place.point)
         if comp is None:
@@ -839,18 +805,17 @@ def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
 
 def _go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
                why_not: str | None = None) -> None:
-    """Search inside a new component for deeper drops, or say why it was not done."""
+    """Search inside a new component for deeper drops, or say why it was not done
+    (``why_not``: a reason of :data:`~.remarks.REASONS`)."""
     if comp is None or comp.kind == "isolated":
         return
     index = ctx.locus.components.index(comp)
-    where = f"inside component #{index + 1} ({comp.condition})"
-    if len(where) > 160:
-        where = f"inside component #{index + 1}"
     if place.depth >= ctx.max_depth:
-        ctx.locus.unexplored.append(f"{where}: deeper drops not explored (max depth "
-                                    f"{ctx.max_depth})")
-    elif why_not is not None:
-        ctx.locus.unexplored.append(f"{where}: deeper drops not explored ({why_not})")
+        why_not = "max_depth"
+    if why_not is not None:
+        ctx.locus.unexplored.append(Remark.of(
+            "deeper_not_explored", component=index, condition=comp.condition,
+            reason=why_not, bound=ctx.max_depth if why_not == "max_depth" else None))
     else:
         _explore(ctx, place.inside(depth=place.depth + 1, parent=index))
 
@@ -909,9 +874,7 @@ def _no_real_points(ctx: SearchContext, f) -> bool:
     """Whether ``f = 0`` has no real points (then it is listed as dropped)."""
     if has_real_point(ctx, f, vars_of(ctx, f)) is not False:
         return False
-    text = f"{poly_text(ctx, f)} = 0 (no real points)"
-    if text not in ctx.locus.dropped:
-        ctx.locus.dropped.append(text)
+    add_once(ctx.locus.dropped, Remark.of("no_real_points", polynomial=poly_text(ctx, f)))
     return True
 
 
@@ -964,7 +927,7 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
                 continue
             rows = substitute_rows(rows_x, ky, k0, k1)
             numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
-            decided = "exact over the family's function field (two substitutions)"
+            decided = Remark.of("decided_two_substitutions")
             if numbers == place.base:
                 sub_point = dict(inner)
                 sub_point[y] = (k0, k1)
@@ -981,8 +944,7 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
             if _off_charts([*place.charts, h1], at_x, quotient):
                 continue
             numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
-            decided = ("exact over the family's function field (a substitution, then "
-                       "ranks modulo its irreducible polynomial)")
+            decided = Remark.of("decided_substitution_modulo")
         eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, k)]
         if numbers == place.base:
             _inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
@@ -1007,7 +969,7 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
                                                charts=sub_charts))
         elif place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
             _go_deeper(ctx, comp, place.inside(rows=None, equations=eqs, point=None),
-                       "no rational parametrization")
+                       "no_parametrization")
         else:
             _inside_curved(ctx, place.inside(
                 rows=rows_x, equations=eqs, point=inner,
@@ -1019,10 +981,8 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                     swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     if _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y):
-        note = (f"inside {', '.join(place.equations + [poly_text(ctx, h)])}, {y} a common "
-                "root of the minors (enclosing numbers there): deeper drops not searched (no "
-                "rational parametrization)")
-        _note(ctx, note)
+        _note(ctx, "common_root_not_searched",
+              equations=place.equations + [poly_text(ctx, h)], variable=y)
         return
     quotient = Quotient(h, kx)
     common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
@@ -1045,9 +1005,8 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                 _solve_curved_x(ctx, place, [*polys, h], n, y, x, swapped=True)
         return
     if len(common) > 2:
-        note = (f"depth {place.depth}: where {poly_text(ctx, h)} = 0, {len(common) - 1} "
-                f"values of {y} share each point: not solved")
-        _note(ctx, note)
+        _note(ctx, "shared_values_not_solved", depth=place.depth,
+              polynomial=poly_text(ctx, h), count=len(common) - 1, variable=y)
         return
     if len(common) < 2:
         return
@@ -1065,15 +1024,14 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     inner = dict(place.point)
     inner[y] = (c0, c1)
     comp = _component(ctx, place, eqs, numbers, "subvariety", {"Q"},
-                      "exact over the family's function field (ranks modulo its "
-                      "irreducible polynomial)", within=inner,
+                      Remark.of("decided_family_modulo"), within=inner,
                       generic_point=(inner, quotient))
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)
     if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
         _go_deeper(ctx, comp, place.inside(rows=None, point=None),
-                   "no rational parametrization")
+                   "no_parametrization")
     else:
         _inside_curved(ctx, place.inside(
             rows=rows, equations=comp.equations, point=inner,
@@ -1155,8 +1113,8 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
             chain[n] = (ctx.ring.zctx.constant(-v.numerator),
                         ctx.ring.zctx.constant(v.denominator))
         comp = _component(ctx, place, eqs, numbers, kind, {"Q"},
-                          "exact at the point" if kind == "isolated" else
-                          "exact over the function field of the free variables",
+                          Remark.of("decided_at_point" if kind == "isolated" else
+                                    "decided_free_variables"),
                           chain=chain)
         if comp is None:
             return None
@@ -1179,20 +1137,19 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
     m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
                                                                 sp.Symbol("alpha")))
     comp = _component(ctx, place, eqs, numbers, kind, {"Q"},
-                      f"exact over Q(alpha), alpha = {alpha} a root of {m} (every "
-                      "conjugate point at once)", condition=condition, within=place.point)
+                      Remark.of("decided_algebraic", variable=alpha, minimal_polynomial=m),
+                      condition=condition, within=place.point)
     if comp is None:
         return None
     attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
     _go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
-               "a family with irrational coordinates; only its intersections with the "
-               "families found with it")
+               "irrational_family")
     return comp, values, (x, g)
 
 
 # --- components -------------------------------------------------------------------------
 def _component(ctx: SearchContext, place: Place, equations: list[str], numbers: Numbers,
-               kind: str, drops, decided: str, *, witness: dict | None = None,
+               kind: str, drops, decided: Remark, *, witness: dict | None = None,
                condition: str | None = None, real: bool = True, chain: dict | None = None,
                within: dict | None = None,
                generic_point: tuple | None = None) -> Component | None:
@@ -1399,7 +1356,7 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
     for subset in subsets:
         where = ", ".join(f"{n} = pi" for n in subset)
         if ctx.expired():
-            ctx.locus.unexplored.append(f"{where}: not searched, time bound reached")
+            ctx.locus.unexplored.append(Remark.of("time_pi_set", joints=subset))
             continue
         ctx.reporter.step(where)
         revolute = dict(ctx.config.revolute)
@@ -1422,8 +1379,8 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
             kind = "chart" if sub.ring_names else "isolated"
             comp = _component(sub, Place(rows=rows, equations=[], point={}, depth=0),
                               equations, numbers, kind, {"Q"},
-                              "exact over the function field of the other variables"
-                              if sub.ring_names else "exact at the point",
+                              Remark.of("decided_other_variables" if sub.ring_names
+                                        else "decided_at_point"),
                               condition=where)
             for offset in range(6):
                 values = complete_point(sub, {}, {}, offset)
@@ -1435,21 +1392,18 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
         if not sub.ring_names:
             continue
         if depth > ctx.max_depth:
-            ctx.locus.unexplored.append(f"inside {where}: deeper drops not explored "
-                                        f"(max depth {ctx.max_depth})")
+            ctx.locus.unexplored.append(Remark.of("pi_deeper_not_explored", joints=subset,
+                                                  bound=ctx.max_depth))
             continue
         if pi_size is not None and len(subset) > pi_size:
-            ctx.locus.unexplored.append(
-                f"inside {where}: {'deeper ' if parent is not None else ''}drops not "
-                f"searched (sets of joints at pi are searched inside up to {pi_size} at "
-                "once: pi_size)")
+            ctx.locus.unexplored.append(Remark.of(
+                "pi_set_not_searched", joints=subset, deeper=parent is not None,
+                bound=pi_size))
             continue
         _explore(sub, Place(rows=rows, equations=equations, point={}, depth=depth,
                             parent=parent))
     if rev:
-        ctx.locus.notes.append(
-            "s_q = cot(q/2): an equation s_q (= 0) is q = pi, outside the chart of t_q; "
-            "every set of joints at pi is searched like the t chart.")
+        ctx.locus.notes.append(Remark.of("pi_chart"))
 
 
 def _default_pi_size(ctx: SearchContext) -> int | None:

@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.errors import TimeLimitReached
 from coopkin_sym.exact.polynomial import NamedPolynomial
 
@@ -117,8 +118,9 @@ class Component:
         The sentences a report read back states (a report is a document; a computed
         component leaves this empty and keeps ``shown``).
     decided
-        How the numbers were decided (``"exact over the component's function field"``,
-        ``"exact at a rational point of the component"``).
+        How the numbers were decided, a :class:`~.remarks.Remark` (``decided_*``: over
+        the component's function field, modulo its polynomial, at a point, over
+        ``Q(alpha)``...); a report read back keeps its sentence (a string).
     witness_checked
         The witness's numbers from a direct exact analysis equal ``numbers``.
     float_checks
@@ -160,7 +162,7 @@ class Component:
     drops: list[str] = field(default_factory=list)
     changes: dict[str, tuple[int, int]] = field(default_factory=dict)
     stated_meaning: list[str] = field(default_factory=list)
-    decided: str = ""
+    decided: Remark | str = ""
     witness_checked: bool = False
     float_checks: list[FloatCheck] = field(default_factory=list)
     depth: int = 0
@@ -202,8 +204,13 @@ class Component:
         if self.parent is not None:
             out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
+        out["decided"] = _remark_json(self.decided)
         out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
         return out
+
+
+def _remark_json(remark: Remark | str) -> dict | str:
+    return remark.to_json() if isinstance(remark, Remark) else remark
 
 
 def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence[str],
@@ -236,11 +243,15 @@ class Locus:
     parameter_conditions
         Parameter-only degeneracies (e.g. ``L``: a length of zero), reported apart.
     dropped
-        Factors with no real points (dropped from the components), as strings.
+        Factors with no real points (dropped from the components).
     unexplored
-        What was not explored within the bounds (depth, time), in words.
+        What was not explored within the bounds (depth, time, sets not solved).
     notes
         Anything else the reader should know (scaling, probabilistic steps).
+
+    These four lists hold :class:`~.remarks.Remark` data, worded by
+    :mod:`coopkin_sym.present.remarks`; a report read back holds its sentences
+    (strings) there instead.
     certificate
         The completeness certificate
         (:meth:`~coopkin_sym.analysis.locus.certify.Certificate.to_json`), or None when none was
@@ -259,10 +270,10 @@ class Locus:
     fixed: str
     generic: dict[str, int]
     components: list[Component] = field(default_factory=list)
-    parameter_conditions: list[str] = field(default_factory=list)
-    dropped: list[str] = field(default_factory=list)
-    unexplored: list[str] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
+    parameter_conditions: list[Remark | str] = field(default_factory=list)
+    dropped: list[Remark | str] = field(default_factory=list)
+    unexplored: list[Remark | str] = field(default_factory=list)
+    notes: list[Remark | str] = field(default_factory=list)
     seconds: float = 0.0
     certificate: dict | None = None
 
@@ -283,16 +294,18 @@ class Locus:
         return {"missed_singular": missed, "false_singular": false_alarm}
 
     def to_json(self) -> dict:
+        """Plain JSON data (remarks as their kind and facts: the presentation layer's
+        :func:`~coopkin_sym.present.report.render_json` writes their sentences)."""
         return {
             "system": self.system,
             "variables": self.variables,
             "fixed": self.fixed,
             "generic": self.generic,
             "components": [c.to_json() for c in self.components],
-            "parameter_conditions": self.parameter_conditions,
-            "dropped": self.dropped,
-            "unexplored": self.unexplored,
-            "notes": self.notes,
+            "parameter_conditions": [_remark_json(r) for r in self.parameter_conditions],
+            "dropped": [_remark_json(r) for r in self.dropped],
+            "unexplored": [_remark_json(r) for r in self.unexplored],
+            "notes": [_remark_json(r) for r in self.notes],
             "float_summary": self.float_summary(),
             "seconds": self.seconds,
             "completeness": self.completeness(),
@@ -320,8 +333,7 @@ def cut_short(bound, exc: TimeLimitReached) -> Locus:
         raise TimeLimitReached(exc.seconds, (exc.where + ", " if exc.where else "")
                                + "before the generic numbers were known: no locus "
                                "to report") from None
-    locus.unexplored.append(
-        f"{exc} (wall-clock bound of the whole run): the rest of the search was not "
-        "explored (remaining candidates, deeper components, the q = pi chart)")
+    locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
+                                      where=exc.where))
     locus.seconds = round(time.monotonic() - bound.started, 3)
     return locus

@@ -1,0 +1,193 @@
+"""The words of a locus's remarks (:class:`~coopkin_sym.analysis.locus.remarks.Remark`).
+
+Every kind of remark the search makes has one sentence here, written from its facts;
+a remark read back from a report is already a sentence and is kept as it is.
+
+Example
+-------
+>>> from coopkin_sym.analysis.locus.remarks import Remark
+>>> remark_text(Remark.of("time_depth", depth=1, equations=("t_q1 + 1",)))
+'depth 1 inside t_q1 + 1: not explored, time bound reached'
+>>> remark_text("a sentence read back from a report")
+'a sentence read back from a report'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.errors import TimeLimitReached
+
+_NO_PARAMETRIZATION = "no rational parametrization"
+
+
+def _reason(facts: Mapping[str, Any]) -> str:
+    reason, bound = facts["reason"], facts["bound"]
+    if reason == "max_depth":
+        return f"max depth {bound}"
+    if reason == "nested_splits":
+        return f"more than {bound} nested zero sets of single minors"
+    if reason == "hidden_depth":
+        return f"more than {bound} such set{'s' if bound > 1 else ''} deep"
+    if reason == "irrational_family":
+        return ("a family with irrational coordinates; only its intersections with the "
+                "families found with it")
+    return _NO_PARAMETRIZATION
+
+
+def _inside(equations: Sequence[str], sep: str = "; ") -> str:
+    return " inside " + sep.join(equations) if equations else ""
+
+
+def _where(facts: Mapping[str, Any]) -> str:
+    """A component by its number, or a candidate set by its equations."""
+    if facts["component"] is not None:
+        return f"component #{facts['component'] + 1}"
+    return ", ".join(facts["equations"]) + " (enclosing numbers there)"
+
+
+def _at_pi(joints: Sequence[str]) -> str:
+    return ", ".join(f"{n} = pi" for n in joints)
+
+
+def _block_not_solved(f: Mapping[str, Any]) -> str:
+    if f["limit"] == "splits":
+        why = f"more than {f['bound']} nested zero sets of single minors"
+    else:
+        size, count = f["bound"]
+        why = f"minors larger than {size} x {size}, or more than {count} of them"
+    return (f"rank drops of codimension 2 or more of a {f['rows']} x {f['columns']} "
+            f"block ({f['block'] or 'a block'}) in {f['variables']} variables: not solved "
+            f"({why})")
+
+
+def _deeper_not_explored(f: Mapping[str, Any]) -> str:
+    where = f"inside component #{f['component'] + 1} ({f['condition']})"
+    if len(where) > 160:
+        where = f"inside component #{f['component'] + 1}"
+    return f"{where}: deeper drops not explored ({_reason(f)})"
+
+
+def _joined_fields(f: Mapping[str, Any]) -> str:
+    fields = ("Q(alpha, beta), two linearly disjoint fields" if f["fields"] == 2 else
+              "Q(alpha)" if f["fields"] == 1 else "the function field of the free variables")
+    return f"exact over {fields}"
+
+
+_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
+    "candidates_probabilistic": lambda f: (
+        "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
+        "component reported is then decided exactly, so a candidate can only be missed, "
+        "never wrongly reported, and a miss has probability below degree/2^20 per step."),
+    "irrational_witness_floats": lambda f: (
+        "A witness with irrational coordinates is decided over Q(alpha); its float "
+        "checks use a rational point within 1e-40 of it (the same float64 image), "
+        "with the witness's own exact numbers at distance 0."),
+    "pi_chart": lambda f: (
+        "s_q = cot(q/2): an equation s_q (= 0) is q = pi, outside the chart of t_q; "
+        "every set of joints at pi is searched like the t chart."),
+    "uniform_scaling": lambda f: (
+        f"Every length is a multiple of {f['parameter']}: uniform scaling changes no "
+        f"number, so {f['parameter']} = 1 (equations in prismatic displacements are in "
+        f"units of {f['parameter']})."),
+    "no_real_points": lambda f: f"{f['polynomial']} = 0 (no real points)",
+    "parameter_condition": lambda f: f"{f['polynomial']} = 0",
+    "time_depth": lambda f: (f"depth {f['depth']}{_inside(f['equations'])}: not explored, "
+                             "time bound reached"),
+    "time_component": lambda f: (f"component {f['polynomial']} = 0 (depth {f['depth']}): "
+                                 "not decided, time bound reached"),
+    "time_pi_set": lambda f: f"{_at_pi(f['joints'])}: not searched, time bound reached",
+    "time_whole_run": lambda f: (
+        f"{TimeLimitReached(f['seconds'], f['where'])} (wall-clock bound of the whole "
+        "run): the rest of the search was not explored (remaining candidates, deeper "
+        "components, the q = pi chart)"),
+    "block_not_solved": _block_not_solved,
+    "outside_parametrization": lambda f: (
+        f"{f['polynomial']} = 0 inside {'; '.join(f['equations'])}: outside the "
+        "parametrization of the enclosing component"),
+    "enclosing_not_searched": lambda f: (
+        f"inside {', '.join(f['equations'])} (enclosing numbers there): deeper drops not "
+        f"searched ({_reason(f)})"),
+    "family_too_large": lambda f: (
+        f"a family of {f['terms']} terms, degree {f['degree']} in "
+        f"{', '.join(f['variables'])}{_inside(f['equations'], ', ')}: not decided (ranks "
+        f"modulo a polynomial of more than {f['bound']} terms)"),
+    "too_many_variables": lambda f: (
+        f"inside {_where(f)}: deeper drops not searched ({_NO_PARAMETRIZATION}, and "
+        f"{f['variables']} variables)"),
+    "divisors_only": lambda f: (
+        f"inside {_where(f)}: only where a divisor of the rows vanishes was searched "
+        "(drops cut out by minors alone not searched: a family with no rational "
+        "parametrization)"),
+    "lower_dimensional_not_solved": lambda f: (
+        f"depth {f['depth']}: lower-dimensional drops in {len(f['variables'])} variables "
+        f"({', '.join(f['variables'])}) not solved (solved: up to two variables, and up "
+        f"to four when the equations have at most {f['bound']} terms)"),
+    "shared_values_undecided": lambda f: (
+        f"real points where {f['polynomial']} = 0 and {f['count']} values of "
+        f"{f['variable']} share each {f['over']}: numbers not decided"),
+    "fields_not_disjoint": lambda f: (
+        f"where components #{f['first'] + 1} and #{f['second'] + 1} meet: not decided "
+        "(their fields are not linearly disjoint)"),
+    "deeper_not_explored": _deeper_not_explored,
+    "common_root_not_searched": lambda f: (
+        f"inside {', '.join(f['equations'])}, {f['variable']} a common root of the minors "
+        f"(enclosing numbers there): deeper drops not searched ({_NO_PARAMETRIZATION})"),
+    "shared_values_not_solved": lambda f: (
+        f"depth {f['depth']}: where {f['polynomial']} = 0, {f['count']} values of "
+        f"{f['variable']} share each point: not solved"),
+    "pi_deeper_not_explored": lambda f: (
+        f"inside {_at_pi(f['joints'])}: deeper drops not explored (max depth "
+        f"{f['bound']})"),
+    "pi_set_not_searched": lambda f: (
+        f"inside {_at_pi(f['joints'])}: {'deeper ' if f['deeper'] else ''}drops not "
+        f"searched (sets of joints at pi are searched inside up to {f['bound']} at once: "
+        "pi_size)"),
+    "decided_function_field": lambda f: "exact over the component's function field",
+    "decided_modulo_family": lambda f: (
+        "exact over the component's function field (rank modulo its irreducible "
+        "polynomial)"),
+    "decided_two_substitutions": lambda f: (
+        "exact over the family's function field (two substitutions)"),
+    "decided_substitution_modulo": lambda f: (
+        "exact over the family's function field (a substitution, then ranks modulo its "
+        "irreducible polynomial)"),
+    "decided_family_modulo": lambda f: (
+        "exact over the family's function field (ranks modulo its irreducible "
+        "polynomial)"),
+    "decided_joined_fields": _joined_fields,
+    "decided_free_variables": lambda f: "exact over the function field of the free variables",
+    "decided_other_variables": lambda f: (
+        "exact over the function field of the other variables"),
+    "decided_at_point": lambda f: "exact at the point",
+    "decided_algebraic": lambda f: (
+        f"exact over Q(alpha), alpha = {f['variable']} a root of {f['minimal_polynomial']} "
+        "(every conjugate point at once)"),
+}
+
+
+def remark_text(remark: Remark | str) -> str:
+    """The sentence of a remark (a string, from a report read back, is returned as it
+    is; an empty one too: a component with no ``decided``).
+
+    Example
+    -------
+    >>> remark_text(Remark.of("no_real_points", polynomial="t_q1**2 + 1"))
+    't_q1**2 + 1 = 0 (no real points)'
+    """
+    if isinstance(remark, str):
+        return remark
+    return _WORDS[remark.kind](dict(remark.facts))
+
+
+def remark_texts(remarks: Sequence[Remark | str]) -> list[str]:
+    """The sentences of a list of remarks, in order.
+
+    Example
+    -------
+    >>> remark_texts([Remark.of("pi_chart"), "read back"])[1]
+    'read back'
+    """
+    return [remark_text(r) for r in remarks]
