@@ -42,6 +42,8 @@ from coopkin_sym.analysis.locus.certify import (
 )
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.exact import groebner as gb
+from coopkin_sym.present.certificate import certificate_summary
+from coopkin_sym.present.remarks import remark_text
 
 EXAMPLES = ("paper-case1-hard", "paper-case1-complete-hard", "paper-case1-soft",
             "paper-case1-soft-hard", "paper-case2-complete", "paper-case2-hard")
@@ -147,14 +149,16 @@ def _certificate_rows(quick: bool) -> list[dict]:
         started = time.perf_counter()
         flint_only = certify_locus(system, locus, timeout=30, backend="flint", budget=cap)
         theirs = time.perf_counter() - started
-        unfinished = sum(c.why.startswith(("timed out", "not run")) for c in
-                         flint_only.checks)
+        unfinished = sum(c.why is not None and c.why.kind in ("cert_undecided",
+                                                               "cert_chart_not_run")
+                         and remark_text(c.why).startswith(("timed out", "not run"))
+                         for c in flint_only.checks)
         rows.append({
             "benchmark": "completeness certificate of the search's locus",
             "case": f"{name}, all joints free ({len(locus.components)} components)",
             "ours_s": round(ours, 3), "baseline": "the same certificate, flint alone",
             "baseline_s": round(theirs, 3), "ratio": round(theirs / ours, 3),
-            "note": f"{cert.summary[:160]}; {len(cert.checks)} tests in "
+            "note": f"{certificate_summary(cert)[:160]}; {len(cert.checks)} tests in "
                     f"{len(cert.charts)} charts; depth 0 alone {depth0_s:.2f} s "
                     f"({'certified' if depth0.depths[0]['certified'] else 'not certified'}); "
                     f"search {search_s:.2f} s; flint alone: "

@@ -34,7 +34,7 @@ import typer
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.locus.certify import certify_locus
 from coopkin_sym.analysis.locus.search import LocusError, compute_locus
-from coopkin_sym.analysis.locus.verify import VerifyError, summary_lines, verify_locus
+from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
 from coopkin_sym.analysis.mobility import InfeasibleMotion
 from coopkin_sym.analysis.sweep import SweepError, grid
 from coopkin_sym.errors import CoopkinError, TimeLimitReached
@@ -42,6 +42,7 @@ from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.model.configuration import ConfigurationError
 from coopkin_sym.model.examples import describe_example, list_examples
 from coopkin_sym.model.model import ModelError
+from coopkin_sym.present.certificate import certificate_json
 from coopkin_sym.present.draw import DrawError, save_picture
 from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.report import (
@@ -57,6 +58,7 @@ from coopkin_sym.present.text import (
     analysis_text,
     irrational_text,
 )
+from coopkin_sym.present.verification import summary_lines, verification_json
 from coopkin_sym.system import load
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
@@ -235,11 +237,12 @@ def locus(
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
         if certify:
-            result.certificate = certify_locus(system, result,
-                                               budget=certify_timeout).to_json()
+            result.certificate = certificate_json(certify_locus(system, result,
+                                                                budget=certify_timeout))
         checked = _verification(system, result) if verify else None
         written = write_report(result, output, system, pairs=pairs,
-                               verification=checked.to_json() if checked else None)
+                               verification=verification_json(checked) if checked
+                               else None)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)
@@ -295,7 +298,7 @@ def verify_report(
         _fail(str(exc))
     checked = _verification(system, locus, max_points=max_points, lines=lines, seed=seed)
     if as_json:
-        typer.echo(json.dumps(checked.to_json(), indent=2))
+        typer.echo(json.dumps(verification_json(checked), indent=2))
         if not checked.ok:
             raise typer.Exit(1)
         return

@@ -464,6 +464,7 @@ NB03 = [
     from coopkin_sym.analysis.irrational import analyze_irrational
     from coopkin_sym.analysis.locus.search import compute_locus
     from coopkin_sym.present.locus_plot import plot_components
+    from coopkin_sym.present.remarks import remark_text, remark_texts
     from coopkin_sym.present.report import write_report
     from coopkin_sym.present.sentences import component_sentences
 
@@ -588,9 +589,9 @@ NB03 = [
     display(Markdown(opening.replace("# ", "#### ", 1) + "\\n\\n" + "\\n\\n".join(
         "#### " + s for s in sections if s.split("\\n", 1)[0] in keep)))
     assert "Nothing: the search finished within its bounds." in report
-    assert locus1.dropped == ["t_q1**2 + 1 = 0 (no real points)",
-                              "t_q2**2 + 1 = 0 (no real points)",
-                              "t_q2**2 - t_q2 + 1 = 0 (no real points)"]
+    assert remark_texts(locus1.dropped) == ["t_q1**2 + 1 = 0 (no real points)",
+                                            "t_q2**2 + 1 = 0 (no real points)",
+                                            "t_q2**2 - t_q2 + 1 = 0 (no real points)"]
     assert locus1.unexplored == []
     """),
     md("""
@@ -622,7 +623,7 @@ NB03 = [
     again = analyze_irrational(case1.model, "q1=-pi/6,q2=pi/6")
     print("over Q(alpha):", again.numbers.as_dict(), "| alpha =", again.alpha)
     assert again.numbers.as_dict() == coincident.numbers
-    print("decided:", coincident.decided)
+    print("decided:", remark_text(coincident.decided))
     print("witness:", coincident.algebraic_witness["point"],
           "| alpha =", coincident.algebraic_witness["root"])
     assert coincident.algebraic_witness["point"] == {"q1": "-5*pi/6", "q2": "5*pi/6",
@@ -760,11 +761,11 @@ NB03 = [
     draw_system(fingers, at=witness)
     """),
     code("""
-    for item in locus2.unexplored:
+    for item in remark_texts(locus2.unexplored):
         print("-", item)
     assert all(any(words in item for words in ("not solved", "not explored",
                                                "not searched"))
-               for item in locus2.unexplored)
+               for item in remark_texts(locus2.unexplored))
     """),
     md("""
     Here too the report lists what it left out: a few families where one angle does

@@ -37,6 +37,14 @@ def _reason(facts: Mapping[str, Any]) -> str:
     return _NO_PARAMETRIZATION
 
 
+def _numbers(pairs: Sequence[tuple[str, Any]]) -> str:
+    return ", ".join(f"{name} {value}" for name, value in pairs)
+
+
+def _modular(facts: Mapping[str, Any]) -> str:
+    return " (found modulo a prime)" if facts["modular"] else ""
+
+
 def _inside(equations: Sequence[str], sep: str = "; ") -> str:
     return " inside " + sep.join(equations) if equations else ""
 
@@ -165,6 +173,71 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "decided_algebraic": lambda f: (
         f"exact over Q(alpha), alpha = {f['variable']} a root of {f['minimal_polynomial']} "
         "(every conjugate point at once)"),
+    "cert_time_before_tests": lambda f: (
+        f"{TimeLimitReached(f['seconds'], f['where'])}, before the first test"),
+    "cert_generic_differs": lambda f: (
+        f"the locus's generic numbers ({_numbers(f['given'])}) differ from the exact ones "
+        f"({_numbers(f['exact'])})"),
+    "cert_chart_not_run": lambda f: (
+        f"not run: {TimeLimitReached(f['seconds'], f['where'])}"
+        + (f"; the {f['left']} chart{'s' if f['left'] > 1 else ''} after it were not "
+           "tested" if f["left"] else "")),
+    "cert_stopped_early": lambda f: (
+        "Stopped at the first test not certified; the tests after it were not run."),
+    "cert_depth_limited": lambda f: (
+        f"Only depths up to {f['depth']} were tested: the drops inside the components of "
+        f"depth {f['depth']} and deeper were not tested."),
+    "cert_no_singular": lambda f: (
+        f"Singular is not installed ({f['hint']}): the proofs ran on flint's exact "
+        "Buchberger algorithm, which is slow beyond small systems."),
+    "cert_no_msolve": lambda f: (
+        f"msolve is not installed ({f['hint']}): what is missing was looked for exactly "
+        "on small subspaces only."),
+    "cert_numbers_inconsistent": lambda f: (
+        f"component #{f['component'] + 1}: its numbers ({_numbers(f['given'])}) do not fit "
+        f"one another (from Nm, Ni, Nr: {_numbers(f['implied'])}): the component is not "
+        "used"),
+    "cert_denominator_may_vanish": lambda f: (
+        f"component #{f['component'] + 1}: a denominator of its parametrization may "
+        "vanish on its equations (saturation is not computed here): the component is "
+        "not used"),
+    "cert_component_unreadable": lambda f: f"{f['error']}: the component is not used",
+    "cert_numbers_unreadable": lambda f: (
+        f"component #{f['component'] + 1}: its numbers cannot be read: the component is "
+        "not used"),
+    "cert_condition_unreadable": lambda f: f"{f['error']}: the condition is not used",
+    "cert_conditions_left_out": lambda f: (
+        "Parameter values on the locus's parameter conditions are left out (they are "
+        "reported apart)."),
+    "cert_minors_too_large": lambda f: (
+        f"the {f['size']} x {f['size']} minors of the {f['rows']} x {f['columns']} matrix "
+        f"left after the pivots without real zeros may have {f['terms']:.2g} terms "
+        f"(largest entry {f['largest']} terms): too large to write"),
+    "cert_no_larger_rank": lambda f: "no larger rank at any point",
+    "cert_larger_everywhere": lambda f: (
+        "the rank is larger than the component's numbers give at every real point"),
+    "cert_larger_somewhere": lambda f: (
+        "the rank is larger than the component's numbers give at some of its points"
+        + _modular(f)),
+    "cert_never_drops": lambda f: "the rank never drops at a real point",
+    "cert_whole_slice": lambda f: (
+        f"the whole slice lies in component #{f['component'] + 1}"),
+    "cert_drops_elsewhere": lambda f: (
+        "the rank drops " + ("below its generic value at points on no listed component"
+                             if f["depth"] == 0 else "below its value on the component at "
+                             "points on no component listed after it") + _modular(f)),
+    "cert_modular_only": lambda f: f"not proved ({f['backend']} works modulo a prime)",
+    "cert_undecided": lambda f: (
+        (f["detail"] or "undecided")
+        + (f" (Singular not installed: {f['hint']})" if f["hint"] else "")),
+    "cert_not_tested": lambda f: "not tested (max_depth)",
+    "cert_nothing_to_test": lambda f: "nothing to test",
+    "cert_depths_untested": lambda f: f"depths beyond {f['depth']} were not tested",
+    "verify_other_system": lambda f: (
+        f"the locus is about {f['locus_system']!r}, the model is {f['model_system']!r}"),
+    "verify_parameter_unset": lambda f: (
+        f"{f['parameter']} is neither free nor fixed in the locus: checked at "
+        f"{f['parameter']} = 1 (uniform scaling)."),
 }
 
 

@@ -28,12 +28,16 @@ from typer.testing import CliRunner
 
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.certify import CertifyError, _integer_polynomial, certify_locus
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
 from coopkin_sym.exact.parse import NumberError
+from coopkin_sym.present.certificate import certificate_json
+from coopkin_sym.present.certificate import certificate_summary as summary
+from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report import (
     ReportError,
     locus_from_json,
@@ -203,7 +207,7 @@ def test_case1_hard_complete_locus_is_certified():
     for at in ("q1=pi,q2=0", "q1=pi,q2=pi/2", "q1=pi/2,q2=pi", "q1=pi,q2=pi"):
         assert system.analyze(at).numbers.as_dict() == CASE1_GENERIC
     cert = certify_locus(system, case1_locus(case1_hard_components()), timeout=60)
-    assert cert.summary == "complete (certified)"
+    assert summary(cert) == "complete (certified)"
     assert cert.certified
     assert sorted(cert.charts) == ["q1 = pi", "q1 = q2 = pi", "q2 = pi", "t chart"]
     assert all(entry["certified"] and entry["failed"] == 0
@@ -214,12 +218,12 @@ def test_case1_hard_complete_locus_is_certified():
               and c.inside is not None}
     assert inside == {(i, kind, m) for i in range(5) for kind in ("numbers", "drops")
                       for m in ("HG^T", "HD", "Q")}
-    data = json.loads(json.dumps(cert.to_json()))
+    data = json.loads(json.dumps(certificate_json(cert)))
     assert data["summary"] == "complete (certified)"
     assert data["depths"]["0"]["certified"] is True
     assert data["failed"] == [] and data["tests"] == 46 == sum(data["certified_by"].values())
     assert "checks" not in data
-    every = json.loads(json.dumps(cert.to_json(every_check=True)))
+    every = json.loads(json.dumps(certificate_json(cert, every_check=True)))
     assert len(every["checks"]) == 46
     assert {"chart", "depth", "inside", "matrix", "kind", "certified", "why", "backend",
             "seconds"} <= set(every["checks"][0])
@@ -228,10 +232,13 @@ def test_case1_hard_complete_locus_is_certified():
 def test_max_depth():
     cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
                          timeout=60, max_depth=0)
-    assert cert.summary == "not certified: depths beyond 0 were not tested"
-    assert cert.depths[0] == {"certified": True, "why": "", "tests": 46 - 15, "failed": 0}
-    assert cert.depths[1] == {"certified": False, "why": "not tested (max_depth)",
+    assert summary(cert) == "not certified: depths beyond 0 were not tested"
+    assert cert.depths[0] == {"certified": True, "why": None, "tests": 46 - 15, "failed": 0}
+    assert cert.depths[1] == {"certified": False, "why": Remark.of("cert_not_tested"),
                               "tests": 0, "failed": 0}
+    data = certificate_json(cert)
+    assert data["depths"]["0"]["why"] == "" and data["depths"]["1"]["why"] == (
+        "not tested (max_depth)")
 
 
 @pytest.mark.parametrize("missing", range(5))
@@ -243,11 +250,11 @@ def test_case1_hard_without_one_component_fails(missing):
     failed = {(c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified}
     if missing < 4:         # a point where both links lie on the x-axis: only Q drops
         assert failed == {("t chart", 0, "Q")}
-        assert cert.summary == ("not certified: t chart, depth 0, rank of Q: the rank drops "
+        assert summary(cert) == ("not certified: t chart, depth 0, rank of Q: the rank drops "
                                 "below its generic value at points on no listed component")
     else:                   # c1 = c2: Gt^T drops too
         assert failed == {("t chart", 0, "HG^T"), ("t chart", 0, "Q")}
-        assert cert.summary.startswith("not certified: t chart, depth 0, rank of HG^T: ")
+        assert summary(cert).startswith("not certified: t chart, depth 0, rank of HG^T: ")
     assert cert.depths[0]["certified"] is False and cert.depths[1]["certified"] is True
     assert cert.charts["q1 = pi"]["certified"] is True
 
@@ -261,7 +268,7 @@ def test_wrong_numbers_on_a_component_fail():
     failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
               if not c.certified]
     assert failed == [("t chart", 1, 4, "drops", "HG^T")]
-    assert cert.summary == ("not certified: t chart, depth 1, component #5, rank of HG^T: the "
+    assert summary(cert) == ("not certified: t chart, depth 1, component #5, rank of HG^T: the "
                             "rank drops below its value on the component at points on no "
                             "component listed after it")
     # a line of generic configurations claimed to have the numbers of the four points:
@@ -273,14 +280,14 @@ def test_wrong_numbers_on_a_component_fail():
               if not c.certified]
     # (the line q1 = 2 atan(1/2) crosses the slice q2 = pi too)
     assert failed == [("t chart", 0, 5, "numbers", "Q"), ("q2 = pi", 0, 5, "numbers", "Q")]
-    assert cert.summary == ("not certified: t chart, depth 0, component #6, numbers, rank of "
+    assert summary(cert) == ("not certified: t chart, depth 0, component #6, numbers, rank of "
                             "Q: the rank is larger than the component's numbers give at some "
                             "of its points (and 1 more)")
     # numbers that do not fit one another are refused outright
     comps = case1_hard_components()
     comps[0].numbers = dict(ON_THE_LINE, Nh=0)
     cert = certify_locus(system, case1_locus(comps), timeout=60)
-    assert cert.summary.startswith("not certified: component #1: its numbers (Nm 3, Nc 3, "
+    assert summary(cert).startswith("not certified: component #1: its numbers (Nm 3, Nc 3, "
                                    "Ni 1, Nr 0, Ng 1, Nd 4, Nh 0) do not fit one another")
 
 
@@ -297,7 +304,7 @@ def test_case1_complete_hard_search_result_fails():
     cert = certify_locus(system, searched, timeout=60)
     failed = sorted((c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified)
     assert failed == [("q1 = pi", 0, "Q"), ("t chart", 0, "Q")]
-    assert cert.summary == ("not certified: t chart, depth 0, rank of Q: the rank drops "
+    assert summary(cert) == ("not certified: t chart, depth 0, rank of Q: the rank drops "
                             "below its generic value at points on no listed component "
                             "(and 1 more)")
     # the complete locus: q2 = +-pi/2 for every q1 (pi included), nothing deeper
@@ -305,7 +312,7 @@ def test_case1_complete_hard_search_result_fails():
                             Component(["t_q2 + 1"], dict(Q2_ACROSS), None, True)],
                            COMPLETE_HARD_GENERIC)
     cert = certify_locus(system, complete, timeout=60)
-    assert cert.summary == "complete (certified)"
+    assert summary(cert) == "complete (certified)"
 
 
 def test_case1_soft_hard_misses_q2_at_pi():
@@ -322,8 +329,9 @@ def test_case1_soft_hard_misses_q2_at_pi():
     assert not cert.certified
     bad = [c for c in cert.checks if not c.certified]
     assert len(bad) == 1 and bad[0].depth == 0
+    assert Remark.of("cert_stopped_early") in cert.notes
     assert ("Stopped at the first test not certified; the tests after it were not run."
-            in cert.notes)
+            in remark_texts(cert.notes))
 
 
 def test_case2_complete_locus_is_certified():
@@ -352,7 +360,7 @@ def test_case2_complete_locus_is_certified():
     system = load("paper-case2-complete")
     assert system.analyze("q2=pi/2,q7=-pi/2,q1=pi/2,q6=pi/2").numbers.as_dict() == d2
     cert = certify_locus(system, Locus("case 2", names, "L=1", generic, comps), timeout=60)
-    assert cert.summary == "complete (certified)"
+    assert summary(cert) == "complete (certified)"
     assert len(cert.charts) == 64 and sorted(cert.depths) == [0, 1, 2, 3]
     # without one depth-2 point, the drops inside its parent are not covered
     del comps[3]
@@ -381,8 +389,8 @@ def test_case2_hard_search_result_misses_coincident_contacts():
                          first_failure=True)
     bad = [c for c in cert.checks if not c.certified]
     assert [(c.chart, c.depth, c.matrix) for c in bad] == [("t chart", 0, "HG^T")]
-    assert bad[0].why.startswith("the rank drops below its generic value at points on no "
-                                 "listed component")
+    assert remark_text(bad[0].why).startswith(
+        "the rank drops below its generic value at points on no listed component")
 
 
 def test_case2_hard_on_flint_alone_says_what_timed_out():
@@ -395,8 +403,8 @@ def test_case2_hard_on_flint_alone_says_what_timed_out():
     bad = [c for c in cert.checks if not c.certified]
     assert [(c.chart, c.depth, c.matrix, c.backend) for c in bad] == [
         ("t chart", 0, "HG^T", "flint")]
-    assert bad[0].why.startswith("timed out after 2 s")
-    assert cert.summary.startswith("not certified: t chart, depth 0, rank of HG^T: timed "
+    assert remark_text(bad[0].why).startswith("timed out after 2 s")
+    assert summary(cert).startswith("not certified: t chart, depth 0, rank of HG^T: timed "
                                    "out after 2 s")
 
 
@@ -408,11 +416,11 @@ def test_bad_locus_input():
     comps[0].equations = ["t_q1 - __import__"]
     cert = certify_locus(system, case1_locus(comps), timeout=60)
     assert not cert.certified
-    assert cert.summary.startswith("not certified: component #1, equation 1: "
+    assert summary(cert).startswith("not certified: component #1, equation 1: "
                                    "'t_q1 - __import__' uses undeclared symbol __import__")
     wrong = dict(CASE1_GENERIC, Nm=3)
     cert = certify_locus(system, case1_locus(case1_hard_components(), wrong), timeout=60)
-    assert cert.summary == ("not certified: the locus's generic numbers (Nm 3, Nc 2, Ni 1, "
+    assert summary(cert) == ("not certified: the locus's generic numbers (Nm 3, Nc 2, Ni 1, "
                             "Nr 0, Ng 1, Nd 4, Nh 0) differ from the exact ones (Nm 2, Nc 2, "
                             "Ni 1, Nr 0, Ng 1, Nd 4, Nh 0)")
 
@@ -426,9 +434,9 @@ def test_without_the_extra_flint_alone(monkeypatch):
     monkeypatch.setattr(lc, "msolve_path", lambda: None)
     cert = certify_locus(load("paper-case1-hard"), case1_locus(case1_hard_components()),
                          timeout=60)
-    assert cert.summary == "complete (certified)"
+    assert summary(cert) == "complete (certified)"
     assert {c.backend for c in cert.checks} <= {"flint", "none"}
-    assert cert.notes == [
+    assert remark_texts(cert.notes) == [
         "Singular is not installed (pip install coopkin_sym[certify]): the proofs ran on "
         "flint's exact Buchberger algorithm, which is slow beyond small systems.",
         "msolve is not installed (pip install coopkin_sym[certify]): what is missing was "
@@ -442,7 +450,8 @@ def test_msolve_alone_never_certifies():
     assert not cert.certified
     proved_elsewhere = {c.backend for c in cert.checks if c.certified}
     assert proved_elsewhere <= {"none"}
-    assert any(c.why == "not proved (msolve works modulo a prime)" for c in cert.checks)
+    assert any(c.why == Remark.of("cert_modular_only", backend="msolve")
+               for c in cert.checks)
 
 
 # --- the certificate of the search's own loci, the command line, reports -------------------
@@ -467,7 +476,7 @@ def soft_hard():
 
 def test_search_locus_with_a_planted_missing_component_fails(soft_hard):
     system, locus = soft_hard
-    assert certify_locus(system, locus).summary == "complete (certified)"
+    assert summary(certify_locus(system, locus)) == "complete (certified)"
     # the point q1 = -pi/2, q2 = pi/2 inside the family t_q2 = 1 left out
     planted, parent = _without(locus, ["t_q2 - 1", "t_q1 + 1"])
     assert planted.components[parent].equations == ["t_q2 - 1"]
@@ -476,19 +485,20 @@ def test_search_locus_with_a_planted_missing_component_fails(soft_hard):
     failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks
               if not c.certified]
     assert failed == [("t chart", 1, parent, "drops", "Q")]
-    assert cert.summary == (f"not certified: t chart, depth 1, component #{parent + 1}, rank "
+    assert summary(cert) == (f"not certified: t chart, depth 1, component #{parent + 1}, rank "
                             "of Q: the rank drops below its value on the component at points "
                             "on no component listed after it")
     assert cert.depths[0]["certified"] and not cert.depths[1]["certified"]
-    data = cert.to_json()
-    assert data["failed"] == [c.to_json() for c in cert.checks if not c.certified]
+    data = certificate_json(cert)
+    assert [f["why"] for f in data["failed"]] == [
+        remark_text(c.why) for c in cert.checks if not c.certified]
     assert data["depths"]["1"]["failed"] == 1 and data["charts"]["t chart"]["failed"] == 1
     # a family at q2 = pi left out: the slice q2 = pi, depth 0
     planted, _ = _without(locus, ["s_q2", "t_q1**2 + 2*t_q1 - 1"])
     cert = certify_locus(system, planted)
     assert {(c.chart, c.depth, c.matrix) for c in cert.checks if not c.certified} == {
         ("q2 = pi", 0, "HG^T"), ("q2 = pi", 0, "Q")}
-    assert cert.summary.startswith("not certified: q2 = pi, depth 0, rank of HG^T: the rank "
+    assert summary(cert).startswith("not certified: q2 = pi, depth 0, rank of HG^T: the rank "
                                    "drops below its generic value at points on no listed "
                                    "component")
 
@@ -537,7 +547,7 @@ def test_failed_certificate_in_reports_and_read_back():
     comps = case1_hard_components()
     del comps[4]
     locus = case1_locus(comps)
-    locus.certificate = certify_locus(system, locus, timeout=60).to_json()
+    locus.certificate = certificate_json(certify_locus(system, locus, timeout=60))
     why = ("not certified: t chart, depth 0, rank of HG^T: the rank drops below its generic "
            "value at points on no listed component (and 1 more)")
     assert locus.completeness() == why
@@ -578,9 +588,9 @@ def test_time_bound_of_the_whole_certificate(soft_hard):
     system, locus = soft_hard
     cert = certify_locus(system, locus, budget=0)
     assert not cert.certified
-    assert cert.summary.startswith("not certified: ")
-    assert "time bound of 0 s reached" in cert.summary
+    assert summary(cert).startswith("not certified: ")
+    assert "time bound of 0 s reached" in summary(cert)
     # an outer bound of the exact layer applies too
     with deadline.time_limit(0):
         cert = certify_locus(system, locus, budget=60)
-    assert "time bound of 0 s reached" in cert.summary
+    assert "time bound of 0 s reached" in summary(cert)

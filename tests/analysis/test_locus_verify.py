@@ -28,7 +28,6 @@ from coopkin_sym.analysis.locus.verify import (
     _line_ranks,
     _line_rows,
     _to_mpoly,
-    summary_lines,
     verify_locus,
 )
 from coopkin_sym.analysis.mobility import analyze
@@ -38,6 +37,7 @@ from coopkin_sym.exact.parse import parse_expression
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import locus_from_json, render_json
+from coopkin_sym.present.verification import summary_lines
 
 runner = CliRunner()
 

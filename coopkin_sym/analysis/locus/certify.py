@@ -100,8 +100,8 @@ Example
 ...          for a in (1, -1) for b in (1, -1)]
 >>> comps.append(Component(["t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2"], meet, None, True))
 >>> locus = Locus("paper case 1", ["t_q1", "t_q2"], "L=1", generic, comps)
->>> certify_locus(system, locus, timeout=60).summary
-'complete (certified)'
+>>> certify_locus(system, locus, timeout=60).certified
+True
 """
 
 from __future__ import annotations
@@ -110,7 +110,7 @@ import itertools
 import math
 import random
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from functools import partial
 from math import comb
 
@@ -118,7 +118,7 @@ import flint
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.locus.remarks import NOT_USED, Remark
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import CertifyError, TimeLimitReached
@@ -168,7 +168,8 @@ class Check:
     certified
         Whether it is proved.
     why
-        How it was decided without a Gröbner basis, or why it is not certified.
+        How it was decided without a Gröbner basis, or why it is not certified: a
+        :class:`~.remarks.Remark` (``cert_*``), None when a backend proved it.
     backend, seconds
         What decided it, and how long it took.
 
@@ -187,17 +188,22 @@ class Check:
     matrix: str
     kind: str
     certified: bool = False
-    why: str = ""
+    why: Remark | None = None
     backend: str = ""
     seconds: float = 0.0
 
     def where(self) -> str:
+        """Which test this is (chart, depth, component, matrix), as reports label it.
+
+        Example
+        -------
+        >>> Check("t chart", 1, 4, "HG^T", "drops").where()
+        't chart, depth 1, component #5, rank of HG^T'
+        """
         inside = f", component #{self.inside + 1}" if self.inside is not None else ""
         what = "rank of" if self.kind == "drops" else "numbers, rank of"
         return f"{self.chart}, depth {self.depth}{inside}, {what} {self.matrix}"
 
-    def to_json(self) -> dict:
-        return asdict(self)
 
 
 @dataclass
@@ -210,57 +216,72 @@ class Certificate:
         The system's name.
     certified
         True only when every test is certified.
-    summary
-        ``"complete (certified)"`` or ``"not certified: <why>"``.
+    refused
+        Why no test could be run (a :class:`~.remarks.Remark`), or None.
     depths, charts
-        Depth (or chart) -> ``{"certified": bool, "why": str, "tests": int,
-        "failed": int}``.
+        Depth (or chart) -> ``{"certified": bool, "why": Check | Remark | None,
+        "tests": int, "failed": int}``: ``why`` is the first test not certified there,
+        or what was not tested.
     checks
         Every test.
     notes
-        What the certificate assumed or could not use, in words.
+        What the certificate assumed or could not use (remarks).
+    untested_beyond
+        The depth past which nothing was tested (``max_depth``), or None.
     seconds
         Wall time.
+
+    :mod:`coopkin_sym.present.certificate` words it (its summary and JSON).
 
     Example
     -------
     >>> from coopkin_sym import load
     >>> system = load("paper-case1-hard")
     >>> cert = certify_locus(system, system.locus(), timeout=60)
-    >>> cert.certified, cert.summary
-    (True, 'complete (certified)')
+    >>> cert.certified, len(cert.checks), cert.depths[0]["failed"]
+    (True, 46, 0)
     """
 
     system: str
     certified: bool = False
-    summary: str = ""
+    refused: Remark | None = None
     depths: dict[int, dict] = field(default_factory=dict)
     charts: dict[str, dict] = field(default_factory=dict)
     checks: list[Check] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
+    notes: list[Remark] = field(default_factory=list)
+    untested_beyond: int | None = None
     seconds: float = 0.0
 
-    def to_json(self, every_check: bool = False) -> dict:
-        """Plain JSON data: the summary, per depth, per chart, the tests not certified
-        (with ``every_check``, every test) and the notes.
+    def certified_by(self) -> dict[str, int]:
+        """How many tests each backend certified.
 
         Example
         -------
-        >>> Certificate("demo", True, "complete (certified)").to_json()["summary"]
-        'complete (certified)'
+        >>> Certificate("demo").certified_by()
+        {}
         """
         backends: dict[str, int] = {}
         for c in self.checks:
             if c.certified:
                 backends[c.backend] = backends.get(c.backend, 0) + 1
-        shown = self.checks if every_check else [c for c in self.checks if not c.certified]
-        return {"system": self.system, "certified": self.certified, "summary": self.summary,
-                "depths": {str(k): v for k, v in sorted(self.depths.items())},
-                "charts": self.charts, "tests": len(self.checks),
-                "certified_by": dict(sorted(backends.items())),
-                "failed": [c.to_json() for c in shown if not c.certified],
-                **({"checks": [c.to_json() for c in shown]} if every_check else {}),
-                "notes": self.notes, "seconds": self.seconds}
+        return dict(sorted(backends.items()))
+
+    def failures(self) -> list[Check | Remark]:
+        """Why it is not certified, in order: components and conditions not used, the
+        tests not certified (shallowest first), depths not tested; empty when certified.
+
+        Example
+        -------
+        >>> Certificate("demo", untested_beyond=0).failures()[0].kind
+        'cert_depths_untested'
+        """
+        if self.refused is not None:
+            return [self.refused]
+        out: list[Check | Remark] = [n for n in self.notes if n.kind in NOT_USED]
+        out += sorted((c for c in self.checks if not c.certified), key=lambda c: c.depth)
+        if self.untested_beyond is not None:
+            out.append(Remark.of("cert_depths_untested", depth=self.untested_beyond))
+        return out
 
 
 # --- the certificate ---------------------------------------------------------------------
@@ -314,8 +335,9 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
     >>> generic = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
     >>> nothing = Locus("paper case 1", ["t_q1", "t_q2"], "L=1", generic)
     >>> cert = certify_locus(load("paper-case1-complete-hard"), nothing, timeout=60)
-    >>> cert.summary.split(": ")[:2]  # q2 = pi/2 for every q1 is missing (q1 = pi too)
-    ['not certified', 't chart, depth 0, rank of Q']
+    >>> first = cert.failures()[0]  # q2 = pi/2 for every q1 is missing (q1 = pi too)
+    >>> first.where(), first.why.kind
+    ('t chart, depth 0, rank of Q', 'cert_drops_elsewhere')
     >>> [c.chart for c in cert.checks if not c.certified]
     ['t chart', 'q1 = pi']
     """
@@ -325,8 +347,8 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
             return _certify(system, locus, at, timeout, backend, first_failure, max_depth,
                             started)
         except TimeLimitReached as exc:   # before any test could run
-            why = f"{exc}, before the first test"
-            return Certificate(system=model_of(system).name, summary=f"not certified: {why}",
+            why = Remark.of("cert_time_before_tests", seconds=exc.seconds, where=exc.where)
+            return Certificate(system=model_of(system).name, refused=why,
                                depths={0: {"certified": False, "why": why, "tests": 0,
                                            "failed": 0}},
                                seconds=round(time.monotonic() - started, 3))
@@ -357,9 +379,9 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
     r, m = len(model.joints), len(base.matrices["Q"])
     generic = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
     if generic != {k: locus.generic.get(k) for k in NUMBER_NAMES}:
-        why = (f"the locus's generic numbers ({_numbers_text(locus.generic)}) differ from "
-               f"the exact ones ({_numbers_text(generic)})")
-        cert.summary = f"not certified: {why}"
+        why = Remark.of("cert_generic_differs", given=_numbers_of(locus.generic),
+                        exact=_numbers_of(generic))
+        cert.refused = why
         cert.depths = {0: {"certified": False, "why": why, "tests": 0, "failed": 0}}
         cert.seconds = round(time.monotonic() - started, 3)
         return cert
@@ -376,30 +398,24 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
         except TimeLimitReached as exc:
             name = "t chart" if not pi_joints else " = ".join(pi_joints) + " = pi"
             left = len(slices) - k - 1
-            cert.checks.append(Check(name, 0, None, "Q", "drops", why=(
-                f"not run: {exc}" + (f"; the {left} chart{'s' if left > 1 else ''} after "
-                                     "it were not tested" if left else ""))))
+            cert.checks.append(Check(name, 0, None, "Q", "drops", why=Remark.of(
+                "cert_chart_not_run", seconds=exc.seconds, where=exc.where, left=left)))
             break
     if runner.stopped:
-        cert.notes.append("Stopped at the first test not certified; the tests after it "
-                          "were not run.")
+        cert.notes.append(Remark.of("cert_stopped_early"))
     if runner.skipped_depth:
-        cert.notes.append(f"Only depths up to {max_depth} were tested: the drops inside "
-                          f"the components of depth {max_depth} and deeper were not tested.")
+        cert.notes.append(Remark.of("cert_depth_limited", depth=max_depth))
     _summarize(cert, locus, max_depth if runner.skipped_depth else None)
     if backend == "auto" and singular_path() is None:
-        cert.notes.append(f"Singular is not installed ({EXTRA_HINT}): the proofs ran on "
-                          "flint's exact Buchberger algorithm, which is slow beyond small "
-                          "systems.")
+        cert.notes.append(Remark.of("cert_no_singular", hint=EXTRA_HINT))
     if backend == "auto" and msolve_path() is None:
-        cert.notes.append(f"msolve is not installed ({EXTRA_HINT}): what is missing was "
-                          "looked for exactly on small subspaces only.")
+        cert.notes.append(Remark.of("cert_no_msolve", hint=EXTRA_HINT))
     cert.seconds = round(time.monotonic() - started, 3)
     return cert
 
 
 def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
-                                 notes: list[str]) -> None:
+                                 notes: list[Remark]) -> None:
     """Components whose seven numbers do not follow from their Nm, Ni, Nr are not
     used (and a note says so)."""
     for i, comp in enumerate(setup.components):
@@ -408,9 +424,8 @@ def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
         given = {k: locus.components[i].numbers.get(k) for k in NUMBER_NAMES}
         implied = _numbers(m, r, *ranks_from_numbers(comp[1], r))
         if given != implied:
-            notes.append(f"component #{i + 1}: its numbers ({_numbers_text(given)}) do not "
-                         f"fit one another (from Nm, Ni, Nr: {_numbers_text(implied)}): "
-                         "the component is not used")
+            notes.append(Remark.of("cert_numbers_inconsistent", component=i,
+                                   given=_numbers_of(given), implied=_numbers_of(implied)))
             setup.components[i] = None
 
 
@@ -487,8 +502,9 @@ def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> dict[st
     return numbers_from_ranks(m, r, rank_q, rank_gt, rank_dt).as_dict()
 
 
-def _numbers_text(numbers) -> str:
-    return ", ".join(f"{k} {numbers.get(k)}" for k in NUMBER_NAMES)
+def _numbers_of(numbers) -> tuple[tuple[str, object], ...]:
+    """The seven numbers as facts of a remark (name, value), in the usual order."""
+    return tuple((k, numbers.get(k)) for k in NUMBER_NAMES)
 
 
 # --- reading the locus -------------------------------------------------------------------
@@ -508,7 +524,7 @@ def _integer_polynomial(text: str, names: tuple[str, ...], where: str) -> dict:
     return _integer_terms(NamedPolynomial.parse(text, names, where), names)
 
 
-def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
+def _read_components(locus: Locus, names: tuple[str, ...], notes: list[Remark]
                      ) -> list[tuple[list[dict], dict[str, int]] | None]:
     """Each component's equations (exponent maps over ``names``) and ranks, or None
     when it cannot be read (a note says why)."""
@@ -526,26 +542,24 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[str]
             # covering that is not there (its saturation is not computed here)
             if outs and not all(is_unit_ideal([*eqs, o], timeout=10.0,
                                               nvars=len(names)).proved for o in outs):
-                notes.append(f"component #{i + 1}: a denominator of its parametrization "
-                             "may vanish on its equations (saturation is not computed "
-                             "here): the component is not used")
+                notes.append(Remark.of("cert_denominator_may_vanish", component=i))
                 out.append(None)
                 continue
             numbers = {k: int(comp.numbers[k]) for k in ("Nm", "Ni", "Nr")}
         except NumberError as exc:
-            notes.append(f"{exc}: the component is not used")
+            notes.append(Remark.of("cert_component_unreadable", error=str(exc)))
             out.append(None)
             continue
         except (KeyError, TypeError, ValueError):
-            notes.append(f"component #{i + 1}: its numbers cannot be read: the component "
-                         "is not used")
+            notes.append(Remark.of("cert_numbers_unreadable", component=i))
             out.append(None)
             continue
         out.append((eqs, numbers))
     return out
 
 
-def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[str]) -> list[dict]:
+def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[Remark]
+                     ) -> list[dict]:
     out = []
     for k, condition in enumerate(locus.parameter_conditions):
         if isinstance(condition, Remark):  # computed: its polynomial vanishes
@@ -556,15 +570,14 @@ def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[str]) -> 
             lhs = _integer_polynomial(left, names, f"parameter condition {k + 1}")
             rhs = _integer_polynomial(right or "0", names, f"parameter condition {k + 1}")
         except NumberError as exc:
-            notes.append(f"{exc}: the condition is not used")
+            notes.append(Remark.of("cert_condition_unreadable", error=str(exc)))
             continue
         diff = dict(lhs)
         for key, c in rhs.items():
             diff[key] = diff.get(key, 0) - c
         out.append({key: c for key, c in diff.items() if c})
     if out:
-        notes.append("Parameter values on the locus's parameter conditions are left out "
-                     "(they are reported apart).")
+        notes.append(Remark.of("cert_conditions_left_out"))
     return out
 
 
@@ -616,7 +629,7 @@ class _Everywhere:
 class _TooLarge:
     """The drop ideal is too large to write down; ``why`` says how large."""
 
-    why: str
+    why: Remark
 
 
 def _is_real_unit(p: Poly, units: list[Poly]) -> bool:
@@ -750,9 +763,8 @@ def _drop_generators(rows, rho: int, chart: _Chart, real: _RealZeros, rng
     for size in sizes[:k]:
         estimate *= size
     if estimate > MAX_MINOR_TERMS:
-        return _TooLarge(f"the {k} x {k} minors of the {nr} x {nc} matrix left after "
-                         f"the pivots without real zeros may have {estimate:.2g} terms "
-                         f"(largest entry {sizes[0]} terms): too large to write")
+        return _TooLarge(Remark.of("cert_minors_too_large", size=k, rows=nr, columns=nc,
+                                   terms=estimate, largest=sizes[0]))
     dets = []
     if comb(nr, k) * comb(nc, k) <= MAX_MINORS:
         for rs in itertools.combinations(range(nr), k):
@@ -941,19 +953,17 @@ class _Runner:
             return
         if gens == []:
             check.certified, check.backend = True, "none"
-            check.why = "no larger rank at any point"
+            check.why = Remark.of("cert_no_larger_rank")
             self._add(check)
             return
         if gens is _Everywhere:
-            check.why = ("the rank is larger than the component's numbers give at every "
-                         "real point")
+            check.why = Remark.of("cert_larger_everywhere")
             self._add(check)
             return
         verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names),
                          allowed=[[u] for u in chart.units] + conditions)
-        self._record(check, verdict, "the rank is larger than the component's numbers "
-                                     "give at some of its points")
+        self._record(check, verdict, "cert_larger_somewhere")
 
     def run(self, check: Check, chart: _Chart, own: list[Poly], gens, covering,
             conditions) -> None:
@@ -964,37 +974,35 @@ class _Runner:
             return
         if gens is _Everywhere:
             check.certified, check.backend = True, "none"
-            check.why = "the rank never drops at a real point"
+            check.why = Remark.of("cert_never_drops")
             self._add(check)
             return
         whole = next((i for i, p in covering if not p), None)
         if whole is not None:
             check.certified, check.backend = True, "none"
-            check.why = f"the whole slice lies in component #{whole + 1}"
+            check.why = Remark.of("cert_whole_slice", component=whole)
             self._add(check)
             return
         verdict = covers(list(own) + list(gens), [p for _, p in covering],
                          timeout=seconds, backend=self.backend,
                          nvars=len(chart.names),
                          allowed=[[u] for u in chart.units] + conditions)
-        lower = "below its generic value" if check.depth == 0 else \
-            "below its value on the component"
-        where = "on no listed component" if check.depth == 0 else \
-            "on no component listed after it"
-        self._record(check, verdict, f"the rank drops {lower} at points {where}")
+        self._record(check, verdict, "cert_drops_elsewhere")
 
     def _record(self, check: Check, verdict: Verdict, failure: str) -> None:
+        """Record a backend's verdict; ``failure`` is the kind of remark saying what
+        fails when it does not hold."""
         check.backend, check.seconds = verdict.backend, round(verdict.seconds, 3)
         if verdict.proved:
             check.certified = True
         elif verdict.holds is False:
-            check.why = failure + ("" if verdict.exact else " (found modulo a prime)")
+            check.why = Remark.of(failure, depth=check.depth, modular=not verdict.exact)
         elif verdict.holds is True:
-            check.why = f"not proved ({verdict.backend} works modulo a prime)"
+            check.why = Remark.of("cert_modular_only", backend=verdict.backend)
         else:
-            check.why = verdict.detail or "undecided"
-            if verdict.detail.startswith("timed out") and singular_path() is None:
-                check.why += f" (Singular not installed: {EXTRA_HINT})"
+            hint = (EXTRA_HINT if verdict.detail.startswith("timed out")
+                    and singular_path() is None else "")
+            check.why = Remark.of("cert_undecided", detail=verdict.detail, hint=hint)
         self._add(check)
 
     def _add(self, check: Check) -> None:
@@ -1005,13 +1013,13 @@ class _Runner:
 
 def _summarize(cert: Certificate, locus: Locus, max_depth: int | None) -> None:
     def tally(table: dict, key, check: Check) -> None:
-        entry = table.setdefault(key, {"certified": True, "why": "", "tests": 0,
+        entry = table.setdefault(key, {"certified": True, "why": None, "tests": 0,
                                        "failed": 0})
         entry["tests"] += 1
         if not check.certified:
             entry["failed"] += 1
             if entry["certified"]:
-                entry["certified"], entry["why"] = False, f"{check.where()}: {check.why}"
+                entry["certified"], entry["why"] = False, check
 
     depths: dict[int, dict] = {}
     charts: dict[str, dict] = {}
@@ -1022,21 +1030,13 @@ def _summarize(cert: Certificate, locus: Locus, max_depth: int | None) -> None:
     for d in range(top + 1):
         untested = max_depth is not None and d > max_depth
         depths.setdefault(d, {"certified": not untested,
-                              "why": "not tested (max_depth)" if untested else
-                              "nothing to test", "tests": 0, "failed": 0})
+                              "why": Remark.of("cert_not_tested" if untested
+                                               else "cert_nothing_to_test"),
+                              "tests": 0, "failed": 0})
     cert.depths = dict(sorted(depths.items()))
     cert.charts = charts
-    failing = [f"{c.where()}: {c.why}" for c in sorted(
-        (c for c in cert.checks if not c.certified), key=lambda c: c.depth)]
-    failing = [n for n in cert.notes if n.endswith("is not used")] + failing
-    if max_depth is not None:
-        failing.append(f"depths beyond {max_depth} were not tested")
-    cert.certified = not failing
-    if cert.certified:
-        cert.summary = "complete (certified)"
-    else:
-        more = f" (and {len(failing) - 1} more)" if len(failing) > 1 else ""
-        cert.summary = f"not certified: {failing[0]}{more}"
+    cert.untested_beyond = max_depth
+    cert.certified = not cert.failures()
 
 
 __all__ = ["Certificate", "CertifyError", "Check", "certify_locus"]

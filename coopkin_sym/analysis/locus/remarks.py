@@ -65,7 +65,42 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "decided_other_variables": (),
     "decided_at_point": (),
     "decided_algebraic": ("variable", "minimal_polynomial"),
+    # a certificate: why a test is (not) certified, what it assumed or did not use
+    "cert_time_before_tests": ("seconds", "where"),
+    "cert_generic_differs": ("given", "exact"),
+    "cert_chart_not_run": ("seconds", "where", "left"),
+    "cert_stopped_early": (),
+    "cert_depth_limited": ("depth",),
+    "cert_no_singular": ("hint",),
+    "cert_no_msolve": ("hint",),
+    "cert_numbers_inconsistent": ("component", "given", "implied"),
+    "cert_denominator_may_vanish": ("component",),
+    "cert_component_unreadable": ("error",),
+    "cert_numbers_unreadable": ("component",),
+    "cert_condition_unreadable": ("error",),
+    "cert_conditions_left_out": (),
+    "cert_minors_too_large": ("size", "rows", "columns", "terms", "largest"),
+    "cert_no_larger_rank": (),
+    "cert_larger_everywhere": (),
+    "cert_larger_somewhere": ("depth", "modular"),
+    "cert_never_drops": (),
+    "cert_whole_slice": ("component",),
+    "cert_drops_elsewhere": ("depth", "modular"),
+    "cert_modular_only": ("backend",),
+    "cert_undecided": ("detail", "hint"),
+    "cert_not_tested": (),
+    "cert_nothing_to_test": (),
+    "cert_depths_untested": ("depth",),
+    # a verification: what it could not use
+    "verify_other_system": ("locus_system", "model_system"),
+    "verify_parameter_unset": ("parameter",),
 }
+
+#: Certificate notes that leave a component or condition out: each makes the
+#: certificate fail (a covering could rest on what was left out).
+NOT_USED = frozenset({"cert_numbers_inconsistent", "cert_denominator_may_vanish",
+                      "cert_component_unreadable", "cert_numbers_unreadable",
+                      "cert_condition_unreadable"})
 
 #: Why deeper drops were not searched (the ``reason`` of a remark).
 REASONS = ("max_depth", "no_parametrization", "irrational_family", "nested_splits",

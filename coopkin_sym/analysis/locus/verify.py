@@ -64,6 +64,7 @@ import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.mobility import analyze
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_of_q
@@ -90,7 +91,7 @@ from coopkin_sym.model.configuration import (
 from coopkin_sym.model.model import Model, model_of
 
 __all__ = ["DEFAULT_VALUES", "ComponentIssue", "DropPoint", "Verification", "VerifyError",
-           "summary_lines", "verify_locus"]
+           "verify_locus"]
 
 #: Default value sets, in order of preference (a smaller set is a prefix): tangents of
 #: half angles for revolute joints ("oo" is q = pi), displacements, positive parameters.
@@ -229,7 +230,7 @@ class Verification:
     unsound: list[ComponentIssue] = field(default_factory=list)
     unchecked: list[int] = field(default_factory=list)
     unread_witnesses: dict[int, str] = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
+    notes: list[Remark] = field(default_factory=list)
     seconds: float = 0.0
 
     @property
@@ -242,7 +243,10 @@ class Verification:
         return sorted({i.component for i in self.unsound})
 
     def to_json(self) -> dict:
+        """Plain JSON data (notes as remark data: the presentation layer's
+        :func:`~coopkin_sym.present.verification.verification_json` words them)."""
         out = asdict(self)
+        out["notes"] = [n.to_json() for n in self.notes]
         out["ok"] = self.ok
         return out
 
@@ -483,17 +487,16 @@ class _Checker:
             raise VerifyError(f"the locus's fixed values: {exc}") from None
         self.fixed_items = [(str(k), str(v)) for k, v in items]
         params = dict(fixed_cfg.parameters)
-        self.notes: list[str] = []
+        self.notes: list[Remark] = []
         if locus.system and locus.system != model.name:
-            self.notes.append(f"the locus is about {locus.system!r}, the model is "
-                              f"{model.name!r}")
+            self.notes.append(Remark.of("verify_other_system", locus_system=locus.system,
+                                        model_system=model.name))
         variables = list(locus.variables)
         for p in model.parameters:
             if p.name not in params and p.name not in variables:
                 params[p.name] = sp.Integer(1)
                 self.fixed_items.append((p.name, "1"))
-                self.notes.append(f"{p.name} is neither free nor fixed in the locus: "
-                                  f"checked at {p.name} = 1 (uniform scaling).")
+                self.notes.append(Remark.of("verify_parameter_unset", parameter=p.name))
         free_joints = [j.name for j in model.joints
                        if j.name not in fixed_cfg.revolute and j.name not in fixed_cfg.prismatic]
         self.config = Configuration(fixed_cfg.revolute, fixed_cfg.prismatic, params,
@@ -1303,78 +1306,3 @@ def _primitive_positive(f: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
     top = max(f.to_dict().items(), key=lambda t: t[0])
     return -f if int(top[1]) < 0 else f
 
-
-# --- presentation -----------------------------------------------------------------------
-def _numbers_text(numbers: Mapping[str, int] | None) -> str:
-    if not numbers:
-        return ""
-    return " ".join(f"{k} {numbers[k]}" for k in NUMBER_NAMES if k in numbers)
-
-
-def summary_lines(v: Verification) -> list[str]:
-    """The verification in a few plain lines (for the command line).
-
-    Example
-    -------
-    >>> from coopkin_sym import load
-    >>> from coopkin_sym.analysis.locus.types import Locus
-    >>> generic = {"Nm": 0, "Nc": 0, "Ni": 0, "Nr": 0, "Ng": 3, "Nd": 7, "Nh": 1}
-    >>> v = verify_locus(load("paper-case1-complete-hard"),
-    ...                  Locus("c", ["t_q1", "t_q2"], "L=1", generic), lines=0)
-    >>> summary_lines(v)[0]
-    'Verification: FAILED (20 uncovered points, 0 unsound components)'
-    """
-    status = "passed" if v.ok else "FAILED"
-    out = [f"Verification: {status} ({v.uncovered_total} uncovered point"
-           f"{'' if v.uncovered_total == 1 else 's'}, {len(v.unsound_components)} unsound "
-           f"component{'' if len(v.unsound_components) == 1 else 's'})"]
-    sets = {}
-    for name, xs in v.values.items():
-        sets.setdefault(tuple(xs), []).append(name)
-    grid = "; ".join(f"{', '.join(names)} in {{{', '.join(xs)}}}" for xs, names in sets.items())
-    out.append(f"  grid: {v.grid_points} points ({grid}"
-               f"{', cut to fit --max-points' if v.reduced else ''}), "
-               f"{v.grid_drops} with non-generic numbers")
-    out.append(f"  lines: {v.lines} random rational lines (seed {v.seed}), {v.line_points} "
-               f"points decided exactly, {v.line_drops} with non-generic numbers, "
-               f"{v.singular_lines} lying in the locus")
-    out.append(f"  components: {v.components}; witnesses checked: {v.witnesses_checked}; "
-               f"with no witness and no point checked: {len(v.unchecked)}")
-    if v.boundary_points:
-        out.append(f"  {v.boundary_points} point(s) where a component's equations hold and "
-                   "a denominator of its parametrization vanishes, ranks not above its "
-                   "own: taken as on it")
-    for i, why in v.unread_witnesses.items():
-        out.append(f"  witness of component {i + 1} not read here: {why}")
-    for u in v.uncovered:
-        where = ",".join(f"{k}={x}" for k, x in u.point.items())
-        if u.kind == "root":
-            where = (f"{where} (approximately; lam a root of {u.algebraic['root_of']} on "
-                     f"the line {u.algebraic['line']})")
-        elif u.kind == "line":
-            where = f"every point of the line {where}"
-        out.append(f"  uncovered ({u.source}): {where}: {_numbers_text(u.numbers)}"
-                   + (f" (on component {', '.join(str(i + 1) for i in u.on)} with other "
-                      "numbers)" if u.on else ""))
-    if v.uncovered_total > len(v.uncovered):
-        out.append(f"  ... {v.uncovered_total - len(v.uncovered)} more uncovered points")
-    for issue in v.unsound:
-        name = "the generic numbers" if issue.component < 0 else \
-            f"component {issue.component + 1}"
-        where = ",".join(f"{k}={x}" for k, x in (issue.point or {}).items())
-        out.append(f"  unsound: {name}: {_ISSUE_WORDS.get(issue.kind, issue.kind)}"
-                   + (f" at {where}" if where else "")
-                   + (f": {_numbers_text(issue.numbers)}" if issue.numbers else "")
-                   + (f" ({issue.detail})" if issue.detail else ""))
-    out.extend(f"  note: {n}" for n in v.notes)
-    out.append(f"  {v.seconds} s")
-    return out
-
-
-_ISSUE_WORDS = {
-    "witness-off": "its equations do not vanish at its witness",
-    "witness-numbers": "its witness has other numbers",
-    "rank-above": "a point on it has a rank above the component's (numbers there)",
-    "generic-numbers": "its numbers are the generic ones",
-    "generic": "the report's generic numbers are wrong",
-}
