@@ -24,7 +24,7 @@ SAMPLE = {"polynomial": "t_q1**2 + 1", "equations": ("t_q1", "t_q2 - 1"), "depth
           "given": (("Nm", 3), ("Nc", 2)), "exact": (("Nm", 2), ("Nc", 2)),
           "implied": (("Nm", 3), ("Nc", 3)), "left": 2, "hint": "pip install x",
           "error": "component #1, equation 1: 't_q1 +' is not a polynomial", "size": 3,
-          "columns": 9, "largest": 40, "modular": True, "backend": "msolve",
+          "largest": 40, "modular": True, "backend": "msolve",
           "detail": "timed out after 2 s", "locus_system": "one", "model_system": "two"}
 SAMPLE_FOR = {("family_too_large", "variables"): ("t_q1", "t_q2"),
               ("lower_dimensional_not_solved", "variables"): ("t_q1", "t_q2", "t_q3"),
