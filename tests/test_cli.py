@@ -13,8 +13,9 @@ from coopkin_sym.cli import app
 
 runner = CliRunner()
 
-EXAMPLES = ["paper-case1-complete-hard", "paper-case1-hard", "paper-case1-soft",
-            "paper-case1-soft-hard", "paper-case2-complete", "paper-case2-hard"]
+EXAMPLES = ["dh-three-finger-hand", "dh-two-puma560-box", "paper-case1-complete-hard",
+            "paper-case1-hard", "paper-case1-soft", "paper-case1-soft-hard",
+            "paper-case2-complete", "paper-case2-hard"]
 
 
 def run_ok(*args: str) -> str:

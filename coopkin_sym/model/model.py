@@ -34,8 +34,17 @@ import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
 from coopkin_sym.errors import ModelError
-from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
+from coopkin_sym.model.dh import (
+    CONVENTIONS,
+    IDENTITY,
+    DHRow,
+    Frame,
+    dh_joints,
+    frame_from_xyz_rpy,
+    in_base,
+)
 from coopkin_sym.model.examples import example_path, list_examples
 from coopkin_sym.model.trees import TreeError, check_tree, read_file
 
@@ -71,17 +80,20 @@ class Joint:
 
 @dataclass(frozen=True)
 class Arm:
-    """A serial chain; ``joints`` run from the base outwards.
+    """A serial chain; ``joints`` run from the base outwards. ``frames`` are the link
+    frames at home (``0`` the base placement, ``k`` the link moved by joint ``k``), in
+    the base frame, for an arm given as a DH table; None otherwise.
 
     Example
     -------
     >>> arm = load_model("paper-case2-hard").arms[0]
-    >>> arm.name, [j.name for j in arm.joints]
-    ('s1', ['q1', 'q2', 'q3', 'q4'])
+    >>> arm.name, [j.name for j in arm.joints], arm.frames
+    ('s1', ['q1', 'q2', 'q3', 'q4'], None)
     """
 
     name: str
     joints: tuple[Joint, ...]
+    frames: tuple[Frame, ...] | None = None
 
 
 @dataclass(frozen=True)
@@ -165,7 +177,24 @@ class _TopIn(_Entry):
 
 class _ArmIn(_Entry):
     name: StrictStr
-    joints: list[Any]
+    joints: list[Any] | None = None
+    dh: list[Any] | None = None
+    convention: StrictStr | None = None
+    base: Any = None
+
+
+class _DHRowIn(_Entry):
+    name: StrictStr
+    type: StrictStr
+    theta: Any = 0
+    d: Any = 0
+    a: Any = 0
+    alpha: Any = 0
+
+
+class _PlacementIn(_Entry):
+    xyz: list[Any] | None = None
+    rpy: list[Any] | None = None
 
 
 class _JointIn(_Entry):
@@ -181,6 +210,7 @@ class _ContactIn(_Entry):
     point: list[Any]
     normal: list[Any] | None = None
     model: StrictStr
+    frame: StrictStr | None = None
 
 
 def _join(path: str, loc: tuple[int | str, ...] | list[int | str]) -> str:
@@ -347,6 +377,20 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
                 arm_joints[raw_arm["name"]] = None   # exists, but unusable
             continue
         names.add(arm.name, f"{apath}.name", symbol=False)
+        if arm.dh is not None:
+            built = _dh_arm(arm, apath, parameters, names, problems, joint_paths)
+            arm_joints.setdefault(arm.name, (i, len(arm.dh)) if built else None)
+            if built is not None:
+                arms.append(built)
+            continue
+        for key in ("convention", "base"):
+            if getattr(arm, key) is not None:
+                problems.append(f"{apath}.{key}: only an arm given by a DH table (dh) has "
+                                f"a {key}")
+        if arm.joints is None:
+            problems.append(f"{apath}: missing key 'joints' (or 'dh', a DH table)")
+            arm_joints.setdefault(arm.name, None)
+            continue
         arm_joints.setdefault(arm.name, (i, len(arm.joints)))
         if not arm.joints:
             problems.append(f"{apath}.joints: at least one joint is needed (contacts on "
@@ -369,9 +413,10 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
                             f"half-angle variable t_{jname} of joint {jname} ({jpath})")
 
     contacts: list[Contact] = []
+    frames = {arm.name: arm.frames for arm in arms}
     for i, raw_contact in enumerate(top.contacts or []):
         contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
-                           problems)
+                           problems, frames)
         if contact is not None:
             contacts.append(contact)
     if not top.contacts and "contacts" not in top_bad:
@@ -414,9 +459,88 @@ def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Nam
     return Joint(entry.name, jtype, axis, point)  # type: ignore[arg-type]
 
 
+def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names,
+            problems: list[str], joint_paths: dict[str, str]) -> Arm | None:
+    """An arm given by a DH table: its joints at home and its link frames."""
+    before = len(problems)
+    if arm.joints is not None:
+        problems.append(f"{path}: give either joints or dh (a DH table), not both")
+    convention = arm.convention if arm.convention is not None else "standard"
+    if convention not in CONVENTIONS:
+        problems.append(f"{path}.convention: expected standard (Denavit-Hartenberg) or "
+                        f"modified (Craig), got {brief(convention)}")
+    base = _placement(arm.base, f"{path}.base", parameters, problems)
+    if not arm.dh:
+        problems.append(f"{path}.dh: at least one row (joint) is needed")
+    rows = []
+    for k, raw_row in enumerate(arm.dh):
+        rpath = f"{path}.dh[{k}]"
+        row, bad = _validate(_DHRowIn, raw_row, rpath, problems)
+        if row is None or bad:
+            continue
+        names.add(row.name, f"{rpath}.name", symbol=True)
+        if row.type not in JOINT_TYPES:
+            problems.append(f"{rpath}.type: unknown joint type {brief(row.type)} (expected "
+                            f"revolute or prismatic)")
+            continue
+        theta = _angle(row.theta, f"{rpath}.theta", problems)
+        alpha = _angle(row.alpha, f"{rpath}.alpha", problems)
+        d = _number(row.d, f"{rpath}.d", parameters, problems)
+        a = _number(row.a, f"{rpath}.a", parameters, problems)
+        if None in (theta, alpha, d, a):
+            continue
+        rows.append(DHRow(row.name, row.type, theta, d, a, alpha))
+        joint_paths[row.name] = rpath
+    if len(problems) > before or base is None:
+        return None
+    dh, frames = dh_joints(rows, convention, base)
+    joints = tuple(Joint(j.name, j.type, j.axis, j.point) for j in dh)  # type: ignore[arg-type]
+    return Arm(arm.name, joints, tuple((sp.ImmutableMatrix(r), p) for r, p in frames))
+
+
+def _angle(value: Any, path: str, problems: list[str]) -> ExactAngle | None:
+    """An exact angle with rational cosine and sine (the one angle parser)."""
+    try:
+        return ExactAngle.parse(value, path)
+    except NumberError as exc:
+        problems.append(str(exc))
+        return None
+
+
+def _number(value: Any, path: str, parameters: dict[str, sp.Symbol],
+            problems: list[str]) -> sp.Expr | None:
+    try:
+        return parse_number(value, parameters, path)
+    except NumberError as exc:
+        problems.append(str(exc))
+        return None
+
+
+def _placement(raw: Any, path: str, parameters: dict[str, sp.Symbol],
+               problems: list[str]) -> Frame | None:
+    """An arm's base placement (``xyz``, ``rpy``), the identity when not given."""
+    if raw is None:
+        return IDENTITY
+    entry, bad = _validate(_PlacementIn, raw, path, problems)
+    if entry is None or bad:
+        return None
+    xyz = (_vector(entry.xyz, f"{path}.xyz", parameters, problems, rational=False)
+           if entry.xyz is not None else (0, 0, 0))
+    rpy_raw = entry.rpy if entry.rpy is not None else [0, 0, 0]
+    if len(rpy_raw) != 3:
+        problems.append(f"{path}.rpy: expected 3 angles (roll, pitch, yaw), got "
+                        f"{len(rpy_raw)}")
+        return None
+    rpy = [_angle(v, f"{path}.rpy[{k}]", problems) for k, v in enumerate(rpy_raw)]
+    if xyz is None or None in rpy:
+        return None
+    return frame_from_xyz_rpy(xyz, rpy)
+
+
 def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
              arm_joints: dict[str, tuple[int, int] | None],
-             problems: list[str]) -> Contact | None:
+             problems: list[str], frames: Mapping[str, tuple[Frame, ...] | None]
+             ) -> Contact | None:
     entry, bad = _validate(_ContactIn, raw, path, problems)
     if entry is None:
         return None
@@ -457,8 +581,22 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
             problems.append(f"{path}.normal: {why}")
     elif model in ("soft", "frictionless") and "normal" not in bad:
         problems.append(f"{path}.normal: required for a {model} contact")
+    if entry.frame not in (None, "base", "link"):
+        problems.append(f"{path}.frame: expected base (the default: point and normal in "
+                        f"the base frame at home) or link (in the link's DH frame), got "
+                        f"{brief(entry.frame)}")
     if len(problems) > before or bad or point is None:
         return None
+    if entry.frame == "link":
+        arm_name = match.group(1) if match is not None else None
+        if arm_name is not None and arm_name not in frames:
+            return None   # the arm itself could not be read: its entry says why
+        arm_frames = frames.get(arm_name) if arm_name is not None else None
+        if arm_frames is None:
+            problems.append(f"{path}.frame: link frames exist only for an arm given by a "
+                            f"DH table; {brief(entry.link)} is not on one")
+            return None
+        point, normal = in_base(arm_frames[link], point, normal)
     return Contact(entry.name, arm_index, link, point, normal, model)  # type: ignore[arg-type]
 
 

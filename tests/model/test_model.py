@@ -22,6 +22,8 @@ L = sp.Symbol("L", positive=True)
 R = sp.Rational
 
 EXAMPLES = [
+    "dh-three-finger-hand",
+    "dh-two-puma560-box",
     "paper-case1-complete-hard",
     "paper-case1-hard",
     "paper-case1-soft",
@@ -83,11 +85,12 @@ def test_example_path_and_unknown_example():
     path = example_path("paper-case1-hard")
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
     with pytest.raises(ValueError, match="unknown example 'x'; shipped examples: "
+                                         "dh-three-finger-hand, dh-two-puma560-box, "
                                          "paper-case1-complete-hard, "):
         example_path("x")
 
 
-@pytest.mark.parametrize("name", EXAMPLES)
+@pytest.mark.parametrize("name", [e for e in EXAMPLES if e.startswith("paper-")])
 def test_every_example_loads_with_paper_header(name):
     model = load_model(name)
     assert model.parameters == (L,)
@@ -96,6 +99,15 @@ def test_every_example_loads_with_paper_header(name):
     text = example_path(name).read_text(encoding="utf-8")
     assert "ICRA 1992" in text and "section" in text
     assert describe_example(name).startswith("Paper case study ")
+
+
+@pytest.mark.parametrize("name", [e for e in EXAMPLES if e.startswith("dh-")])
+def test_every_dh_example_loads_and_says_where_it_comes_from(name):
+    model = load_model(name)
+    assert model == load_model(example_path(name))
+    assert all(arm.frames is not None and len(arm.frames) == len(arm.joints) + 1
+               for arm in model.arms)
+    assert "DH table" in describe_example(name)
 
 
 def test_case1_hard_exact_contents():

@@ -1,13 +1,14 @@
-"""The paper's case studies, shipped as model files.
+"""The shipped model files: the paper's case studies and systems from the literature.
 
 Bicchi, Melchiorri and Balluchi (ICRA 1992), section 4: case study 1 (two one-link
 arms, four contact-model combinations) and case study 2 (two SCARA-type robots,
 complete-constraint and hard-finger contacts). Each file's header comment cites the
-section and the numbers the paper states.
+section and the numbers the paper states. The ``dh-`` examples give their arms as
+Denavit-Hartenberg tables: a three-finger hand and two PUMA 560 arms holding a box.
 
 Example
 -------
->>> list_examples()[:2]
+>>> list_examples()[2:4]
 ['paper-case1-complete-hard', 'paper-case1-hard']
 >>> example_path("paper-case1-hard").name
 'paper-case1-hard.yaml'
