@@ -61,7 +61,8 @@ class PointMotions:
     ``object_twists`` is a basis of the object twists ``(v, w)`` left free with every
     joint locked (empty when ``Ni`` was not asked for or is 0), ``joint_motions`` a
     basis of the joint rates with the object fixed (likewise for ``Nr``), and
-    ``contact_points`` names each contact point, so that lines can be named by them.
+    ``contact_points`` names each contact point, so that lines can be named by them;
+    the twists are written in ``object_frame`` (the model's; None: base origin and axes).
     Entries are SymPy numbers in radicals.
 
     Example
@@ -75,6 +76,12 @@ class PointMotions:
     object_twists: list[list[sp.Expr]]
     joint_motions: list[list[sp.Expr]]
     contact_points: list[tuple[str, list[sp.Expr]]]
+    object_frame: tuple | None = None
+
+    def twists_in_base(self) -> list[list[sp.Expr]]:
+        """:attr:`object_twists` (written in the model's object frame) with ``v`` at
+        the base origin, in base axes."""
+        return [kinematics.twist_in_base(u, self.object_frame) for u in self.object_twists]
 
 
 @dataclass(frozen=True)
@@ -228,7 +235,7 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
     if "Nr" in keys and numbers.Nr:
         joint_motions = vectors([r[6:] for r in rows], len(model.joints))
     return PointMotions(object_twists=twists, joint_motions=joint_motions,
-                        contact_points=contacts)
+                        contact_points=contacts, object_frame=model.object_frame)
 
 
 __all__ = ["IrrationalAnalysis", "NotIrrational", "PointMotions", "analyze_irrational",

@@ -206,11 +206,34 @@ class _Builder:
                     for a in range(3):
                         D[lin + a][col] = lv[a]
                         D[ang + a][col] = s[a]
+        if model.object_frame is not None:
+            GT = self.in_object_frame(GT, points)
         H, labels, row_contacts = self.selection(normals)
         QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
         Q = [[_dot_col(h, QT, j) for j in range(6 + r)] for h in H]
         return Kinematics(ring, self.symbols, GT, D, H, Q, labels, row_contacts, points,
                           normals, axes, origins)
+
+    def in_object_frame(self, GT: Mat, points: list[Vec]) -> Mat:
+        """``G^T`` for twists ``(v, w)`` with ``v`` at the object's reference point
+        ``o`` and both in the object's axes ``R``: each contact's rows become
+        ``[R, -[c - o]x R]`` (linear) and ``[0, R]`` (angular)."""
+        rotation, origin = self.model.object_frame
+        rot = [[self.num(rotation[i, k]) for k in range(3)] for i in range(3)]
+        o = self.vec(origin)
+        zero = self.ring.zero()
+        n = len(points)
+        out = [[zero] * 6 for _ in range(6 * n)]
+        for i in range(n):
+            lin, ang = 3 * i, 3 * n + 3 * i
+            arm = skew([points[i][a] - o[a] for a in range(3)])
+            moved = matmul(arm, rot)
+            for a in range(3):
+                for b in range(3):
+                    out[lin + a][b] = rot[a][b]
+                    out[lin + a][3 + b] = -moved[a][b]
+                    out[ang + a][3 + b] = rot[a][b]
+        return out
 
     def selection(self, normals: list[Vec | None]) -> tuple[Mat, list[str], list[int]]:
         """H: linear-block rows contact by contact, then angular-block rows; with the
@@ -299,3 +322,24 @@ def compose(outer: tuple[Mat, Vec], inner: tuple[Mat, Vec]) -> tuple[Mat, Vec]:
     r1, p1 = outer
     r2, p2 = inner
     return matmul(r1, r2), apply(outer, p2)
+
+
+def twist_in_base(u: Sequence, frame) -> list[sp.Expr]:
+    """An object twist written in an object frame (``v`` at its reference point, both
+    parts in its axes), as ``(v, w)`` with ``v`` at the base origin in base axes:
+    ``w = R w'``, ``v = R v' - w x o``. ``frame`` None is the base frame itself.
+
+    Example
+    -------
+    >>> rotation = sp.Matrix([[0, -1, 0], [1, 0, 0], [0, 0, 1]])   # yaw pi/2
+    >>> twist_in_base([0, 0, 0, 0, 0, 1], (rotation, (1, 0, 0)))   # spin about o
+    [0, -1, 0, 0, 0, 1]
+    """
+    if frame is None:
+        return list(u)
+    rotation, origin = frame
+    r = sp.Matrix(rotation)
+    v = r * sp.Matrix(list(u[:3]))
+    w = r * sp.Matrix(list(u[3:]))
+    v = v - w.cross(sp.Matrix(list(origin)))
+    return [sp.expand(x) for x in (*v, *w)]

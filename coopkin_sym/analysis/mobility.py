@@ -270,6 +270,20 @@ class Analysis:
         """Basis of ``N(Dt)``: joint motions with the object fixed (r x Nr)."""
         return self._cols(self._c23, self.r)
 
+    def twist_in_base(self, u: Sequence) -> list[sp.Expr]:
+        """An object twist of this analysis (a column of ``C11`` or ``C12``, written
+        in the model's object frame) as ``(v, w)`` with ``v`` at the base origin and
+        both in base axes (the same twist when the model names no object frame).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> a = load("paper-case1-hard").analyze()
+        >>> a.twist_in_base(a.C11.col(0)) == list(a.C11.col(0))
+        True
+        """
+        return kinematics.twist_in_base(u, self.model.object_frame)
+
     def in_angles(self, matrix: sp.Matrix) -> sp.Matrix:
         """A block's columns rewritten in ``cos q``, ``sin q`` instead of ``t = tan(q/2)``.
 
@@ -416,6 +430,7 @@ class Analysis:
             "blocks": {k: strs(v) if v is not None else None for k, v in blocks.items()},
             "shapes": shapes,
             "coordinated_form": None if omitted else self.coordinated_form,
+            "object_frame": _frame_json(self.model.object_frame),
         }
         if omitted:
             out["omitted"] = omitted
@@ -602,3 +617,13 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
 def analyze(model: Model, config: Configuration) -> Analysis:
     """Analyze ``model`` at ``config`` exactly."""
     return Analysis(model, config, kinematics.build(model, config))
+
+
+def _frame_json(frame) -> dict | None:
+    """The object frame as exact texts: its point and its axes (base coordinates)."""
+    if frame is None:
+        return None
+    rotation, origin = frame
+    return {"point": [sp.sstr(x) for x in origin],
+            "axes": {name: [sp.sstr(x) for x in rotation[:, k]]
+                     for k, name in enumerate("xyz")}}

@@ -26,7 +26,7 @@ import os
 import re
 import reprlib
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any, Literal
 
@@ -123,7 +123,9 @@ class Contact:
 
 @dataclass(frozen=True)
 class Model:
-    """A whole system: parameters, arms, contacts.
+    """A whole system: parameters, arms, contacts; ``object_frame`` is where object
+    twists are referenced (a point, in the base frame) and the axes they are written
+    in (a rotation whose columns are those axes), or None for the base origin and axes.
 
     Example
     -------
@@ -137,6 +139,18 @@ class Model:
     arms: tuple[Arm, ...]
     contacts: tuple[Contact, ...]
     source: str | None = None
+    object_frame: Frame | None = None
+
+    def in_base_frame(self) -> Model:
+        """The same system with object twists at the base origin, in base axes (no
+        number depends on the object frame: the searches for numbers use this one).
+
+        Example
+        -------
+        >>> load_model("paper-case1-hard").in_base_frame().object_frame is None
+        True
+        """
+        return self if self.object_frame is None else replace(self, object_frame=None)
 
     @property
     def joints(self) -> tuple[Joint, ...]:
@@ -173,6 +187,12 @@ class _TopIn(_Entry):
     parameters: list[Any] | None = None
     arms: list[Any] | None = None
     contacts: list[Any] | None = None
+    object: Any = None
+
+
+class _ObjectIn(_Entry):
+    point: list[Any] | None = None
+    rpy: list[Any] | None = None
 
 
 class _ArmIn(_Entry):
@@ -422,11 +442,20 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     if not top.contacts and "contacts" not in top_bad:
         problems.append("contacts: at least one contact is needed")
 
+    object_frame = None
+    if top.object is not None:
+        entry, bad = _validate(_ObjectIn, top.object, "object", problems)
+        if entry is not None and not bad:
+            object_frame = _placement({"xyz": entry.point, "rpy": entry.rpy}, "object",
+                                      parameters, problems, point_key="point")
+            if object_frame is not None:
+                object_frame = (sp.ImmutableMatrix(object_frame[0]), object_frame[1])
+
     if problems:
         raise ModelError(problems, source)
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
-                 contacts=tuple(contacts), source=source)
+                 contacts=tuple(contacts), source=source, object_frame=object_frame)
 
 
 def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
@@ -517,14 +546,15 @@ def _number(value: Any, path: str, parameters: dict[str, sp.Symbol],
 
 
 def _placement(raw: Any, path: str, parameters: dict[str, sp.Symbol],
-               problems: list[str]) -> Frame | None:
-    """An arm's base placement (``xyz``, ``rpy``), the identity when not given."""
+               problems: list[str], point_key: str = "xyz") -> Frame | None:
+    """A placement (``xyz``, ``rpy``), the identity when not given; ``point_key``
+    names the origin's key in messages."""
     if raw is None:
         return IDENTITY
     entry, bad = _validate(_PlacementIn, raw, path, problems)
     if entry is None or bad:
         return None
-    xyz = (_vector(entry.xyz, f"{path}.xyz", parameters, problems, rational=False)
+    xyz = (_vector(entry.xyz, f"{path}.{point_key}", parameters, problems, rational=False)
            if entry.xyz is not None else (0, 0, 0))
     rpy_raw = entry.rpy if entry.rpy is not None else [0, 0, 0]
     if len(rpy_raw) != 3:

@@ -212,7 +212,11 @@ class _Values:
 
     def column(self, mat: sp.Matrix, k: int) -> list[sp.Rational]:
         """Column ``k`` (from 0) of a block at the drawing values, exactly."""
-        return [sp.cancel(e.xreplace(self.sympy)) for e in mat.col(k)]
+        return self.vector(mat.col(k))
+
+    def vector(self, entries) -> list[sp.Rational]:
+        """Exact entries at the drawing values."""
+        return [sp.cancel(e.xreplace(self.sympy)) for e in entries]
 
     def note(self, a: Analysis) -> str:
         parts = []
@@ -608,13 +612,14 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
     j = k - 1
     twist = rates = exact_q = None
     if kind == "coordinated":
-        twist, rates = values.column(a.C12, j), values.column(a.C22, j)
+        twist = values.vector(a.twist_in_base(a.C12.col(j)))
+        rates = values.column(a.C22, j)
         exact_q = a.C22.col(j)
         words = (f"coordinated motion {k} (C12, C22 column {k}): "
                  f"{describe_twist(a.C12.col(j), a)} by moving "
                  f"{describe_joint_motion(exact_q, a)}")
     elif kind == "indeterminate":
-        twist = values.column(a.C11, j)
+        twist = values.vector(a.twist_in_base(a.C11.col(j)))
         words = (f"indeterminate motion {k} (C11 column {k}), joints locked: "
                  f"{describe_twist(a.C11.col(j), a)}")
     else:

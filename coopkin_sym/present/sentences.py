@@ -157,8 +157,8 @@ def describe_twist(u, analysis: Analysis) -> str:
     """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
     c1 and c2", "translation along x")."""
     symbols = _symbols(analysis)
-    return twist_words([exact_expr(e, symbols, f"u[{i}]") for i, e in enumerate(u)],
-                       _contact_points(analysis))
+    u = analysis.twist_in_base([exact_expr(e, symbols, f"u[{i}]") for i, e in enumerate(u)])
+    return twist_words(u, _contact_points(analysis))
 
 
 def joint_motion_words(qdot, names: Sequence[str]) -> str:
@@ -281,7 +281,8 @@ def sentences(analysis: Analysis) -> list[str]:
     coordinated = [f"{describe_twist(c12.col(k), analysis)} by moving "
                    f"{describe_joint_motion(c22.col(k), analysis)}"
                    for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
-    free = object_motions_words([list(analysis.C11.col(k)) for k in range(n.Ni)],
+    free = object_motions_words([analysis.twist_in_base(analysis.C11.col(k))
+                                 for k in range(n.Ni)],
                                 _contact_points(analysis)) if n.Ni else None
     redundant = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
                           for k in range(n.Nr)) if n.Nr else None
@@ -332,7 +333,7 @@ def point_sentences(numbers, joints: Sequence[str], motions: PointMotions | None
     words = {}
     if "Ni" in keys and numbers.Ni:
         words["Ni"] = _indeterminacy_sentence(numbers, object_motions_words(
-            motions.object_twists, motions.contact_points))
+            motions.twists_in_base(), motions.contact_points))
     if "Nr" in keys and numbers.Nr:
         words["Nr"] = _redundancy_sentence(numbers, "; ".join(
             joint_motion_words(v, joints) for v in motions.joint_motions))

@@ -20,7 +20,7 @@ from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
 __all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
-           "irrational_text"]
+           "irrational_text", "object_frame_text"]
 
 # why an analysis at an irrational point has no blocks
 _IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the numbers "
@@ -41,6 +41,7 @@ def analysis_text(a: Analysis) -> str:
     if a.configuration.free:
         where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
     lines.append(f"Configuration: {where}")
+    lines.append(f"Object twist (v, w): {object_frame_text(a.model.object_frame)}")
     if a.variables:
         lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
                      + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
@@ -64,6 +65,30 @@ def analysis_text(a: Analysis) -> str:
         if mat.cols:
             lines.extend(block_table(mat, labels))
     return "\n".join(lines)
+
+
+def object_frame_text(frame) -> str:
+    """Where object twists are referenced and in which axes, in words.
+
+    Example
+    -------
+    >>> object_frame_text(None)
+    'v at the base origin, in base axes'
+    >>> import sympy as sp
+    >>> yaw = sp.Matrix([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+    >>> print(object_frame_text((yaw, (1, 0, 0))).replace(", x'", ",\\n  x'"))
+    v at the object point (1, 0, 0), in the object axes,
+      x' = (0, 1, 0), y' = (-1, 0, 0), z' = (0, 0, 1)
+    """
+    if frame is None:
+        return "v at the base origin, in base axes"
+    rotation, origin = frame
+    point = ", ".join(sp.sstr(x) for x in origin)
+    axes = ", ".join(f"{name}' = ({', '.join(sp.sstr(x) for x in rotation[:, k])})"
+                     for k, name in enumerate("xyz"))
+    if rotation == sp.eye(3):
+        return f"v at the object point ({point}), in base axes"
+    return f"v at the object point ({point}), in the object axes, {axes}"
 
 
 def _cell(e: sp.Expr, width: int = 48) -> str:

@@ -357,7 +357,7 @@ def certify_locus(system, locus: Locus, *, at=None, timeout: float = 30.0,
 def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failure: bool,
              max_depth: int | None, started: float) -> Certificate:
     """:func:`certify_locus` inside its time bound."""
-    model: Model = model_of(system)
+    model: Model = model_of(system).in_base_frame()  # numbers only
     config = _configuration(model, locus.fixed if at is None else at)
     revolute = [j.name for j in model.joints if j.name in config.free
                 and j.type == "revolute"]

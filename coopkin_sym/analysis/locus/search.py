@@ -141,7 +141,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
             except TimeLimitReached as exc:
                 return cut_short(bound, exc)
     started = time.monotonic()
-    model: Model = model_of(system)
+    model: Model = model_of(system).in_base_frame()  # numbers only
     fixed = Configuration.parse(model, at)
     notes: list[Remark | str] = []
     params = dict(fixed.parameters)

@@ -703,7 +703,7 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     (False, 100, 2)
     """
     started = time.monotonic()
-    model: Model = model_of(system)
+    model: Model = model_of(system).in_base_frame()  # numbers only
     if max_points < 1:
         raise VerifyError(f"max_points: expected a positive number, got {max_points}")
     if lines < 0:

@@ -248,7 +248,7 @@ class Compiled:
     def __init__(self, system: Model | Any, joints: Sequence[str],
                  at: str | Mapping | None = None,
                  prime: int = modular.PRIME):
-        model = model_of(system)
+        model = model_of(system).in_base_frame()  # numbers only
         if not (2 < prime < 2**31 and sp.isprime(prime)):
             raise ValueError(f"prime: expected an odd prime below 2**31, got {prime}")
         self.model = model
