@@ -129,6 +129,23 @@ class ModelError(ValueError, CoopkinError):
         super().__init__("\n".join(prefix + p for p in self.problems))
 
 
+class UrdfError(ValueError, CoopkinError):
+    """A URDF file that cannot be used for an arm (a floating joint, a closed loop, a
+    mimic joint, a branching robot without a tip...). The model loader reports it as
+    one line of a :class:`ModelError`, naming the arm.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.urdf import read_urdf_text
+    >>> read_urdf_text('<robot name="r"><link name="b"/><link name="o"/><joint '
+    ...     'name="j" type="floating"><parent link="b"/><child link="o"/></joint></robot>',
+    ...     "r.urdf")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.UrdfError: r.urdf: joint 'j': type 'floating' is not supported ...
+    """
+
+
 class ConfigurationError(ValueError, CoopkinError):
     """A configuration that names an unknown variable or has an inexact value.
 

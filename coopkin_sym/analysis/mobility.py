@@ -431,6 +431,8 @@ class Analysis:
             "shapes": shapes,
             "coordinated_form": None if omitted else self.coordinated_form,
             "object_frame": _frame_json(self.model.object_frame),
+            "snapped": [{"where": x.where, "given": x.given, "exact": x.exact,
+                         "error": x.error} for x in self.model.snapped],
         }
         if omitted:
             out["omitted"] = omitted

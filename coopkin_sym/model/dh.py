@@ -38,8 +38,8 @@ import sympy as sp
 
 from coopkin_sym.exact.angles import ExactAngle
 
-__all__ = ["CONVENTIONS", "DHRow", "Frame", "IDENTITY", "dh_joints", "frame_from_xyz_rpy",
-           "in_base"]
+__all__ = ["CONVENTIONS", "DHJoint", "DHRow", "Frame", "IDENTITY", "dh_joints",
+           "frame_from_xyz_rpy", "frame_then", "in_base", "rotation_rpy"]
 
 #: The DH conventions a model file may name.
 CONVENTIONS: tuple[str, ...] = ("standard", "modified")
@@ -99,9 +99,15 @@ def _vec(m: sp.Matrix) -> Vector:
     return (sp.expand(m[0]), sp.expand(m[1]), sp.expand(m[2]))
 
 
-def _then(frame: Frame, rotation: sp.Matrix, shift: Sequence) -> Frame:
+def frame_then(frame: Frame, rotation: sp.Matrix, shift: Sequence) -> Frame:
     """``frame`` followed by a translation by ``shift`` (in ``frame``'s axes) and then
-    a rotation."""
+    a rotation: the pose of a child frame placed by ``(shift, rotation)``.
+
+    Example
+    -------
+    >>> frame_then(IDENTITY, sp.eye(3), [1, 2, 3])[1]
+    (1, 2, 3)
+    """
     r, p = frame
     origin = sp.Matrix(p) + r * sp.Matrix(shift)
     return r * rotation, _vec(origin)
@@ -116,9 +122,20 @@ def frame_from_xyz_rpy(xyz: Sequence, rpy: Sequence[ExactAngle | int]) -> Frame:
     >>> list(r * sp.Matrix([1, 0, 0])), p
     ([0, 1, 0], (1, 0, 0))
     """
-    roll, pitch, yaw = rpy
     origin = tuple(x if isinstance(x, sp.Basic) else sp.Integer(x) for x in xyz)
-    return _rz(yaw) * _ry(pitch) * _rx(roll), origin
+    return rotation_rpy(rpy), origin
+
+
+def rotation_rpy(rpy: Sequence[ExactAngle | int]) -> sp.Matrix:
+    """``Rz(yaw) Ry(pitch) Rx(roll)``, exactly (roll, pitch, yaw about fixed axes).
+
+    Example
+    -------
+    >>> list(rotation_rpy([ExactAngle.parse("pi/2", "roll"), 0, 0]) * sp.Matrix([0, 1, 0]))
+    [0, 0, 1]
+    """
+    roll, pitch, yaw = rpy
+    return _rz(yaw) * _ry(pitch) * _rx(roll)
 
 
 def in_base(frame: Frame, point: Sequence, direction: Sequence | None = None
@@ -176,14 +193,14 @@ def dh_joints(rows: Sequence[DHRow], convention: str, base: Frame
         if convention == "standard":
             r, p = frame
             axis, point = _vec(r[:, 2]), p
-            frame = _then(frame, _rz(row.theta), [0, 0, 0])
-            frame = _then(frame, _rx(row.alpha), [row.a, 0, row.d])
+            frame = frame_then(frame, _rz(row.theta), [0, 0, 0])
+            frame = frame_then(frame, _rx(row.alpha), [row.a, 0, row.d])
         else:
-            frame = _then(frame, _rx(row.alpha), [0, 0, 0])
-            frame = _then(frame, _rz(row.theta), [row.a, 0, 0])
+            frame = frame_then(frame, _rx(row.alpha), [0, 0, 0])
+            frame = frame_then(frame, _rz(row.theta), [row.a, 0, 0])
             r, p = frame
             axis, point = _vec(r[:, 2]), p
-            frame = _then(frame, sp.eye(3), [0, 0, row.d])
+            frame = frame_then(frame, sp.eye(3), [0, 0, row.d])
         joints.append(DHJoint(row.name, row.type, axis, point))
         frames.append(frame)
     return joints, frames

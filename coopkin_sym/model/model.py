@@ -33,7 +33,7 @@ from typing import Any, Literal
 import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
 
-from coopkin_sym.errors import ModelError
+from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import (
@@ -47,6 +47,7 @@ from coopkin_sym.model.dh import (
 )
 from coopkin_sym.model.examples import example_path, list_examples
 from coopkin_sym.model.trees import TreeError, check_tree, read_file
+from coopkin_sym.model.urdf import DEFAULT_BOUND, Snapped, read_urdf
 
 JointType = Literal["revolute", "prismatic"]
 ContactModel = Literal["complete", "soft", "hard", "frictionless"]
@@ -82,7 +83,9 @@ class Joint:
 class Arm:
     """A serial chain; ``joints`` run from the base outwards. ``frames`` are the link
     frames at home (``0`` the base placement, ``k`` the link moved by joint ``k``), in
-    the base frame, for an arm given as a DH table; None otherwise.
+    the base frame, for an arm given as a DH table; None otherwise. ``links`` names the
+    links of an arm read from a URDF file: ``(name, k, frame)``, ``k`` the moving
+    joints up to it.
 
     Example
     -------
@@ -94,6 +97,7 @@ class Arm:
     name: str
     joints: tuple[Joint, ...]
     frames: tuple[Frame, ...] | None = None
+    links: tuple[tuple[str, int, Frame], ...] | None = None
 
 
 @dataclass(frozen=True)
@@ -126,6 +130,7 @@ class Model:
     """A whole system: parameters, arms, contacts; ``object_frame`` is where object
     twists are referenced (a point, in the base frame) and the axes they are written
     in (a rotation whose columns are those axes), or None for the base origin and axes.
+    ``snapped`` lists the floats of URDF files replaced by exact values.
 
     Example
     -------
@@ -140,6 +145,7 @@ class Model:
     contacts: tuple[Contact, ...]
     source: str | None = None
     object_frame: Frame | None = None
+    snapped: tuple[Snapped, ...] = ()
 
     def in_base_frame(self) -> Model:
         """The same system with object twists at the base origin, in base axes (no
@@ -201,6 +207,10 @@ class _ArmIn(_Entry):
     dh: list[Any] | None = None
     convention: StrictStr | None = None
     base: Any = None
+    urdf: StrictStr | None = None
+    tip: StrictStr | None = None
+    prefix: StrictStr | None = None
+    snap: Any = None
 
 
 class _DHRowIn(_Entry):
@@ -387,6 +397,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
             parameters[pname] = sp.Symbol(pname, positive=True)
 
     arms: list[Arm] = []
+    snapped: list[Snapped] = []
     arm_joints: dict[str, tuple[int, int] | None] = {}   # name -> (index, joints)
     joint_paths: dict[str, str] = {}
     for i, raw_arm in enumerate(top.arms or []):
@@ -397,6 +408,17 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
                 arm_joints[raw_arm["name"]] = None   # exists, but unusable
             continue
         names.add(arm.name, f"{apath}.name", symbol=False)
+        if arm.urdf is not None:
+            built = _urdf_arm(arm, apath, parameters, names, problems, joint_paths,
+                              source, snapped)
+            arm_joints.setdefault(arm.name, (i, len(built.joints)) if built else None)
+            if built is not None:
+                arms.append(built)
+            continue
+        for key in ("tip", "prefix", "snap"):
+            if getattr(arm, key) is not None:
+                problems.append(f"{apath}.{key}: only an arm read from a URDF file (urdf) "
+                                f"has a {key}")
         if arm.dh is not None:
             built = _dh_arm(arm, apath, parameters, names, problems, joint_paths)
             arm_joints.setdefault(arm.name, (i, len(arm.dh)) if built else None)
@@ -433,7 +455,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
                             f"half-angle variable t_{jname} of joint {jname} ({jpath})")
 
     contacts: list[Contact] = []
-    frames = {arm.name: arm.frames for arm in arms}
+    frames = {arm.name: arm for arm in arms}
     for i, raw_contact in enumerate(top.contacts or []):
         contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
                            problems, frames)
@@ -455,7 +477,8 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
         raise ModelError(problems, source)
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
-                 contacts=tuple(contacts), source=source, object_frame=object_frame)
+                 contacts=tuple(contacts), source=source, object_frame=object_frame,
+                 snapped=tuple(snapped))
 
 
 def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
@@ -527,6 +550,50 @@ def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names
     return Arm(arm.name, joints, tuple((sp.ImmutableMatrix(r), p) for r, p in frames))
 
 
+def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names,
+              problems: list[str], joint_paths: dict[str, str], source: str | None,
+              snapped: list[Snapped]) -> Arm | None:
+    """An arm read from a URDF file (relative paths: from the model file's folder)."""
+    before = len(problems)
+    for key in ("joints", "dh", "convention"):
+        if getattr(arm, key) is not None:
+            problems.append(f"{path}.{key}: an arm read from a URDF file has no {key}")
+    base = _placement(arm.base, f"{path}.base", parameters, problems)
+    bound = DEFAULT_BOUND
+    if arm.snap is not None:
+        try:
+            value = parse_number(arm.snap, {}, f"{path}.snap")
+            if not 0 < value < 1:
+                raise NumberError(f"{path}.snap", f"expected a bound between 0 and 1 "
+                                  f"(radians), got {brief(arm.snap)}")
+            bound = float(value)  # float-ok: a snapping bound, not a decision
+        except NumberError as exc:
+            problems.append(str(exc))
+    if len(problems) > before or base is None:
+        return None
+    where = Path(arm.urdf)
+    if not where.is_absolute():
+        where = (Path(source).parent if source else Path.cwd()) / where
+    try:
+        read = read_urdf(where, arm.tip, base, bound)
+    except UrdfError as exc:
+        problems.append(f"{path}.urdf: {exc}")
+        return None
+    prefix = arm.prefix or ""
+    joints = []
+    for k, j in enumerate(read.joints):
+        name = prefix + j.name
+        if names.add(name, f"{path}.urdf: joint {k + 1} ({brief(j.name)})", symbol=True):
+            joint_paths[name] = f"{path}.urdf"
+        joints.append(Joint(name, j.type, j.axis, j.point))  # type: ignore[arg-type]
+    if len(problems) > before:
+        return None
+    snapped.extend(Snapped(f"{path} ({where.name}): {s.where}", s.given, s.exact, s.error)
+                   for s in read.snapped)
+    links = tuple((name, k, (sp.ImmutableMatrix(r), p)) for name, k, (r, p) in read.links)
+    return Arm(arm.name, tuple(joints), None, links)
+
+
 def _angle(value: Any, path: str, problems: list[str]) -> ExactAngle | None:
     """An exact angle with rational cosine and sine (the one angle parser)."""
     try:
@@ -569,8 +636,7 @@ def _placement(raw: Any, path: str, parameters: dict[str, sp.Symbol],
 
 def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
              arm_joints: dict[str, tuple[int, int] | None],
-             problems: list[str], frames: Mapping[str, tuple[Frame, ...] | None]
-             ) -> Contact | None:
+             problems: list[str], frames: Mapping[str, Arm]) -> Contact | None:
     entry, bad = _validate(_ContactIn, raw, path, problems)
     if entry is None:
         return None
@@ -580,7 +646,21 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
     link = 0
     text = entry.link.strip()
     match = re.fullmatch(r"([^/\s]+)\s*/\s*(\d+)", text)
-    if text == "base":
+    named = re.fullmatch(r"([^/\s]+)\s*/\s*([^/\s]+)", text)
+    link_frame = None
+    if match is None and named is not None and named.group(1) in frames \
+            and frames[named.group(1)].links is not None:
+        # a URDF link by its name: its moving joints, and its frame
+        by_name = {name: (k, frame) for name, k, frame in frames[named.group(1)].links}
+        if named.group(2) not in by_name:
+            problems.append(f"{path}.link: arm {named.group(1)} has no link "
+                            f"{brief(named.group(2))} on its chain (links: "
+                            f"{', '.join(by_name)})")
+            return None
+        link, link_frame = by_name[named.group(2)]
+        arm_index = arm_joints[named.group(1)][0]  # type: ignore[index]
+        match = named
+    elif text == "base":
         pass
     elif match is None:
         problems.append(f"{path}.link: expected ARM/K (the link moved by joint K of arm "
@@ -621,12 +701,14 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         arm_name = match.group(1) if match is not None else None
         if arm_name is not None and arm_name not in frames:
             return None   # the arm itself could not be read: its entry says why
-        arm_frames = frames.get(arm_name) if arm_name is not None else None
-        if arm_frames is None:
+        arm_frames = frames[arm_name].frames if arm_name is not None else None
+        if link_frame is None and arm_frames is None:
             problems.append(f"{path}.frame: link frames exist only for an arm given by a "
-                            f"DH table; {brief(entry.link)} is not on one")
+                            f"DH table or a URDF file (a URDF link by its name); "
+                            f"{brief(entry.link)} is not on one")
             return None
-        point, normal = in_base(arm_frames[link], point, normal)
+        point, normal = in_base(link_frame if link_frame is not None else arm_frames[link],
+                                point, normal)
     return Contact(entry.name, arm_index, link, point, normal, model)  # type: ignore[arg-type]
 
 

@@ -100,6 +100,10 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"Every length is a multiple of {f['parameter']}: uniform scaling changes no "
         f"number, so {f['parameter']} = 1 (equations in prismatic displacements are in "
         f"units of {f['parameter']})."),
+    "snapped_model": lambda f: (
+        f"{f['count']} float{'' if f['count'] == 1 else 's'} of URDF files "
+        f"{'was' if f['count'] == 1 else 'were'} replaced by exact values (at most "
+        f"{f['largest']:.2g} rad away): this is the exact locus of the snapped model."),
     "no_real_points": lambda f: f"{f['polynomial']} = 0 (no real points)",
     "parameter_condition": lambda f: f"{f['polynomial']} = 0",
     "time_depth": lambda f: (f"depth {f['depth']}{_inside(f['equations'])}: not explored, "

@@ -20,7 +20,7 @@ from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
 __all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
-           "irrational_text", "object_frame_text"]
+           "irrational_text", "object_frame_text", "snapped_lines"]
 
 # why an analysis at an irrational point has no blocks
 _IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the numbers "
@@ -42,6 +42,7 @@ def analysis_text(a: Analysis) -> str:
         where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
     lines.append(f"Configuration: {where}")
     lines.append(f"Object twist (v, w): {object_frame_text(a.model.object_frame)}")
+    lines.extend(snapped_lines(a.model.snapped))
     if a.variables:
         lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
                      + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
@@ -65,6 +66,24 @@ def analysis_text(a: Analysis) -> str:
         if mat.cols:
             lines.extend(block_table(mat, labels))
     return "\n".join(lines)
+
+
+def snapped_lines(snapped) -> list[str]:
+    """What was snapped to exact values when URDF files were read, one line each.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.urdf import Snapped
+    >>> snapped_lines([Snapped("arms[0] (f.urdf): joint 'pip' origin rpy[2]", "1.5708",
+    ...                        "pi/2", 3.67e-06)])[1]
+    "  arms[0] (f.urdf): joint 'pip' origin rpy[2]: 1.5708 -> pi/2 (3.7e-06 rad away)"
+    """
+    if not snapped:
+        return []
+    return [f"Snapped: {len(snapped)} float{'' if len(snapped) == 1 else 's'} of URDF "
+            "files replaced by exact values (the analysis is exact for those):",
+            *(f"  {s.where}: {s.given} -> {s.exact} ({s.error:.2g} rad away)"
+              for s in snapped)]
 
 
 def object_frame_text(frame) -> str:

@@ -31,6 +31,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "irrational_witness_floats": (),
     "pi_chart": (),
     "uniform_scaling": ("parameter",),
+    "snapped_model": ("count", "largest"),
     # factors
     "no_real_points": ("polynomial",),
     "parameter_condition": ("polynomial",),

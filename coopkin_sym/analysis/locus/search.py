@@ -175,6 +175,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     locus.variables = list(ctx.ring_names)
     locus.generic = ctx.generic.as_dict()
     deadline.keep(locus)  # from here on, a time bound returns what was found
+    if model.snapped:
+        locus.notes.append(Remark.of("snapped_model", count=len(model.snapped),
+                                     largest=max(x.error for x in model.snapped)))
     locus.notes.append(Remark.of("candidates_probabilistic"))
     with ctx.reporter:
         _explore(ctx, Place(rows=q_rows, equations=[], point={}, depth=0))
