@@ -30,8 +30,8 @@ SETUP = code("""
     from IPython.display import Markdown, Math, display
 
     import coopkin_sym
-    from coopkin_sym.present.draw import draw_system
     from coopkin_sym.model.examples import example_path
+    from coopkin_sym.present.draw import draw_system
     from coopkin_sym.present.sentences import sentences
 
 
@@ -460,9 +460,9 @@ NB03 = [
     from IPython.display import Image, Markdown, display
 
     import coopkin_sym
-    from coopkin_sym.present.draw import draw_system
     from coopkin_sym.analysis.irrational import analyze_irrational
     from coopkin_sym.analysis.locus.search import compute_locus
+    from coopkin_sym.present.draw import draw_system
     from coopkin_sym.present.locus_plot import plot_components
     from coopkin_sym.present.remarks import remark_text, remark_texts
     from coopkin_sym.present.report import write_report

@@ -15,7 +15,8 @@ runner = CliRunner()
 
 EXAMPLES = ["dh-three-finger-hand", "dh-two-puma560-box", "paper-case1-complete-hard",
             "paper-case1-hard", "paper-case1-soft", "paper-case1-soft-hard",
-            "paper-case2-complete", "paper-case2-hard", "urdf-two-fingers"]
+            "paper-case2-complete", "paper-case2-hard", "quadruped-standing",
+            "urdf-two-fingers"]
 
 
 def run_ok(*args: str) -> str:

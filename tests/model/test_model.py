@@ -30,6 +30,7 @@ EXAMPLES = [
     "paper-case1-soft-hard",
     "paper-case2-complete",
     "paper-case2-hard",
+    "quadruped-standing",
     "urdf-two-fingers",
 ]
 

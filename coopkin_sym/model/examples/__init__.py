@@ -5,7 +5,8 @@ arms, four contact-model combinations) and case study 2 (two SCARA-type robots,
 complete-constraint and hard-finger contacts). Each file's header comment cites the
 section and the numbers the paper states. The ``dh-`` examples give their arms as
 Denavit-Hartenberg tables: a three-finger hand and two PUMA 560 arms holding a box;
-``urdf-two-fingers`` reads its arms from a URDF file shipped beside it.
+``urdf-two-fingers`` reads its arms from a URDF file shipped beside it;
+``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground.
 
 Example
 -------
