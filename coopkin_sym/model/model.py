@@ -715,6 +715,11 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
 def _read_tree(path: Path, source: str) -> object:
     """Read a YAML or JSON file into a plain tree (see :mod:`coopkin_sym.model.trees`: every
     float kept as its text, budgets on size, nesting and aliases)."""
+    if path.suffix.lower() == ".urdf":
+        raise ModelError([f"a URDF file describes one robot, not a cooperating system: "
+                          f"write a model file with an arm 'urdf: {path.name}' and "
+                          f"contacts on its links (docs/model-format.md, Arms from URDF "
+                          f"files)"], source)
     try:
         return read_file(path)
     except TreeError as exc:

@@ -18,6 +18,7 @@ from coopkin_sym.analysis.kinematics import build
 from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.examples import example_path
 from coopkin_sym.model.urdf import read_urdf_text
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.text import analysis_text
@@ -297,3 +298,11 @@ def test_a_relative_urdf_path_is_read_beside_the_model_file(tmp_path):
     _write(tmp_path, "m.yaml", "arms:\n  - {name: f, urdf: f.urdf}\ncontacts:\n"
                                "  - {name: c, link: f/b, point: [1, 0, 0], model: hard}\n")
     assert coopkin_sym.load(str(tmp_path / "m.yaml")).model.joint_names == ("q",)
+
+
+def test_loading_a_urdf_file_alone_says_how_to_use_it():
+    urdf = example_path("urdf-two-fingers").with_name("planar-2r-finger.urdf")
+    with pytest.raises(ModelError, match=r"a URDF file describes one robot, not a "
+                                         r"cooperating system: write a model file with an "
+                                         r"arm 'urdf: planar-2r-finger.urdf'"):
+        coopkin_sym.load(str(urdf))
