@@ -857,11 +857,12 @@ NB03 = [
     png(plot_components(locus3, case2, pair=("q1", "q2")))
     """),
     code("""
-    for item in locus3.unexplored:
+    unexplored = remark_texts(locus3.unexplored)
+    for item in unexplored:
         print("-", item)
-    assert sum("not solved" in u for u in locus3.unexplored) >= 3
+    assert sum("not solved" in u for u in unexplored) >= 3
     assert all(any(words in u for words in ("not solved", "not explored", "not searched"))
-               for u in locus3.unexplored)
+               for u in unexplored)
     assert sorted(2 * sp.atan(r) for r in sp.solve(t**2 + 2 * t - 1, t)) == [
         -3 * sp.pi / 4, sp.pi / 4]
     """),
