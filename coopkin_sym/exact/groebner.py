@@ -442,15 +442,22 @@ def _product_too_large(comps) -> bool:
 
 
 def _merge_hypersurfaces(comps: list[list[PolyDict]], n: int) -> list[list[PolyDict]]:
-    """The one-generator components as one: ``V(f) + V(g) = V(f g)``."""
-    single = [c[0] for c in comps if len(c) == 1]
+    """The one-generator components as one: ``V(f) + V(g) = V(f g)``, smallest first,
+    while the product stays within :data:`MAX_PRODUCT_TERMS` terms (its term count is
+    at most the product of the factors'); the others stay components of their own (the
+    union is the same either way: merging only makes fewer components)."""
+    single = sorted((c[0] for c in comps if len(c) == 1), key=len)
     if len(single) < 2:
         return comps
     ctx = _ctx(n)
-    product = ctx.constant(1)
+    product, terms, merged, apart = ctx.constant(1), 1, 0, []
     for f in single:
+        if merged and terms * len(f) > MAX_PRODUCT_TERMS:
+            apart.append([f])
+            continue
         product = product * ctx.from_dict(f)
-    return [c for c in comps if len(c) > 1] + [[_plain(product)]]
+        terms, merged = len(product), merged + 1
+    return [c for c in comps if len(c) > 1] + [[_plain(product)]] + apart
 
 
 def _normal(f: flint.fmpz_mpoly) -> flint.fmpz_mpoly:

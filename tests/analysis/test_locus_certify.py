@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import copy
 import json
+import random
 
 import flint
 import pytest
@@ -594,3 +595,26 @@ def test_time_bound_of_the_whole_certificate(soft_hard):
     with deadline.time_limit(0):
         cert = certify_locus(system, locus, budget=60)
     assert "time bound of 0 s reached" in summary(cert)
+
+
+def test_merged_hypersurfaces_stay_within_the_term_budget(monkeypatch):
+    # V(f) u V(g) = V(f g): merging is exact, but the product of many factors grows
+    # without bound; past the budget the factors stay components of their own
+    monkeypatch.setattr(gb, "MAX_PRODUCT_TERMS", 40)
+    n = 3
+    ctx = gb._ctx(n)
+    rng = random.Random(5)
+    factors = [ctx.from_dict({(rng.randint(0, 2), rng.randint(0, 2), k % 3): 1,
+                              (0, 0, 0): rng.randint(1, 5)}) for k in range(12)]
+    comps = [[gb._plain(f)] for f in factors] + [[{(1, 0, 0): 1}, {(0, 1, 0): 1}]]
+    merged = gb._merge_hypersurfaces(comps, n)
+    assert merged[0] == [{(1, 0, 0): 1}, {(0, 1, 0): 1}]     # two generators: kept
+    singles = [c[0] for c in merged[1:]]
+    assert all(len(c) == 1 for c in merged[1:]) and 1 < len(singles) < len(factors)
+    assert len(singles[0]) <= 40 * max(len(f) for f in factors)
+    whole, parts = ctx.constant(1), ctx.constant(1)
+    for f in factors:
+        whole *= f
+    for g in singles:
+        parts *= ctx.from_dict(g)
+    assert parts == whole                                     # the same union
