@@ -162,7 +162,7 @@ def _backend_rows(quick: bool) -> list[dict]:
             rows.append({
                 "benchmark": "covering test backends (Singular vs others)",
                 "case": f"paper-case2-hard, t chart, rank of Gt^T: {case}",
-                "ours_s": "", "baseline": "", "baseline_s": "", "ratio": "",
+                "ours_s": None, "baseline": None, "baseline_s": None, "ratio": None,
                 "note": f"not built: the product of the {count} components' equations is "
                         f"over the term budget ({gb.MAX_PRODUCT_TERMS}), as in the "
                         f"certificate"})
