@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 from test_dh import as_joints
+from test_urdf import fingers_by_hand
 
 import coopkin_sym
 from coopkin_sym.analysis.sweep import grid
@@ -13,25 +14,6 @@ from coopkin_sym.model.examples import example_path
 from coopkin_sym.model.trees import read_file
 
 HAND_SLICE = ("R=1,L1=2,L2=1,f1_1=0,f2_1=0,f3_1=0,f2_2=0,f3_2=0,f2_3=0,f3_3=0")
-
-
-def _by_hand_fingers() -> dict:
-    """urdf-two-fingers written joint by joint (as in tests/model/test_urdf.py)."""
-    return {"name": "two URDF fingers", "arms": [
-        {"name": "left", "joints": [
-            {"name": "l_mcp", "type": "revolute", "axis": [0, 0, 1], "point": [0, 0, 0]},
-            {"name": "l_pip", "type": "revolute", "axis": [0, 0, 1],
-             "point": ["1/10", 0, 0]}]},
-        {"name": "right", "joints": [
-            {"name": "r_mcp", "type": "revolute", "axis": [0, 0, -1],
-             "point": ["3/10", 0, 0]},
-            {"name": "r_pip", "type": "revolute", "axis": [0, 0, -1],
-             "point": ["1/5", 0, 0]}]}],
-        "contacts": [
-            {"name": "c1", "link": "left/2", "point": ["1/10", "1/10", 0],
-             "normal": [1, 0, 0], "model": "hard"},
-            {"name": "c2", "link": "right/2", "point": ["1/5", "1/10", 0],
-             "normal": [-1, 0, 0], "model": "hard"}]}
 
 
 def _hand_joints() -> dict:
@@ -44,7 +26,7 @@ def _locus_key(locus) -> list:
 
 
 @pytest.mark.parametrize("name, written, at", [
-    ("urdf-two-fingers", _by_hand_fingers, None),
+    ("urdf-two-fingers", fingers_by_hand, None),
     ("dh-three-finger-hand", _hand_joints, HAND_SLICE),
 ])
 def test_the_locus_does_not_depend_on_how_arms_are_written(name, written, at):
@@ -55,7 +37,7 @@ def test_the_locus_does_not_depend_on_how_arms_are_written(name, written, at):
 
 
 @pytest.mark.parametrize("name, written, at, axes", [
-    ("urdf-two-fingers", _by_hand_fingers, None, "l_mcp=-pi..pi:9,r_pip=-pi..pi:9"),
+    ("urdf-two-fingers", fingers_by_hand, None, "l_mcp=-pi..pi:9,r_pip=-pi..pi:9"),
     ("dh-three-finger-hand", _hand_joints, "R=1,L1=2,L2=1",
      "f1_2=-pi..pi:7,f2_3=-pi..pi:7"),
 ])

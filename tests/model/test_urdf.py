@@ -149,10 +149,9 @@ def test_random_urdf_chains_move_their_links_as_urdf_kinematics_says(seed, tmp_p
         assert [sp.simplify(a - b) for a, b in zip(n, want_n, strict=True)] == [0, 0, 0]
 
 
-def test_two_urdf_arms_have_the_numbers_of_the_same_system_written_by_hand():
-    system = coopkin_sym.load("urdf-two-fingers")
-    assert [j.name for j in system.model.joints] == ["l_mcp", "l_pip", "r_mcp", "r_pip"]
-    by_hand = {"name": "by hand", "arms": [
+def fingers_by_hand() -> dict:
+    """The shipped urdf-two-fingers, written joint by joint."""
+    return {"name": "two URDF fingers", "arms": [
         {"name": "left", "joints": [
             {"name": "l_mcp", "type": "revolute", "axis": [0, 0, 1], "point": [0, 0, 0]},
             {"name": "l_pip", "type": "revolute", "axis": [0, 0, 1],
@@ -167,6 +166,12 @@ def test_two_urdf_arms_have_the_numbers_of_the_same_system_written_by_hand():
              "normal": [1, 0, 0], "model": "hard"},
             {"name": "c2", "link": "right/2", "point": ["1/5", "1/10", 0],
              "normal": [-1, 0, 0], "model": "hard"}]}
+
+
+def test_two_urdf_arms_have_the_numbers_of_the_same_system_written_by_hand():
+    system = coopkin_sym.load("urdf-two-fingers")
+    assert [j.name for j in system.model.joints] == ["l_mcp", "l_pip", "r_mcp", "r_pip"]
+    by_hand = fingers_by_hand()
     assert system.model.contacts == coopkin_sym.load(by_hand).model.contacts
     for at, values in [("", {}), ("l_mcp=pi/2,r_pip=2*atan(1/2)",
                                   {"l_mcp": (0, 1), "r_pip": ANGLES[4][1:]})]:
