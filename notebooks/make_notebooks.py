@@ -278,6 +278,60 @@ NB01 = [
     assert [n.Nm for _, n in rows] == [3, 3, 3, 1]
     draw_system(s, motion=("coordinated", 2))
     """),
+    md("""
+    ## The same system in the plane
+
+    Every joint of case 1 turns about $z$ and every contact lies in the $xy$-plane, so
+    the system can also be read as a planar one (`planar: true`): object twists
+    $(v_x, v_y, \\omega_z)$, and a hard finger (a point contact with friction) holds
+    the two in-plane components of the contact velocity. $G$ is $3 \\times 3n$ and
+    $Q$ is $4 \\times 5$.
+
+    The spatial indeterminate motion $N_i = 1$ is the spin about the line through the
+    two contacts, which lies in the plane: it lifts the object out of the plane, so a
+    planar analysis does not have it. In the plane $N_m = N_c = 1$ and $N_i = 0$: the
+    only motion left is the coordinated translation along $x$. The force domain changes
+    with it: of the four in-plane contact force components, $N_g = 1$ squeezes the
+    object along the contact line and $N_d = 2$ load no joint.
+    """),
+    code("""
+    print(example_path("paper-case1-planar").read_text())
+    flat = coopkin_sym.load("paper-case1-planar").analyze()
+    for name, block in flat.blocks().items():
+        show(name, block)
+    for line in sentences(flat):
+        print("-", line)
+    n = flat.numbers
+    assert (n.Nm, n.Nc, n.Ni, n.Nr, n.Ng, n.Nd, n.Nh) == (1, 1, 0, 0, 1, 2, 0)
+    assert flat.Q.shape == (4, 5) and flat.G.shape == (3, 6)
+    # the spatial analysis restricted to the plane: rows v_x, v_y, columns v_x, v_y, w_z
+    plane = a.Q.extract([0, 1, 3, 4], [0, 1, 5, 6, 7])
+    assert plane == flat.Q
+    # the spatial indeterminate spin has no in-plane component
+    assert [a.C11[k, 0] for k in (0, 1, 5)] == [0, 0, 0]
+    assert same_span(flat.C12.col_join(flat.C22), sp.Matrix([L, 0, 0, -1, -1]))
+    """),
+    md("""
+    In the plane the numbers change where both links line up with the contact line
+    ($q_1$ and $q_2$ each $\\pm\\pi/2$), and where the two contacts meet
+    ($q_1 = -q_2$ with $\\tan(q_2/2) = 2 \\pm \\sqrt 3$, i.e. $q_2 = \\pi/6$ or
+    $5\\pi/6$: the object may then turn about the common point). The locus is
+    certified complete, and the system is drawn from above:
+    """),
+    code("""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    from coopkin_sym.present.certificate import certificate_summary
+
+    planar = coopkin_sym.load("paper-case1-planar")
+    flat_locus = planar.locus()
+    for c in flat_locus.components:
+        print(c.condition, c.numbers)
+    assert "q1 = pi/2, q2 = pi/2" in [c.condition for c in flat_locus.components]
+    certificate = certify_locus(planar, flat_locus)
+    print(certificate_summary(certificate))
+    assert certificate.certified_by() is not None and not certificate.failures()
+    draw_system(planar.analyze("q1=pi/2,q2=pi/2"), motion=("coordinated", 2))
+    """),
 ]
 
 

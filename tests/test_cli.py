@@ -14,9 +14,9 @@ from coopkin_sym.cli import app
 runner = CliRunner()
 
 EXAMPLES = ["dh-three-finger-hand", "dh-two-puma560-box", "paper-case1-complete-hard",
-            "paper-case1-hard", "paper-case1-soft", "paper-case1-soft-hard",
-            "paper-case2-complete", "paper-case2-hard", "quadruped-standing",
-            "urdf-two-fingers"]
+            "paper-case1-hard", "paper-case1-planar", "paper-case1-soft",
+            "paper-case1-soft-hard", "paper-case2-complete", "paper-case2-hard",
+            "planar-two-fingers", "quadruped-standing", "urdf-two-fingers"]
 
 
 def run_ok(*args: str) -> str:

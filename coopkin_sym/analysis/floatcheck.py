@@ -39,4 +39,6 @@ def float_numbers(analysis: Analysis) -> dict[str, int]:
     def rank(a: np.ndarray) -> int:
         return int(np.linalg.matrix_rank(a)) if a.size else 0  # float-ok
 
-    return numbers_from_ranks(m, r, rank(q), rank(q[:, :6]), rank(q[:, 6:])).as_dict()
+    d = analysis.model.object_dim
+    return numbers_from_ranks(m, r, rank(q), rank(q[:, :d]), rank(q[:, d:]),
+                              dim=d).as_dict()

@@ -108,6 +108,7 @@ class IrrationalAnalysis:
     tangents: dict[str, str]
     motions: PointMotions | None
     joints: tuple[str, ...]
+    object_dim: int = 6
 
     def as_json(self) -> dict:
         """The JSON of ``coopkin analyze`` here, without words (the presentation
@@ -189,7 +190,7 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         at={k: given[k] for k in order_names if k in given}, numbers=numbers,
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
         tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
-        joints=model.joint_names)
+        joints=model.joint_names, object_dim=model.object_dim)
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):
@@ -231,9 +232,9 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
     if "Ni" in keys and numbers.Ni:
         contacts = [(c.name, [exact(frac_to_sympy(v, kin.symbols)) for v in point])
                     for c, point in zip(model.contacts, kin.points, strict=True)]
-        twists = vectors([r[:6] for r in rows], 6)
+        twists = vectors([r[:model.object_dim] for r in rows], model.object_dim)
     if "Nr" in keys and numbers.Nr:
-        joint_motions = vectors([r[6:] for r in rows], len(model.joints))
+        joint_motions = vectors([r[model.object_dim:] for r in rows], len(model.joints))
     return PointMotions(object_twists=twists, joint_motions=joint_motions,
                         contact_points=contacts, object_frame=model.object_frame)
 

@@ -13,6 +13,14 @@ angular; ``G^T`` maps ``u`` to the object's contact-frame velocities, ``D`` maps
 ``qdot`` to the links' ones, ``H`` keeps the components each contact model
 constrains; ``Q = (H G^T | -H D)``.
 
+A planar system (``planar: true``) keeps the in-plane components: object twist
+``(v_x, v_y, w_z)``, contact velocities ``(v_x, v_y)`` of every contact then ``w_z``
+of every contact; a hard contact (point with friction) constrains ``v_x, v_y``, a
+frictionless one ``v.n``, a complete one also ``w_z``. With joints about z (or
+sliding in the plane) and contacts in the plane the dropped components of the
+spatial matrices are identically zero, so this is the spatial analysis restricted
+to the plane.
+
 Example
 -------
 >>> from coopkin_sym.model.model import load_model
@@ -41,6 +49,9 @@ from coopkin_sym.model.model import Model
 Vec = list[Frac]
 Mat = list[list[Frac]]
 
+#: The columns of the spatial ``G^T`` a planar system keeps: ``v_x, v_y, w_z``.
+PLANAR_COLUMNS = (0, 1, 5)
+
 
 @dataclass(frozen=True)
 class Kinematics:
@@ -55,7 +66,7 @@ class Kinematics:
         SymPy symbol of each ring variable (parameters are the model's symbols).
     GT, D, H, Q
         ``G^T`` (6n x 6), ``D`` (6n x r), ``H`` (m x 6n), ``Q`` (m x (6+r)), entries
-        :class:`~coopkin_sym.exact.ring.Frac`.
+        :class:`~coopkin_sym.exact.ring.Frac` (3n, 3 and 3 + r for a planar system).
     row_labels
         What each row of ``H`` and ``Q`` constrains, e.g. ``"c1: v_x"``, ``"c2: w.n"``.
     row_contacts
@@ -89,6 +100,11 @@ class Kinematics:
     normals: list[Vec | None]
     axes: list[Vec]
     origins: list[Vec | None]
+
+    @property
+    def object_dim(self) -> int:
+        """Components of an object twist: the object columns of ``Q`` (6, or 3)."""
+        return len(self.GT[0]) if self.GT else 6
 
 
 def ring_for(model: Model, config: Configuration) -> tuple[Ring, dict[str, sp.Symbol]]:
@@ -208,9 +224,16 @@ class _Builder:
                         D[ang + a][col] = s[a]
         if model.object_frame is not None:
             GT = self.in_object_frame(GT, points)
-        H, labels, row_contacts = self.selection(normals)
+        if model.planar:
+            keep = [k for i in range(n) for k in (3 * i, 3 * i + 1)] + [
+                3 * n + 3 * i + 2 for i in range(n)]
+            GT = [[GT[k][c] for c in PLANAR_COLUMNS] for k in keep]
+            D = [D[k] for k in keep]
+            H, labels, row_contacts = self.planar_selection(normals)
+        else:
+            H, labels, row_contacts = self.selection(normals)
         QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
-        Q = [[_dot_col(h, QT, j) for j in range(6 + r)] for h in H]
+        Q = [[_dot_col(h, QT, j) for j in range(model.object_dim + r)] for h in H]
         return Kinematics(ring, self.symbols, GT, D, H, Q, labels, row_contacts, points,
                           normals, axes, origins)
 
@@ -263,6 +286,36 @@ class _Builder:
             lin_owner += [i] * (len(lin_rows) - len(lin_owner))
             ang_owner += [i] * (len(ang_rows) - len(ang_owner))
         return lin_rows + ang_rows, lin_labels + ang_labels, lin_owner + ang_owner
+
+    def planar_selection(self, normals: list[Vec | None]
+                         ) -> tuple[Mat, list[str], list[int]]:
+        """H of a planar system over the components ``(v_x, v_y)`` of every contact,
+        then ``w_z`` of every contact; with the rows' labels and contacts."""
+        n = len(self.model.contacts)
+        zero, one = self.ring.zero(), self.ring.one()
+
+        def unit(k: int) -> list[Frac]:
+            return [one if j == k else zero for j in range(3 * n)]
+
+        lin_rows, ang_rows, labels_lin, labels_ang = [], [], [], []
+        lin_owner: list[int] = []
+        ang_owner: list[int] = []
+        for i, c in enumerate(self.model.contacts):
+            if c.model == "frictionless":
+                row = [zero] * (3 * n)
+                row[2 * i], row[2 * i + 1] = normals[i][0], normals[i][1]
+                lin_rows.append(row)
+                labels_lin.append(f"{c.name}: v.n")
+                lin_owner.append(i)
+            else:
+                lin_rows += [unit(2 * i), unit(2 * i + 1)]
+                labels_lin += [f"{c.name}: v_x", f"{c.name}: v_y"]
+                lin_owner += [i, i]
+            if c.model == "complete":
+                ang_rows.append(unit(2 * n + i))
+                labels_ang.append(f"{c.name}: w_z")
+                ang_owner.append(i)
+        return lin_rows + ang_rows, labels_lin + labels_ang, lin_owner + ang_owner
 
 
 def _normal_row(normal: Vec, start: int, width: int, zero: Frac) -> list[Frac]:
@@ -324,6 +377,23 @@ def compose(outer: tuple[Mat, Vec], inner: tuple[Mat, Vec]) -> tuple[Mat, Vec]:
     return matmul(r1, r2), apply(outer, p2)
 
 
+def spatial_twist(u: Sequence) -> list:
+    """An object twist as the six components ``(v, w)``: a planar one ``(v_x, v_y,
+    w_z)`` is ``(v_x, v_y, 0, 0, 0, w_z)``; a spatial one is returned as it is.
+
+    Example
+    -------
+    >>> spatial_twist([1, 2, 3])
+    [1, 2, 0, 0, 0, 3]
+    """
+    if len(u) == len(PLANAR_COLUMNS):
+        out = [sp.Integer(0)] * 6
+        for value, c in zip(u, PLANAR_COLUMNS, strict=True):
+            out[c] = value
+        return out
+    return list(u)
+
+
 def twist_in_base(u: Sequence, frame) -> list[sp.Expr]:
     """An object twist written in an object frame (``v`` at its reference point, both
     parts in its axes), as ``(v, w)`` with ``v`` at the base origin in base axes:
@@ -334,9 +404,14 @@ def twist_in_base(u: Sequence, frame) -> list[sp.Expr]:
     >>> rotation = sp.Matrix([[0, -1, 0], [1, 0, 0], [0, 0, 1]])   # yaw pi/2
     >>> twist_in_base([0, 0, 0, 0, 0, 1], (rotation, (1, 0, 0)))   # spin about o
     [0, -1, 0, 0, 0, 1]
+    >>> twist_in_base([0, 0, 1], (rotation, (1, 0, 0)))            # planar (v_x, v_y, w_z)
+    [0, -1, 1]
     """
     if frame is None:
         return list(u)
+    if len(u) == len(PLANAR_COLUMNS):
+        spatial = twist_in_base(spatial_twist(u), frame)
+        return [spatial[c] for c in PLANAR_COLUMNS]
     rotation, origin = frame
     r = sp.Matrix(rotation)
     v = r * sp.Matrix(list(u[:3]))

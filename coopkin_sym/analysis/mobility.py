@@ -109,6 +109,7 @@ class Analysis:
         zctx = ring.zctx
         r = len(model.joints)
         self.r = r
+        self.dim = model.object_dim
         self.m = len(kin.Q)
         q_rows = [ring.clear_row(row) for row in kin.Q]
         self._q_rows = q_rows
@@ -202,35 +203,35 @@ class Analysis:
 
     @cached_property
     def G(self) -> sp.Matrix:
-        """The grasp matrix ``G`` (6 x 6n)."""
+        """The grasp matrix ``G`` (6 x 6n; 3 x 3n for a planar system)."""
         return self._sym(self.kinematics.GT).T
 
     @cached_property
     def D(self) -> sp.Matrix:
         """``D`` (6n x r): joint velocities to the links' contact-frame velocities."""
-        return self._sym(self.kinematics.D, (6 * len(self.model.contacts), self.r))
+        return self._sym(self.kinematics.D, (self.dim * len(self.model.contacts), self.r))
 
     @cached_property
     def H(self) -> sp.Matrix:
         """The contact-model selection ``H`` (m x 6n)."""
-        return self._sym(self.kinematics.H, (0, 6 * len(self.model.contacts)))
+        return self._sym(self.kinematics.H, (0, self.dim * len(self.model.contacts)))
 
     @cached_property
     def Q(self) -> sp.Matrix:
         """``Q = (H G^T | -H D)`` (m x (6 + r)), as rational functions."""
-        return self._sym(self.kinematics.Q, (0, 6 + self.r))
+        return self._sym(self.kinematics.Q, (0, self.dim + self.r))
 
     @cached_property
     def C(self) -> sp.Matrix:
         """``C`` in block form ``[[C11, C12, 0], [0, C22, C23]]``."""
         return sp.ImmutableMatrix(sp.BlockMatrix([
-            [self.C11, self.C12, sp.zeros(6, self.numbers.Nr)],
+            [self.C11, self.C12, sp.zeros(self.dim, self.numbers.Nr)],
             [sp.zeros(self.r, self.numbers.Ni), self.C22, self.C23]]).as_explicit())
 
     @cached_property
     def C11(self) -> sp.Matrix:
         """Basis of ``N(Gt^T)``: object motions with every joint locked (6 x Ni)."""
-        return self._cols(self._c11, 6)
+        return self._cols(self._c11, self.dim)
 
     @property
     def coordinated_form(self) -> str:
@@ -251,8 +252,8 @@ class Analysis:
         except BlockTooLarge:
             coordinated = None
         if coordinated is None:
-            return self._cols(self._coord_u, 6)
-        return self._cols([v[:6] for v in coordinated], 6)
+            return self._cols(self._coord_u, self.dim)
+        return self._cols([v[:self.dim] for v in coordinated], self.dim)
 
     @cached_property
     def C22(self) -> sp.Matrix:
@@ -263,7 +264,7 @@ class Analysis:
                     for q in self._coord_q]
             return sp.ImmutableMatrix(sp.Matrix(cols).T) if cols else sp.ImmutableMatrix(
                 sp.zeros(self.r, 0))
-        return self._cols([v[6:] for v in self._coordinated], self.r)
+        return self._cols([v[self.dim:] for v in self._coordinated], self.r)
 
     @cached_property
     def C23(self) -> sp.Matrix:
@@ -320,7 +321,7 @@ class Analysis:
         """``Q C = 0`` exactly, on the integer-polynomial form of ``Q``."""
         cols = ([v + [self.ring.zctx.constant(0)] * self.r for v in self._c11]
                 + self._polynomial_coordinated()
-                + [[self.ring.zctx.constant(0)] * 6 + v for v in self._c23])
+                + [[self.ring.zctx.constant(0)] * self.dim + v for v in self._c23])
         prod = el.matmul(self._q_rows, [list(c) for c in zip(*cols, strict=True)],
                          self.ring.zctx) if cols else []
         return all(e.is_zero() for row in prod for e in row)
@@ -341,9 +342,11 @@ class Analysis:
         Matrix([[1, 1]])
         """
         coordinated = self._polynomial_coordinated()
-        x = self._solve(self._c11 + [v[:6] for v in coordinated], u, "object twist u")
+        d = self.dim
+        x = self._solve(self._c11 + [v[:d] for v in coordinated], u, "object twist u",
+                        d)
         x2 = x[len(self._c11):]
-        part = self._combine([v[6:] for v in coordinated], x2, self.r)
+        part = self._combine([v[d:] for v in coordinated], x2, self.r)
         return Motion(part, self.C23)
 
     def object_velocities(self, qdot: Sequence) -> Motion:
@@ -351,10 +354,11 @@ class Analysis:
         ``u = C12 x + C11 y``; raises :class:`InfeasibleMotion` when ``qdot`` is not
         in ``R(C2)`` (it would break a contact)."""
         coordinated = self._polynomial_coordinated()
-        x = self._solve([v[6:] for v in coordinated] + self._c23, qdot,
-                        "joint velocity qdot")
+        d = self.dim
+        x = self._solve([v[d:] for v in coordinated] + self._c23, qdot,
+                        "joint velocity qdot", self.r)
         x2 = x[: len(coordinated)]
-        part = self._combine([v[:6] for v in coordinated], x2, 6)
+        part = self._combine([v[:d] for v in coordinated], x2, d)
         return Motion(part, self.C11)
 
     def _polynomial_coordinated(self) -> list[list]:
@@ -364,15 +368,16 @@ class Analysis:
         self._within_budget("kinematic maps")
         return self._unbounded_coordinated
 
-    def _solve(self, columns, rhs, what: str):
-        """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent), as
-        (numerator, denominator) pairs of integer polynomials."""
+    def _solve(self, columns, rhs, what: str, size: int):
+        """Exact ``x`` with ``sum x_j columns_j = rhs`` (columns independent, of
+        ``size`` components), as (numerator, denominator) pairs of integer
+        polynomials."""
         ring, syms = self.ring, self.kinematics.symbols
         symbols = {**{p.name: p for p in self.model.parameters}, **syms}
         if isinstance(rhs, str) or not isinstance(rhs, Sequence | sp.MatrixBase):
             raise InfeasibleMotion(f"{what}: expected a list of numbers, got "
                                    f"{type(rhs).__name__}")
-        n = len(columns[0]) if columns else len(rhs)
+        n = size
         if len(rhs) != n:
             raise InfeasibleMotion(f"{what}: expected {n} components, got {len(rhs)}")
         rows = []
@@ -419,13 +424,15 @@ class Analysis:
         def strs(mat: sp.Matrix):
             return [[sp.sstr(e) for e in mat.row(i)] for i in range(mat.rows)]
         blocks, omitted = self.available_blocks()
-        shapes = {"C11": [6, self.numbers.Ni], "C12": [6, len(self._coord_u)],
+        shapes = {"C11": [self.dim, self.numbers.Ni],
+                  "C12": [self.dim, len(self._coord_u)],
                   "C22": [self.r, len(self._coord_u)], "C23": [self.r, self.numbers.Nr]}
         out = {
             "system": self.model.name,
             "configuration": self.configuration.at_text(),
             "variables": [str(v) for v in self.variables],
             "joints": list(self.model.joint_names),
+            "twist": list(self.model.twist_names),
             "numbers": self.numbers.as_dict(),
             "blocks": {k: strs(v) if v is not None else None for k, v in blocks.items()},
             "shapes": shapes,
@@ -514,8 +521,9 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     """
     r = len(model.joints)
     m = len(q_rows)
-    gt_rows = [row[:6] for row in q_rows]
-    c11, c11_pivots = PolyMatrix(gt_rows, 6, context=zctx).nullspace_rref()
+    dim = model.object_dim
+    gt_rows = [row[:dim] for row in q_rows]
+    c11, c11_pivots = PolyMatrix(gt_rows, dim, context=zctx).nullspace_rref()
     owners = [model.contacts[c].arm for c in row_contacts]
     constraints = [gt_rows[i] for i, a in enumerate(owners) if a is None]
     c23: list[list] = []
@@ -525,18 +533,19 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
         check("the decomposition of the nullspace, arm by arm")
         off = model.joint_offset(a)
         arm_map = _ArmMap.build(q_rows, [i for i, o in enumerate(owners) if o == a],
-                                6 + off, len(arm.joints), zctx)
+                                dim + off, len(arm.joints), zctx, dim)
         constraints += arm_map.constraints
         for v in arm_map.null:
             c23.append([zero] * off + v + [zero] * (r - off - len(v)))
         arm_maps.append(arm_map)
     # feasible object twists U = R(C1): those every arm can follow
-    order = c11_pivots + [c for c in range(6) if c not in c11_pivots]
-    feasible, pivots = PolyMatrix(constraints, 6, context=zctx).nullspace_rref(order)
+    order = c11_pivots + [c for c in range(dim) if c not in c11_pivots]
+    feasible, pivots = PolyMatrix(constraints, dim, context=zctx).nullspace_rref(order)
     coord_u = [v for v, p in zip(feasible, pivots, strict=True) if p not in c11_pivots]
     nc, ni, nr = len(feasible), len(c11), len(c23)
     nm = nc + nr
-    numbers = numbers_from_ranks(m, r, *ranks_from_numbers({"Nm": nm, "Ni": ni, "Nr": nr}, r))
+    numbers = numbers_from_ranks(
+        m, r, *ranks_from_numbers({"Nm": nm, "Ni": ni, "Nr": nr}, r, dim=dim), dim=dim)
     return Decomposition(numbers, c11, c11_pivots, c23, arm_maps, coord_u)
 
 
@@ -557,10 +566,11 @@ class _ArmMap:
     solved: list[tuple[int, list]]
 
     @classmethod
-    def build(cls, q_rows, rows: list[int], col0: int, joints: int, zctx) -> _ArmMap:
+    def build(cls, q_rows, rows: list[int], col0: int, joints: int, zctx,
+              dim: int) -> _ArmMap:
         d_rows = [[q_rows[i][col0 + k] for k in range(joints)] for i in rows]
-        m_rows = [d + q_rows[i][:6] for d, i in zip(d_rows, rows, strict=True)]
-        reduced, pivots = PolyMatrix(m_rows, joints + 6).rref()
+        m_rows = [d + q_rows[i][:dim] for d, i in zip(d_rows, rows, strict=True)]
+        reduced, pivots = PolyMatrix(m_rows, joints + dim).rref()
         constraints = [row[joints:] for row, p in zip(reduced, pivots, strict=True)
                        if p >= joints]
         solved = [(p, row) for row, p in zip(reduced, pivots, strict=True) if p < joints]
@@ -576,7 +586,7 @@ class _ArmMap:
         q = [zero] * self.joints
         for p, row in self.solved:
             acc = zctx.constant(0)
-            for k in range(6):
+            for k in range(len(u)):
                 if not row[self.joints + k].is_zero() and not u[k].is_zero():
                     acc = acc + row[self.joints + k] * u[k]
             if not acc.is_zero():
@@ -598,22 +608,24 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
     ``rank Q`` is found arm by arm: each arm's joint columns are eliminated from its own
     rows, then the object rows left over from every arm are ranked together.
     """
-    gt = [row[:6] for row in q_rows]
-    rank_gt = PolyMatrix(gt, 6, quotient).rank()
+    dim = model.object_dim
+    gt = [row[:dim] for row in q_rows]
+    rank_gt = PolyMatrix(gt, dim, quotient).rank()
     owners = [model.contacts[c].arm for c in row_contacts]
     leftover = [gt[i] for i, a in enumerate(owners) if a is None]
     rank_dt = 0
     for a, arm in enumerate(model.arms):
-        off = 6 + model.joint_offset(a)
+        off = dim + model.joint_offset(a)
         n = len(arm.joints)
         rows = [q_rows[i][off:off + n] + gt[i] for i, o in enumerate(owners) if o == a]
         if not rows:
             continue
-        pivots, left = PolyMatrix(rows, n + 6, quotient).eliminate(range(n))
+        pivots, left = PolyMatrix(rows, n + dim, quotient).eliminate(range(n))
         rank_dt += pivots
         leftover += [r[n:] for r in left]
-    rank_q = rank_dt + PolyMatrix(leftover, 6, quotient).rank()
-    return numbers_from_ranks(len(q_rows), len(model.joints), rank_q, rank_gt, rank_dt)
+    rank_q = rank_dt + PolyMatrix(leftover, dim, quotient).rank()
+    return numbers_from_ranks(len(q_rows), len(model.joints), rank_q, rank_gt, rank_dt,
+                              dim=dim)
 
 
 def analyze(model: Model, config: Configuration) -> Analysis:

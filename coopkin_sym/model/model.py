@@ -31,7 +31,7 @@ from pathlib import Path
 from typing import Any, Literal
 
 import sympy as sp
-from pydantic import BaseModel, ConfigDict, StrictStr, ValidationError
+from pydantic import BaseModel, ConfigDict, StrictBool, StrictStr, ValidationError
 
 from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
@@ -52,6 +52,9 @@ from coopkin_sym.model.urdf import DEFAULT_BOUND, Snapped, read_urdf
 JointType = Literal["revolute", "prismatic"]
 ContactModel = Literal["complete", "soft", "hard", "frictionless"]
 CONTACT_MODELS: tuple[str, ...] = ("complete", "soft", "hard", "frictionless")
+#: The components of an object twist, spatial and planar.
+SPATIAL_TWIST: tuple[str, ...] = ("v_x", "v_y", "v_z", "w_x", "w_y", "w_z")
+PLANAR_TWIST: tuple[str, ...] = ("v_x", "v_y", "w_z")
 JOINT_TYPES: tuple[str, ...] = ("revolute", "prismatic")
 
 Vector = tuple[sp.Expr, sp.Expr, sp.Expr]
@@ -130,7 +133,8 @@ class Model:
     """A whole system: parameters, arms, contacts; ``object_frame`` is where object
     twists are referenced (a point, in the base frame) and the axes they are written
     in (a rotation whose columns are those axes), or None for the base origin and axes.
-    ``snapped`` lists the floats of URDF files replaced by exact values.
+    ``snapped`` lists the floats of URDF files replaced by exact values. A ``planar``
+    system moves in the base's xy-plane: its object twists are ``(v_x, v_y, w_z)``.
 
     Example
     -------
@@ -146,6 +150,29 @@ class Model:
     source: str | None = None
     object_frame: Frame | None = None
     snapped: tuple[Snapped, ...] = ()
+    planar: bool = False
+
+    @property
+    def object_dim(self) -> int:
+        """Components of an object twist: 6, or 3 for a planar system.
+
+        Example
+        -------
+        >>> load_model("paper-case1-hard").object_dim
+        6
+        """
+        return 3 if self.planar else 6
+
+    @property
+    def twist_names(self) -> tuple[str, ...]:
+        """The components of an object twist, in order.
+
+        Example
+        -------
+        >>> load_model("paper-case1-hard").twist_names[3:]
+        ('w_x', 'w_y', 'w_z')
+        """
+        return PLANAR_TWIST if self.planar else SPATIAL_TWIST
 
     def in_base_frame(self) -> Model:
         """The same system with object twists at the base origin, in base axes (no
@@ -194,6 +221,7 @@ class _TopIn(_Entry):
     arms: list[Any] | None = None
     contacts: list[Any] | None = None
     object: Any = None
+    planar: StrictBool | None = None
 
 
 class _ObjectIn(_Entry):
@@ -455,12 +483,14 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
                             f"half-angle variable t_{jname} of joint {jname} ({jpath})")
 
     contacts: list[Contact] = []
+    contact_paths: list[str] = []
     frames = {arm.name: arm for arm in arms}
     for i, raw_contact in enumerate(top.contacts or []):
         contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
                            problems, frames)
         if contact is not None:
             contacts.append(contact)
+            contact_paths.append(f"contacts[{i}]")
     if not top.contacts and "contacts" not in top_bad:
         problems.append("contacts: at least one contact is needed")
 
@@ -473,12 +503,63 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
             if object_frame is not None:
                 object_frame = (sp.ImmutableMatrix(object_frame[0]), object_frame[1])
 
+    if top.planar:
+        _planar_problems(arms, joint_paths, zip(contact_paths, contacts, strict=True),
+                         object_frame, problems)
     if problems:
         raise ModelError(problems, source)
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
                  contacts=tuple(contacts), source=source, object_frame=object_frame,
-                 snapped=tuple(snapped))
+                 snapped=tuple(snapped), planar=bool(top.planar))
+
+
+def _vec_text(v) -> str:
+    text = "(" + ", ".join(sp.sstr(x) for x in v) + ")"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _is_zero(x: sp.Expr) -> bool:
+    return sp.simplify(sp.expand(x)) == 0
+
+
+def _planar_problems(arms: list[Arm], joint_paths: dict[str, str], contacts,
+                     object_frame: Frame | None, problems: list[str]) -> None:
+    """What keeps a ``planar: true`` system out of the xy-plane: revolute axes along
+    z, prismatic axes, joint points, contact points and normals in the plane (at
+    home, so at every configuration), no soft contact, an object frame turned about
+    z only."""
+    where = "planar: true needs"
+    for arm in arms:
+        for joint in arm.joints:
+            path = joint_paths.get(joint.name, f"arm {arm.name}, joint {joint.name}")
+            if joint.type == "revolute" and not (_is_zero(joint.axis[0])
+                                                 and _is_zero(joint.axis[1])):
+                problems.append(f"{path}.axis: {where} a revolute axis along z (0, 0, 1) "
+                                f"or (0, 0, -1), got {_vec_text(joint.axis)}")
+            if joint.type == "prismatic" and not _is_zero(joint.axis[2]):
+                problems.append(f"{path}.axis: {where} a prismatic axis in the xy-plane "
+                                f"(z = 0), got {_vec_text(joint.axis)}")
+            if joint.point is not None and not _is_zero(joint.point[2]):
+                problems.append(f"{path}.point: {where} joint points in the xy-plane "
+                                f"(z = 0), got {_vec_text(joint.point)}")
+    for path, contact in contacts:
+        if contact.model == "soft":
+            problems.append(f"{path}.model: a soft contact has no planar model (its spin "
+                            f"about the normal is out of the plane); use hard (point "
+                            f"with friction), frictionless or complete")
+        if not _is_zero(contact.point[2]):
+            problems.append(f"{path}.point: {where} contact points in the xy-plane "
+                            f"(z = 0 in the base frame at home), got "
+                            f"{_vec_text(contact.point)}")
+        if contact.normal is not None and not _is_zero(contact.normal[2]):
+            problems.append(f"{path}.normal: {where} normals in the xy-plane (z = 0 in "
+                            f"the base frame at home), got {_vec_text(contact.normal)}")
+    if object_frame is not None:
+        rotation, origin = object_frame
+        if not _is_zero(origin[2]) or not _is_zero(rotation[2, 2] - 1):
+            problems.append(f"object: {where} an object frame in the xy-plane turned "
+                            f"about z only (point z = 0, rpy = [0, 0, yaw])")
 
 
 def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,

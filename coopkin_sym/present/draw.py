@@ -47,6 +47,7 @@ import numpy as np  # float-ok: drawing coordinates
 import sympy as sp
 
 from coopkin_sym import limits
+from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis, analyze
 from coopkin_sym.errors import DrawError
 from coopkin_sym.exact.parse import brief
@@ -369,7 +370,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None):
     motion_line = ""
     if request is not None:
         motion_line = _draw_motion(ax, a, scene, values, request, legend)
-    _frame(ax, scene)
+    _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
     where = a.configuration.at_text() or "home (all joints at 0)"
     n = a.numbers
@@ -391,7 +392,8 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None):
     return fig
 
 
-def _frame(ax, scene: _Scene) -> None:
+def _frame(ax, scene: _Scene, planar: bool) -> None:
+    """Limits, labels and the view: oblique, or from above (+z) for a planar system."""
     lo, hi = scene.box
     ax.set_xlim(lo[0], hi[0])  # float-ok
     ax.set_ylim(lo[1], hi[1])  # float-ok
@@ -400,7 +402,13 @@ def _frame(ax, scene: _Scene) -> None:
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
-    ax.view_init(elev=28, azim=-58)
+    if planar:
+        ax.view_init(elev=90, azim=-90)
+        ax.set_proj_type("ortho")
+        ax.set_zticks([])
+        ax.set_zlabel("")
+    else:
+        ax.view_init(elev=28, azim=-58)
     ax.tick_params(labelsize=7)
 
 
@@ -612,14 +620,14 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
     j = k - 1
     twist = rates = exact_q = None
     if kind == "coordinated":
-        twist = values.vector(a.twist_in_base(a.C12.col(j)))
+        twist = values.vector(spatial_twist(a.twist_in_base(a.C12.col(j))))
         rates = values.column(a.C22, j)
         exact_q = a.C22.col(j)
         words = (f"coordinated motion {k} (C12, C22 column {k}): "
                  f"{describe_twist(a.C12.col(j), a)} by moving "
                  f"{describe_joint_motion(exact_q, a)}")
     elif kind == "indeterminate":
-        twist = values.vector(a.twist_in_base(a.C11.col(j)))
+        twist = values.vector(spatial_twist(a.twist_in_base(a.C11.col(j))))
         words = (f"indeterminate motion {k} (C11 column {k}), joints locked: "
                  f"{describe_twist(a.C11.col(j), a)}")
     else:

@@ -24,6 +24,7 @@ from collections.abc import Sequence
 import sympy as sp
 
 from coopkin_sym.analysis.irrational import IrrationalAnalysis, PointMotions
+from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.locus.types import Component, WitnessMotions
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.exact.parse import exact_expr
@@ -107,7 +108,7 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
     >>> object_motions_words(rotations, [("c1", [0, 0, 0]), ("c2", [0, 0, 0])])
     'turn freely about c1 (= c2), in every direction'
     """
-    vectors = [[exact_expr(e, None, "twist") for e in v] for v in vectors]
+    vectors = [spatial_twist([exact_expr(e, None, "twist") for e in v]) for v in vectors]
     if len(vectors) == 3 and not any(_too_big(v) for v in vectors):
         for place, c in _places_with_points(contacts):
             # u = (v, w) fixes the point c when v + w x c = 0
@@ -136,7 +137,7 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     >>> twist_words([0, 0, 0, 0, 0, 1], [("c1", [0, 0, 0]), ("c2", [0, 0, 5])])
     'rotate about the line through c1 and c2'
     """
-    u = [exact_expr(e, None, "twist") for e in u]
+    u = spatial_twist([exact_expr(e, None, "twist") for e in u])
     if _too_big(u):
         return "a motion too large to describe in words (see the blocks)"
     v, w = u[:3], u[3:]
@@ -203,8 +204,8 @@ def _mobility_sentence(n) -> str:
             f"{_count(n.Nm, 'independent motion')} that {keep} every contact.")
 
 
-def _connectivity_words(n) -> str:
-    if n.Nc == 6:
+def _connectivity_words(n, dim: int) -> str:
+    if n.Nc == dim:
         return "the object can move in every direction (full connectivity)"
     if n.Nc == 0:
         return "the object cannot move at all"
@@ -215,7 +216,7 @@ def _number_word(k: int) -> str:
     return _WORDS[k] if k < len(_WORDS) else str(k)
 
 
-def _connectivity_sentence(n, coordinated: Sequence[str] = ()) -> str:
+def _connectivity_sentence(n, dim: int, coordinated: Sequence[str] = ()) -> str:
     """``Nc``: how many object motions the joints drive (each told when given) and how
     many they leave free."""
     parts = []
@@ -225,7 +226,7 @@ def _connectivity_sentence(n, coordinated: Sequence[str] = ()) -> str:
                      + (f" ({'; '.join(coordinated)})" if coordinated else ""))
     if n.Ni and n.Nc:
         parts.append(f"{_number_word(n.Ni)} left free (Ni)")
-    return (f"Nc = {n.Nc}: {_connectivity_words(n)}"
+    return (f"Nc = {n.Nc}: {_connectivity_words(n, dim)}"
             + (": " + " and ".join(parts) if parts else "") + ".")
 
 
@@ -286,14 +287,15 @@ def sentences(analysis: Analysis) -> list[str]:
                                 _contact_points(analysis)) if n.Ni else None
     redundant = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
                           for k in range(n.Nr)) if n.Nr else None
-    return [_mobility_sentence(n), _connectivity_sentence(n, coordinated),
+    return [_mobility_sentence(n), _connectivity_sentence(n, analysis.dim, coordinated),
             _indeterminacy_sentence(n, free), _redundancy_sentence(n, redundant),
             *_force_sentences(n, analysis.r)]
 
 
-def count_sentences(numbers, r: int) -> list[str]:
+def count_sentences(numbers, r: int, dim: int = 6) -> list[str]:
     """One plain sentence per number from the numbers alone (where no basis of the
-    subspaces is at hand, e.g. at an irrational point).
+    subspaces is at hand, e.g. at an irrational point), for ``r`` joints and object
+    twists of ``dim`` components (3 for a planar system).
 
     Example
     -------
@@ -301,7 +303,7 @@ def count_sentences(numbers, r: int) -> list[str]:
     >>> print(count_sentences(Numbers(3, 3, 1, 0, 1, 4, 1), 2)[2])
     Ni = 1: with every joint locked, the object can still make one independent motion.
     """
-    return [_mobility_sentence(numbers), _connectivity_sentence(numbers),
+    return [_mobility_sentence(numbers), _connectivity_sentence(numbers, dim),
             _indeterminacy_sentence(numbers), _redundancy_sentence(numbers),
             *_force_sentences(numbers, r)]
 
@@ -311,7 +313,8 @@ def _key(sentence: str) -> str:
 
 
 def point_sentences(numbers, joints: Sequence[str], motions: PointMotions | None,
-                    changed: set[str] | frozenset[str] | None = None) -> list[str]:
+                    changed: set[str] | frozenset[str] | None = None,
+                    dim: int = 6) -> list[str]:
     """One sentence per number (those in ``changed`` when given) at a point where only
     the numbers and, for a quadratic field, the exact motions behind ``Ni`` and ``Nr``
     are known (:class:`~coopkin_sym.analysis.irrational.PointMotions`): those two are
@@ -325,7 +328,7 @@ def point_sentences(numbers, joints: Sequence[str], motions: PointMotions | None
     >>> print(point_sentences(a.numbers, a.joints, a.motions)[2].split(": ")[1])
     with every joint locked, the object can still turn freely about c1 (= c2), in every direction.
     """
-    out = [s for s in count_sentences(numbers, len(joints))
+    out = [s for s in count_sentences(numbers, len(joints), dim)
            if changed is None or _key(s) in changed]
     if motions is None:
         return out
@@ -351,7 +354,8 @@ def irrational_sentences(result: IrrationalAnalysis) -> list[str]:
     >>> irrational_sentences(a)[0].startswith("Nm = 3")
     True
     """
-    return point_sentences(result.numbers, result.joints, result.motions)
+    return point_sentences(result.numbers, result.joints, result.motions,
+                           dim=result.object_dim)
 
 
 def witness_sentences(shown: WitnessMotions) -> list[str]:
@@ -370,7 +374,8 @@ def witness_sentences(shown: WitnessMotions) -> list[str]:
     """
     if shown.analysis is not None:
         return [s for s in sentences(shown.analysis) if _key(s) in shown.changed]
-    return point_sentences(shown.numbers, shown.joints, shown.motions, shown.changed)
+    return point_sentences(shown.numbers, shown.joints, shown.motions, shown.changed,
+                           shown.object_dim)
 
 
 def component_sentences(component: Component) -> list[str]:

@@ -41,7 +41,8 @@ def analysis_text(a: Analysis) -> str:
     if a.configuration.free:
         where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
     lines.append(f"Configuration: {where}")
-    lines.append(f"Object twist (v, w): {object_frame_text(a.model.object_frame)}")
+    twist = "(v_x, v_y, w_z), planar" if a.model.planar else "(v, w)"
+    lines.append(f"Object twist {twist}: {object_frame_text(a.model.object_frame)}")
     lines.extend(snapped_lines(a.model.snapped))
     if a.variables:
         lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
@@ -53,7 +54,7 @@ def analysis_text(a: Analysis) -> str:
     lines.append("")
     for s in sentences(a):
         lines.append(f"- {s}")
-    object_rows = ["v_x", "v_y", "v_z", "w_x", "w_y", "w_z"]
+    object_rows = list(a.model.twist_names)
     joint_rows = list(a.model.joint_names)
     blocks, omitted = a.available_blocks()
     for name, mat in blocks.items():

@@ -277,7 +277,7 @@ def test_lines_in_both_charts_agree_with_direct_analysis():
         exact = [[_eval_q(p, lam) for p in row] for row in rows]
         assert checker.numbers(_ranks_of(exact, 2)) == expected
         assert checker.numbers(checker.point_ranks(point)) == expected
-    generic = _line_ranks([[_to_mpoly(p) for p in row] for row in rows], None, 2)
+    generic = _line_ranks([[_to_mpoly(p) for p in row] for row in rows], None, 2, 6)
     assert generic == (7, 6, 2)                   # Nm 1, Ni 0, Nr 0: m = 7 rows, r = 2
 
 
@@ -362,6 +362,8 @@ EXAMPLES = [
     ("paper-case1-soft", None),
     ("paper-case1-soft-hard", None),
     ("paper-case1-complete-hard", None),
+    ("paper-case1-planar", None),
+    ("planar-two-fingers", None),
     ("paper-case2-hard", None),
     ("paper-case2-complete", None),
 ]

@@ -26,10 +26,12 @@ EXAMPLES = [
     "dh-two-puma560-box",
     "paper-case1-complete-hard",
     "paper-case1-hard",
+    "paper-case1-planar",
     "paper-case1-soft",
     "paper-case1-soft-hard",
     "paper-case2-complete",
     "paper-case2-hard",
+    "planar-two-fingers",
     "quadruped-standing",
     "urdf-two-fingers",
 ]

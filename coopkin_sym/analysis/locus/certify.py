@@ -377,7 +377,7 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
     ranks["HD"] = sum(v for k, v in ranks.items() if k.startswith("HD["))
     setup.generic_ranks = ranks
     r, m = len(model.joints), len(base.matrices["Q"])
-    generic = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"])
+    generic = _numbers(m, r, ranks["Q"], ranks["HG^T"], ranks["HD"], model.object_dim)
     if generic != {k: locus.generic.get(k) for k in NUMBER_NAMES}:
         why = Remark.of("cert_generic_differs", given=_numbers_of(locus.generic),
                         exact=_numbers_of(generic))
@@ -422,7 +422,8 @@ def _refuse_inconsistent_numbers(setup: _Setup, locus: Locus, m: int, r: int,
         if comp is None:
             continue
         given = {k: locus.components[i].numbers.get(k) for k in NUMBER_NAMES}
-        implied = _numbers(m, r, *ranks_from_numbers(comp[1], r))
+        dim = setup.model.object_dim
+        implied = _numbers(m, r, *ranks_from_numbers(comp[1], r, dim=dim), dim)
         if given != implied:
             notes.append(Remark.of("cert_numbers_inconsistent", component=i,
                                    given=_numbers_of(given), implied=_numbers_of(implied)))
@@ -479,10 +480,11 @@ def _chart(setup: _Setup, pi_joints: tuple[str, ...]) -> _Chart:
     units = [1 + gens[ring.names.index(n)] ** 2 for n in ring.den_names]
     rows = [ring.clear_row(r) for r in kin.Q]
     owners = [model.contacts[c].arm for c in kin.row_contacts]
-    matrices: dict[str, list] = {"HG^T": [r[:6] for r in rows]}
+    dim = model.object_dim
+    matrices: dict[str, list] = {"HG^T": [r[:dim] for r in rows]}
     blocks = []
     for a, arm in enumerate(model.arms):
-        off = 6 + model.joint_offset(a)
+        off = dim + model.joint_offset(a)
         block = [[rows[i][off + k] for k in range(len(arm.joints))]
                  for i, o in enumerate(owners) if o == a]
         if block:
@@ -498,8 +500,9 @@ def _rank(rows) -> int:
     return PolyMatrix(rows, len(rows[0])).rank() if rows else 0
 
 
-def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int) -> dict[str, int]:
-    return numbers_from_ranks(m, r, rank_q, rank_gt, rank_dt).as_dict()
+def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int,
+             dim: int) -> dict[str, int]:
+    return numbers_from_ranks(m, r, rank_q, rank_gt, rank_dt, dim=dim).as_dict()
 
 
 def _numbers_of(numbers) -> tuple[tuple[str, object], ...]:
@@ -866,7 +869,9 @@ class _Runner:
         r = len(setup.model.joints)
         self.component_ranks = [
             None if c is None else dict(zip(("Q", "HG^T", "HD"),
-                                            ranks_from_numbers(c[1], r), strict=True))
+                                            ranks_from_numbers(
+                                                c[1], r, dim=setup.model.object_dim),
+                                            strict=True))
             for c in setup.components]
 
     def chart(self, chart: _Chart) -> None:

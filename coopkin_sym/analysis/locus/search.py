@@ -217,7 +217,8 @@ def _candidates(ctx: SearchContext, q_rows) -> dict[str, list]:
     candidate on its own)."""
     zctx = ctx.ring.zctx
     owners = [ctx.model.contacts[c].arm for c in ctx.row_contacts]
-    gt = [row[:6] for row in q_rows]
+    dim = ctx.model.object_dim
+    gt = [row[:dim] for row in q_rows]
     mats: dict[str, list] = {"HG^T": gt}
     a_rows = [gt[i] for i, o in enumerate(owners) if o is None]
     for arm, rows, d in _arm_blocks(ctx, q_rows):
@@ -227,7 +228,7 @@ def _candidates(ctx: SearchContext, q_rows) -> dict[str, list]:
         if y:
             mats[f"Y:{arm.name}"] = y
         for v in y:
-            acc = [zctx.constant(0)] * 6
+            acc = [zctx.constant(0)] * dim
             for vi, i in zip(v, rows, strict=True):
                 if not vi.is_zero():
                     acc = [x + vi * g for x, g in zip(acc, gt[i], strict=True)]
@@ -256,7 +257,7 @@ def _arm_blocks(ctx: SearchContext, q_rows):
     for a, arm in enumerate(model.arms):
         rows = [i for i, o in enumerate(owners) if o == a]
         if rows:
-            off = 6 + model.joint_offset(a)
+            off = model.object_dim + model.joint_offset(a)
             yield arm, rows, [q_rows[i][off:off + len(arm.joints)] for i in rows]
 
 
@@ -701,7 +702,9 @@ def _inside_curved(ctx: SearchContext, place: Place, f, k: int,
         _note(ctx, "too_many_variables", variables=len(names), **where)
         return
     quotient = Quotient(f, k)
-    blocks = [[row[:6] for row in place.rows]] + [d for _, _, d in _arm_blocks(ctx, place.rows)]
+    dim = ctx.model.object_dim
+    blocks = [[row[:dim] for row in place.rows]] + [
+        d for _, _, d in _arm_blocks(ctx, place.rows)]
     divisors: list = []
     for rows in blocks:
         rows = [quotient.reduce_row(r) for r in rows]

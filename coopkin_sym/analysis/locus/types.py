@@ -68,7 +68,8 @@ class WitnessMotions:
     differ from the generic ones (``changed``), and the exact data behind them: the
     whole exact ``analysis`` at a rational witness, the exact ``motions`` behind ``Ni``
     and ``Nr`` at an algebraic witness over a quadratic field, or neither (the counts
-    alone). The sentences are :func:`coopkin_sym.present.sentences.witness_sentences`.
+    alone); ``object_dim`` is 6, or 3 for a planar system. The sentences are
+    :func:`coopkin_sym.present.sentences.witness_sentences`.
 
     Example
     -------
@@ -83,6 +84,7 @@ class WitnessMotions:
     changed: frozenset[str]
     analysis: Analysis | None = None
     motions: PointMotions | None = None
+    object_dim: int = 6
 
 
 @dataclass

@@ -2,8 +2,9 @@
 (q = pi included) and at every rank-drop point of random rational lines.
 
 Nothing here uses the locus search: the numbers come straight from the ranks of
-``Q``, ``H G^T`` and ``H D`` (``Nm = 6 + r - rank Q``, ``Ni = 6 - rank H G^T``,
-``Nr = r - rank H D``, the others from these), computed exactly at each point.
+``Q``, ``H G^T`` and ``H D`` (``Nm = d + r - rank Q``, ``Ni = d - rank H G^T``,
+``Nr = r - rank H D``, the others from these; ``d`` is 6, or 3 for a planar system),
+computed exactly at each point.
 
 * **Soundness.** A component is the set where its equations vanish and none of its
   ``outside`` polynomials does. At each component's witness (rational, or algebraic
@@ -521,8 +522,10 @@ class _Checker:
         self.m = len(kin.Q)
         self._number_cache: dict[tuple, dict[str, int]] = {}
         rows = [kin.ring.clear_row(row) for row in kin.Q]
-        n = 6 + self.r
-        self.generic_ranks = ranks_of_q(PolyMatrix(rows, n, context=kin.ring.zctx))
+        self.dim = model.object_dim
+        n = self.dim + self.r
+        self.generic_ranks = ranks_of_q(PolyMatrix(rows, n, context=kin.ring.zctx),
+                                        dim=self.dim)
         self.generic = self.numbers(self.generic_ranks)
         fixed_values: dict[str, object] = {}
         for j, (c, s) in self.config.revolute.items():
@@ -602,12 +605,13 @@ class _Checker:
     def numbers(self, ranks: tuple[int, int, int]) -> dict[str, int]:
         hit = self._number_cache.get(ranks)
         if hit is None:
-            hit = self._number_cache[ranks] = numbers_from_ranks(self.m, self.r,
-                                                                 *ranks).as_dict()
+            hit = self._number_cache[ranks] = numbers_from_ranks(
+                self.m, self.r, *ranks, dim=self.dim).as_dict()
         return hit
 
     def ranks_of(self, numbers: Mapping[str, int]) -> tuple[int, int, int]:
-        return (6 + self.r - numbers["Nm"], 6 - numbers["Ni"], self.r - numbers["Nr"])
+        return (self.dim + self.r - numbers["Nm"], self.dim - numbers["Ni"],
+                self.r - numbers["Nr"])
 
     def compiled(self, params: Sequence[Fraction]):
         key = tuple(params)
@@ -857,7 +861,8 @@ def _check_witnesses(checker: _Checker, state: _State) -> None:
             at = {**dict(checker.fixed_items), **{str(k): str(x) for k, x in witness.items()}}
             rows = [[_to_mpoly(p) for p in row] for row in _line_rows(checker, curve)]
             modulus_z = _to_mpoly(modulus * int(modulus.denom()))
-            numbers = checker.numbers(_line_ranks(rows, Quotient(modulus_z, 0), checker.r))
+            numbers = checker.numbers(_line_ranks(rows, Quotient(modulus_z, 0), checker.r,
+                                                  checker.dim))
             inside = _on_curve(checker, i, curve, modulus)
         if not inside:
             state.issue(i, "witness-off", at, numbers)
@@ -1181,11 +1186,12 @@ def _drop_polynomial(rows: list[list[flint.fmpz_mpoly]], ncols: int, rank: int,
     return g
 
 
-def _line_ranks(rows, quotient: Quotient | None, r: int) -> tuple[int, int, int]:
-    n = 6 + r
+def _line_ranks(rows, quotient: Quotient | None, r: int,
+                dim: int) -> tuple[int, int, int]:
+    n = dim + r
     if not rows:
         return (0, 0, 0)
-    return ranks_of_q(PolyMatrix(rows, n, quotient or POLYNOMIALS))
+    return ranks_of_q(PolyMatrix(rows, n, quotient or POLYNOMIALS), dim=dim)
 
 
 def _real_roots_in(f: flint.fmpq_poly, domain) -> list[tuple[Fraction, Fraction]]:
@@ -1235,7 +1241,8 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
     rows_q = _line_rows(checker, line)
     rows = [[_to_mpoly(p) for p in row] for row in rows_q]
     r = checker.r
-    ranks = _line_ranks(rows, None, r)
+    dim = checker.dim
+    ranks = _line_ranks(rows, None, r, dim)
     numbers = checker.numbers(ranks)
     result = state.result
     text = line.text(checker.free)
@@ -1247,10 +1254,10 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
     state.judge(ranks, numbers, inside, DropPoint(source, dict(text), numbers, "line"))
     # candidate points: drops of the three ranks, zeros of the chart variables
     factors: list[flint.fmpz_mpoly] = []
-    n = 6 + r
-    pieces = [(rows, n, ranks[0]), ([x[:6] for x in rows], 6, ranks[1])]
+    n = dim + r
+    pieces = [(rows, n, ranks[0]), ([x[:dim] for x in rows], dim, ranks[1])]
     if r:
-        pieces.append(([x[6:] for x in rows], r, ranks[2]))
+        pieces.append(([x[dim:] for x in rows], r, ranks[2]))
     for mat, ncols, rank in pieces:
         g = _drop_polynomial(mat, ncols, rank, rng) if mat else None
         if g is not None and not g.is_constant():
@@ -1285,7 +1292,7 @@ def _check_line(checker: _Checker, state: _State, sets: list[list], rng: random.
             continue
         result.line_points += 1
         quotient = Quotient(f, 0)
-        pranks = _line_ranks(rows, quotient, r)
+        pranks = _line_ranks(rows, quotient, r, checker.dim)
         pnumbers = checker.numbers(pranks)
         inside = {c: m for c in range(len(checker.components))
                   if (m := _on_curve(checker, c, line, fq))}

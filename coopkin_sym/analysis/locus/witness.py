@@ -298,7 +298,7 @@ def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot,
     motions = point_motions(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
                             ctx.kin, values, root.degree, changed=set(changes))
     return WitnessMotions(numbers, ctx.model.joint_names, frozenset(changes),
-                          motions=motions)
+                          motions=motions, object_dim=ctx.model.object_dim)
 
 
 def float_image_checks(ctx: SearchContext, approx_at: dict[str, str], analysis, numbers: Numbers,
@@ -325,7 +325,7 @@ def attach_witness(ctx: SearchContext, comp: Component, witness: dict[str, str],
     comp.witness = witness
     comp.witness_checked = analysis.numbers == numbers
     comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes),
-                                analysis=analysis)
+                                analysis=analysis, object_dim=ctx.model.object_dim)
     comp.float_checks = float_checks(ctx, witness, analysis, comp.equations)
 
 
@@ -440,7 +440,8 @@ def attach_two_root_witness(ctx: SearchContext, comp: Component, first: tuple, s
                        for k, v in point.items()},
         }
         comp.witness_checked = True
-        comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes))
+        comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes),
+                                    object_dim=ctx.model.object_dim)
         approx_at = to_at(ctx, near)
         if approx_at is not None:
             analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))

@@ -44,7 +44,7 @@ class _Exact:
     """
 
     def __init__(self, plan: dict):
-        self.m, self.n = plan["m"], plan["n"]
+        self.m, self.n, self.dim = plan["m"], plan["n"], plan["dim"]
         self.kinds = plan["kinds"]
         self.njv = plan["njv"]
         self.params = plan["nvars"] - plan["njv"]
@@ -55,20 +55,21 @@ class _Exact:
             self.program = _straight_line(plan["terms"], plan["nvars"], self.m, self.n)
 
     def ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
-        """Exact ranks of ``Q``, of its first 6 and of its last ``r`` columns."""
+        """Exact ranks of ``Q``, of its object columns and of its last ``r`` columns."""
         m, n = self.m, self.n
         if m == 0:
             return 0, 0, 0
         args = _joint_vector(self.kinds, pairs)
         if not self.params:
-            return ranks_of_q(PolyMatrix.from_integers(m, n, self.program(args)))
+            return ranks_of_q(PolyMatrix.from_integers(m, n, self.program(args)),
+                              dim=self.dim)
         subs = {i: flint.fmpz(args[i]) for i in range(self.njv)}
         zero = self.ctx.constant(0)
         flat = [zero] * (m * n)
         for k, poly in self.entries:
             flat[k] = poly.subs(subs) if subs else poly
         rows = [flat[i * n:(i + 1) * n] for i in range(m)]
-        return ranks_of_q(PolyMatrix(rows, n, context=self.ctx))
+        return ranks_of_q(PolyMatrix(rows, n, context=self.ctx), dim=self.dim)
 
 
 def _straight_line(terms: list, nvars: int, m: int, n: int):
@@ -274,7 +275,8 @@ class Compiled:
         ring = kin.ring
         self.r = len(model.joints)
         self.m = len(kin.Q)
-        n = self.n = 6 + self.r
+        self.dim = dim = model.object_dim
+        n = self.n = dim + self.r
         var_of = {}
         for j, kind in zip(joints, self.kinds, strict=True):
             var_of[j] = ring.names.index(tangent_name(j) if kind == "revolute" else j)
@@ -289,23 +291,24 @@ class Compiled:
         rows = [ring.clear_row(row) for row in kin.Q]
         terms = _compile_rows(kin.Q, rows, ring, joints, self.kinds, var_of, param_vars,
                               names, n)
-        generic = ranks_of_q(PolyMatrix(rows, n, context=ring.zctx))
+        generic = ranks_of_q(PolyMatrix(rows, n, context=ring.zctx), dim=dim)
         self.generic_ranks = generic
         self.generic = self._numbers(*generic)
         flat_terms = [(k, e, c) for k, ts in terms for e, c in ts]
         nvars = len(names)
         exps = np.array([e for _, e, _ in flat_terms], dtype=np.int64).reshape(-1, nvars)
         used = sorted({k % n for k, _ in terms})
-        key = hashlib.sha1(repr((names, terms, self.m, n)).encode()).hexdigest()
+        key = hashlib.sha1(repr((names, terms, self.m, n, dim)).encode()).hexdigest()
         self.plan = {
-            "key": key, "prime": prime, "m": self.m, "n": n, "names": names,
+            "key": key, "prime": prime, "m": self.m, "n": n, "dim": dim, "names": names,
             "kinds": list(self.kinds), "njv": njv, "nvars": nvars, "terms": terms,
             "exps": exps,
             "coefs": modular.residues([c for _, _, c in flat_terms], prime),
             "entries": np.array([k for k, _, _ in flat_terms], dtype=np.int64),
             "params": [random.Random(f"coopkin:{names[i]}").randrange(2, prime)
                        for i in range(njv, nvars)],
-            "cols6": [c for c in used if c < 6], "colsr": [c for c in used if c >= 6],
+            "object_cols": [c for c in used if c < dim],
+            "joint_cols": [c for c in used if c >= dim],
             "generic": generic,
         }
 
@@ -327,7 +330,7 @@ class Compiled:
         return Value(sp.sstr(d), int(d.p), int(d.q))
 
     def _numbers(self, rq: int, r6: int, rr: int) -> Numbers:
-        return numbers_from_ranks(self.m, self.r, rq, r6, rr)
+        return numbers_from_ranks(self.m, self.r, rq, r6, rr, dim=self.dim)
 
     def value(self, joint: str, value) -> Value:
         """The exact :class:`Value` of ``joint`` for ``value`` (an angle in SymPy syntax,

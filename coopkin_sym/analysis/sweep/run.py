@@ -30,7 +30,7 @@ BLOCK = 4096
 # --- the sweep ------------------------------------------------------------------------
 def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
                index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Ranks ``(points, 3)`` (Q, first 6 columns, last r columns) of one chunk and which
+    """Ranks ``(points, 3)`` (Q, its object columns, its last r columns) of one chunk and which
     points needed the exact recheck. Plain data in and out (runs in any process)."""
     p = plan["prime"]
     m, n = plan["m"], plan["n"]
@@ -43,7 +43,7 @@ def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
     for kind, ps in zip(plan["kinds"], pairs, strict=True):
         vectors = [_joint_vector([kind], [pair]) for pair in ps]
         columns.append([modular.residues(col, p) for col in zip(*vectors, strict=True)])
-    cols6, colsr = plan["cols6"], plan["colsr"]
+    object_cols, joint_cols = plan["object_cols"], plan["joint_cols"]
     generic = np.array(plan["generic"], dtype=np.int64)
     for start in range(0, count, BLOCK):
         idx = index[start:start + BLOCK]
@@ -56,11 +56,12 @@ def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
         flat = modular.evaluate(plan["exps"], plan["coefs"], plan["entries"], m * n,
                                 values, p).reshape(m, n, size)
         block = ranks[start:start + size]
-        if colsr or cols6:
-            rq, rr = batch_rank_profile(flat[:, colsr + cols6, :], p, prefix=len(colsr))
+        if joint_cols or object_cols:
+            rq, rr = batch_rank_profile(flat[:, joint_cols + object_cols, :], p,
+                                        prefix=len(joint_cols))
             block[:, 0], block[:, 2] = rq, rr
-        if cols6:
-            block[:, 1] = batch_rank_profile(flat[:, cols6, :], p)[0]
+        if object_cols:
+            block[:, 1] = batch_rank_profile(flat[:, object_cols, :], p)[0]
     if (ranks > generic).any():  # pragma: no cover - impossible: rank mod p <= rank
         raise AssertionError("a rank modulo p exceeds the generic rank")
     doubt = np.flatnonzero((ranks != generic).any(axis=1))
@@ -172,7 +173,8 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
                 ranks[s:s + chunk], rechecked[s:s + chunk] = r, re
                 advance(len(r))
     m, r = compiled.m, compiled.r
-    numbers = np.stack(seven_numbers(m, r, ranks[:, 0], ranks[:, 1], ranks[:, 2]), axis=1)
+    numbers = np.stack(seven_numbers(m, r, ranks[:, 0], ranks[:, 1], ranks[:, 2],
+                                     dim=compiled.dim), axis=1)
     return SweepResult(model.name, tuple(joints), compiled.at_text, compiled.generic,
                        tuple(levels), index, numbers, rechecked, prime, bound)
 
