@@ -71,6 +71,7 @@ def run_one(seed: int, timeout: float, lines: int, max_points: int) -> dict:
     from coopkin_sym.analysis.locus.search import compute_locus
     from coopkin_sym.analysis.locus.verify import verify_locus
     from coopkin_sym.errors import TimeLimitReached
+    from coopkin_sym.present.remarks import remark_texts
 
     row = describe(seed)
     row["source"] = str(Path(coopkin_sym.__file__).parent.parent)
@@ -94,9 +95,8 @@ def run_one(seed: int, timeout: float, lines: int, max_points: int) -> dict:
         return row
     row["components"] = len(locus.components)
     row["generic"] = locus.generic
-    row["unexplored"] = list(locus.unexplored)
-    row["timed_out"] = any("wall-clock" in u or "time bound reached" in u
-                           for u in locus.unexplored)
+    row["unexplored"] = remark_texts(locus.unexplored)
+    row["timed_out"] = any(u.kind.startswith("time_") for u in locus.unexplored)
     row["locus"] = locus.to_json()
     started = time.monotonic()
     v = verify_locus(system, locus, max_points=max_points, lines=lines, seed=seed)

@@ -86,9 +86,11 @@ def _joined_fields(f: Mapping[str, Any]) -> str:
 
 _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "candidates_probabilistic": lambda f: (
-        "Candidate sets come from random combinations of minors (Cauchy-Binet); every "
-        "component reported is then decided exactly, so a candidate can only be missed, "
-        "never wrongly reported, and a miss has probability below degree/2^20 per step."),
+        "Candidate sets come from random integer combinations of maximal minors "
+        "(Cauchy-Binet): their common zeros contain every set where the rank drops, and "
+        "every component reported is then decided exactly, so nothing is wrongly "
+        "reported; a combination that vanishes identically is drawn again, and a block "
+        "whose combinations all vanish is listed as not explored."),
     "irrational_witness_floats": lambda f: (
         "A witness with irrational coordinates is decided over Q(alpha); its float "
         "checks use a rational point within 1e-40 of it (the same float64 image), "
@@ -116,6 +118,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         "run): the rest of the search was not explored (remaining candidates, deeper "
         "components, the q = pi chart)"),
     "block_not_solved": _block_not_solved,
+    "combinations_vanish": lambda f: (
+        f"block {f['block']}: {f['tries']} random combinations of its maximal minors "
+        "all vanished identically; the drops it cuts out were not searched there"),
     "outside_parametrization": lambda f: (
         f"{f['polynomial']} = 0 inside {'; '.join(f['equations'])}: outside the "
         "parametrization of the enclosing component"),

@@ -14,7 +14,7 @@ from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report import locus_from_json, render_json
 
 # a value of the right type for every fact any kind holds
-SAMPLE = {"polynomial": "t_q1**2 + 1", "equations": ("t_q1", "t_q2 - 1"), "depth": 2,
+SAMPLE = {"tries": 14, "polynomial": "t_q1**2 + 1", "equations": ("t_q1", "t_q2 - 1"), "depth": 2,
           "joints": ("q1", "q3"), "seconds": 5.0, "where": "the generic decomposition",
           "rows": 6, "columns": 9, "block": "HG^T", "variables": 3, "limit": "minors",
           "bound": 4, "reason": "max_depth", "terms": 3001, "degree": 7,

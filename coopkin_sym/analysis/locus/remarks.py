@@ -42,6 +42,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "time_whole_run": ("seconds", "where"),
     # not explored: sets the search does not solve
     "block_not_solved": ("rows", "columns", "block", "variables", "limit", "bound"),
+    "combinations_vanish": ("block", "tries"),
     "outside_parametrization": ("polynomial", "equations"),
     "enclosing_not_searched": ("equations", "reason", "bound"),
     "family_too_large": ("terms", "degree", "variables", "equations", "bound"),

@@ -349,8 +349,12 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
                       bound=_MAX_SPLITS if splits else (_MAX_SPLIT_RANK, _MAX_SPLIT_MINORS))
             return []
     count = nvars + 1 if nvars <= 2 else 3
-    polys = []
-    for _ in range(count):
+    polys: list = []
+    tries = 0
+    while len(polys) < count and tries < count + _REDRAWS:
+        # a zero combination is bad luck (the rank says some maximal minor is nonzero):
+        # draw again
+        tries += 1
         if ctx.expired():
             break
         left = _random_matrix(ctx, rank, len(rows)) if rank < len(rows) else None
@@ -365,7 +369,13 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
             polys.append(det)
         if left is None and right is None:
             break
+    if not polys and not ctx.expired():
+        _note(ctx, "combinations_vanish", block=name, tries=tries)
     return polys
+
+
+# how many more random combinations are drawn when some vanish identically
+_REDRAWS = 12
 
 
 # how many zero sets of single minors are searched inside one another
@@ -443,6 +453,8 @@ def _common_factor_on_a_line(ctx: SearchContext, rows, rank: int, lines: int = 3
 
 
 def _random_matrix(ctx: SearchContext, n: int, m: int, zctx=None):
+    """An ``n x m`` matrix of small random integers (small, so that the combinations
+    of minors stay cheap to factor; one that vanishes identically is drawn again)."""
     c = (zctx or ctx.ring.zctx).constant
     return [[c(ctx.rng.randint(-3, 3)) for _ in range(m)] for _ in range(n)]
 
@@ -614,11 +626,20 @@ def _inside_candidate(ctx: SearchContext, place: Place, split: bool = False) -> 
             else:
                 ctx.hidden -= 1
 
-    ctx.deferred[-1].append(search)  # after the components of the enclosing level
+    _after_enclosing(ctx, search)
+
+
+def _after_enclosing(ctx: SearchContext, search) -> None:
+    """Run ``search`` after the components of the enclosing level are found, or now when
+    that level is already done (a search started by a deferred one)."""
+    if ctx.deferred:
+        ctx.deferred[-1].append(search)
+    else:
+        search()
 
 
 # how many candidate sets with the enclosing numbers are searched inside one another
-_HIDDEN_DEPTH = 1
+_HIDDEN_DEPTH = 2
 
 
 def _substitute_linear(ctx: SearchContext, q_rows, f, name: str):
@@ -654,7 +675,7 @@ def _nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> Non
         if ctx.hidden >= _HIDDEN_DEPTH or place.depth > 0 or ctx.expired():
             _inside_candidate(ctx, on_f.inside(rows=None, point=None))
         else:   # after the components of the enclosing level, like other candidates
-            ctx.deferred[-1].append(lambda: _inside_curved(ctx, on_f, f, k, None))
+            _after_enclosing(ctx, lambda: _inside_curved(ctx, on_f, f, k, None))
         return
     comp = _component(ctx, place, place.equations + [f_text], numbers,
                       "hypersurface" if not _beyond_chart(ctx, place.equations)
