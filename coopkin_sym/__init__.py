@@ -25,6 +25,7 @@ from coopkin_sym.errors import (
     ConfigurationError,
     CoopkinError,
     InfeasibleMotion,
+    ManipulabilityError,
     ModelError,
 )
 from coopkin_sym.model.configuration import Configuration
@@ -41,6 +42,7 @@ __all__ = [
     "InfeasibleMotion",
     "IrrationalAnalysis",
     "Locus",
+    "ManipulabilityError",
     "Model",
     "ModelError",
     "Motion",

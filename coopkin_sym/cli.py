@@ -56,6 +56,7 @@ from coopkin_sym.present.text import (
     analysis_json,
     analysis_latex,
     analysis_text,
+    irrational_latex,
     irrational_text,
 )
 from coopkin_sym.present.verification import summary_lines, verification_json
@@ -100,7 +101,7 @@ def analyze(
         elif not isinstance(result, IrrationalAnalysis):
             text = analysis_latex(result) if latex else analysis_text(result)
         else:
-            text = irrational_text(result)
+            text = irrational_latex(result) if latex else irrational_text(result)
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
@@ -124,10 +125,14 @@ def draw(
     motion: Annotated[str | None, typer.Option(
         "--motion", help="One motion to draw: coordinated:K (C12, C22), indeterminate:K "
                          "(C11) or redundant:K (C23), K from 1.")] = None,
+    ellipsoid: Annotated[bool, typer.Option(
+        "--ellipsoid", help="Also draw the manipulability ellipsoid of the object's "
+                            "translations at unit joint speed (scale stated in the "
+                            "title).")] = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
     try:
-        path = save_picture(model, output, at=at, motion=motion)
+        path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
     except (*USER_ERRORS, DrawError) as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")

@@ -8,8 +8,8 @@ package's own refusals from bugs catches :class:`CoopkinError`.
 All of them live here, grouped by the layer that raises them: exact numbers and ideals
 (:class:`NumberError`, :class:`GroebnerError`), files and models (:class:`TreeError`,
 :class:`ModelError`, :class:`ConfigurationError`), analyses (:class:`BlockTooLarge`,
-:class:`InfeasibleMotion`, :class:`SweepError`, :class:`NotIrrational`,
-:class:`LocusError`, :class:`CertifyError`, :class:`VerifyError`,
+:class:`InfeasibleMotion`, :class:`ManipulabilityError`, :class:`SweepError`,
+:class:`NotIrrational`, :class:`LocusError`, :class:`CertifyError`, :class:`VerifyError`,
 :class:`TimeLimitReached`) and outputs (:class:`ReportError`, :class:`ReportInputError`,
 :class:`DrawError`, :class:`PlotError`). Each also keeps its historical base
 (``ValueError``), so older ``except ValueError`` code still catches it.
@@ -185,6 +185,20 @@ class InfeasibleMotion(ValueError, CoopkinError):
     Traceback (most recent call last):
     ...
     coopkin_sym.errors.InfeasibleMotion: object twist u is not feasible: ...
+    """
+
+
+class ManipulabilityError(ValueError, CoopkinError):
+    """A manipulability request that cannot be answered: an unknown object motion, a
+    characteristic length that is not a positive exact number or parameter.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> load("paper-case1-hard").analyze().manipulability(["v_w"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ManipulabilityError: controlled: unknown object motion 'v_w' ...
     """
 
 

@@ -74,6 +74,16 @@ def test_latex_output():
     assert r"$N_{m} = 3$" in out
 
 
+def test_latex_and_text_at_an_irrational_angle():
+    out = run_ok("analyze", "paper-case1-hard", "--at", "q1=-pi/6,q2=pi/6", "--latex")
+    assert out.splitlines()[0] == "% paper case 1, hard/hard at q1=-pi/6,q2=pi/6"
+    assert "$N_{i} = 3$" in out and "% blocks not computed" in out
+    text = run_ok("analyze", "paper-case1-hard", "--at", "q1=-pi/6,q2=pi/6")
+    assert text.splitlines()[:2] == ["System: paper case 1, hard/hard",
+                                     "Configuration: q1=-pi/6,q2=pi/6"]
+    assert "Grasp classes: indeterminate (Ni = 3)" in text
+
+
 def test_examples_lists_the_paper_cases():
     out = run_ok("examples")
     assert [line.split()[0] for line in out.splitlines()] == EXAMPLES

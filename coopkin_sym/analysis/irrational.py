@@ -34,6 +34,7 @@ from sympy.polys.numberfields.subfield import primitive_element
 
 from coopkin_sym import limits
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.mobility import numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import NotIrrational
@@ -109,11 +110,13 @@ class IrrationalAnalysis:
     motions: PointMotions | None
     joints: tuple[str, ...]
     object_dim: int = 6
+    system: str = ""
 
     def as_json(self) -> dict:
         """The JSON of ``coopkin analyze`` here, without words (the presentation
         layer adds why the blocks are ``"omitted"`` and the sentences as ``"meaning"``)."""
-        return {"numbers": self.numbers.as_dict(), "blocks": {},
+        return {"numbers": self.numbers.as_dict(), "classes": list(grasp_classes(self.numbers)),
+                "blocks": {},
                 "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
                           "tangents": self.tangents}}
 
@@ -190,7 +193,7 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         at={k: given[k] for k in order_names if k in given}, numbers=numbers,
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
         tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
-        joints=model.joint_names, object_dim=model.object_dim)
+        joints=model.joint_names, object_dim=model.object_dim, system=model.name)
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):

@@ -40,6 +40,7 @@ from functools import cached_property
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
@@ -116,6 +117,19 @@ class Analysis:
         d = decompose(q_rows, model, kin.row_contacts, zctx)
         self._c11, self._c23, self._arm_maps, self._coord_u = d.c11, d.c23, d.arm_maps, d.coord_u
         self.numbers = d.numbers
+
+    @property
+    def classes(self) -> tuple[str, ...]:
+        """The grasp classes of this configuration (see
+        :mod:`coopkin_sym.analysis.classes`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("planar-two-fingers").analyze().classes
+        ('graspable',)
+        """
+        return grasp_classes(self.numbers)
 
     @property
     def coordinated_terms(self) -> int:
@@ -314,6 +328,25 @@ class Analysis:
         out = sp.Matrix(cols).T if cols else sp.zeros(matrix.rows, 0)
         return sp.ImmutableMatrix(out.applyfunc(sp.factor))
 
+    def manipulability(self, controlled: Sequence[str] | None = None, length=1,
+                       point: Sequence | None = None):
+        """The manipulability ellipsoid of the driven object motions (see
+        :mod:`coopkin_sym.analysis.manipulability`): of the components ``controlled``
+        (default: the whole twist), angular velocities scaled by ``length``, ``v`` of
+        the object point ``point`` when given.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> m = load("paper-case1-hard").analyze("L=1").manipulability(["v_x", "v_y"])
+        >>> m.shape
+        Matrix([
+        [1/2, 0],
+        [  0, 0]])
+        """
+        from coopkin_sym.analysis.manipulability import manipulability
+        return manipulability(self, controlled, length, point)
+
     def blocks(self) -> dict[str, sp.Matrix]:
         return {"C11": self.C11, "C12": self.C12, "C22": self.C22, "C23": self.C23}
 
@@ -434,6 +467,7 @@ class Analysis:
             "joints": list(self.model.joint_names),
             "twist": list(self.model.twist_names),
             "numbers": self.numbers.as_dict(),
+            "classes": list(self.classes),
             "blocks": {k: strs(v) if v is not None else None for k, v in blocks.items()},
             "shapes": shapes,
             "coordinated_form": None if omitted else self.coordinated_form,

@@ -881,5 +881,8 @@ def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
             path = example_path(source)
             return _build(_read_tree(path, str(path)), str(path), path.stem)
         shipped = ", ".join(list_examples())
-        raise ModelError([f"no such file (nor a shipped example: {shipped})"], shown)
+        close = difflib.get_close_matches(name, list_examples(), n=1) \
+            if isinstance(source, str) else []
+        hint = f"; did you mean {close[0]}?" if close else ""
+        raise ModelError([f"no such file (nor a shipped example: {shipped}){hint}"], shown)
     return _build(_read_tree(path, shown), shown, path.stem)

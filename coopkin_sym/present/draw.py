@@ -305,7 +305,7 @@ def _perp_basis(axis):
 
 def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
                 motion: str | Sequence | None = None, ax: Axes | None = None,
-                title: str | None = None) -> Figure:
+                title: str | None = None, ellipsoid: bool = False) -> Figure:
     """Draw a system in 3D: arms, joint axes, contacts and normals, the object, the
     ground, and optionally one motion.
 
@@ -323,6 +323,11 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
         A 3D axes to draw into (``projection="3d"``); a new figure otherwise.
     title
         Replaces the first title line (the system's name).
+    ellipsoid
+        Also draw the manipulability ellipsoid of the object's translations (see
+        :mod:`coopkin_sym.analysis.manipulability`): the velocities of the object's
+        reference point that unit joint speed gives, modulo the indeterminate motions;
+        an ellipse in the plane for a planar system. Its scale is stated.
 
     Returns
     -------
@@ -352,14 +357,14 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
         raise DrawError("ax: a 3D axes is needed (add_subplot(projection='3d'))")
     fig = ax.figure
     try:
-        return _draw_into(fig, ax, a, request, title)
+        return _draw_into(fig, ax, a, request, title, ellipsoid)
     except (np.linalg.LinAlgError, OverflowError, FloatingPointError,
             ZeroDivisionError) as exc:
         raise DrawError(f"cannot draw this configuration ({type(exc).__name__}: "
                         f"{' '.join(str(exc).split())[:80]})") from None
 
 
-def _draw_into(fig, ax, a: Analysis, request, title: str | None):
+def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool = False):
     values = _Values(a)
     scene = _Scene(a, values)
     legend: list = []
@@ -370,6 +375,9 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None):
     motion_line = ""
     if request is not None:
         motion_line = _draw_motion(ax, a, scene, values, request, legend)
+    if ellipsoid:
+        line = _draw_ellipsoid(ax, a, scene, values, legend)
+        motion_line = f"{motion_line}\n{line}" if motion_line else line
     _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
     where = a.configuration.at_text() or "home (all joints at 0)"
@@ -390,6 +398,46 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None):
     ax.legend(handles=unique, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
               frameon=False)
     return fig
+
+
+def _draw_ellipsoid(ax, a: Analysis, scene: _Scene, values: _Values, legend: list) -> str:
+    """The manipulability ellipsoid of the translations, at the centre of the contacts,
+    scaled to the picture; returns the title line that states the scale."""
+    from matplotlib.lines import Line2D
+
+    names = tuple(n for n in a.model.twist_names if n.startswith("v"))
+    kin = a.kinematics
+    # the velocity of the centre of the contacts, exact at the drawing values
+    centre = [sum((values.exact(p[i]) for p in kin.points), sp.Integer(0)) / len(kin.points)
+              for i in range(3)]
+    m = a.manipulability(names, point=centre)
+    shape = np.array([[float(x) for x in values.vector(m.shape.row(i))]  # float-ok: plot
+                      for i in range(m.shape.rows)])
+    lengths, directions = np.linalg.eigh(shape)  # float-ok: plot
+    semi = np.sqrt(np.clip(lengths, 0.0, None))  # float-ok: plot
+    center = np.array([float(x) for x in centre])  # float-ok: plot
+    if float(semi.max()) <= 0:  # float-ok: exact rank 0 says the same
+        return "manipulability ellipsoid: a point (no translation is driven)"
+    scale = 0.35 * scene.size / float(semi.max())  # float-ok: plot
+    color = "tab:purple"
+    if len(names) == 2:
+        phi = np.linspace(0, 2 * np.pi, 120)  # float-ok: plot
+        ring = directions @ (semi[:, None] * np.vstack([np.cos(phi), np.sin(phi)]))
+        ax.plot(center[0] + scale * ring[0], center[1] + scale * ring[1],
+                np.full_like(phi, center[2]), color=color, linewidth=1.8)
+    else:
+        u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 28),  # float-ok: plot
+                           np.linspace(0, np.pi, 14))  # float-ok: plot
+        sphere = np.stack([np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v)])
+        shell = np.einsum("ij,jkl->ikl", directions * semi, sphere)  # float-ok: plot
+        ax.plot_wireframe(center[0] + scale * shell[0], center[1] + scale * shell[1],
+                          center[2] + scale * shell[2], color=color, linewidth=0.5,
+                          alpha=0.6)
+    legend.append(Line2D([], [], color=color, label="manipulability ellipsoid"))
+    axes = ", ".join(f"{x:.3g}" for x in sorted(semi, reverse=True))  # float-ok: plot
+    kind = "ellipse" if len(names) == 2 else "ellipsoid"
+    return (f"manipulability {kind}: velocity of the contacts' centre at unit joint "
+            f"speed, semi-axes {axes} (rank {m.rank}), drawn x{scale:.3g}")
 
 
 def _frame(ax, scene: _Scene, planar: bool) -> None:
@@ -755,7 +803,7 @@ def _draw_rates(ax, a: Analysis, scene: _Scene, rates: list[sp.Rational],
 
 def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
                  at: str | Mapping | None = None, motion: str | Sequence | None = None,
-                 title: str | None = None, dpi: int = 150) -> Path:
+                 title: str | None = None, dpi: int = 150, ellipsoid: bool = False) -> Path:
     """Draw (see :func:`draw_system`) and write the picture to ``path``.
 
     The format follows the suffix (``.png``, ``.pdf``, ``.svg``). The file is written
@@ -771,7 +819,8 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     b'\\x89PNG'
     """
     target, suffix = check_output_path(path, SAVE_FORMATS, DrawError, "picture")
-    fig = draw_system(analysis_or_system, at=at, motion=motion, title=title)
+    fig = draw_system(analysis_or_system, at=at, motion=motion, title=title,
+                      ellipsoid=ellipsoid)
 
     def save(tmp: str) -> None:
         fig.savefig(tmp, dpi=dpi, format=suffix[1:])

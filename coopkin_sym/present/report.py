@@ -38,10 +38,12 @@ from typing import Any
 
 import sympy as sp
 
+from coopkin_sym.analysis.classes import CLASS_NUMBERS, grasp_classes
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.draw import draw_system
 from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
@@ -328,6 +330,10 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     else:
         numbers.append(_t(": as generic"))
     items.append(numbers)
+    if _has_classes(c.numbers) and _has_classes(locus.generic):
+        held = ", ".join(grasp_classes(c.numbers)) or "none"
+        items.append([("strong", "Grasp classes:"), _t(f" {held} "
+                      f"({class_changes_text(c.numbers, locus.generic)})")])
     if c.drops:
         items.append([("strong", "Rank drops in:"), _t(" "), _t(", ".join(c.drops))])
     if c.witness:
@@ -540,6 +546,8 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
                   [_t("Completeness: "), ("strong", said), _t(".")], css="summary"))
     out.append(_H(2, "Generic numbers", "generic"))
     out.append(_generic_table(locus))
+    if _has_classes(locus.generic):
+        out.append(_P([_t(classes_text(locus.generic) + ".")]))
     out.append(_H(2, "Components", "components"))
     if locus.components:
         out.append(_P([_t("Numbers that differ from the generic ones are in bold. "
@@ -919,6 +927,12 @@ def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = Non
 # ------------------------------------------------------------------ JSON
 
 
+def _has_classes(numbers: Mapping) -> bool:
+    """Whether ``numbers`` holds every number the grasp classes come from (a report
+    read back may hold fewer)."""
+    return all(isinstance(numbers.get(n), int) for n in CLASS_NUMBERS.values())
+
+
 def _with_meaning(data: dict, component: Component) -> dict:
     """A component's JSON with its sentences as ``"meaning"``, after ``"changes"``, and
     how its numbers were decided in words."""
@@ -928,6 +942,8 @@ def _with_meaning(data: dict, component: Component) -> dict:
         if key == "changes":
             out["meaning"] = component_sentences(component)
     out["decided"] = remark_text(component.decided)
+    if _has_classes(component.numbers):
+        out["classes"] = list(grasp_classes(component.numbers))
     return out
 
 
@@ -950,6 +966,8 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
         data[key] = remark_texts(getattr(locus, key))
     data["components"] = [_with_meaning(d, c)
                           for d, c in zip(data["components"], locus.components, strict=True)]
+    if _has_classes(locus.generic):
+        data["generic_classes"] = list(grasp_classes(locus.generic))
     if verification is not None:
         data["verification"] = dict(verification)
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"

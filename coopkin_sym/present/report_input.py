@@ -156,14 +156,17 @@ def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str
     return create_model(name, __base__=_In, **fields)
 
 
-# a report states what changes on a component in words ("meaning"); the computed
-# component keeps the exact data instead ("shown"), which a report does not carry
+# a report states what changes on a component in words ("meaning") and its grasp
+# classes ("classes", derived from its numbers: read, then recomputed when needed); the
+# computed component keeps the exact data instead ("shown"), which a report does not carry
 _ComponentIn = _model_of(Component, _COMPONENT_TYPES,
-                         {"meaning": (list[StrictStr], Field(default_factory=list))},
+                         {"meaning": (list[StrictStr], Field(default_factory=list)),
+                          "classes": (list[StrictStr], Field(default_factory=list))},
                          "_ComponentIn", skip=("shown", "stated_meaning", "polynomials",
                                                "outside_polynomials"))
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
                      {"float_summary": (dict[StrictStr, StrictInt] | None, None),
+                      "generic_classes": (list[StrictStr], Field(default_factory=list)),
                       "completeness": (StrictStr | None, None)},
                      "_LocusIn")
 

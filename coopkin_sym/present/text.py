@@ -17,6 +17,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
 __all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
@@ -51,6 +52,7 @@ def analysis_text(a: Analysis) -> str:
     n = a.numbers
     lines.append("")
     lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
+    lines.append(classes_text(n))
     lines.append("")
     for s in sentences(a):
         lines.append(f"- {s}")
@@ -144,6 +146,7 @@ def analysis_latex(a: Analysis) -> str:
     head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
     out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
+    out.append(r"% " + classes_text(a.numbers))
     blocks, omitted = a.available_blocks()
     for name, mat in blocks.items():
         if mat is None:
@@ -162,19 +165,41 @@ def irrational_text(result: IrrationalAnalysis) -> str:
     -------
     >>> from coopkin_sym import load
     >>> a = load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")
-    >>> print(irrational_text(a).splitlines()[0])
+    >>> print(irrational_text(a).splitlines()[1])
     Configuration: q1=-pi/6,q2=pi/6
     """
     at = ",".join(f"{k}={v}" for k, v in result.at.items())
     tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
-    lines = [f"Configuration: {at}",
+    lines = [f"System: {result.system}", f"Configuration: {at}",
              f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
              f"of {result.minimal_polynomial} (every conjugate point at once)", "",
-             "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()), ""]
+             "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()),
+             classes_text(result.numbers), ""]
     lines += [f"- {s}" for s in irrational_sentences(result)]
     lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
                   "(the numbers are exact; use a rational configuration for C11..C23)."]
     return "\n".join(lines)
+
+
+def irrational_latex(result: IrrationalAnalysis) -> str:
+    """The numbers at a configuration with irrational coordinates as LaTeX (the blocks
+    are not computed there, and a comment says so).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> lines = irrational_latex(load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6"))
+    >>> print("\\n".join(lines.splitlines()[:2]))
+    % paper case 1, hard/hard at q1=-pi/6,q2=pi/6
+    $N_{m} = 3$, $N_{c} = 3$, $N_{i} = 3$, $N_{r} = 0$, $N_{g} = 3$, $N_{d} = 4$, $N_{h} = 1$
+    """
+    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    head = f"{result.system} at {at}"
+    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
+    out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in result.numbers.as_dict().items()))
+    out.append(r"% " + classes_text(result.numbers))
+    out.append("% blocks not computed at a configuration with irrational coordinates")
+    return "\n".join(out)
 
 
 def analysis_json(result: Analysis | IrrationalAnalysis) -> str:

@@ -563,6 +563,14 @@ def test_unknown_example_name():
     assert "paper-case1-hard" in err.problems[0]
 
 
+def test_a_misspelled_example_gets_the_closest_name():
+    assert problems_of("paper-case1-hrd").problems[0].endswith(
+        "; did you mean paper-case1-hard?")
+    assert problems_of("planar-two-finger").problems[0].endswith(
+        "; did you mean planar-two-fingers?")
+    assert "did you mean" not in problems_of("zzzz").problems[0]
+
+
 def test_file_problems_are_prefixed_with_the_file(tmp_path):
     tree = case1()
     tree["contacts"][1]["normal"] = [0, 0, 2]

@@ -263,6 +263,14 @@ def test_cli_draw_writes_the_picture(tmp_path):
     assert out.read_bytes()[:8] == PNG_SIGNATURE
 
 
+def test_cli_draw_ellipsoid(tmp_path):
+    out = tmp_path / "ellipse.png"
+    result = runner.invoke(app, ["draw", "planar-two-fingers", "--ellipsoid", "--at",
+                                 "q2=-2*atan(1/2),q4=2*atan(1/2)", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes()[:8] == PNG_SIGNATURE
+
+
 @pytest.mark.parametrize("args, message", [
     (["paper-case1-hard", "--motion", "indeterminate:2"],
      "coopkin: error: motion: there is no indeterminate motion 2: this system has 1 "

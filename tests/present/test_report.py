@@ -136,12 +136,14 @@ def test_markdown_generic_numbers_and_components_table():
 def test_markdown_component_details():
     lines = render_markdown(hand_made()).splitlines()
     i = lines.index("### Component #1: q1 = q2 = -pi/2")
-    assert lines[i + 2:i + 10] == [
+    assert lines[i + 2:i + 11] == [
         "- **Equations:** `t_q1 + 1 = 0`, `t_q2 + 1 = 0`",
         "- **In angles:** `q1 = q2 = -pi/2`",
         "- **Kind:** isolated point (depth 0); real points",
         "- **Numbers:** (3, 3, 1, 0, 1, 4, 1) for (Nm, Nc, Ni, Nr, Ng, Nd, Nh): "
         "Nm 2 \u2192 3, Nc 2 \u2192 3, Nh 0 \u2192 1; the others as generic",
+        "- **Grasp classes:** indeterminate, graspable, defective, hyperstatic (becomes "
+        "hyperstatic)",
         "- **Rank drops in:** Q",
         "- **Witness:** `q1=-pi/2,q2=-pi/2`; a direct exact analysis there gives the "
         "same numbers",

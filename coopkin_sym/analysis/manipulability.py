@@ -1,0 +1,187 @@
+"""Kinematic manipulability, exactly: which object velocities unit joint velocities
+produce, as an ellipsoid (Bicchi, Melchiorri and Balluchi, "On the mobility and
+manipulability of general multiple limb robots", IEEE T-RA 1995, after Yoshikawa's
+ellipsoid of one arm).
+
+The joint velocities that keep every contact are ``qdot = C22 x + C23 y``; they move
+the object by ``u = C12 x + C11 z`` (``z``, the indeterminate motions, is not driven
+by the joints: the object motion is known modulo ``C11``, and the ellipsoid is of its
+part orthogonal to ``C11`` in the weighted metric below, a choice that does not depend
+on the basis). The least
+joint speed that gives the coordinated motion ``x`` removes the redundant part::
+
+    min_y |C22 x + C23 y|^2 = x^T A x,   A = C22^T C22 - C22^T C23 (C23^T C23)^-1 C23^T C22
+
+(the Schur complement of ``C23^T C23`` in the Gram matrix of ``[C23, C22]``; ``A`` is
+positive definite because the coordinated columns meet ``N(Q)`` only in 0). The
+object velocities reached with ``|qdot| <= 1`` are the ellipsoid
+``{C12 x : x^T A x <= 1}``. Of a chosen set of object-velocity components ``S u``
+(``controlled``), weighted so that angular velocities count in length units (``w``
+times a characteristic ``length``, so that linear and angular parts are not mixed
+blindly), the ellipsoid is ``{y : y^T E^+ y <= 1}`` on the range of
+
+    E = S P W C12 A^-1 C12^T W P^T S^T    (W = diag(1, 1, 1, length, length, length),
+                                          P: projector along W C11),
+
+the analogue of ``J J^T`` for one arm: its eigenvalues are the squared semi-axes,
+``det E`` the squared manipulability index, exact (rational functions of the free
+joint variables and parameters, or rationals at a point). ``E`` loses rank where some
+controlled direction cannot be driven any more: the numerator of ``det E``, factored,
+is its degeneracy locus in the chosen directions.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> m = load("paper-case1-soft").analyze("L=2").manipulability()
+>>> m.shape[0, 0], m.rank
+(2, 1)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.polys.matrices import DomainMatrix
+
+from coopkin_sym.analysis.kinematics import PLANAR_COLUMNS, spatial_twist
+from coopkin_sym.errors import ManipulabilityError
+from coopkin_sym.exact.parse import NumberError, exact_expr
+
+
+@dataclass(frozen=True)
+class Manipulability:
+    """The manipulability ellipsoid of the controlled object velocities.
+
+    Attributes
+    ----------
+    controlled
+        The object-velocity components the ellipsoid is of (names of the model's
+        twist, e.g. ``("v_x", "v_y", "v_z")``).
+    length
+        The characteristic length angular velocities are scaled by (exact).
+    form
+        ``A`` (k x k, k = Nc - Ni): the least squared joint speed of each coordinated
+        motion ``x`` is ``x^T A x``.
+    shape
+        ``E`` (one row and column per controlled component): the ellipsoid is
+        ``{y : y^T E^+ y <= 1}`` on the range of ``E``; exact.
+    index
+        ``det E``, the squared manipulability index (0 when ``E`` loses rank).
+    rank
+        The rank of ``E``: how many controlled directions the joints drive (generic
+        rank for symbolic entries).
+    degeneracy
+        The factors of the numerator of ``det E`` that involve the free variables
+        (``det E = 0`` on their zero sets); empty at a point or when ``E`` is singular
+        everywhere.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> m = load("planar-two-fingers").analyze("L=1").manipulability(length=1)
+    >>> m.controlled, m.rank
+    (('v_x', 'v_y', 'w_z'), 3)
+    """
+
+    controlled: tuple[str, ...]
+    length: sp.Expr
+    form: sp.Matrix
+    shape: sp.Matrix
+    index: sp.Expr
+    rank: int
+    degeneracy: tuple[sp.Expr, ...]
+
+def manipulability(analysis, controlled: Sequence[str] | None = None,
+                   length=1, point: Sequence | None = None) -> Manipulability:
+    """The manipulability ellipsoid of ``analysis`` for the object-velocity components
+    ``controlled`` (default: all of the model's twist), angular parts scaled by
+    ``length`` (a positive exact number or a parameter of the model, e.g. ``"L"``).
+    With ``point`` (exact base coordinates), ``v`` is the velocity of that point of
+    the object, in base axes; else the twist is as the analysis writes it (its object
+    frame).
+
+    Raises
+    ------
+    ManipulabilityError
+        An unknown component name, or a length that is not positive and exact.
+    """
+    names = analysis.model.twist_names
+    if isinstance(controlled, str):
+        controlled = ()
+    controlled = tuple(names if controlled is None else controlled)
+    if not controlled:
+        raise ManipulabilityError("controlled: expected a non-empty list of object "
+                                  f"motions from {', '.join(names)}")
+    for c in controlled:
+        if c not in names:
+            raise ManipulabilityError(f"controlled: unknown object motion {c!r} (the "
+                                      f"object twist has {', '.join(names)})")
+    if len(set(controlled)) != len(controlled):
+        raise ManipulabilityError("controlled: a motion is named twice")
+    symbols = {p.name: p for p in analysis.model.parameters}
+    try:
+        ell = exact_expr(length, symbols, "length")
+    except NumberError as exc:
+        raise ManipulabilityError(str(exc)) from None
+    if ell.is_positive is not True:
+        raise ManipulabilityError(f"length: expected a positive length (a number or a "
+                                  f"parameter such as L), got {sp.sstr(ell)}")
+    c12, c22, c23, c11 = analysis.C12, analysis.C22, analysis.C23, analysis.C11
+    if point is not None:
+        c12, c11 = (_at_point(analysis, c, point) for c in (c12, c11))
+    gram = c22.T * c22
+    if c23.cols:
+        cross = c23.T * c22
+        gram = gram - cross.T * (c23.T * c23).inv() * cross
+    form = sp.ImmutableMatrix(gram.applyfunc(sp.cancel))
+    weight = sp.diag(*[sp.Integer(1) if n.startswith("v") else ell for n in names])
+    driven = weight * c12
+    if c11.cols and driven.cols:
+        # modulo the indeterminate motions: the part W-orthogonal to W C11
+        free = weight * c11
+        driven = driven - free * (free.T * free).inv() * (free.T * driven)
+    rows = [names.index(c) for c in controlled]
+    driven = driven.extract(rows, list(range(driven.cols))).applyfunc(sp.cancel) \
+        if driven.cols else sp.zeros(len(rows), 0)
+    if driven.cols:
+        shape = driven * form.inv() * driven.T
+    else:
+        shape = sp.zeros(len(rows), len(rows))
+    shape = sp.ImmutableMatrix(shape.applyfunc(sp.cancel))
+    index = sp.factor(sp.cancel(shape.det())) if shape.rows else sp.Integer(1)
+    # A is positive definite, so E has the rank of the driven rows (exact, over the
+    # field of rational functions of the symbols)
+    rank = DomainMatrix.from_Matrix(sp.Matrix(driven)).rank() if driven.cols else 0
+    return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+
+
+def _at_point(analysis, columns: sp.Matrix, point: Sequence) -> sp.Matrix:
+    """Twist columns as ``(velocity of point, w)`` in base axes."""
+    p = sp.Matrix([exact_expr(x, {s.name: s for s in analysis.model.parameters},
+                              f"point[{i}]") for i, x in enumerate(point)])
+    if p.rows != 3:
+        raise ManipulabilityError(f"point: expected three coordinates, got {p.rows}")
+    out = []
+    for k in range(columns.cols):
+        u = spatial_twist(analysis.twist_in_base(columns.col(k)))
+        v = sp.Matrix(u[:3]) + sp.Matrix(u[3:]).cross(p)
+        moved = [*v, *u[3:]]
+        out.append([sp.expand(moved[c]) for c in (PLANAR_COLUMNS if analysis.model.planar
+                                                  else range(6))])
+    return sp.Matrix(out).T if out else columns
+
+
+def _degeneracy(index: sp.Expr) -> tuple[sp.Expr, ...]:
+    """The factors of the numerator of ``det E`` that may vanish."""
+    num, _ = sp.fraction(sp.cancel(index))
+    if num == 0 or not num.free_symbols:
+        return ()
+    _, factors = sp.factor_list(num)
+    # a positive parameter alone (L) never vanishes
+    return tuple(f for f, _ in factors if f.free_symbols
+                 and not (f.is_Symbol and f.is_positive))
+
+
+__all__ = ["Manipulability", "manipulability"]
