@@ -329,7 +329,7 @@ def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
         assert sp.simplify(sp.radsimp(expr)) == 0
 
 
-@pytest.mark.slow  # 15 to 45 s: left out of the quick suite (-m 'not slow')
+@pytest.mark.slow  # about 2.5 min: left out of the quick suite (-m 'not slow')
 def test_irrational_witnesses_reanalyzed_from_their_text():
     """Each algebraic witness, read back from its --at text by the independent
     number-field path (fresh kinematics, a primitive element), has the reported
@@ -353,7 +353,7 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
         assert checked >= 1
 
 
-@pytest.mark.slow  # 15 to 45 s: left out of the quick suite (-m 'not slow')
+@pytest.mark.slow  # about 2.5 min: left out of the quick suite (-m 'not slow')
 def test_case2_all_eight_joints_hand_checked():
     """Paper case 2, every joint free (one level of recursion).
 
