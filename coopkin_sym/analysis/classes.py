@@ -46,7 +46,14 @@ CLASS_NUMBERS: dict[str, str] = {"redundant": "Nr", "indeterminate": "Ni",
                                  "graspable": "Ng", "defective": "Nd", "hyperstatic": "Nh"}
 
 
-def _get(numbers: Numbers | Mapping[str, int], name: str) -> int:
+def number_of(numbers: Numbers | Mapping[str, int], name: str) -> int:
+    """One number, from :class:`Numbers` or a mapping of them.
+
+    Example
+    -------
+    >>> number_of({"Nr": 2}, "Nr")
+    2
+    """
     return numbers[name] if isinstance(numbers, Mapping) else getattr(numbers, name)
 
 
@@ -58,7 +65,7 @@ def grasp_classes(numbers: Numbers | Mapping[str, int]) -> tuple[str, ...]:
     >>> grasp_classes({"Nm": 3, "Nc": 3, "Ni": 0, "Nr": 0, "Ng": 1, "Nd": 0, "Nh": 0})
     ('graspable',)
     """
-    return tuple(c for c in GRASP_CLASSES if _get(numbers, CLASS_NUMBERS[c]) > 0)
+    return tuple(c for c in GRASP_CLASSES if number_of(numbers, CLASS_NUMBERS[c]) > 0)
 
 
 def class_changes(numbers: Numbers | Mapping[str, int], generic: Numbers | Mapping[str, int]
@@ -76,4 +83,4 @@ def class_changes(numbers: Numbers | Mapping[str, int], generic: Numbers | Mappi
     return {c: c in here for c in GRASP_CLASSES if (c in here) != (c in there)}
 
 
-__all__ = ["CLASS_NUMBERS", "GRASP_CLASSES", "class_changes", "grasp_classes"]
+__all__ = ["CLASS_NUMBERS", "GRASP_CLASSES", "class_changes", "grasp_classes", "number_of"]

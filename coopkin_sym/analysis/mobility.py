@@ -41,6 +41,7 @@ import sympy as sp
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
+from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
@@ -344,7 +345,6 @@ class Analysis:
         [1/2, 0],
         [  0, 0]])
         """
-        from coopkin_sym.analysis.manipulability import manipulability
         return manipulability(self, controlled, length, point)
 
     def blocks(self) -> dict[str, sp.Matrix]:

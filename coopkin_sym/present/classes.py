@@ -11,12 +11,13 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from coopkin_sym.analysis.classes import CLASS_NUMBERS, class_changes, grasp_classes
+from coopkin_sym.analysis.classes import (
+    CLASS_NUMBERS,
+    class_changes,
+    grasp_classes,
+    number_of,
+)
 from coopkin_sym.analysis.numbers import Numbers
-
-
-def _value(numbers, name: str) -> int:
-    return numbers[name] if isinstance(numbers, Mapping) else getattr(numbers, name)
 
 
 def classes_text(numbers: Numbers | Mapping[str, int]) -> str:
@@ -32,7 +33,7 @@ def classes_text(numbers: Numbers | Mapping[str, int]) -> str:
         return ("Grasp classes: none (not redundant, indeterminate, graspable, defective "
                 "or hyperstatic)")
     return "Grasp classes: " + ", ".join(
-        f"{c} ({CLASS_NUMBERS[c]} = {_value(numbers, CLASS_NUMBERS[c])})" for c in held)
+        f"{c} ({CLASS_NUMBERS[c]} = {number_of(numbers, CLASS_NUMBERS[c])})" for c in held)
 
 
 def class_changes_text(numbers: Numbers | Mapping[str, int],

@@ -134,6 +134,11 @@ def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:
             for i, row in enumerate(cells)]
 
 
+def _latex_comment(text: str) -> str:
+    """``text`` as one LaTeX comment line (control characters cannot end it)."""
+    return r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", text).split())
+
+
 def analysis_latex(a: Analysis) -> str:
     """The numbers and blocks of an analysis as LaTeX.
 
@@ -144,7 +149,7 @@ def analysis_latex(a: Analysis) -> str:
     $N_{m} = 2$, $N_{c} = 2$, $N_{i} = 1$, $N_{r} = 0$, $N_{g} = 1$, $N_{d} = 4$, $N_{h} = 0$
     """
     head = f"{a.model.name} at {a.configuration.at_text() or 'home'}"
-    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
+    out = [_latex_comment(head)]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
     out.append(r"% " + classes_text(a.numbers))
     blocks, omitted = a.available_blocks()
@@ -195,7 +200,7 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
     """
     at = ",".join(f"{k}={v}" for k, v in result.at.items())
     head = f"{result.system} at {at}"
-    out = [r"% " + " ".join(re.sub(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]", " ", head).split())]
+    out = [_latex_comment(head)]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in result.numbers.as_dict().items()))
     out.append(r"% " + classes_text(result.numbers))
     out.append("% blocks not computed at a configuration with irrational coordinates")
