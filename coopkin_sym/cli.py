@@ -241,13 +241,20 @@ def locus(
                 else None
             result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                                    progress=show, free=free_joints, pi_size=pi_size)
+        locked = system.model.with_actuators_locked() if result.locked else None
         if certify:
             result.certificate = certificate_json(certify_locus(system, result,
                                                                 budget=certify_timeout))
+            if result.locked is not None:
+                result.locked.certificate = certificate_json(certify_locus(
+                    locked, result.locked, budget=certify_timeout))
         checked = _verification(system, result) if verify else None
-        written = write_report(result, output, system, pairs=pairs,
-                               verification=verification_json(checked) if checked
-                               else None)
+        checked_locked = (_verification(locked, result.locked)
+                          if verify and result.locked is not None else None)
+        shown = verification_json(checked) if checked else None
+        if shown is not None and checked_locked is not None:
+            shown["locked"] = verification_json(checked_locked)
+        written = write_report(result, output, system, pairs=pairs, verification=shown)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)
@@ -255,7 +262,14 @@ def locus(
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
     typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
                f"{result.completeness()}; wrote " + ", ".join(str(p) for p in written))
+    if result.locked is not None:
+        lk = result.locked
+        typer.echo(f"with the motors held still (where the passive-joint numbers change): "
+                   f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
+                   f"; {lk.completeness()}")
     if checked is not None:
+        if checked_locked is not None:
+            _echo_locked(checked_locked, checked)
         _echo_verification(checked)
 
 
@@ -264,6 +278,16 @@ def _verification(system, locus, **options):
         return verify_locus(system, locus, **options)
     except VerifyError as exc:
         _fail(str(exc))
+
+
+def _echo_locked(locked, checked) -> None:
+    """The verification of the locked system's locus (where the passive-joint numbers
+    change), indented; on failure the main one too, then exit 1."""
+    typer.echo("\n".join(["with the motors held still:"]
+                          + ["  " + x for x in summary_lines(locked)]))
+    if not locked.ok:
+        typer.echo("\n".join(summary_lines(checked)))
+        raise typer.Exit(1)
 
 
 def _echo_verification(checked) -> None:
@@ -302,11 +326,20 @@ def verify_report(
     except (*USER_ERRORS, ReportError) as exc:
         _fail(str(exc))
     checked = _verification(system, locus, max_points=max_points, lines=lines, seed=seed)
+    locked = None
+    if locus.locked is not None:  # where the passive-joint numbers change
+        locked = _verification(system.model.with_actuators_locked(), locus.locked,
+                               max_points=max_points, lines=lines, seed=seed)
     if as_json:
-        typer.echo(json.dumps(verification_json(checked), indent=2))
-        if not checked.ok:
+        data = verification_json(checked)
+        if locked is not None:
+            data["locked"] = verification_json(locked)
+        typer.echo(json.dumps(data, indent=2))
+        if not checked.ok or (locked is not None and not locked.ok):
             raise typer.Exit(1)
         return
+    if locked is not None:
+        _echo_locked(locked, checked)
     _echo_verification(checked)
 
 

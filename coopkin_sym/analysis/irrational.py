@@ -37,6 +37,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.mobility import numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.analysis.passive import PassiveNumbers, passive_numbers
 from coopkin_sym.errors import NotIrrational
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
@@ -92,7 +93,9 @@ class IrrationalAnalysis:
     ``alpha`` generates the number field of the configuration, a root of
     ``minimal_polynomial``; ``tangents`` gives each irrational ``tan(q/2)`` exactly;
     ``motions`` holds the exact motions behind ``Ni`` and ``Nr`` for a quadratic field
-    (None for a field of higher degree); ``joints`` names the joints.
+    (None for a field of higher degree); ``joints`` names the joints; ``passive`` has
+    the passive-joint numbers (:mod:`coopkin_sym.analysis.passive`) of a model with
+    passive joints, else None.
 
     Example
     -------
@@ -111,6 +114,7 @@ class IrrationalAnalysis:
     joints: tuple[str, ...]
     object_dim: int = 6
     system: str = ""
+    passive: PassiveNumbers | None = None
 
     def as_json(self) -> dict:
         """The JSON of ``coopkin analyze`` here, without words (the presentation
@@ -118,7 +122,8 @@ class IrrationalAnalysis:
         return {"numbers": self.numbers.as_dict(), "classes": list(grasp_classes(self.numbers)),
                 "blocks": {},
                 "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
-                          "tangents": self.tangents}}
+                          "tangents": self.tangents},
+                **({"passive": {"numbers": self.passive.as_dict()}} if self.passive else {})}
 
 
 def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
@@ -183,6 +188,14 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         rows = substitute_rows(rows, k, -num, kin.ring.zctx.constant(int(den)))
     quotient = Quotient(g, kx)
     numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
+    passive = None
+    if model.passive_joints and not model.locked:
+        dim, zero = model.object_dim, kin.ring.zctx.constant(0)
+        act = {dim + k for k, j in enumerate(model.joints) if j.actuated}
+        locked_rows = [[zero if c in act else e for c, e in enumerate(row)] for row in rows]
+        locked = numbers_modulo(locked_rows, model.with_actuators_locked(), kin.row_contacts,
+                                quotient)
+        passive = passive_numbers(len(act), len(model.joints) - len(act), numbers, locked)
     values = {kin.symbols[tangent_name(n)]: irrational[n] for n in names}
     motions = point_motions(model, numbers, rows, quotient, kin, values,
                             degree=sp.degree(minimal, _ALPHA))
@@ -193,7 +206,8 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         at={k: given[k] for k in order_names if k in given}, numbers=numbers,
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
         tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
-        joints=model.joint_names, object_dim=model.object_dim, system=model.name)
+        joints=model.joint_names, object_dim=model.object_dim, system=model.name,
+        passive=passive)
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):

@@ -212,6 +212,8 @@ class _Builder:
             off = model.joint_offset(c.arm)
             for k, joint in enumerate(model.arms[c.arm].joints[: c.link]):
                 col = off + k
+                if joint.name in model.locked:
+                    continue   # held still: its column stays zero
                 s = axes[col]
                 if joint.type == "prismatic":
                     for a in range(3):

@@ -3,6 +3,13 @@ produce, as an ellipsoid (Bicchi, Melchiorri and Balluchi, "On the mobility and
 manipulability of general multiple limb robots", IEEE T-RA 1995, after Yoshikawa's
 ellipsoid of one arm).
 
+With passive joints (``actuated: false``) only the motors' speeds count: from a
+basis ``[Y; X; .]`` of ``N(Q)`` (``X`` its motor rows), the motions that move no motor
+(``N(X)``) are free, their object part ``Y N(X)`` (the uncontrolled motions of
+:mod:`coopkin_sym.analysis.passive`) takes the place of ``C11`` below, and ``C12``,
+``A`` become ``Y K1`` and ``(X K1)^T X K1`` with ``K1`` a basis of the row space of
+``X``. With every joint actuated this is the formula below.
+
 The joint velocities that keep every contact are ``qdot = C22 x + C23 y``; they move
 the object by ``u = C12 x + C11 z`` (``z``, the indeterminate motions, is not driven
 by the joints: the object motion is known modulo ``C11``, and the ellipsoid is of its
@@ -128,13 +135,16 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     if ell.is_positive is not True:
         raise ManipulabilityError(f"length: expected a positive length (a number or a "
                                   f"parameter such as L), got {sp.sstr(ell)}")
-    c12, c22, c23, c11 = analysis.C12, analysis.C22, analysis.C23, analysis.C11
+    if analysis.model.passive_joints:
+        c12, gram, c11 = _motor_parts(analysis)
+    else:
+        c12, c22, c23, c11 = analysis.C12, analysis.C22, analysis.C23, analysis.C11
+        gram = c22.T * c22
+        if c23.cols:
+            cross = c23.T * c22
+            gram = gram - cross.T * (c23.T * c23).inv() * cross
     if point is not None:
         c12, c11 = (_at_point(analysis, c, point) for c in (c12, c11))
-    gram = c22.T * c22
-    if c23.cols:
-        cross = c23.T * c22
-        gram = gram - cross.T * (c23.T * c23).inv() * cross
     form = sp.ImmutableMatrix(gram.applyfunc(sp.cancel))
     weight = sp.diag(*[sp.Integer(1) if n.startswith("v") else ell for n in names])
     driven = weight * c12
@@ -155,6 +165,26 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     # field of rational functions of the symbols)
     rank = DomainMatrix.from_Matrix(sp.Matrix(driven)).rank() if driven.cols else 0
     return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+
+
+def _motor_parts(analysis) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
+    """With passive joints: object twists ``Y K1``, the form ``A = (X K1)^T X K1`` and
+    the uncontrolled twists ``Y K0``, from a basis ``[Y; X; .]`` of ``N(Q)`` (``X`` its
+    motor rows), ``K0`` a basis of ``N(X)`` and ``K1`` one of the row space of ``X``:
+    motor speed is ``|X K1 x|``, and motions in ``K0`` cost none."""
+    d = analysis.dim
+    c = sp.Matrix(analysis.C)
+    motors = [d + k for k, j in enumerate(analysis.model.joints) if j.actuated]
+    y, x = c[:d, :], c.extract(motors, list(range(c.cols)))
+    if not x.rows or not c.cols:
+        return sp.zeros(d, 0), sp.zeros(0, 0), y
+    xt = DomainMatrix.from_Matrix(x.T)
+    _, pivots = xt.rref()
+    k1 = x.T.extract(list(range(c.cols)), list(pivots))
+    k0 = DomainMatrix.from_Matrix(x).nullspace().to_Matrix().T \
+        if len(pivots) < c.cols else sp.zeros(c.cols, 0)
+    drive = (x * k1).applyfunc(sp.cancel)
+    return (y * k1).applyfunc(sp.cancel), drive.T * drive, (y * k0).applyfunc(sp.cancel)
 
 
 def _at_point(analysis, columns: sp.Matrix, point: Sequence) -> sp.Matrix:

@@ -43,6 +43,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
+from coopkin_sym.analysis.passive import PassiveAnalysis, passive_analysis
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name
@@ -118,6 +119,26 @@ class Analysis:
         d = decompose(q_rows, model, kin.row_contacts, zctx)
         self._c11, self._c23, self._arm_maps, self._coord_u = d.c11, d.c23, d.arm_maps, d.coord_u
         self.numbers = d.numbers
+
+    def decompose_rows(self, model: Model, q_rows) -> Decomposition:
+        """The decomposition of other integer-polynomial rows of ``Q`` over this
+        analysis' ring, contacts and rows (used for the locked system of
+        :attr:`passive`)."""
+        return decompose(q_rows, model, self.kinematics.row_contacts, self.ring.zctx)
+
+    @cached_property
+    def passive(self) -> PassiveAnalysis:
+        """What the motors control and what the passive joints leave free (see
+        :mod:`coopkin_sym.analysis.passive`); with every joint actuated, the paper's
+        subspaces again (``Nuo = Ni``, ``Npi = 0``).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("five-bar").analyze("L=1").passive.numbers.Nco
+        2
+        """
+        return passive_analysis(self)
 
     @property
     def classes(self) -> tuple[str, ...]:
@@ -477,6 +498,13 @@ class Analysis:
         }
         if omitted:
             out["omitted"] = omitted
+        if self.model.passive_joints:
+            p = self.passive
+            out["passive"] = {
+                "actuated": list(p.actuated), "passive": list(p.passive),
+                "numbers": p.numbers.as_dict(),
+                **{k: strs(getattr(p, k)) for k in ("controlled", "uncontrolled",
+                                                    "internal", "actuated_redundant")}}
         return out
 
     def available_blocks(self) -> tuple[dict[str, sp.Matrix | None], dict[str, str]]:

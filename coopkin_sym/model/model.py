@@ -80,6 +80,7 @@ class Joint:
     type: JointType
     axis: Vector
     point: Vector | None
+    actuated: bool = True
 
 
 @dataclass(frozen=True)
@@ -135,6 +136,9 @@ class Model:
     in (a rotation whose columns are those axes), or None for the base origin and axes.
     ``snapped`` lists the floats of URDF files replaced by exact values. A ``planar``
     system moves in the base's xy-plane: its object twists are ``(v_x, v_y, w_z)``.
+    ``locked`` names joints held still: they keep their angle or displacement (a
+    configuration variable) but have no velocity (their columns of ``D`` are zero);
+    see :meth:`with_actuators_locked`.
 
     Example
     -------
@@ -151,6 +155,7 @@ class Model:
     object_frame: Frame | None = None
     snapped: tuple[Snapped, ...] = ()
     planar: bool = False
+    locked: frozenset[str] = frozenset()
 
     @property
     def object_dim(self) -> int:
@@ -193,6 +198,29 @@ class Model:
     @property
     def joint_names(self) -> tuple[str, ...]:
         return tuple(j.name for j in self.joints)
+
+    @property
+    def passive_joints(self) -> tuple[str, ...]:
+        """The joints without a motor (``actuated: false``), in file order.
+
+        Example
+        -------
+        >>> load_model("five-bar").passive_joints
+        ('q2', 'q4')
+        """
+        return tuple(j.name for j in self.joints if not j.actuated)
+
+    def with_actuators_locked(self) -> Model:
+        """The same system with every actuated joint held still (``locked``): what
+        moves then are the passive joints and the object. Its numbers give the
+        motions the passive joints leave free (:mod:`coopkin_sym.analysis.passive`).
+
+        Example
+        -------
+        >>> load_model("five-bar").with_actuators_locked().locked == {"q1", "q3"}
+        True
+        """
+        return replace(self, locked=frozenset(j.name for j in self.joints if j.actuated))
 
     def joint_offset(self, arm: int) -> int:
         """Index in :attr:`joints` of the first joint of arm ``arm``."""
@@ -239,11 +267,13 @@ class _ArmIn(_Entry):
     tip: StrictStr | None = None
     prefix: StrictStr | None = None
     snap: Any = None
+    passive: list[StrictStr] | None = None
 
 
 class _DHRowIn(_Entry):
     name: StrictStr
     type: StrictStr
+    actuated: StrictBool = True
     theta: Any = 0
     d: Any = 0
     a: Any = 0
@@ -260,6 +290,7 @@ class _JointIn(_Entry):
     type: StrictStr
     axis: list[Any]
     point: list[Any] | None = None
+    actuated: StrictBool = True
 
 
 class _ContactIn(_Entry):
@@ -447,6 +478,10 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
             if getattr(arm, key) is not None:
                 problems.append(f"{apath}.{key}: only an arm read from a URDF file (urdf) "
                                 f"has a {key}")
+        if arm.passive is not None:
+            problems.append(f"{apath}.passive: only an arm read from a URDF file lists "
+                            f"its passive joints; mark a joint or a DH row with "
+                            f"actuated: false")
         if arm.dh is not None:
             built = _dh_arm(arm, apath, parameters, names, problems, joint_paths)
             arm_joints.setdefault(arm.name, (i, len(arm.dh)) if built else None)
@@ -589,7 +624,7 @@ def _joint(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Nam
                         f"axis)")
     if len(problems) > before or bad or axis is None:
         return None
-    return Joint(entry.name, jtype, axis, point)  # type: ignore[arg-type]
+    return Joint(entry.name, jtype, axis, point, entry.actuated)  # type: ignore[arg-type]
 
 
 def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names,
@@ -606,6 +641,7 @@ def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names
     if not arm.dh:
         problems.append(f"{path}.dh: at least one row (joint) is needed")
     rows = []
+    passive: set[str] = set()
     for k, raw_row in enumerate(arm.dh):
         rpath = f"{path}.dh[{k}]"
         row, bad = _validate(_DHRowIn, raw_row, rpath, problems)
@@ -624,10 +660,13 @@ def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names
             continue
         rows.append(DHRow(row.name, row.type, theta, d, a, alpha))
         joint_paths[row.name] = rpath
+        if not row.actuated:
+            passive.add(row.name)
     if len(problems) > before or base is None:
         return None
     dh, frames = dh_joints(rows, convention, base)
-    joints = tuple(Joint(j.name, j.type, j.axis, j.point) for j in dh)  # type: ignore[arg-type]
+    joints = tuple(Joint(j.name, j.type, j.axis, j.point,  # type: ignore[arg-type]
+                         j.name not in passive) for j in dh)
     return Arm(arm.name, joints, tuple((sp.ImmutableMatrix(r), p) for r, p in frames))
 
 
@@ -662,11 +701,19 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
         return None
     prefix = arm.prefix or ""
     joints = []
+    passive = set(arm.passive or ())
     for k, j in enumerate(read.joints):
         name = prefix + j.name
         if names.add(name, f"{path}.urdf: joint {k + 1} ({brief(j.name)})", symbol=True):
             joint_paths[name] = f"{path}.urdf"
-        joints.append(Joint(name, j.type, j.axis, j.point))  # type: ignore[arg-type]
+        joints.append(Joint(name, j.type, j.axis, j.point,  # type: ignore[arg-type]
+                            j.name not in passive))
+    unknown = sorted(passive - {j.name for j in read.joints})
+    if unknown:
+        what = "is not a moving joint" if len(unknown) == 1 else "are not moving joints"
+        problems.append(f"{path}.passive: {', '.join(map(brief, unknown))} {what} of the "
+                        f"chain read from {where.name} (its joints: "
+                        f"{', '.join(j.name for j in read.joints)})")
     if len(problems) > before:
         return None
     snapped.extend(Snapped(f"{path} ({where.name}): {s.where}", s.given, s.exact, s.error)

@@ -41,12 +41,14 @@ import sympy as sp
 from coopkin_sym.analysis.classes import CLASS_NUMBERS, grasp_classes
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
+from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
 from coopkin_sym.errors import ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.draw import draw_system
 from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
+from coopkin_sym.present.passive import PASSIVE_WORDS
 from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report_input import ReportInputError, validate_report
 from coopkin_sym.present.sentences import component_sentences
@@ -287,6 +289,71 @@ def _components_table(locus: Locus) -> _Table:
     return _Table(header, rows, "lll" + "c" * 7 + "ll",
                   {0: "0.9cm", 1: "2.3cm", 10: "2.6cm", 11: "1.6cm"}, css="components",
                   latex_skip=(2,))
+
+
+def _locked_numbers(locus: Locus, locked: Locus, numbers: Mapping[str, int]
+                    ) -> dict[str, int | str]:
+    """The passive-joint numbers the locked system's ``numbers`` give, with the
+    system's generic ones (``?`` where a number is missing)."""
+    try:
+        p = passive_numbers(len(locked.locked_joints), 0, locus.generic, numbers)
+    except (KeyError, TypeError):
+        return {k: "?" for k in PASSIVE_NUMBER_NAMES}
+    return p.as_dict()
+
+
+def _passive_blocks(locus: Locus, locked: Locus) -> list:
+    """Where the passive-joint numbers change: the generic ones and the components of
+    the locus of the system with its motors held still."""
+    out: list = [_H(2, "Passive joints", "passive")]
+    motors = ", ".join(locked.locked_joints) or "none"
+    out.append(_P([_t("Motors (actuated joints): "), ("code", motors),
+                   _t("; every other joint is passive. With the motors held still, the "
+                      "object motions left free (Nuo) and the motions of the passive "
+                      "joints alone (Npi) are the locked system's Nc and Nr - Na: they "
+                      "change exactly where its numbers change, a locus searched like the "
+                      "one above. Nco = Nc - Nuo, Nar = Nr - Npi and Nam = Nco + Nar "
+                      "change only on the components of either locus.")]))
+    generic = _locked_numbers(locus, locked, locked.generic)
+    rows = [[[("strong", k)], [_t(PASSIVE_WORDS[k])], [_t(str(generic[k]))]]
+            for k in PASSIVE_NUMBER_NAMES if k not in ("Na", "Np")]
+    out.append(_Table(["number", "meaning", "generic value"], rows, "llc", {1: "7.5cm"},
+                      css="numbers"))
+    said = locked.completeness()
+    n = len(locked.components)
+    out.append(_P([_t(f"Locus of the locked system: {n} component{'' if n == 1 else 's'}; "
+                      f"{said}."
+                      + (f" Not explored there: {len(locked.unexplored)} item"
+                         f"{'' if len(locked.unexplored) == 1 else 's'}, listed below "
+                         f"the table." if locked.unexplored else ""))], css="summary"))
+    table = []
+    for k, c in enumerate(locked.components):
+        values = _locked_numbers(locus, locked, c.numbers)
+        if all(values[key] == generic[key] for key in ("Nuo", "Npi")):
+            continue   # only the locked system's other numbers change there
+        name = f"L{k + 1}" + (f" (in L{c.parent + 1})" if c.parent is not None else "")
+        cells = [[("strong", str(values[key]))] if values[key] != generic[key]
+                 else [_t(str(values[key]))] for key in ("Nuo", "Npi")]
+        witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
+        if not c.real:
+            witness.append(_t(" (real points: undecided)"))
+        table.append([[_t(name)], [("cond", _condition(c))], *cells, witness])
+    others = len(locked.components) - len(table)
+    if table:
+        out.append(_Table(["#", "where", "Nuo", "Npi", "witness (--at)"], table, "llccl",
+                          {0: "0.9cm", 1: "6cm", 4: "4cm"}, css="components"))
+    else:
+        out.append(_P([_t("Nuo and Npi keep their generic values on every component "
+                          "found.")]))
+    if others:
+        out.append(_P([_t(f"{others} other component{'' if others == 1 else 's'} of the "
+                          f"locked system change{'s' if others == 1 else ''} only its "
+                          f"other numbers (its JSON report lists "
+                          f"{'it' if others == 1 else 'them'} under \"locked\").")]))
+    if locked.unexplored:
+        out.append(_P([_t("Not explored in the locked system:")]))
+        out.extend(_list_or(remark_texts(locked.unexplored), ""))
+    return out
 
 
 def _equation_parts(equations: Sequence[str]) -> list[tuple[str, str]]:
@@ -559,6 +626,8 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
     else:
         out.append(_P([_t("None: the numbers are the generic ones at every configuration"
                           " explored.")]))
+    if locus.locked is not None:
+        out.extend(_passive_blocks(locus, locus.locked))
     out.extend(_float_summary_blocks(locus))
     if with_plots:
         out.append(_H(2, "Plots", "plots"))
@@ -968,6 +1037,8 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
                           for d, c in zip(data["components"], locus.components, strict=True)]
     if _has_classes(locus.generic):
         data["generic_classes"] = list(grasp_classes(locus.generic))
+    if locus.locked is not None:
+        data["locked"] = json.loads(render_json(locus.locked))
     if verification is not None:
         data["verification"] = dict(verification)
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"

@@ -136,6 +136,7 @@ _LOCUS_TYPES: dict[str, Any] = {
     "generic": dict[StrictStr, StrictInt], "parameter_conditions": list[StrictStr],
     "dropped": list[StrictStr], "unexplored": list[StrictStr], "notes": list[StrictStr],
     "seconds": StrictFloat | StrictInt, "certificate": _CertificateIn | None,
+    "locked_joints": list[StrictStr], "locked": dict[StrictStr, Any] | None,
 }
 
 
@@ -419,6 +420,11 @@ def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
     values["components"] = comps
     if parsed.certificate is not None:
         values["certificate"] = parsed.certificate.model_dump(exclude_unset=True)
+    if parsed.locked is not None:  # the locus of the locked system, read the same way
+        try:
+            values["locked"] = validate_report(parsed.locked)
+        except ReportInputError as exc:
+            raise ReportInputError([f"locked.{line}" for line in exc.problems]) from None
     locus = Locus(**values)
     if parsed.completeness is not None and parsed.completeness != locus.completeness():
         raise ReportInputError([f"completeness: {brief(parsed.completeness)} does not agree "

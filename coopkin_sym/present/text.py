@@ -18,6 +18,7 @@ import sympy as sp
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.classes import classes_text
+from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
 __all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
@@ -56,6 +57,9 @@ def analysis_text(a: Analysis) -> str:
     lines.append("")
     for s in sentences(a):
         lines.append(f"- {s}")
+    if a.model.passive_joints:
+        lines.append("")
+        lines.extend(passive_lines(a.passive))
     object_rows = list(a.model.twist_names)
     joint_rows = list(a.model.joint_names)
     blocks, omitted = a.available_blocks()
@@ -152,6 +156,10 @@ def analysis_latex(a: Analysis) -> str:
     out = [_latex_comment(head)]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in a.numbers.as_dict().items()))
     out.append(r"% " + classes_text(a.numbers))
+    if a.model.passive_joints:
+        out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$"
+                             for k, v in a.passive.numbers.as_dict().items())
+                   + "  % " + "; ".join(f"N{k[1:]}: {w}" for k, w in PASSIVE_WORDS.items()))
     blocks, omitted = a.available_blocks()
     for name, mat in blocks.items():
         if mat is None:
@@ -181,6 +189,8 @@ def irrational_text(result: IrrationalAnalysis) -> str:
              "  ".join(f"{k} = {v}" for k, v in result.numbers.as_dict().items()),
              classes_text(result.numbers), ""]
     lines += [f"- {s}" for s in irrational_sentences(result)]
+    if result.passive is not None:
+        lines += ["", "Passive-joint numbers: " + passive_numbers_text(result.passive)]
     lines += ["", "Blocks: not computed at a configuration with irrational coordinates "
                   "(the numbers are exact; use a rational configuration for C11..C23)."]
     return "\n".join(lines)

@@ -165,7 +165,8 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         raise LocusError("every joint has a value: a locus needs at least one free joint")
     config = Configuration(revolute, prismatic, params, frozenset(free_joints))
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
-                  notes=notes)
+                  notes=notes, locked_joints=[j for j in model.joint_names
+                                              if j in model.locked])
     chart, q_rows = _chart(model, config)
     generic = decompose(q_rows, model, chart["row_contacts"], chart["ring"].zctx).numbers
     ctx = SearchContext(model=model, generic=generic, max_depth=max_depth, locus=locus,
@@ -185,6 +186,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         _settle_realness(ctx)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
+    if model.passive_joints and not model.locked:
+        # where the passive-joint numbers change: the locus of the locked system
+        left = None if timeout is None else max(0.0, timeout - (time.monotonic() - started))
+        locus.locked = compute_locus(model.with_actuators_locked(), at, max_depth, left,
+                                     progress, free, pi_size)
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 

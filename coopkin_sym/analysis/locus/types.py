@@ -258,6 +258,13 @@ class Locus:
         The completeness certificate
         (:meth:`~coopkin_sym.analysis.locus.certify.Certificate.to_json`), or None when none was
         made (:func:`~coopkin_sym.analysis.locus.certify.certify_locus`).
+    locked_joints
+        The joints held still (no velocity) in this search: the actuated joints for
+        the locus of a locked system, else empty.
+    locked
+        For a system with passive joints, the locus of the same system with every
+        actuated joint held still: where the passive-joint numbers ``Nuo`` and ``Npi``
+        change (:mod:`coopkin_sym.analysis.passive`); None otherwise.
 
     Example
     -------
@@ -278,6 +285,8 @@ class Locus:
     notes: list[Remark | str] = field(default_factory=list)
     seconds: float = 0.0
     certificate: dict | None = None
+    locked_joints: list[str] = field(default_factory=list)
+    locked: Locus | None = None
 
     def float_summary(self) -> dict[str, int]:
         """How many singular configurations float tests called regular (missed), and
@@ -312,6 +321,8 @@ class Locus:
             "seconds": self.seconds,
             "completeness": self.completeness(),
             "certificate": self.certificate,
+            "locked_joints": self.locked_joints,
+            "locked": None if self.locked is None else self.locked.to_json(),
         }
 
     def completeness(self) -> str:
