@@ -87,6 +87,13 @@ class Displayable:
     True
     """
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        # IPython's printer takes a class's own __repr__ before a _repr_pretty_ it
+        # inherits: each subclass gets the method in its own namespace
+        super().__init_subclass__(**kwargs)
+        if "_repr_pretty_" not in cls.__dict__:
+            cls._repr_pretty_ = Displayable._repr_pretty_
+
     def _repr_html_(self) -> str | None:
         return render(self, "html")
 
