@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.irrational import IrrationalAnalysis, analyze_irrational
 from coopkin_sym.analysis.locus.search import compute_locus
@@ -160,7 +160,7 @@ class System:
         return (f"System({clip(self.model.name, 100)!r}: {len(self.model.arms)} arms, "
                 f"{len(self.model.joints)} joints, {len(self.model.contacts)} contacts)")
 
-    def _repr_pretty_(self, p, cycle: bool) -> None:
+    def _repr_pretty_(self, p: Any, cycle: bool) -> None:
         lines = [repr(self)] if cycle else system_text(self.model).split("\n")
         for k, line in enumerate(lines):
             if k:

@@ -16,7 +16,7 @@ Example
 -------
 >>> from coopkin_sym import load
 >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
->>> print(pretty_text(a))
+>>> print(pretty_text(a))  # doctest: +ELLIPSIS
 <Analysis paper case 1, hard/hard at q1=pi/2,q2=pi/2: Nm=3 Nc=3 Ni=1 Nr=0 Ng=1 Nd=4 Nh=1>
   Nm = 3  Nc = 3  Ni = 1  Nr = 0  Ng = 1  Nd = 4  Nh = 1
   Grasp classes: indeterminate (Ni = 1), graspable (Ng = 1), defective (Nd = 4), ...
@@ -47,6 +47,7 @@ from coopkin_sym.model.model import Model
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
+from coopkin_sym.present.report import _changes as changes_of
 from coopkin_sym.present.report import _short_condition as short_condition
 from coopkin_sym.present.sentences import (
     component_sentences,
@@ -354,15 +355,8 @@ def _irrational_pretty(result: IrrationalAnalysis) -> str:
 # ------------------------------------------------------------------ loci
 
 
-def _changes(c: Component, generic: Mapping[str, int]) -> dict[str, tuple[int, int]]:
-    if c.changes:
-        return {k: (v[0], v[1]) for k, v in c.changes.items()}
-    return {k: (generic[k], c.numbers[k]) for k in NUMBER_NAMES
-            if k in generic and k in c.numbers and generic[k] != c.numbers[k]}
-
-
 def _changes_text(c: Component, generic: Mapping[str, int], arrow: str = "\u2192") -> str:
-    changes = _changes(c, generic)
+    changes = changes_of(c, generic)
     text = ", ".join(f"{k} {a} {arrow} {b}" for k, (a, b) in changes.items()) or "as generic"
     if _has_all(c.numbers) and _has_all(generic):
         classes = class_changes_text(c.numbers, generic)
