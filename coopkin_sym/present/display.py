@@ -430,7 +430,8 @@ def _completeness(locus: Locus) -> str:
 
 
 def _locus_pretty(locus: Locus) -> str:
-    lines = [repr(locus), f"  {locus.completeness()}",
+    said = locus.completeness()
+    lines = [repr(locus), f"  {said if locus.certificate is None else 'completeness: ' + said}",
              "  generic: " + _numbers_spaced(locus.generic)]
     if _classes(locus.generic):
         lines.append("  " + _classes(locus.generic))
