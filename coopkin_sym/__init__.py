@@ -30,6 +30,7 @@ from coopkin_sym.errors import (
 )
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
+from coopkin_sym.present import display as _display  # noqa: F401  (installs the renderers)
 from coopkin_sym.system import System, load
 
 __all__ = [

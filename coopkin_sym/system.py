@@ -19,16 +19,18 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Mapping, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.irrational import IrrationalAnalysis, analyze_irrational
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.mobility import Analysis, analyze
+from coopkin_sym.analysis.renderers import clip
 from coopkin_sym.analysis.sweep import sweep
 from coopkin_sym.errors import ConfigurationError, NotIrrational
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model
+from coopkin_sym.present.display import system_html, system_text
 from coopkin_sym.present.draw import draw_system
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -155,8 +157,18 @@ class System:
         return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
 
     def __repr__(self) -> str:
-        return (f"System({self.model.name!r}: {len(self.model.arms)} arms, "
+        return (f"System({clip(self.model.name, 100)!r}: {len(self.model.arms)} arms, "
                 f"{len(self.model.joints)} joints, {len(self.model.contacts)} contacts)")
+
+    def _repr_pretty_(self, p: Any, cycle: bool) -> None:
+        lines = [repr(self)] if cycle else system_text(self.model).split("\n")
+        for k, line in enumerate(lines):
+            if k:
+                p.break_()
+            p.text(line)
+
+    def _repr_html_(self) -> str:
+        return system_html(self.model)
 
 
 def load(source: str | os.PathLike | Mapping) -> System:

@@ -36,8 +36,9 @@ from coopkin_sym import limits
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.mobility import numbers_modulo
-from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.analysis.numbers import Numbers, numbers_line
 from coopkin_sym.analysis.passive import PassiveNumbers, passive_numbers
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import NotIrrational
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
@@ -87,7 +88,7 @@ class PointMotions:
 
 
 @dataclass(frozen=True)
-class IrrationalAnalysis:
+class IrrationalAnalysis(Displayable):
     """The numbers at a configuration with irrational coordinates.
 
     ``alpha`` generates the number field of the configuration, a root of
@@ -103,6 +104,9 @@ class IrrationalAnalysis:
     >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6")
     >>> a.at, a.numbers.Ni
     ({'q1': '-pi/6', 'q2': 'pi/6'}, 3)
+    >>> print(repr(a).replace(": ", ":\\n"))
+    <IrrationalAnalysis paper case 1, hard/hard at q1=-pi/6,q2=pi/6 in Q(-2 + sqrt(3)):
+    Nm=3 Nc=3 Ni=3 Nr=0 Ng=3 Nd=4 Nh=1>
     """
 
     at: dict[str, str]
@@ -115,6 +119,11 @@ class IrrationalAnalysis:
     object_dim: int = 6
     system: str = ""
     passive: PassiveNumbers | None = None
+
+    def __repr__(self) -> str:
+        at = ",".join(f"{k}={v}" for k, v in self.at.items())
+        return (f"<IrrationalAnalysis {clip(self.system, 80)} at {clip(at, 100)} in "
+                f"Q({clip(self.alpha, 50)}): {numbers_line(self.numbers)}>")
 
     def as_json(self) -> dict:
         """The JSON of ``coopkin analyze`` here, without words (the presentation

@@ -53,12 +53,13 @@ import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
 from coopkin_sym.analysis.kinematics import PLANAR_COLUMNS, spatial_twist
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ManipulabilityError
 from coopkin_sym.exact.parse import NumberError, exact_expr
 
 
 @dataclass(frozen=True)
-class Manipulability:
+class Manipulability(Displayable):
     """The manipulability ellipsoid of the controlled object velocities.
 
     Attributes
@@ -90,6 +91,8 @@ class Manipulability:
     >>> m = load("planar-two-fingers").analyze("L=1").manipulability(length=1)
     >>> m.controlled, m.rank
     (('v_x', 'v_y', 'w_z'), 3)
+    >>> m
+    <Manipulability of v_x, v_y, w_z (length 1): rank 3 of 3, det E = 1/8>
     """
 
     controlled: tuple[str, ...]
@@ -99,6 +102,12 @@ class Manipulability:
     index: sp.Expr
     rank: int
     degeneracy: tuple[sp.Expr, ...]
+
+    def __repr__(self) -> str:
+        return (f"<Manipulability of {clip(', '.join(self.controlled), 80)} (length "
+                f"{clip(sp.sstr(self.length), 30)}): rank {self.rank} of "
+                f"{len(self.controlled)}, det E = {clip(sp.sstr(self.index), 100)}>")
+
 
 def manipulability(analysis, controlled: Sequence[str] | None = None,
                    length=1, point: Sequence | None = None) -> Manipulability:

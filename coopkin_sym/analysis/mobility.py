@@ -42,8 +42,14 @@ import sympy as sp
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.manipulability import manipulability
-from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
+from coopkin_sym.analysis.numbers import (
+    Numbers,
+    numbers_from_ranks,
+    numbers_line,
+    ranks_from_numbers,
+)
 from coopkin_sym.analysis.passive import PassiveAnalysis, passive_analysis
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name
@@ -88,7 +94,7 @@ class Motion:
     free: sp.Matrix
 
 
-class Analysis:
+class Analysis(Displayable):
     """The exact mobility and kinematic analysis of one system at one configuration.
 
     Built by :func:`analyze`; matrices are exposed as SymPy matrices for display
@@ -100,6 +106,8 @@ class Analysis:
     >>> a = load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
     >>> a.numbers.Nm, a.Q.shape, a.C23.shape
     (3, (6, 8), (2, 0))
+    >>> a
+    <Analysis paper case 1, hard/hard at q1=pi/2,q2=pi/2: Nm=3 Nc=3 Ni=1 Nr=0 Ng=1 Nd=4 Nh=1>
     """
 
     def __init__(self, model: Model, config: Configuration, kin: kinematics.Kinematics,
@@ -139,6 +147,46 @@ class Analysis:
         2
         """
         return passive_analysis(self)
+
+    def __repr__(self) -> str:
+        return (f"<Analysis {clip(self.model.name, 80)} {clip(self.where, 120)}: "
+                f"{numbers_line(self.numbers)}>")
+
+    @property
+    def where(self) -> str:
+        """The configuration in short: ``"at q1=pi/2,L=1"``, ``"at home"`` (every
+        joint at 0), the symbolic joints, or ``"generic"`` (every joint symbolic).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-soft").analyze("L=2", free=["q1"]).where
+        'at L=2, symbolic q1'
+        """
+        config, joints = self.configuration, self.model.joint_names
+        parts = [f"at {config.at_text()}"] if config.at_text() else []
+        if config.free and set(joints) <= config.free:
+            parts.append("generic")
+        elif config.free:
+            parts.append("symbolic " + ", ".join(j for j in joints if j in config.free))
+        return ", ".join(parts) or "at home"
+
+    def block_terms(self) -> dict[str, int]:
+        """For each block, about how many terms its largest entry has (a bound for
+        ``C12`` and ``C22``), known without building the blocks: to tell a block small
+        enough to show before computing it.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2").block_terms()
+        {'C11': 1, 'C12': 2, 'C22': 2, 'C23': 0}
+        """
+        def most(vectors) -> int:
+            return max((len(x) for v in vectors for x in v), default=0)
+        coordinated = max(most(self._coord_u), self.coordinated_terms)
+        return {"C11": most(self._c11), "C12": coordinated, "C22": coordinated,
+                "C23": most(self._c23)}
 
     @property
     def classes(self) -> tuple[str, ...]:

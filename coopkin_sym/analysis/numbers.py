@@ -23,8 +23,10 @@ Example
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
+from coopkin_sym.analysis.renderers import Displayable
 from coopkin_sym.exact.matrix import PolyMatrix
 
 #: The seven numbers, in the order every table and file of the package uses.
@@ -32,7 +34,7 @@ NUMBER_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
 
 
 @dataclass(frozen=True)
-class Numbers:
+class Numbers(Displayable):
     """Mobility ``Nm``, connectivity ``Nc``, indeterminacy ``Ni``, redundancy ``Nr``,
     and the force-domain graspable ``Ng`` (internal forces), defective ``Nd`` and
     hyperstatic ``Nh`` numbers.
@@ -53,6 +55,19 @@ class Numbers:
 
     def as_dict(self) -> dict[str, int]:
         return {k: getattr(self, k) for k in NUMBER_NAMES}
+
+
+def numbers_line(numbers: Numbers | Mapping[str, int]) -> str:
+    """The seven numbers on one line, ``Nm=2 Nc=2 ...`` (``?`` for one a mapping
+    lacks), for the short ``repr`` of the results.
+
+    Example
+    -------
+    >>> numbers_line(Numbers(3, 3, 1, 0, 0, 4, 0))
+    'Nm=3 Nc=3 Ni=1 Nr=0 Ng=0 Nd=4 Nh=0'
+    """
+    get = numbers.get if isinstance(numbers, Mapping) else numbers.as_dict().get
+    return " ".join(f"{k}={get(k, '?')}" for k in NUMBER_NAMES)
 
 
 def seven_numbers(m, r, rank_q, rank_gt, rank_dt, *, dim: int) -> tuple:

@@ -22,6 +22,8 @@ from dataclasses import asdict, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.numbers import numbers_line
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import TimeLimitReached
 from coopkin_sym.exact.polynomial import NamedPolynomial
 
@@ -88,7 +90,7 @@ class WitnessMotions:
 
 
 @dataclass
-class Component:
+class Component(Displayable):
     """One irreducible family of configurations where the numbers differ from the
     generic ones.
 
@@ -153,6 +155,8 @@ class Component:
     >>> c = load("paper-case1-hard").locus().components[0]
     >>> c.equations, c.condition, c.changes["Nm"]
     (['t_q1 + 1', 't_q2 + 1'], 'q1 = -pi/2, q2 = -pi/2', (2, 3))
+    >>> c
+    <Component q1 = -pi/2, q2 = -pi/2 (isolated): Nm 2->3, Nc 2->3, Nh 0->1>
     """
 
     equations: list[str]
@@ -177,6 +181,13 @@ class Component:
                                                       compare=False)
     outside_polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
                                                               compare=False)
+
+    def __repr__(self) -> str:
+        where = self.condition or ", ".join(f"{e} = 0" for e in self.equations)
+        depth = f", depth {self.depth}" if self.depth else ""
+        changes = (", ".join(f"{k} {a}->{b}" for k, (a, b) in self.changes.items())
+                   if self.changes else numbers_line(self.numbers))
+        return f"<Component {clip(where, 120)} ({clip(self.kind, 20)}{depth}): {changes}>"
 
     def equation_polynomials(self, names: Sequence[str], where: str = ""
                              ) -> list[NamedPolynomial]:
@@ -226,7 +237,7 @@ def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence
 
 
 @dataclass
-class Locus:
+class Locus(Displayable):
     """Where the numbers of a system change, exactly.
 
     Attributes
@@ -272,6 +283,9 @@ class Locus:
     >>> locus = load("paper-case1-hard").locus()
     >>> locus.variables, locus.generic["Nm"], len(locus.components)
     (['t_q1', 't_q2'], 2, 5)
+    >>> print(repr(locus).replace("; ", ";\\n"))
+    <Locus paper case 1, hard/hard at L=1: generic Nm=2 Nc=2 Ni=1 Nr=0 Ng=1 Nd=4 Nh=0;
+    5 components, not certified>
     """
 
     system: str
@@ -287,6 +301,26 @@ class Locus:
     certificate: dict | None = None
     locked_joints: list[str] = field(default_factory=list)
     locked: Locus | None = None
+
+    def __repr__(self) -> str:
+        at = f" at {clip(self.fixed, 60)}" if self.fixed else ""
+        n = len(self.components)
+        found = f"{n} component{'' if n == 1 else 's'}"
+        if self.unexplored:
+            found += f" ({len(self.unexplored)} unexplored)"
+        return (f"<Locus {clip(self.system, 80)}{at}: generic {numbers_line(self.generic)}; "
+                f"{found}, {'certified' if self.certified else 'not certified'}>")
+
+    @property
+    def certified(self) -> bool:
+        """Whether a completeness certificate proves every component found.
+
+        Example
+        -------
+        >>> Locus("demo", [], "", {}, certificate={"certified": True}).certified
+        True
+        """
+        return self.certificate is not None and self.certificate.get("certified") is True
 
     def float_summary(self) -> dict[str, int]:
         """How many singular configurations float tests called regular (missed), and

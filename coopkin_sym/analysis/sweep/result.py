@@ -10,12 +10,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
+from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers, numbers_line
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.analysis.sweep.values import Value
 
 
 @dataclass
-class SweepResult:
+class SweepResult(Displayable):
     """The exact numbers at every point of a sweep.
 
     Attributes
@@ -45,6 +46,10 @@ class SweepResult:
     >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2", "q1=0"])
     >>> res.joints, res.numbers[:, 0].tolist(), res.rows()[0]["Nm"]
     (('q1', 'q2'), [3, 2], 3)
+    >>> print(repr(res).replace("; ", ";\\n"))
+    <SweepResult paper case 1, hard/hard over q1, q2: 2 points, 1 not generic;
+    1 certified modulo p, 1 rechecked exactly;
+    generic Nm=2 Nc=2 Ni=1 Nr=0 Ng=1 Nd=4 Nh=0>
     """
 
     system: str
@@ -60,6 +65,26 @@ class SweepResult:
 
     def __len__(self) -> int:
         return int(self.numbers.shape[0])
+
+    def __repr__(self) -> str:
+        at = f" at {clip(self.at, 60)}" if self.at else ""
+        c = self.summary()
+        return (f"<SweepResult {clip(self.system, 80)} over {clip(', '.join(self.joints), 50)}"
+                f"{at}: {c['points']} points, {self.not_generic()} not generic; "
+                f"{c['certified_mod_p']} certified modulo p, {c['rechecked_exact']} rechecked "
+                f"exactly; generic {numbers_line(self.generic)}>")
+
+    def not_generic(self) -> int:
+        """How many points have numbers other than the generic ones.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2", "q1=0"]).not_generic()
+        1
+        """
+        generic = np.array([getattr(self.generic, k) for k in NUMBER_NAMES])
+        return int((self.numbers != generic).any(axis=1).sum()) if len(self) else 0
 
     @property
     def certified(self) -> np.ndarray:
