@@ -1223,11 +1223,486 @@ NB04 = [
 ]
 
 
+# ---------------------------------------------------------------------------- 05
+
+NB05 = [
+    md("""
+    # Passive joints: what the motors control
+
+    A joint marked `actuated: false` in a model file has no motor: it moves as the
+    contacts and the other joints let it. Underactuated fingers have such joints, and
+    so has every closed-chain mechanism (the passive joints of a parallel robot).
+    Bicchi and Prattichizzo, *Manipulability of cooperating robots with unactuated
+    joints and closed-chain mechanisms* (IEEE T-RA 2000), analyze these systems by
+    splitting the joint velocities into actuated ones $\\dot q_a$ and passive ones
+    $\\dot q_p$. We do not reproduce that paper's equation numbers: the definitions
+    below follow from the kinematic relation alone,
+
+    $$\\tilde G^T \\dot u - \\tilde D_p \\dot q_p = \\tilde D_a \\dot q_a, \\qquad (1)$$
+
+    with $\\tilde G^T = H G^T$, $\\tilde D = H D = (\\tilde D_a \\mid \\tilde D_p)$ split by
+    columns (the matrices of notebook 01). With the motors held still ($\\dot q_a = 0$),
+    (1) is the analysis of the *locked system*. The numbers:
+
+    * $N_a$, $N_p$: actuated and passive joints;
+    * $N_{uo}$ **uncontrolled** object motions: possible with every motor still, the
+      object part of $N(\\tilde G^T \\mid -\\tilde D_p)$;
+    * $N_{pi}$ **internal passive** motions: passive joints moving with the object and
+      the motors still, $\\dim N(\\tilde D_p)$;
+    * $N_{co} = N_c - N_{uo}$ **controlled** object motions: what the motors drive;
+    * $N_{ar} = N_r - N_{pi}$ **actuated redundant** motions: motor motions that leave
+      the object still (the passive joints following);
+    * $N_{am} = N_{co} + N_{ar}$, the **actuated mobility**: independent motor
+      velocities the contacts admit.
+
+    With every joint actuated, $N_{uo} = N_i$, $N_{pi} = 0$: the numbers of the 1992
+    paper. Everything below is exact; floats appear only in the pictures.
+    """),
+    SETUP,
+    code("""
+    from fractions import Fraction
+
+    from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES
+    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+
+    LOCUS_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+
+
+    def passive_table(rows):
+        \"\"\"A Markdown table of (label, PassiveNumbers) pairs.\"\"\"
+        head = ("| | " + " | ".join(PASSIVE_NUMBER_NAMES) + " |\\n"
+                + "|---" * (len(PASSIVE_NUMBER_NAMES) + 1) + "|\\n")
+        body = "".join(f"| {label} | " + " | ".join(str(v) for v in n.as_dict().values())
+                       + " |\\n" for label, n in rows)
+        return Markdown(head + body)
+
+
+    def show_passive(p):
+        \"\"\"The four subspaces of a passive analysis.\"\"\"
+        show(r"\\text{controlled}", p.controlled)
+        show(r"\\text{uncontrolled}", p.uncontrolled)
+        show(r"\\text{internal passive}", p.internal)
+        show(r"\\text{actuated redundant}", p.actuated_redundant)
+
+
+    def from_q(a):
+        \"\"\"The passive numbers again, from Q alone with plain SymPy: its columns split
+        into object, actuated and passive blocks, ranks and nullspaces by the definitions
+        at the top of this notebook.\"\"\"
+        q = sp.Matrix(a.Q)
+        joints = a.model.joints
+        d = q.cols - len(joints)
+        rows = list(range(q.rows))
+        obj = list(range(d))
+        act = [d + k for k, j in enumerate(joints) if j.actuated]
+        pas = [d + k for k, j in enumerate(joints) if not j.actuated]
+
+        def rank(cols):
+            return q.extract(rows, cols).rank() if cols else 0
+
+        nm = q.cols - q.rank()
+        nr = len(joints) - rank(act + pas)
+        nc = nm - nr
+        locked = q.extract(rows, obj + pas).nullspace()      # motors still
+        free = [v[:d, :] for v in locked]
+        nuo = sp.Matrix.hstack(*free).rank() if free else 0
+        npi = len(pas) - rank(pas)
+        # Nam directly: the motor velocities of N(Q), independent ones
+        motors = [v.extract(act, [0]) for v in q.nullspace()]
+        nam = sp.Matrix.hstack(*motors).rank() if motors else 0
+        assert nam == (nc - nuo) + (nr - npi)
+        numbers = {"Na": len(act), "Np": len(pas), "Nco": nc - nuo, "Nuo": nuo,
+                   "Npi": npi, "Nar": nr - npi, "Nam": nam}
+        return numbers, free
+
+
+    def check_against_q(a):
+        \"\"\"Asserts that the engine's passive numbers and uncontrolled motions are those
+        of from_q.\"\"\"
+        numbers, free = from_q(a)
+        p = a.passive
+        assert p.numbers.as_dict() == numbers, (p.numbers, numbers)
+        if free:
+            assert same_span(p.uncontrolled, sp.Matrix.hstack(*free))
+        return numbers
+
+
+    def at_text(witness):
+        \"\"\"A witness dict in the syntax of `analyze`.\"\"\"
+        return ",".join(f"{k}={v}" for k, v in witness.items())
+
+
+    def witness_of(c):
+        if c.witness:
+            return at_text(c.witness)
+        return at_text(c.algebraic_witness["point"]) if c.algebraic_witness else "none"
+
+
+    def locus_table(locus, locked_joints=0):
+        \"\"\"One row per component; for a locked locus (locked_joints = Na) also
+        Nuo = Nc and Npi = Nr - Na of the locked system.\"\"\"
+        extra = ["Nuo", "Npi"] if locked_joints else []
+        names = list(LOCUS_NAMES) + extra
+        head = ("| where | kind | " + " | ".join(names) + " | witness |\\n"
+                + "|---" * (len(names) + 3) + "|\\n")
+
+        def cells(n):
+            values = dict(n)
+            if locked_joints:
+                values.update(Nuo=n["Nc"], Npi=n["Nr"] - locked_joints)
+            return " | ".join(str(values[k]) for k in names)
+
+        rows = [f"| generic | | {cells(locus.generic)} | |"]
+        rows += [f"| `{c.condition}` | {c.kind} | {cells(c.numbers)} | `{witness_of(c)}` |"
+                 for c in locus.components]
+        return Markdown(head + "\\n".join(rows))
+    """),
+    md("""
+    ## 1. An underactuated finger
+
+    The shipped example `underactuated-finger`: a planar finger with two phalanges, a
+    motor at the proximal joint q1 and a passive distal joint q2, touching the object
+    with both phalanges (hard contacts: points with friction), and a one-link thumb
+    (motor q3) whose pad touches the object without friction. The file's header says
+    what to expect and why:
+    """),
+    code("""
+    print(example_path("underactuated-finger").read_text())
+    finger = coopkin_sym.load("underactuated-finger")
+    L = finger.model.parameters[0]
+    a = finger.analyze()                      # home, L symbolic
+    display(numbers_table([("home", a.numbers)]))
+    display(passive_table([("home", a.passive.numbers)]))
+    show_passive(a.passive)
+    for line in sentences(a):
+        print("-", line)
+    """),
+    code("""
+    assert a.numbers.as_dict() == {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0, "Ng": 2, "Nd": 2,
+                                   "Nh": 0}
+    p = a.passive
+    assert p.actuated == ("q1", "q3") and p.passive == ("q2",)
+    assert p.numbers.as_dict() == {"Na": 2, "Np": 1, "Nco": 1, "Nuo": 0, "Npi": 0,
+                                   "Nar": 0, "Nam": 1}
+    assert same_span(p.controlled, sp.Matrix([0, 0, 1]))   # a turn about the base (0, 0)
+    # that turn: the object and q1 at rate 1, q2 still, the thumb at rate 1
+    assert (a.Q * sp.Matrix([0, 0, 1, 1, 0, 1])).is_zero_matrix
+    generic = finger.analyze(generic=True)
+    assert generic.numbers == a.numbers and generic.passive.numbers == p.numbers
+    """),
+    md("""
+    **Reading.** The inner contact $(0, L)$, the distal joint $(0, 2L)$ and the
+    fingertip $(L, 2L)$ make a triangle of the object and the two phalanges (both
+    contacts hold the contact point's velocity): the passive joint cannot turn on its
+    own ($N_{pi} = 0$), and with the motors still nothing moves ($N_{uo} = 0$). The one
+    object motion the contacts allow is a turn of the object with the proximal phalanx
+    about the finger's base, the thumb following at the same rate while its pad slides:
+    the motors control it ($N_{co} = N_{am} = 1$). The generic analysis ($q_1, q_2, q_3$
+    and $L$ symbolic) gives the same numbers, so home is a generic configuration.
+
+    ### The same numbers from Q alone
+
+    An independent check with plain SymPy: take $Q$, split its columns into the object
+    block, the actuated and the passive joints, and compute ranks and nullspaces by the
+    definitions above. `from_q` does not use the engine's decomposition:
+    """),
+    code("""
+    show("Q", a.Q)
+    numbers = check_against_q(a)
+    print(numbers)
+    assert numbers["Nuo"] == 0 and numbers["Npi"] == 0 and numbers["Nco"] == 1
+    """),
+    md("""
+    ### Where the distal phalanx lines up
+
+    With the finger straight ($q_2 = \\pi/2$) the three points of the triangle are on
+    one line, and the object may also turn about the inner contact with the distal
+    phalanx following. With the thumb at home its pad's normal is the horizontal line
+    through the inner contact: that turn moves the pad along its face, so it needs no
+    motor. Slightly further on ($q_1 = 2\\arctan(1/2)$) the normal misses the inner
+    contact and the thumb must push: both motions are controlled. Folded back
+    ($q_2 = -\\pi/2$) the fingertip lies on the inner contact.
+    """),
+    code("""
+    places = {"straight": "q2=pi/2", "straight, q1 turned": "q1=2*atan(1/2),q2=pi/2",
+              "folded": "q2=-pi/2"}
+    lined = {name: finger.analyze(at) for name, at in places.items()}
+    display(numbers_table([("home", a.numbers)]
+                          + [(f"{k}: `{places[k]}`", v.numbers) for k, v in lined.items()]))
+    display(passive_table([("home", a.passive.numbers)]
+                          + [(f"{k}: `{places[k]}`", v.passive.numbers)
+                             for k, v in lined.items()]))
+    show_passive(lined["straight"].passive)
+    """),
+    code("""
+    straight = lined["straight"]
+    assert straight.numbers.as_dict() == {"Nm": 2, "Nc": 2, "Ni": 0, "Nr": 0, "Ng": 2,
+                                          "Nd": 2, "Nh": 1}
+    ps = straight.passive.numbers
+    assert (ps.Nco, ps.Nuo, ps.Npi, ps.Nar, ps.Nam) == (1, 1, 0, 0, 1)
+    # the uncontrolled motion: the object spins about the inner contact (0, L) ...
+    assert straight.passive.uncontrolled == sp.Matrix([L, 0, 1])
+    # ... with q2 at twice its rate and both motors still
+    assert (straight.Q * sp.Matrix([L, 0, 1, 0, 2, 0])).is_zero_matrix
+    pt = lined["straight, q1 turned"].passive.numbers
+    assert (pt.Nco, pt.Nuo, pt.Nam) == (2, 0, 2)
+    pf = lined["folded"]
+    assert (pf.numbers.Ni, pf.passive.numbers.Nuo, pf.passive.numbers.Nco) == (1, 1, 1)
+    for an in lined.values():
+        check_against_q(an)
+    """),
+    md("""
+    The finger at home turning the object (the coordinated motion), and straight:
+    """),
+    code("""
+    draw_system(finger.analyze("L=1"), motion=("coordinated", 1),
+                title="underactuated finger at home")
+    """),
+    code("""
+    draw_system(finger.analyze("q2=pi/2,L=1"), motion=("coordinated", 1),
+                title="underactuated finger, straight (q2 = pi/2)")
+    """),
+    md("""
+    ### Where the passive numbers change: the locus, motors locked
+
+    With the thumb at home and the two finger joints free, `locus` finds where the
+    numbers of the system change, and `locus.locked` where those of the locked system
+    (motors held still) change: there $N_{uo} = N_c$ and $N_{pi} = N_r - N_a$ of the
+    locked system. The numbers change on the whole lines $q_2 = \\pm\\pi/2$, but the
+    uncontrolled motion appears only at $q_1 = 0$ on them:
+    """),
+    code("""
+    floc = finger.locus(free=["q1", "q2"])
+    display(locus_table(floc))
+    display(locus_table(floc.locked, locked_joints=2))
+    assert floc.generic == a.numbers.as_dict()
+    assert {"q2 = pi/2", "q2 = -pi/2"} <= {c.condition for c in floc.components}
+    assert {c.condition for c in floc.locked.components} == {"q1 = 0, q2 = -pi/2",
+                                                             "q1 = 0, q2 = pi/2"}
+    for c in floc.locked.components:
+        direct = finger.analyze(at_text(c.witness)).passive.numbers
+        assert (direct.Nuo, direct.Npi) == (c.numbers["Nc"], c.numbers["Nr"] - 2) == (1, 0)
+    """),
+    md("""
+    ## 2. A closed chain: the five-bar linkage
+
+    The shipped `five-bar`: two legs with a motor at the base (q1, q3) and a passive
+    elbow (q2, q4), their distal links pinned to the moving platform (the object) at one
+    point. Each pin is a planar hard contact (it holds $v_x$, $v_y$ of the pin and leaves
+    the rotation free).
+
+    **A caveat.** Like the 1992 paper, the analysis takes each joint variable as given
+    and puts each contact at its link's current point. For a closed chain only the
+    configurations where the two pins coincide are assemblies of the five-bar; where
+    they are apart the same matrices describe another mechanism (an object pinned at
+    two points). The home configuration ($L = 1$: bases $(\\mp 1, 0)$, elbows
+    $(\\mp 1, 1)$, pin $(0, 2)$) is an assembly:
+    """),
+    code("""
+    print(example_path("five-bar").read_text())
+    five = coopkin_sym.load("five-bar")
+
+
+    def pins(analysis):
+        \"\"\"The two contact points (the pins), exact, at a configuration with L = 1.\"\"\"
+        return [tuple(frac_to_sympy(x, {}) for x in point)
+                for point in analysis.kinematics.points]
+
+
+    home = five.analyze("L=1")
+    print("pins at home:", pins(home))
+    assert pins(home)[0] == pins(home)[1] == (0, 2, 0)
+    display(numbers_table([("home", home.numbers)]))
+    display(passive_table([("home", home.passive.numbers)]))
+    show_passive(home.passive)
+    """),
+    code("""
+    assert home.numbers.as_dict() == {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 2,
+                                      "Nd": 0, "Nh": 0}
+    ph = home.passive.numbers
+    assert ph.as_dict() == {"Na": 2, "Np": 2, "Nco": 2, "Nuo": 1, "Npi": 0, "Nar": 0,
+                            "Nam": 2}
+    assert home.passive.uncontrolled == sp.Matrix([2, 0, 1])     # spin about (0, 2)
+    assert check_against_q(home) == ph.as_dict()
+    """),
+    md("""
+    With the motors still, the elbows are still and so is the pin: only the platform's
+    spin about the pin is free ($N_{uo} = N_i = 1$); the two motors drive the pin's
+    velocity ($N_{co} = N_{am} = 2$).
+
+    ### Singular assemblies, exactly
+
+    Where are there assemblies with other passive numbers? Search exactly: for small
+    rational $t = \\tan(q/2)$ of each motor angle and of each distal link's absolute
+    angle, compute each leg's pin with exact rationals, and keep the pairs whose pins
+    coincide. Each such assembly is then analyzed:
+    """),
+    code("""
+    T = sorted({Fraction(p, q) for p in range(-3, 4) for q in range(1, 4)})
+
+
+    def cos_sin(t):
+        return (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+
+
+    def angle(t):
+        return {0: "0", 1: "pi/2", -1: "-pi/2"}.get(t, f"2*atan({t})")
+
+
+    def leg(base_x, home_dir):
+        \"\"\"Pin -> [(tan(q_motor/2), tan(q_elbow/2))] for one leg (L = 1): the elbow at
+        (base_x, 0) + R(q)(0, 1), the pin at elbow + R(q + q')(home_dir).\"\"\"
+        out = {}
+        for t in T:
+            c, s = cos_sin(t)
+            for tau in T:                   # tan((q + q')/2)
+                if 1 + tau * t == 0:
+                    continue                # q' = pi, left out
+                cc, ss = cos_sin(tau)
+                dx, dy = home_dir
+                pin = (base_x - s + cc * dx - ss * dy, c + ss * dx + cc * dy)
+                out.setdefault(pin, []).append((t, (tau - t) / (1 + tau * t)))
+        return out
+
+
+    left, right = leg(-1, (1, 1)), leg(1, (-1, 1))
+    assemblies = [f"q1={angle(t1)},q2={angle(t2)},q3={angle(t3)},q4={angle(t4)},L=1"
+                  for pin, ls in left.items() for (t1, t2) in ls
+                  for (t3, t4) in right.get(pin, [])]
+    groups = {}
+    for at in assemblies:
+        an = five.analyze(at)
+        assert pins(an)[0] == pins(an)[1]            # an assembly, checked by the engine
+        key = (an.numbers, an.passive.numbers)
+        groups.setdefault(key, []).append(at)
+    print(len(assemblies), "assemblies with tan(q/2) in", len(T), "values")
+    display(Markdown("| Nm Nc Ni Nr | Nco Nuo Npi Nar Nam | assemblies | e.g. |\\n"
+                     "|---|---|---|---|\\n" + "\\n".join(
+                         f"| {n.Nm} {n.Nc} {n.Ni} {n.Nr} | {p.Nco} {p.Nuo} {p.Npi} "
+                         f"{p.Nar} {p.Nam} | {len(v)} | `{min(v, key=len)}` |"
+                         for (n, p), v in groups.items())))
+    """),
+    code("""
+    at_home = groups[(home.numbers, home.passive.numbers)]
+    assert "q1=0,q2=0,q3=0,q4=0,L=1" in at_home
+    singular = {key: v for key, v in groups.items() if key[1] != home.passive.numbers}
+    assert len(singular) == 1
+    (n_s, p_s), found = next(iter(singular.items()))
+    assert (p_s.Nco, p_s.Nuo, p_s.Npi, p_s.Nar, p_s.Nam) == (1, 2, 0, 0, 1)
+    S = "q1=0,q2=2*atan(-1/2),q3=2*atan(-1/2),q4=pi/2,L=1"
+    assert S in found
+    for at in found:
+        print(at)
+    """),
+    md("""
+    Every singular assembly found has $N_{uo} = 2$: with the motors still the pin can
+    move too. In most of them the elbows coincide at $(0, 0)$ ($q_1 = -\\pi/2$,
+    $q_3 = \\pi/2$) and the distal links lie on each other. The other two are mirror
+    images; take `S` (left motor at home): the elbows are at $(-1, 1)$ and
+    $(9/5, 3/5)$, $2\\sqrt 2$ apart, and the pin is at their midpoint $(2/5, 4/5)$: both
+    distal links lie on one line, the "parallel" singularity. The pin can move across
+    that line with every motor still, and the motors control only its motion along the
+    line:
+    """),
+    code("""
+    s_an = five.analyze(S)
+    print("pins:", pins(s_an))
+    assert pins(s_an)[0] == pins(s_an)[1] == (sp.Rational(2, 5), sp.Rational(4, 5), 0)
+    display(numbers_table([("home", home.numbers), ("S", s_an.numbers)]))
+    display(passive_table([("home", home.passive.numbers), ("S", s_an.passive.numbers)]))
+    show_passive(s_an.passive)
+    """),
+    code("""
+    check_against_q(s_an)
+    pin = sp.Matrix([sp.Rational(2, 5), sp.Rational(4, 5)])
+
+
+    def pin_velocity(twist):
+        \"\"\"The velocity of the pin for an object twist (v_x, v_y, w_z) at the origin.\"\"\"
+        return sp.Matrix([twist[0] - twist[2] * pin[1], twist[1] + twist[2] * pin[0]])
+
+
+    free = [pin_velocity(s_an.passive.uncontrolled.col(k)) for k in range(2)]
+    across = next(v for v in free if v != sp.zeros(2, 1))
+    along = sp.Matrix([7, -1])                     # the line of the distal links
+    assert across.dot(along) == 0                  # free: across the line
+    assert sp.Matrix.hstack(*free).rank() == 1     # and the spin about the pin
+    driven = pin_velocity(s_an.passive.controlled.col(0))
+    assert sp.Matrix.hstack(driven, across).rank() == 2   # driven: along the line
+    """),
+    md("""
+    ### The locked locus on a slice through S
+
+    Keep the motors at S ($q_1 = 0$, $q_3 = 2\\arctan(-1/2)$) and free both elbows. The
+    elbows are then $2\\sqrt 2$ apart, so this slice has one assembly, S itself. The
+    locus of the system and that of the locked system:
+    """),
+    code("""
+    slice_locus = five.locus(at="q1=0,q3=2*atan(-1/2),L=1", free=["q2", "q4"])
+    display(locus_table(slice_locus))
+    display(locus_table(slice_locus.locked, locked_joints=2))
+    """),
+    code("""
+    s_point = {"q1": "0", "q3": "2*atan(-1/2)", "q2": "2*atan(-1/2)", "q4": "pi/2",
+               "L": "1"}
+    # generic in the slice: the pins apart (an object pinned at two points), Ni = 0
+    assert slice_locus.generic["Ni"] == 0 and slice_locus.locked.generic["Nc"] == 1
+    # the one assembly is a component of its own: the pins meet, Ni goes to 1
+    meet = [c for c in slice_locus.components if c.witness == s_point]
+    assert len(meet) == 1 and meet[0].numbers == s_an.numbers.as_dict()
+    # the locked locus: isolated points with Nuo = 2, S among them
+    for c in slice_locus.locked.components:
+        direct = five.analyze(at_text(c.witness)).passive.numbers
+        assert (direct.Nuo, direct.Npi) == (c.numbers["Nc"], c.numbers["Nr"] - 2)
+        assert direct.Nuo == 2
+    assert s_point in [c.witness for c in slice_locus.locked.components]
+    """),
+    md("""
+    Read the slice with the caveat in mind: its generic numbers ($N_i = 0$, and
+    $N_{uo} = 1$ for the locked system: the object is the coupler of a four-bar) are
+    those of the pins apart, and the five-bar itself is only the component where they
+    meet. The locked locus has four points where both distal links lie on the line
+    through the two pins ($N_{uo} = 2$); one of them is the assembly S. The components
+    with irrational witnesses are where a leg is stretched or folded
+    ($\\tan(q_2/2) = -1 \\pm \\sqrt 2$ or $\\tan(q_4/2) = 1 \\pm \\sqrt 2$); none of them is
+    an assembly in this slice.
+
+    ## 3. Manipulability of the pin
+
+    The manipulability ellipse of the pin's velocity (`controlled` $v_x, v_y$ at
+    `point` = the pin): the pin velocities reached with unit speed, the ellipse
+    $\\{y : y^T E^+ y \\le 1\\}$ with $E$ = `shape` exact, `index` $= \\det E$ and
+    `rank` (see `coopkin_sym.analysis.manipulability`). At home:
+    """),
+    code("""
+    m_home = home.manipulability(controlled=["v_x", "v_y"], length=1, point=[0, 2, 0])
+    show("E", m_home.shape)
+    print("rank:", m_home.rank, "| index:", m_home.index)
+    assert m_home.shape == m_home.shape.T and m_home.shape[0, 1] == 0  # mirror symmetry
+    assert m_home.rank == 2 and m_home.index > 0
+    draw_system(home, ellipsoid=True, title="five-bar at home")
+    """),
+    md("""
+    At S the ellipse is flat: the pin's motion across the line of the distal links is
+    not driven by the motors, so $E$ loses rank and its range is the driven direction:
+    """),
+    code("""
+    m_s = s_an.manipulability(controlled=["v_x", "v_y"], length=1, point=[*pin, 0])
+    show("E", m_s.shape)
+    print("rank:", m_s.rank, "| index:", m_s.index)
+    assert m_s.shape == m_s.shape.T and m_s.index == 0 and m_s.rank == 1
+    assert (m_s.shape * across).is_zero_matrix          # the free direction: no extent
+    draw_system(s_an, ellipsoid=True, title="five-bar at S (distal links in line)")
+    """),
+]
+
+
 NOTEBOOKS = {
     "01_two_one_link_arms.ipynb": NB01,
     "02_two_scara_robots.ipynb": NB02,
     "03_singularity_locus.ipynb": NB03,
     "04_exact_vs_float.ipynb": NB04,
+    "05_passive_joints_and_manipulability.ipynb": NB05,
 }
 
 

@@ -24,6 +24,7 @@ R = sp.Rational
 EXAMPLES = [
     "dh-three-finger-hand",
     "dh-two-puma560-box",
+    "five-bar",
     "paper-case1-complete-hard",
     "paper-case1-hard",
     "paper-case1-planar",
@@ -33,6 +34,7 @@ EXAMPLES = [
     "paper-case2-hard",
     "planar-two-fingers",
     "quadruped-standing",
+    "underactuated-finger",
     "urdf-two-fingers",
 ]
 
@@ -90,7 +92,7 @@ def test_example_path_and_unknown_example():
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
     with pytest.raises(ValueError, match="unknown example 'x'; shipped examples: "
                                          "dh-three-finger-hand, dh-two-puma560-box, "
-                                         "paper-case1-complete-hard, "):
+                                         "five-bar, paper-case1-complete-hard, "):
         example_path("x")
 
 
