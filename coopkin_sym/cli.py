@@ -37,7 +37,7 @@ from coopkin_sym.analysis.locus.search import LocusError, compute_locus
 from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
 from coopkin_sym.analysis.mobility import InfeasibleMotion
 from coopkin_sym.analysis.sweep import SweepError, grid
-from coopkin_sym.errors import CoopkinError, TimeLimitReached
+from coopkin_sym.errors import CoopkinError, ManipulabilityError, TimeLimitReached
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.model.configuration import ConfigurationError
 from coopkin_sym.model.examples import describe_example, list_examples
@@ -45,6 +45,7 @@ from coopkin_sym.model.model import ModelError
 from coopkin_sym.present.certificate import certificate_json
 from coopkin_sym.present.draw import DrawError, save_picture
 from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
 from coopkin_sym.present.report import (
     ReportError,
     check_target,
@@ -136,6 +137,45 @@ def draw(
     except (*USER_ERRORS, DrawError) as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")
+
+
+@app.command("manipulability")
+def manipulability_command(
+    model: ModelArg,
+    at: Annotated[str | None, typer.Option(
+        "--at", help="Joint values and parameters, as for `coopkin analyze`.")] = None,
+    generic: Annotated[bool, typer.Option(
+        "--generic", help="Keep every joint variable symbolic: E as rational functions "
+                          "and where it degenerates.")] = False,
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep symbolic.")] = None,
+    controlled: Annotated[str | None, typer.Option(
+        "--controlled", help="Comma-separated object velocities, e.g. v_x,v_y "
+                             "(default: the whole twist).")] = None,
+    length: Annotated[str, typer.Option(
+        "--length", help="The characteristic length angular velocities are scaled by "
+                         "(a positive number or a parameter, e.g. L).")] = "1",
+    point: Annotated[str | None, typer.Option(
+        "--point", help="x,y,z: v is the velocity of this object point (base frame).")
+    ] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
+) -> None:
+    """The kinematic manipulability ellipsoid of chosen object velocities, exactly: E,
+    det E, its rank and where it degenerates; at a point also its semi-axes (floats)."""
+    try:
+        system = load(model)
+        free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+        result = system.analyze(at, generic=generic, free=free_joints)
+        if isinstance(result, IrrationalAnalysis):
+            raise ManipulabilityError("--at: the ellipsoid is computed at rational "
+                                      "configurations only (tan(q/2) rational)")
+        names = [c.strip() for c in controlled.split(",")] if controlled else None
+        where = [c.strip() for c in point.split(",")] if point else None
+        m = result.manipulability(names, length=length, point=where)
+        text = manipulability_json(m, result) if as_json else manipulability_text(m, result)
+    except USER_ERRORS as exc:
+        _fail(str(exc))
+    typer.echo(text)
 
 
 @app.command()

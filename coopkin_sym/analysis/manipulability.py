@@ -146,34 +146,58 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
                                   f"parameter such as L), got {sp.sstr(ell)}")
     if analysis.model.passive_joints:
         c12, gram, c11 = _motor_parts(analysis)
+        parts = None
     else:
-        c12, c22, c23, c11 = analysis.C12, analysis.C22, analysis.C23, analysis.C11
-        gram = c22.T * c22
-        if c23.cols:
-            cross = c23.T * c22
-            gram = gram - cross.T * (c23.T * c23).inv() * cross
+        c12, c11 = analysis.C12, analysis.C11
+        parts = (analysis.C22, analysis.C23)
     if point is not None:
         c12, c11 = (_at_point(analysis, c, point) for c in (c12, c11))
-    form = sp.ImmutableMatrix(gram.applyfunc(sp.cancel))
     weight = sp.diag(*[sp.Integer(1) if n.startswith("v") else ell for n in names])
+    rows = [names.index(c) for c in controlled]
+    # all the arithmetic in one exact field of rational functions (DomainMatrix)
+    mats = [c12, c11, weight] + (list(parts) if parts else [gram])
+    c12, c11, weight, *rest = _in_one_field(mats)
+    if parts:
+        c22, c23 = rest
+        gram = c22.transpose() * c22
+        if c23.shape[1]:
+            cross = c23.transpose() * c22
+            gram = gram - cross.transpose() * (c23.transpose() * c23).inv() * cross
+    else:
+        (gram,) = rest
+    field = gram.domain
     driven = weight * c12
-    if c11.cols and driven.cols:
+    if c11.shape[1] and driven.shape[1]:
         # modulo the indeterminate motions: the part W-orthogonal to W C11
         free = weight * c11
-        driven = driven - free * (free.T * free).inv() * (free.T * driven)
-    rows = [names.index(c) for c in controlled]
-    driven = driven.extract(rows, list(range(driven.cols))).applyfunc(sp.cancel) \
-        if driven.cols else sp.zeros(len(rows), 0)
-    if driven.cols:
-        shape = driven * form.inv() * driven.T
+        driven = driven - free * (free.transpose() * free).inv() * (
+            free.transpose() * driven)
+    driven = driven.extract(rows, list(range(driven.shape[1])))
+    if driven.shape[1]:
+        shape_dm = driven * gram.inv() * driven.transpose()
     else:
-        shape = sp.zeros(len(rows), len(rows))
-    shape = sp.ImmutableMatrix(shape.applyfunc(sp.cancel))
-    index = sp.factor(sp.cancel(shape.det())) if shape.rows else sp.Integer(1)
+        shape_dm = DomainMatrix.zeros((len(rows), len(rows)), field)
+    form = sp.ImmutableMatrix(gram.to_Matrix())
+    shape = sp.ImmutableMatrix(shape_dm.to_Matrix())
+    index = sp.factor(field.to_sympy(shape_dm.det())) if len(rows) else sp.Integer(1)
     # A is positive definite, so E has the rank of the driven rows (exact, over the
     # field of rational functions of the symbols)
-    rank = DomainMatrix.from_Matrix(sp.Matrix(driven)).rank() if driven.cols else 0
+    rank = driven.rank() if driven.shape[1] else 0
     return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+
+
+def _in_one_field(mats: Sequence[sp.Matrix]) -> list[DomainMatrix]:
+    """The matrices as :class:`DomainMatrix` over one field (rationals, or rational
+    functions of their symbols): exact, and far faster than SymPy expressions."""
+    dms = [DomainMatrix.from_Matrix(sp.Matrix(m)) if m.rows * m.cols else None
+           for m in mats]
+    domain = None
+    for d in dms:
+        if d is not None:
+            domain = d.domain if domain is None else domain.unify(d.domain)
+    field = (domain if domain is not None else sp.QQ).get_field()
+    return [d.convert_to(field) if d is not None
+            else DomainMatrix.zeros(m.shape, field) for d, m in zip(dms, mats, strict=True)]
 
 
 def _motor_parts(analysis) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
@@ -220,7 +244,15 @@ def _degeneracy(index: sp.Expr) -> tuple[sp.Expr, ...]:
     _, factors = sp.factor_list(num)
     # a positive parameter alone (L) never vanishes
     return tuple(f for f, _ in factors if f.free_symbols
-                 and not (f.is_Symbol and f.is_positive))
+                 and not (f.is_Symbol and f.is_positive) and not _no_real_zero(f))
+
+
+def _no_real_zero(f: sp.Expr) -> bool:
+    """Whether a factor in one variable has no real zero (``t**2 + 1``), exactly."""
+    symbols = f.free_symbols
+    if len(symbols) != 1:
+        return False
+    return sp.Poly(f, *symbols).count_roots() == 0
 
 
 __all__ = ["Manipulability", "manipulability"]

@@ -436,7 +436,8 @@ def _draw_ellipsoid(ax, a: Analysis, scene: _Scene, values: _Values, legend: lis
     legend.append(Line2D([], [], color=color, label="manipulability ellipsoid"))
     axes = ", ".join(f"{x:.3g}" for x in sorted(semi, reverse=True))  # float-ok: plot
     kind = "ellipse" if len(names) == 2 else "ellipsoid"
-    return (f"manipulability {kind}: velocity of the contacts' centre at unit joint "
+    speed = "motor" if a.model.passive_joints else "joint"
+    return (f"manipulability {kind}: velocity of the contacts' centre at unit {speed} "
             f"speed, semi-axes {axes} (rank {m.rank}), drawn x{scale:.3g}")
 
 
