@@ -27,7 +27,7 @@ Example
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
@@ -96,7 +96,7 @@ class IrrationalAnalysis(Displayable):
     ``motions`` holds the exact motions behind ``Ni`` and ``Nr`` for a quadratic field
     (None for a field of higher degree); ``joints`` names the joints; ``passive`` has
     the passive-joint numbers (:mod:`coopkin_sym.analysis.passive`) of a model with
-    passive joints, else None.
+    passive joints, else None; ``model`` is the model analyzed.
 
     Example
     -------
@@ -119,6 +119,7 @@ class IrrationalAnalysis(Displayable):
     object_dim: int = 6
     system: str = ""
     passive: PassiveNumbers | None = None
+    model: Model | None = field(default=None, repr=False, compare=False)
 
     def __repr__(self) -> str:
         at = ",".join(f"{k}={v}" for k, v in self.at.items())
@@ -216,7 +217,7 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
         tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
         joints=model.joint_names, object_dim=model.object_dim, system=model.name,
-        passive=passive)
+        passive=passive, model=model)
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):

@@ -1,9 +1,11 @@
 """Pictures come with the default install, every part of an output left out is
-announced (``coopkin: note: ...`` on stderr, an ``OutputSkipped`` warning in Python)."""
+announced (``coopkin: note: ...`` on stderr, an ``OutputSkipped`` warning in Python),
+and ``draw`` works at angles with an irrational ``tan(q/2)``."""
 
 from __future__ import annotations
 
 import tomllib
+import warnings
 from pathlib import Path
 
 import pytest
@@ -13,10 +15,12 @@ from coopkin_sym import load
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.cli import app
 from coopkin_sym.errors import OutputSkipped
+from coopkin_sym.present.draw import draw_system
 from coopkin_sym.present.report import write_report
 
 runner = CliRunner()
 ROOT = Path(__file__).resolve().parents[2]
+PNG = b"\x89PNG\r\n\x1a\n"
 
 # one prismatic joint pushing a hard finger: its numbers never change, so its locus
 # has no component and there is nothing to plot
@@ -82,3 +86,63 @@ def test_write_report_warns_for_what_it_leaves_out(tmp_path):
         "no plot of the components: the locus has no component",
         "no picture of the system: no component has a real witness to draw it at"]
     assert [p.name for p in written] == ["r.html"]
+
+
+# --- draw at irrational angles -------------------------------------------------------------
+def test_draw_at_irrational_angles(tmp_path):
+    out = tmp_path / "x.png"
+    result = runner.invoke(app, ["draw", "paper-case1-hard", "--at", "q1=-pi/6,q2=pi/6",
+                                 "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout == f"wrote {out}\n" and result.stderr == ""
+    assert out.read_bytes().startswith(PNG)
+
+
+def test_draw_at_irrational_angles_says_the_motion_is_not_drawn(tmp_path):
+    out = tmp_path / "y.png"
+    result = runner.invoke(app, ["draw", "paper-case2-hard", "--at", "q1=pi/3,q3=-pi/4",
+                                 "--motion", "coordinated:1", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert notes(result.stderr) == [
+        "coopkin: note: coordinated motion 1 not drawn: the blocks are not computed at a "
+        "configuration with irrational coordinates (use one with rational tan(q/2), "
+        "e.g. 2*atan(p/q))"]
+    assert out.read_bytes().startswith(PNG)
+    # the motion is still checked against the exact numbers there (Nc - Ni = 5)
+    result = runner.invoke(app, ["draw", "paper-case2-hard", "--at", "q1=pi/3",
+                                 "--motion", "coordinated:6", "-o", str(out)])
+    assert result.exit_code == 2
+    assert "there is no coordinated motion 6: this system has 5" in result.stderr
+    assert "Traceback" not in result.stderr
+
+
+def test_draw_refuses_transcendental_angles(tmp_path):
+    result = runner.invoke(app, ["draw", "paper-case1-hard", "--at", "q1=1",
+                                 "-o", str(tmp_path / "z.png")])
+    assert result.exit_code == 2
+    assert result.stderr.startswith("coopkin: error: --at q1: angle '1' is not exact")
+    assert not (tmp_path / "z.png").exists()
+
+
+def test_the_picture_at_irrational_angles():
+    case1 = load("paper-case1-hard")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", OutputSkipped)    # nothing asked is left out
+        fig = draw_system(case1, at="q1=-pi/6,q2=pi/6,L=2")
+    title = fig.axes[0].get_title()
+    assert "at q1=-pi/6,q2=pi/6,L=2   Nm=3 Nc=3 Ni=3 Nr=0" in title   # exact numbers
+    assert "tan(q1/2), tan(q2/2) irrational" in title
+    assert "drawn at home" not in title
+    # both contacts meet at the tip, at (L cos(pi/3), L sin(pi/3)) = (1, sqrt(3))
+    dots = [a for a in fig.axes[0].get_children()
+            if (a.get_gid() or "").startswith("contact:")]
+    for dot in dots:
+        x, y, _ = (float(v[0]) for v in dot.get_data_3d())
+        assert x == pytest.approx(1.0, abs=1e-12)
+        assert y == pytest.approx(3 ** 0.5, abs=1e-12)
+    # the analysis itself can be drawn, and a motion asked for is announced
+    analysis = case1.analyze("q1=-pi/6,q2=pi/6")
+    with pytest.warns(OutputSkipped, match="indeterminate motion 1 not drawn"):
+        fig = draw_system(analysis, motion="indeterminate:1")
+    assert "not drawn" in fig.axes[0].get_title()
+    assert case1.draw("q1=pi/3").axes
