@@ -5,8 +5,10 @@
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
 [--timeout SECONDS] [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
 ``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``.
-Bad input prints one clear error to stderr and exits 2; no traceback, nothing
-half-written. A verification that finds something uncovered or unsound exits 1.
+A part of an output left out (a plot with nothing to show, a motion not available at
+the configuration) is announced on stderr as ``coopkin: note: ...``. Bad input prints
+one clear error to stderr and exits 2; no traceback, nothing half-written. A
+verification that finds something uncovered or unsound exits 1.
 
 Example
 -------
@@ -25,6 +27,7 @@ import os
 import signal
 import sys
 import threading
+import warnings
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
@@ -37,7 +40,12 @@ from coopkin_sym.analysis.locus.search import LocusError, compute_locus
 from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
 from coopkin_sym.analysis.mobility import InfeasibleMotion
 from coopkin_sym.analysis.sweep import SweepError, grid
-from coopkin_sym.errors import CoopkinError, ManipulabilityError, TimeLimitReached
+from coopkin_sym.errors import (
+    CoopkinError,
+    ManipulabilityError,
+    OutputSkipped,
+    TimeLimitReached,
+)
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.model.configuration import ConfigurationError
 from coopkin_sym.model.examples import describe_example, list_examples
@@ -76,6 +84,21 @@ USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, Infeas
 def _fail(message: str) -> None:
     typer.echo(f"coopkin: error: {message}", err=True)
     raise typer.Exit(2)
+
+
+@contextmanager
+def _notes():
+    """Print every part of an output left out (an
+    :class:`~coopkin_sym.errors.OutputSkipped` warning) on stderr, one
+    ``coopkin: note: ...`` line each, once the block has run; other warnings pass on."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", OutputSkipped)
+        yield
+    for w in caught:
+        if issubclass(w.category, OutputSkipped):
+            typer.echo(f"coopkin: note: {w.message}", err=True)
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
 @app.command()
@@ -133,7 +156,8 @@ def draw(
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
     try:
-        path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
+        with _notes():
+            path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
     except (*USER_ERRORS, DrawError) as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")
@@ -294,7 +318,9 @@ def locus(
         shown = verification_json(checked) if checked else None
         if shown is not None and checked_locked is not None:
             shown["locked"] = verification_json(checked_locked)
-        written = write_report(result, output, system, pairs=pairs, verification=shown)
+        with _notes():
+            written = write_report(result, output, system, pairs=pairs,
+                                   verification=shown)
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)

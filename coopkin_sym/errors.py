@@ -14,6 +14,10 @@ All of them live here, grouped by the layer that raises them: exact numbers and 
 :class:`DrawError`, :class:`PlotError`). Each also keeps its historical base
 (``ValueError``), so older ``except ValueError`` code still catches it.
 
+One warning, :class:`OutputSkipped`, says that a part of an output was left out
+while the rest was written (a plot with nothing to show, a motion not available at
+the configuration); ``coopkin`` prints each as a note on stderr.
+
 Example
 -------
 >>> issubclass(ModelError, CoopkinError) and issubclass(ModelError, ValueError)
@@ -333,4 +337,21 @@ class PlotError(ValueError, CoopkinError):
     Traceback (most recent call last):
     ...
     coopkin_sym.errors.PlotError: pair: the two joints must differ, got 'q1' twice
+    """
+
+
+class OutputSkipped(UserWarning):
+    """A part of an output left out while the rest was written: a plot with nothing
+    to show, a picture that could not be drawn, a motion not available at the
+    configuration. A warning, not an error; ``coopkin`` prints each on stderr as
+    ``coopkin: note: ...``.
+
+    Example
+    -------
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     warnings.warn("no plot: nothing to show", OutputSkipped)
+    >>> caught[0].category.__name__, str(caught[0].message)
+    ('OutputSkipped', 'no plot: nothing to show')
     """

@@ -27,7 +27,7 @@ Example
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 from sympy.polys.numberfields.subfield import primitive_element
@@ -35,7 +35,7 @@ from sympy.polys.numberfields.subfield import primitive_element
 from coopkin_sym import limits
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
-from coopkin_sym.analysis.mobility import numbers_modulo
+from coopkin_sym.analysis.mobility import frame_json, numbers_modulo, snapped_json
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
 from coopkin_sym.analysis.passive import PassiveNumbers, passive_numbers
 from coopkin_sym.analysis.renderers import Displayable, clip
@@ -96,7 +96,8 @@ class IrrationalAnalysis(Displayable):
     ``motions`` holds the exact motions behind ``Ni`` and ``Nr`` for a quadratic field
     (None for a field of higher degree); ``joints`` names the joints; ``passive`` has
     the passive-joint numbers (:mod:`coopkin_sym.analysis.passive`) of a model with
-    passive joints, else None.
+    passive joints, else None; ``model`` is the model analyzed; ``variables`` the
+    symbols left (parameters without a value).
 
     Example
     -------
@@ -119,6 +120,8 @@ class IrrationalAnalysis(Displayable):
     object_dim: int = 6
     system: str = ""
     passive: PassiveNumbers | None = None
+    model: Model | None = field(default=None, repr=False, compare=False)
+    variables: tuple[str, ...] = ()
 
     def __repr__(self) -> str:
         at = ",".join(f"{k}={v}" for k, v in self.at.items())
@@ -126,13 +129,50 @@ class IrrationalAnalysis(Displayable):
                 f"Q({clip(self.alpha, 50)}): {numbers_line(self.numbers)}>")
 
     def as_json(self) -> dict:
-        """The JSON of ``coopkin analyze`` here, without words (the presentation
-        layer adds why the blocks are ``"omitted"`` and the sentences as ``"meaning"``)."""
-        return {"numbers": self.numbers.as_dict(), "classes": list(grasp_classes(self.numbers)),
-                "blocks": {},
-                "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
-                          "tangents": self.tangents},
-                **({"passive": {"numbers": self.passive.as_dict()}} if self.passive else {})}
+        """The JSON of ``coopkin analyze`` here, with the keys of a rational analysis
+        (:meth:`~coopkin_sym.analysis.mobility.Analysis.as_json`): the blocks and their
+        coordinated form are null (not computed here), their shapes follow from the
+        numbers. Without words (the presentation layer adds why the blocks are
+        ``"omitted"`` and the sentences as ``"meaning"``).
+
+        Example
+        -------
+        >>> from coopkin_sym.model.model import load_model
+        >>> a = analyze_irrational(load_model("paper-case1-hard"), "q1=-pi/6,q2=pi/6")
+        >>> data = a.as_json()
+        >>> data["blocks"]["C11"], data["shapes"]["C11"], data["variables"]
+        (None, [6, 3], ['L'])
+        """
+        n, r, dim = self.numbers, len(self.joints), self.object_dim
+        driven = n.Nc - n.Ni
+        model = self.model
+        return {
+            "system": self.system,
+            "configuration": ",".join(f"{k}={v}" for k, v in self.at.items()),
+            "point": "irrational",
+            "variables": list(self.variables),
+            "joints": list(self.joints),
+            "twist": list(model.twist_names) if model is not None else [],
+            "numbers": n.as_dict(),
+            "classes": list(grasp_classes(n)),
+            "blocks": dict.fromkeys(("C11", "C12", "C22", "C23")),
+            "shapes": {"C11": [dim, n.Ni], "C12": [dim, driven], "C22": [r, driven],
+                       "C23": [r, n.Nr]},
+            "coordinated_form": None,
+            "object_frame": frame_json(model.object_frame) if model is not None else None,
+            "snapped": snapped_json(model.snapped) if model is not None else [],
+            "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
+                      "tangents": self.tangents},
+            **({"passive": self._passive_json()} if self.passive else {})}
+
+    def _passive_json(self) -> dict:
+        """The passive-joint numbers; their subspaces are not computed here (null)."""
+        joints = self.model.joints if self.model is not None else ()
+        return {"actuated": [j.name for j in joints if j.actuated],
+                "passive": [j.name for j in joints if not j.actuated],
+                "numbers": self.passive.as_dict(),
+                **dict.fromkeys(("controlled", "uncontrolled", "internal",
+                                 "actuated_redundant"))}
 
 
 def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
@@ -216,7 +256,9 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         minimal_polynomial=sp.sstr(minimal), alpha=sp.sstr(alpha),
         tangents={n: sp.sstr(irrational[n]) for n in names}, motions=motions,
         joints=model.joint_names, object_dim=model.object_dim, system=model.name,
-        passive=passive)
+        passive=passive, model=model,
+        variables=tuple(n for n in kin.ring.names if n not in
+                        {tangent_name(x) for x in names}))
 
 
 def _in_slot(zctx, coeffs: Sequence, k: int):

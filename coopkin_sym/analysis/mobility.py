@@ -532,6 +532,7 @@ class Analysis(Displayable):
         out = {
             "system": self.model.name,
             "configuration": self.configuration.at_text(),
+            "point": "symbolic" if self.configuration.free else "rational",
             "variables": [str(v) for v in self.variables],
             "joints": list(self.model.joint_names),
             "twist": list(self.model.twist_names),
@@ -540,9 +541,9 @@ class Analysis(Displayable):
             "blocks": {k: strs(v) if v is not None else None for k, v in blocks.items()},
             "shapes": shapes,
             "coordinated_form": None if omitted else self.coordinated_form,
-            "object_frame": _frame_json(self.model.object_frame),
-            "snapped": [{"where": x.where, "given": x.given, "exact": x.exact,
-                         "error": x.error} for x in self.model.snapped],
+            "object_frame": frame_json(self.model.object_frame),
+            "snapped": snapped_json(self.model.snapped),
+            "field": None,
         }
         if omitted:
             out["omitted"] = omitted
@@ -743,7 +744,13 @@ def analyze(model: Model, config: Configuration) -> Analysis:
     return Analysis(model, config, kinematics.build(model, config))
 
 
-def _frame_json(frame) -> dict | None:
+def snapped_json(snapped) -> list[dict]:
+    """The URDF floats snapped to exact values, as plain data."""
+    return [{"where": x.where, "given": x.given, "exact": x.exact, "error": x.error}
+            for x in snapped]
+
+
+def frame_json(frame) -> dict | None:
     """The object frame as exact texts: its point and its axes (base coordinates)."""
     if frame is None:
         return None

@@ -7,7 +7,12 @@ is evaluated exactly at rational values and only then turned into floats for
 matplotlib. No rank, nullspace or singularity is decided here.
 
 Parameters left symbolic are drawn at 1 and joints left symbolic at home (q = 0); the
-title says so. On request the picture shows one motion:
+title says so. At an angle whose ``tan(q/2)`` is irrational but algebraic
+(``q1=-pi/6``) the numbers in the title are the exact ones there
+(:mod:`coopkin_sym.analysis.irrational`) and the geometry is evaluated at a rational
+within ``1e-30`` of each such tangent; the blocks are not computed there, so no motion
+or ellipsoid is drawn (an :class:`~coopkin_sym.errors.OutputSkipped` warning says so
+when one was asked for). On request the picture shows one motion:
 
 * ``("coordinated", k)``: column ``k`` of ``C12`` and ``C22`` (paper eq. 8): the
   velocity of the object at each contact point, the object's twist (a translation
@@ -38,7 +43,9 @@ import io
 import itertools
 import os
 import textwrap
+import warnings
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -47,9 +54,17 @@ import numpy as np  # float-ok: drawing coordinates
 import sympy as sp
 
 from coopkin_sym import limits
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.irrational import (
+    IrrationalAnalysis,
+    analyze_irrational,
+    irrational_values,
+)
 from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis, analyze
-from coopkin_sym.errors import DrawError
+from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.errors import ConfigurationError, DrawError, OutputSkipped
+from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ring import Frac
 from coopkin_sym.exact.sympy_bridge import rational_to_sympy
@@ -137,17 +152,63 @@ def _motion_count(kind: str, a: Analysis) -> int:
     return {"coordinated": n.Nc - n.Ni, "indeterminate": n.Ni, "redundant": n.Nr}[kind]
 
 
-def _analysis(source: Any, at: str | Mapping | None) -> Analysis:
+@dataclass(frozen=True)
+class _AtIrrational:
+    """What a picture needs at a configuration with irrational tangents: the exact
+    analysis there (its numbers), the geometry with those joints symbolic, and for
+    each of their ``tan(q/2)`` a rational within ``1e-30`` to draw it at."""
+
+    model: Model
+    kinematics: Any
+    configuration: Configuration
+    exact: IrrationalAnalysis
+    near: dict[str, sp.Rational]
+
+    @property
+    def numbers(self) -> Numbers:
+        return self.exact.numbers
+
+
+def _near(value: sp.Expr) -> sp.Rational:
+    """A rational within ``1e-30`` of a real algebraic number (for drawing only)."""
+    return sp.Rational(sp.N(value, 45))
+
+
+def _at_irrational(model: Model, at: str | Mapping) -> _AtIrrational | None:
+    """The picture's data at ``at`` when some angle there has an irrational (but
+    algebraic) ``tan(q/2)``; None when every value is rational."""
+    rational, irrational = irrational_values(model, at)
+    if not irrational:
+        return None
+    exact = analyze_irrational(model, at)
+    config = Configuration.parse(model, dict(rational), free=list(irrational))
+    return _AtIrrational(model, kinematics.build(model, config), config, exact,
+                         {tangent_name(n): _near(v) for n, v in irrational.items()})
+
+
+def _analysis(source: Any, at: str | Mapping | None) -> Analysis | _AtIrrational:
     if isinstance(source, Analysis):
         if at is not None:
             raise DrawError("at: this analysis already has its configuration; pass the "
                             "system (or analyze it at the configuration) instead")
         return source
-    if isinstance(source, Model) or hasattr(source, "model"):
+    if isinstance(source, IrrationalAnalysis):
+        if at is not None or source.model is None:
+            raise DrawError("at: pass the system and the configuration to draw an "
+                            "analysis at irrational angles")
+        model, at = source.model, dict(source.at)
+    elif isinstance(source, Model) or hasattr(source, "model"):
         model = model_of(source)
     else:
         model = load_model(source)
-    return analyze(model, Configuration.parse(model, at))
+    try:
+        config = Configuration.parse(model, at)
+    except ConfigurationError:
+        there = _at_irrational(model, at) if at is not None else None
+        if there is None:
+            raise
+        return there
+    return analyze(model, config)
 
 
 @functools.cache
@@ -183,13 +244,17 @@ class _Values:
     """Rational values for the symbols left in an analysis: free joints at home,
     free parameters at 1."""
 
-    def __init__(self, a: Analysis):
+    def __init__(self, a: Analysis | _AtIrrational):
         ring = a.kinematics.ring
         self.unit = [n for n in ring.names if n in {p.name for p in a.model.parameters}]
-        # t = tan(q/2) = 0 and a prismatic displacement 0 are home; lengths at 1
-        self.fmpq = [flint.fmpq(1 if n in self.unit else 0) for n in ring.names]
+        # t = tan(q/2) = 0 and a prismatic displacement 0 are home; lengths at 1; an
+        # irrational tan(q/2) at a rational next to it
+        self.near = dict(getattr(a, "near", {}))
+        value = {n: self.near.get(n, sp.Integer(1 if n in self.unit else 0))
+                 for n in ring.names}
+        self.fmpq = [flint.fmpq(int(value[n].p), int(value[n].q)) for n in ring.names]
         syms = a.kinematics.symbols
-        self.sympy = {syms[n]: sp.Integer(1 if n in self.unit else 0) for n in ring.names}
+        self.sympy = {syms[n]: value[n] for n in ring.names}
 
     def exact(self, f: Frac) -> sp.Rational:
         """A :class:`Frac` at the drawing values, exactly."""
@@ -223,7 +288,8 @@ class _Values:
         parts = []
         if self.unit:
             parts.append(f"{', '.join(self.unit)} symbolic, drawn at 1")
-        joints = [j.name for j in a.model.joints if j.name in a.configuration.free]
+        joints = [j.name for j in a.model.joints if j.name in a.configuration.free
+                  and tangent_name(j.name) not in self.near]
         if joints:
             parts.append(f"{', '.join(joints)} symbolic, drawn at home (0)")
         return "; ".join(parts)
@@ -315,7 +381,9 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
         An :class:`~coopkin_sym.analysis.mobility.Analysis`, a :class:`~coopkin_sym.System`,
         or anything :func:`coopkin_sym.load` accepts (file, dict, example name).
     at
-        Configuration to analyze and draw (not with an ``Analysis``, which has one).
+        Configuration to analyze and draw (not with an ``Analysis``, which has one);
+        angles with an irrational ``tan(q/2)`` (``q1=-pi/6``) are drawn without a
+        motion (see the module's note).
     motion
         ``None``, ``("coordinated", k)``, ``("indeterminate", k)``, ``("redundant", k)``
         or the same as text ``"coordinated:1"``; ``k`` counts from 1.
@@ -373,17 +441,27 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     _draw_arms(ax, a, scene, legend)
     _draw_contacts(ax, a, scene, legend)
     motion_line = ""
-    if request is not None:
-        motion_line = _draw_motion(ax, a, scene, values, request, legend)
-    if ellipsoid:
-        line = _draw_ellipsoid(ax, a, scene, values, legend)
-        motion_line = f"{motion_line}\n{line}" if motion_line else line
+    if isinstance(a, _AtIrrational):
+        motion_line = _not_drawn(request, ellipsoid)
+    else:
+        if request is not None:
+            motion_line = _draw_motion(ax, a, scene, values, request, legend)
+        if ellipsoid:
+            line = _draw_ellipsoid(ax, a, scene, values, legend)
+            motion_line = f"{motion_line}\n{line}" if motion_line else line
     _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
-    where = a.configuration.at_text() or "home (all joints at 0)"
+    if isinstance(a, _AtIrrational):
+        where = ",".join(f"{k}={v}" for k, v in a.exact.at.items())
+    else:
+        where = a.configuration.at_text() or "home (all joints at 0)"
     n = a.numbers
     lines.append(f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}")
     note = values.note(a)
+    if isinstance(a, _AtIrrational):
+        exact = (f"{', '.join(f'tan({j}/2)' for j in a.exact.tangents)} irrational: "
+                 "numbers exact over Q(alpha), drawn at float coordinates")
+        note = f"{note}; {exact}" if note else exact
     if note:
         lines.append(note)
     if motion_line:
@@ -398,6 +476,20 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     ax.legend(handles=unique, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
               frameon=False)
     return fig
+
+
+def _not_drawn(request: tuple[str, int] | None, ellipsoid: bool) -> str:
+    """At irrational angles: the motion and ellipsoid asked for are not drawn (the
+    blocks are not computed there); a warning and the title line say so."""
+    asked = ([f"{request[0]} motion {request[1]}"] if request else []) + (
+        ["the manipulability ellipsoid"] if ellipsoid else [])
+    if not asked:
+        return ""
+    line = (f"{' and '.join(asked)} not drawn: the blocks are not computed at a "
+            "configuration with irrational coordinates (use one with rational "
+            "tan(q/2), e.g. 2*atan(p/q))")
+    warnings.warn(line, OutputSkipped, stacklevel=4)
+    return _wrap(line, 110)
 
 
 def _draw_ellipsoid(ax, a: Analysis, scene: _Scene, values: _Values, legend: list) -> str:

@@ -31,6 +31,7 @@ import io
 import json
 import os
 import re
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -42,7 +43,7 @@ from coopkin_sym.analysis.classes import CLASS_NUMBERS, grasp_classes
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
-from coopkin_sym.errors import ReportError
+from coopkin_sym.errors import OutputSkipped, ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.draw import draw_system
@@ -1130,7 +1131,8 @@ SYSTEM_PICTURE = "system"
 
 
 def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str], bytes]:
-    """The system drawn at the first real component's witness, with its motion."""
+    """The system drawn at the first real component's witness, with its motion; a
+    note (:class:`~coopkin_sym.errors.OutputSkipped`) when it cannot be drawn."""
     if system is None or not hasattr(system, "model"):
         return {}
     for k, comp in enumerate(locus.components):
@@ -1143,9 +1145,26 @@ def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str]
                 buf = io.BytesIO()
                 fig.savefig(buf, format="png", dpi=dpi)
                 return {(SYSTEM_PICTURE, f"component {k + 1}"): buf.getvalue()}
-            except (ImportError, ValueError):  # the picture is optional in a report
+            except (ImportError, ValueError) as exc:  # the picture is optional here
+                _skipped(f"no picture of the system at component {k + 1}: "
+                         f"{' '.join(str(exc).split())}")
                 return {}
+    _skipped("no picture of the system: no component has a real witness to draw it at")
     return {}
+
+
+def _skipped(text: str) -> None:
+    """Say that a part of the report is left out (shown by ``coopkin`` on stderr)."""
+    warnings.warn(text, OutputSkipped, stacklevel=3)
+
+
+def _no_pairs(locus: Locus) -> str:
+    """Why no pair of joints is plotted by default."""
+    if not locus.components:
+        return "the locus has no component"
+    if not any(c.real for c in locus.components):
+        return "no component has real points"
+    return "no real component involves a joint"
 
 
 def _png_name(stem: str, pair: tuple[str, str]) -> str:
@@ -1157,11 +1176,14 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
            dpi: int) -> tuple[dict[tuple[str, str], bytes], str | None]:
     try:
         chosen = pairs if pairs is not None else default_pairs(locus, system)
+        if not chosen:
+            _skipped(f"no plot of the components: {_no_pairs(locus)}")
         pngs = {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}
         pngs.update(_system_picture(locus, system, dpi))
         return pngs, None
     except PlotError as exc:
         if "matplotlib" in str(exc) and pairs is None:  # pragma: no cover
+            _skipped(f"no plots: {exc}")
             return {}, str(exc)
         raise ReportError(str(exc)) from None
 
@@ -1173,7 +1195,10 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     ``.tex``, ``.json``), with a PNG per joint pair next to it
     (``<stem>_<qi>_<qj>.png``; none for JSON). Everything is rendered first and
     written through temporary files renamed at the end: nothing is half-written on
-    an error. Returns the files written, the report first.
+    an error. Returns the files written, the report first. A part left out (no plot
+    when no real component involves a joint, no picture of the system when it cannot
+    be drawn) is announced by an :class:`~coopkin_sym.errors.OutputSkipped` warning
+    (``coopkin locus`` prints it on stderr).
 
     Parameters
     ----------

@@ -33,6 +33,10 @@ from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 # entries larger than this (in operations) are not simplified for words
 _MAX_OPS = 400
 
+# a motion whose entries are too large to put in words; like every motion phrase it
+# starts with a verb ("the object can still ...", "... by moving ...")
+_TOO_LARGE = "make a motion too large to describe in words (see the blocks)"
+
 _WORDS = ["no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
           "ten"]
 
@@ -129,8 +133,10 @@ def _places_with_points(contacts):
 
 
 def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> str:
-    """A rigid-body velocity ``u = (v, w)`` in words; lines are named by the contact
-    points (``(name, point)`` pairs) on them.
+    """A rigid-body velocity ``u = (v, w)`` in words, as a verb phrase ("rotate about
+    ...", "translate along ...", "make a motion too large to describe in words" when
+    the entries are too large); lines are named by the contact points (``(name,
+    point)`` pairs) on them.
 
     Example
     -------
@@ -139,7 +145,7 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     """
     u = spatial_twist([exact_expr(e, None, "twist") for e in u])
     if _too_big(u):
-        return "a motion too large to describe in words (see the blocks)"
+        return _TOO_LARGE
     v, w = u[:3], u[3:]
     if all(_is_zero(e) for e in w):
         return f"translate along {_direction(v)}"
@@ -155,8 +161,8 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
 
 
 def describe_twist(u, analysis: Analysis) -> str:
-    """A rigid-body velocity ``u = (v, w)`` in words ("rotation about the line through
-    c1 and c2", "translation along x")."""
+    """A rigid-body velocity ``u = (v, w)`` in words, as a verb phrase ("rotate about
+    the line through c1 and c2", "translate along x")."""
     symbols = _symbols(analysis)
     u = analysis.twist_in_base([exact_expr(e, symbols, f"u[{i}]") for i, e in enumerate(u)])
     return twist_words(u, _contact_points(analysis))

@@ -21,8 +21,9 @@ from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
-__all__ = ["analysis_json", "analysis_latex", "analysis_text", "block_table",
-           "irrational_text", "object_frame_text", "snapped_lines"]
+__all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
+           "analysis_text", "block_table", "irrational_text", "object_frame_text",
+           "snapped_lines"]
 
 # why an analysis at an irrational point has no blocks
 _IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the numbers "
@@ -217,19 +218,62 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
     return "\n".join(out)
 
 
+#: The top-level keys of ``coopkin analyze --json``, in order, on every path; ``passive``
+#: follows for a model with passive joints (docs/analyze-json.md).
+JSON_KEYS = ("system", "configuration", "point", "variables", "joints", "twist", "numbers",
+             "classes", "blocks", "shapes", "coordinated_form", "object_frame", "snapped",
+             "field", "omitted", "meaning")
+
+# why the subspaces of the passive joints are not given at an irrational point
+_IRRATIONAL_PASSIVE = ("at a configuration with irrational coordinates only the "
+                       "passive-joint numbers are computed")
+# why the coordinated form is not given when a block is omitted
+_FORM_OMITTED = "not given when a block is omitted"
+
+
+def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
+    """The data of ``coopkin analyze --json``: the same keys (:data:`JSON_KEYS`, then
+    ``passive`` for a model with passive joints) at a rational point, generically and
+    at irrational angles; a value not computed is null (or empty) and ``omitted``
+    says why, by key (a block name ``C11``..``C23``, ``coordinated_form``,
+    ``passive``). The schema: ``docs/analyze-json.schema.json``.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> data = analysis_document(load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6"))
+    >>> data["point"], data["blocks"]["C11"], sorted(data["omitted"])[:2]
+    ('irrational', None, ['C11', 'C12'])
+    >>> list(analysis_document(load("paper-case1-hard").analyze())) == list(JSON_KEYS)
+    True
+    """
+    data = result.as_json()
+    omitted = dict(data.get("omitted") or {})
+    if isinstance(result, IrrationalAnalysis):
+        omitted.update(dict.fromkeys(data["blocks"], _IRRATIONAL_OMITTED))
+        omitted["coordinated_form"] = _IRRATIONAL_OMITTED
+        if "passive" in data:
+            omitted["passive"] = _IRRATIONAL_PASSIVE
+        meaning = irrational_sentences(result)
+    else:
+        if data["coordinated_form"] is None:
+            omitted["coordinated_form"] = _FORM_OMITTED
+        meaning = sentences(result)
+    data.update(omitted=omitted, meaning=meaning)
+    out = {k: data[k] for k in JSON_KEYS}
+    if "passive" in data:
+        out["passive"] = data["passive"]
+    return out
+
+
 def analysis_json(result: Analysis | IrrationalAnalysis) -> str:
-    """What ``coopkin analyze --json`` prints: the analysis's data (at an irrational
-    point, with why the blocks are omitted and the sentences as ``"meaning"``).
+    """What ``coopkin analyze --json`` prints: :func:`analysis_document` as text.
 
     Example
     -------
     >>> from coopkin_sym import load
     >>> data = json.loads(analysis_json(load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")))
-    >>> data["numbers"]["Nm"], sorted(data["omitted"])
-    (3, ['blocks'])
+    >>> data["numbers"]["Nm"], data["configuration"], data["field"]["alpha"]
+    (3, 'q1=-pi/6,q2=pi/6', '-2 + sqrt(3)')
     """
-    if not isinstance(result, IrrationalAnalysis):
-        return json.dumps(result.as_json(), indent=2)
-    data = {**result.as_json(), "omitted": {"blocks": _IRRATIONAL_OMITTED},
-            "meaning": irrational_sentences(result)}
-    return json.dumps(data, indent=2)
+    return json.dumps(analysis_document(result), indent=2)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import random
+import sys
 from concurrent.futures import ProcessPoolExecutor
 from fractions import Fraction
 
@@ -306,9 +307,10 @@ def test_cli_csv_content():
     assert "# fixed: L=1" in comments
     assert "# snapped: none: every angle is exact as requested" in comments
     table = [x for x in lines if not x.startswith("#")]
-    assert table[0] == "q1,q2,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
-    assert table[1] == "-pi/2,-pi/2,3,3,1,0,1,4,1,true"
-    assert table[5] == "0,0,2,2,1,0,1,4,0,false"
+    assert table[0] == "q1,q1_rad,q2,q2_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
+    assert table[1] == ("-pi/2,-1.5707963267948966,-pi/2,-1.5707963267948966,"
+                        "3,3,1,0,1,4,1,true")
+    assert table[5] == "0,0.0,0,0.0,2,2,1,0,1,4,0,false"
     assert len(table) == 10
 
 
@@ -329,7 +331,7 @@ def test_cli_json_and_files(tmp_path):
     result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid", "q1=0..pi/2:3",
                                  "-o", str(csv), "--no-progress"])
     assert result.exit_code == 0, result.output
-    assert csv.read_text().splitlines()[5] == "q1,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
+    assert csv.read_text().splitlines()[6] == "q1,q1_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
     result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid", "q1=0..1:2",
                                  "--json"])
     assert json.loads(result.stdout)["header"]["counts"]["points"] == 2
@@ -353,3 +355,57 @@ def test_cli_errors_are_clean_and_write_nothing(tmp_path, args, message):
     assert result.stderr.startswith("coopkin: error: ") and message in result.stderr
     assert "Traceback" not in result.stderr
     assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+# --- float columns and pandas -------------------------------------------------------------
+def _table(csv: str) -> list[list[str]]:
+    return [line.split(",") for line in csv.splitlines() if not line.startswith("#")]
+
+
+def test_csv_has_a_float_column_next_to_each_exact_one():
+    res = CASE1.sweep(grid(CASE1, "q1=-pi..pi:5,q2=pi/6..pi/6:1"), at="L=1")
+    csv = res.to_csv()
+    assert "# q1_rad: q1 in radians, a float (the exact value is in column q1)" in csv
+    head, *rows = _table(csv)
+    assert head[:4] == ["q1", "q1_rad", "q2", "q2_rad"]
+    for row in rows:
+        for k in (0, 2):                      # the float is the exact angle, rounded
+            exact = sp.sympify(row[k]).evalf(30)
+            assert abs(float(row[k + 1]) - float(exact)) <= 1e-15   # float-ok: the check
+        assert all(x.isdigit() for x in row[4:11])                  # numbers: integers
+    assert [r[0:2] for r in rows][::2] == [["-pi", "-3.141592653589793"],
+                                           ["0", "0.0"], ["pi", "3.141592653589793"]]
+    assert rows[0][2].startswith("2*atan(")    # pi/6 snapped to an exact angle
+    assert res.header()["float_columns"] == res.float_columns()
+    assert res.rows()[0].keys() == {"q1", "q2", "Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh",
+                                    "exact_recheck"}   # the JSON points stay exact
+
+
+def test_prismatic_float_column():
+    case2 = coopkin_sym.load("paper-case2-hard")
+    res = case2.sweep(grid(case2, "q4=-1/3..1:3"), at="L=1")
+    head, first, *_ = _table(res.to_csv())
+    assert head[:2] == ["q4", "q4_float"] and first[:2] == ["-1/3", "-0.3333333333333333"]
+
+
+def test_to_pandas():
+    pd = pytest.importorskip("pandas")
+    res = CASE1.sweep(grid(CASE1, "q1=-pi/2..pi/2:3,q2=-pi/2..pi/2:3"), at="L=1")
+    df = res.to_pandas()
+    assert isinstance(df, pd.DataFrame) and len(df) == 9
+    assert list(df.columns) == res.csv_columns()
+    assert all(str(df[k].dtype) == "int64" for k in ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd",
+                                                       "Nh"))
+    assert str(df["q1_rad"].dtype) == "float64" and str(df["exact_recheck"].dtype) == "bool"
+    assert df["q1"].tolist() == [r["q1"] for r in res.rows()]
+    assert df["Nm"].tolist() == res.numbers[:, 0].tolist()
+    assert df.attrs["header"]["system"] == "paper case 1, hard/hard"
+    assert df.loc[df["Nm"] == 3, ["q1", "q2"]].values.tolist() == [
+        ["-pi/2", "-pi/2"], ["-pi/2", "pi/2"], ["pi/2", "-pi/2"], ["pi/2", "pi/2"]]
+
+
+def test_to_pandas_without_pandas(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)       # import pandas fails
+    res = CASE1.sweep(["q1=pi/2"])
+    with pytest.raises(ImportError, match="pip install pandas"):
+        res.to_pandas()

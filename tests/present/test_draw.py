@@ -275,8 +275,8 @@ def test_cli_draw_ellipsoid(tmp_path):
     (["paper-case1-hard", "--motion", "indeterminate:2"],
      "coopkin: error: motion: there is no indeterminate motion 2: this system has 1 "
      "(the columns of C11)\n"),
-    (["paper-case1-hard", "--at", "q1=pi/3"], "coopkin: error: --at q1: angle 'pi/3' is "
-                                              "not exact"),
+    (["paper-case1-hard", "--at", "q1=1"], "coopkin: error: --at q1: angle '1' is "
+                                           "not exact"),
     (["no-such-model"], "coopkin: error: no-such-model: no such file"),
 ])
 def test_cli_draw_errors(tmp_path, args, message):

@@ -6,7 +6,9 @@ from __future__ import annotations
 
 import io
 import json
+import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
@@ -39,6 +41,10 @@ class SweepResult(Displayable):
         point was certified by its ranks modulo :attr:`prime`.
     bound
         The snapping bound of the grid (radians), ``None`` for explicit points.
+    kinds
+        ``"revolute"`` or ``"prismatic"`` for each swept joint (revolute when not
+        given): the float column next to each exact one is ``<joint>_rad`` (the angle
+        in radians) or ``<joint>_float`` (the displacement).
 
     Example
     -------
@@ -62,6 +68,7 @@ class SweepResult(Displayable):
     rechecked: np.ndarray
     prime: int
     bound: float | None = None  # float-ok
+    kinds: tuple[str, ...] = ()
 
     def __len__(self) -> int:
         return int(self.numbers.shape[0])
@@ -122,6 +129,82 @@ class SweepResult(Displayable):
             out.append(row)
         return out
 
+    def _kind(self, k: int) -> str:
+        return self.kinds[k] if k < len(self.kinds) else "revolute"
+
+    def float_columns(self) -> dict[str, str]:
+        """The float column next to each swept joint's exact one, with its meaning.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").sweep(["q1=pi/2"]).float_columns()
+        {'q1_rad': 'q1 in radians, a float (the exact value is in column q1)'}
+        """
+        out = {}
+        for k, j in enumerate(self.joints):
+            if self._kind(k) == "prismatic":
+                out[f"{j}_float"] = f"{j} as a float (the exact value is in column {j})"
+            else:
+                out[f"{j}_rad"] = f"{j} in radians, a float (the exact value is in column {j})"
+        return out
+
+    def _floats(self) -> list[list[float]]:  # float-ok: labelled extra columns
+        """The float value of every level of every joint (never used in a decision)."""
+        out = []
+        for k, vs in enumerate(self.levels):
+            prismatic = self._kind(k) == "prismatic"
+            out.append([_float_of(v, prismatic) for v in vs])
+        return out
+
+    def csv_columns(self) -> list[str]:
+        """The CSV's columns: each swept joint (exact text) followed by its float
+        column, the seven numbers, ``exact_recheck``.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").sweep(["q1=pi/2,q2=0"]).csv_columns()[:4]
+        ['q1', 'q1_rad', 'q2', 'q2_rad']
+        """
+        cols: list[str] = []
+        for j, f in zip(self.joints, self.float_columns(), strict=True):
+            cols += [j, f]
+        return cols + list(NUMBER_NAMES) + ["exact_recheck"]
+
+    def to_pandas(self):
+        """The points as a :class:`pandas.DataFrame` with the columns of the CSV
+        (:meth:`csv_columns`): exact joint values as text, their floats, the seven
+        numbers as integers, ``exact_recheck`` as booleans; ``attrs["header"]`` holds
+        :meth:`header`. Needs pandas (``pip install pandas``).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2", "q1=0"])
+        >>> df = res.to_pandas()  # doctest: +SKIP
+        >>> df["Nm"].tolist(), str(df["Nm"].dtype)  # doctest: +SKIP
+        ([3, 2], 'int64')
+        """
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("SweepResult.to_pandas needs pandas: pip install pandas") \
+                from None
+        floats = self._floats()
+        data: dict[str, object] = {}
+        names = list(self.float_columns())
+        for k, j in enumerate(self.joints):
+            texts = [v.text for v in self.levels[k]]
+            data[j] = [texts[i] for i in self.index[:, k].tolist()]
+            data[names[k]] = np.array(floats[k], dtype=np.float64)[self.index[:, k]]
+        for k, name in enumerate(NUMBER_NAMES):
+            data[name] = self.numbers[:, k].astype(np.int64)
+        data["exact_recheck"] = self.rechecked.astype(bool)
+        frame = pd.DataFrame(data, columns=self.csv_columns())
+        frame.attrs["header"] = self.header()
+        return frame
+
     def summary(self) -> dict[str, int]:
         """How many points: in all, certified modulo p, rechecked exactly, snapped."""
         return {"points": len(self), "certified_mod_p": int(self.certified.sum()),
@@ -142,6 +225,7 @@ class SweepResult(Displayable):
         return {
             "system": self.system, "joints": list(self.joints), "at": self.at,
             "columns": list(self.joints) + list(NUMBER_NAMES) + ["exact_recheck"],
+            "float_columns": self.float_columns(),
             "generic": self.generic.as_dict(),
             "method": (f"ranks modulo p = {self.prime} certify a point when they equal the "
                        "generic ranks (a rank modulo p never exceeds the rank over Q); "
@@ -163,7 +247,20 @@ class SweepResult(Displayable):
 
     def to_csv(self) -> str:
         """CSV with ``#`` comment lines first (system, fixed values, generic numbers,
-        counts, snapping), then ``q1,...,Nm,...,Nh,exact_recheck`` rows."""
+        counts, snapping, float columns), then ``q1,q1_rad,...,Nm,...,Nh,exact_recheck``
+        rows: each swept joint's exact value (``2*atan(-15411/269)``) is followed by
+        the same value as a float (``q1_rad``, radians; ``d1_float`` for a prismatic
+        joint), for plotting and pandas (:meth:`to_pandas`); the numbers are integers.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> csv = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi"]).to_csv()
+        >>> for line in csv.splitlines()[-2:]:
+        ...     print(line)
+        q1,q1_rad,q2,q2_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck
+        pi/2,1.5707963267948966,pi,3.141592653589793,2,2,1,0,1,4,0,false
+        """
         h = self.header()
         out = io.StringIO()
         out.write(f"# system: {self.system}\n")
@@ -175,11 +272,25 @@ class SweepResult(Displayable):
                   f"{c['certified_mod_p']}; rechecked exactly over Q: "
                   f"{c['rechecked_exact']}\n")
         out.write(f"# snapped: {self._snap_note()}\n")
-        out.write(",".join(h["columns"]) + "\n")
+        for name, meaning in h["float_columns"].items():
+            out.write(f"# {name}: {meaning}\n")
+        out.write(",".join(self.csv_columns()) + "\n")
         texts = [[v.text for v in vs] for vs in self.levels]
+        floats = [[repr(x) for x in fs] for fs in self._floats()]
         for idx, nums, re in zip(self.index.tolist(), self.numbers.tolist(),
                                  self.rechecked.tolist(), strict=True):
-            cells = [texts[k][i] for k, i in enumerate(idx)] + [str(x) for x in nums]
+            cells = [c for k, i in enumerate(idx) for c in (texts[k][i], floats[k][i])]
+            cells += [str(x) for x in nums]
             cells.append("true" if re else "false")
             out.write(",".join(cells) + "\n")
         return out.getvalue()
+
+
+def _float_of(value: Value, prismatic: bool) -> float:  # float-ok: a labelled extra column
+    """The float of an exact swept value: a displacement, or the angle
+    ``2 atan(num/den)`` in radians (``pi`` for ``(1, 0)``, ``-pi`` when written so)."""
+    if prismatic:
+        return float(Fraction(value.num, value.den))  # float-ok
+    if value.den == 0:  # q = pi, written "-pi" when asked for as such
+        return -math.pi if value.text.startswith("-") else math.pi  # float-ok
+    return 2 * math.atan(Fraction(value.num, value.den))  # float-ok

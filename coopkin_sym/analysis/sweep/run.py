@@ -175,8 +175,10 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
     m, r = compiled.m, compiled.r
     numbers = np.stack(seven_numbers(m, r, ranks[:, 0], ranks[:, 1], ranks[:, 2],
                                      dim=compiled.dim), axis=1)
+    kinds = {j.name: j.type for j in model.joints}
     return SweepResult(model.name, tuple(joints), compiled.at_text, compiled.generic,
-                       tuple(levels), index, numbers, rechecked, prime, bound)
+                       tuple(levels), index, numbers, rechecked, prime, bound,
+                       tuple(kinds[j] for j in joints))
 
 
 def _hashable(value):
