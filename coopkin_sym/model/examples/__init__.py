@@ -6,11 +6,12 @@ complete-constraint and hard-finger contacts). Each file's header comment cites 
 section and the numbers the paper states. The ``dh-`` examples give their arms as
 Denavit-Hartenberg tables: a three-finger hand and two PUMA 560 arms holding a box;
 ``urdf-two-fingers`` reads its arms from a URDF file shipped beside it;
-``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground.
+``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground;
+``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``).
 
 Example
 -------
->>> list_examples()[2:4]
+>>> list_examples()[3:5]
 ['paper-case1-complete-hard', 'paper-case1-hard']
 >>> example_path("paper-case1-hard").name
 'paper-case1-hard.yaml'
