@@ -21,6 +21,8 @@ from fractions import Fraction
 
 import flint
 import sympy as sp
+from sympy.core.add import _addsort
+from sympy.core.mul import _mulsort
 
 from coopkin_sym.exact.rationals import to_fmpq, to_sympy
 from coopkin_sym.exact.ring import Frac, Ring
@@ -34,14 +36,48 @@ def rational_to_sympy(c) -> sp.Rational:
 
 
 def poly_to_sympy(p, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
-    """An ``fmpz_mpoly`` or ``fmpq_mpoly`` of ``ring`` as a SymPy expression."""
+    """An ``fmpz_mpoly`` or ``fmpq_mpoly`` of ``ring`` as a SymPy expression.
+
+    The terms are distinct monomials, so the expression is assembled in SymPy's
+    canonical order directly (``_mulsort``/``_addsort`` and ``_from_args``) instead of
+    being flattened and collected again: the same expression (equal, same hash and
+    ``srepr``), about three times faster on large entries.
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.ring import Ring
+    >>> ring = Ring(("t_q1", "L"), ("t_q1",))
+    >>> t, L = ring.zctx.gens()
+    >>> poly_to_sympy(3 * t**2 * L - L + 1, ring, {"t_q1": sp.Symbol("t_q1"),
+    ...                                           "L": sp.Symbol("L", positive=True)})
+    3*L*t_q1**2 - L + 1
+    """
     syms = [symbols[n] for n in ring.names]
-    terms = []
+    powers: dict[tuple[int, int], sp.Expr] = {}
+    numbers, terms = [], []
     for monom, c in p.to_dict().items():
-        factors = [rational_to_sympy(c)]
-        factors += [s ** int(e) for s, e in zip(syms, monom, strict=True) if e]
-        terms.append(sp.Mul(*factors))
-    return sp.Add(*terms)
+        coeff = rational_to_sympy(c)
+        factors = []
+        for k, e in enumerate(monom):
+            if e:
+                power = powers.get((k, e))
+                if power is None:
+                    power = powers[(k, e)] = syms[k] if e == 1 else sp.Pow(syms[k], int(e))
+                factors.append(power)
+        if not factors:
+            numbers.append(coeff)
+            continue
+        if len(factors) > 1:
+            _mulsort(factors)
+        if coeff == 1:
+            terms.append(factors[0] if len(factors) == 1 else sp.Mul._from_args(factors))
+        else:
+            terms.append(sp.Mul._from_args([coeff, *factors]))
+    if len(numbers) + len(terms) <= 1:
+        return (numbers + terms)[0] if numbers or terms else sp.Integer(0)
+    _addsort(terms)
+    return sp.Add._from_args(numbers + terms)
 
 
 def frac_to_sympy(f: Frac, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
