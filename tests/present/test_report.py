@@ -398,7 +398,7 @@ def test_plot_pairs_and_errors():
 
 def test_plot_legend_names_each_component():
     fig = plot_components(hand_made(), None)
-    texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
     assert texts == ["#1: q1 = q2 = -pi/2", "#2: q1 = q2 = pi/2", "exact witness point"]
     # no plotted equation involves L, so the title says nothing of it
     assert fig.axes[0].get_title() == ("paper case 1, hard/hard: singular configurations "
