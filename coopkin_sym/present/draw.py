@@ -78,7 +78,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["MOTION_KINDS", "DrawError", "draw_system", "parse_motion", "rate_labels",
+__all__ = ["MOTION_KINDS", "DrawError", "draw_system", "gained_motion", "motion_counts",
+           "parse_motion", "rate_labels",
            "rate_ratios", "ratio_text", "save_picture"]
 
 #: Motion kinds and the blocks they come from.
@@ -150,8 +151,48 @@ def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str
 
 
 def _motion_count(kind: str, a: Analysis) -> int:
-    n = a.numbers
-    return {"coordinated": n.Nc - n.Ni, "indeterminate": n.Ni, "redundant": n.Nr}[kind]
+    return motion_counts(a.numbers.as_dict())[kind]
+
+
+def motion_counts(numbers: Mapping[str, int]) -> dict[str, int]:
+    """How many motions of each kind (:data:`MOTION_KINDS`) numbers give: the columns
+    of ``C12, C22`` (``Nc - Ni``), ``C11`` (``Ni``) and ``C23`` (``Nr``).
+
+    Example
+    -------
+    >>> motion_counts({"Nc": 3, "Ni": 1, "Nr": 0})
+    {'coordinated': 2, 'indeterminate': 1, 'redundant': 0}
+    """
+    return {"coordinated": numbers["Nc"] - numbers["Ni"], "indeterminate": numbers["Ni"],
+            "redundant": numbers["Nr"]}
+
+
+def gained_motion(here: Mapping[str, int], generic: Mapping[str, int]
+                  ) -> tuple[str, int] | None:
+    """A motion a configuration has that the generic one has not: the kind whose count
+    grows (indeterminate first, then redundant, then coordinated) and its last column
+    (``k`` from 1, as :func:`draw_system` takes it); None when no count grows.
+
+    Which column is new is not defined (only the count is): the last one is drawn;
+    any motion of that kind beyond the generic count shows what is gained.
+
+    Example
+    -------
+    >>> generic = {"Nc": 2, "Ni": 1, "Nr": 0}
+    >>> gained_motion({"Nc": 3, "Ni": 3, "Nr": 0}, generic)
+    ('indeterminate', 3)
+    >>> gained_motion({"Nc": 3, "Ni": 1, "Nr": 0}, generic)
+    ('coordinated', 2)
+    >>> gained_motion(generic, generic) is None
+    True
+    """
+    if not all(isinstance(n.get(k), int) for n in (here, generic) for k in ("Nc", "Ni", "Nr")):
+        return None
+    now, before = motion_counts(here), motion_counts(generic)
+    for kind in ("indeterminate", "redundant", "coordinated"):
+        if now[kind] > before[kind]:
+            return kind, now[kind]
+    return None
 
 
 @dataclass(frozen=True)
