@@ -499,7 +499,10 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     else:
         where = a.configuration.at_text() or "home (all joints at 0)"
     n = a.numbers
-    lines.append(f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}")
+    line = f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}"
+    if len(line) > 110:   # a long configuration: broken after its commas
+        line = _wrap(line.replace(",", ", "), 110)
+    lines.append(line)
     note = values.note(a)
     if isinstance(a, _AtIrrational):
         exact = (f"{', '.join(f'tan({j}/2)' for j in a.exact.tangents)} irrational: "
