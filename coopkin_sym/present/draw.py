@@ -42,6 +42,7 @@ import functools
 import io
 import itertools
 import os
+import re
 import textwrap
 import warnings
 from collections.abc import Mapping, Sequence
@@ -77,7 +78,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["MOTION_KINDS", "DrawError", "draw_system", "parse_motion", "save_picture"]
+__all__ = ["MOTION_KINDS", "DrawError", "draw_system", "gained_motion", "motion_counts",
+           "parse_motion", "rate_labels",
+           "rate_ratios", "ratio_text", "save_picture"]
 
 #: Motion kinds and the blocks they come from.
 MOTION_KINDS: dict[str, str] = {
@@ -148,8 +151,48 @@ def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str
 
 
 def _motion_count(kind: str, a: Analysis) -> int:
-    n = a.numbers
-    return {"coordinated": n.Nc - n.Ni, "indeterminate": n.Ni, "redundant": n.Nr}[kind]
+    return motion_counts(a.numbers.as_dict())[kind]
+
+
+def motion_counts(numbers: Mapping[str, int]) -> dict[str, int]:
+    """How many motions of each kind (:data:`MOTION_KINDS`) numbers give: the columns
+    of ``C12, C22`` (``Nc - Ni``), ``C11`` (``Ni``) and ``C23`` (``Nr``).
+
+    Example
+    -------
+    >>> motion_counts({"Nc": 3, "Ni": 1, "Nr": 0})
+    {'coordinated': 2, 'indeterminate': 1, 'redundant': 0}
+    """
+    return {"coordinated": numbers["Nc"] - numbers["Ni"], "indeterminate": numbers["Ni"],
+            "redundant": numbers["Nr"]}
+
+
+def gained_motion(here: Mapping[str, int], generic: Mapping[str, int]
+                  ) -> tuple[str, int] | None:
+    """A motion a configuration has that the generic one has not: the kind whose count
+    grows (indeterminate first, then redundant, then coordinated) and its last column
+    (``k`` from 1, as :func:`draw_system` takes it); None when no count grows.
+
+    Which column is new is not defined (only the count is): the last one is drawn;
+    any motion of that kind beyond the generic count shows what is gained.
+
+    Example
+    -------
+    >>> generic = {"Nc": 2, "Ni": 1, "Nr": 0}
+    >>> gained_motion({"Nc": 3, "Ni": 3, "Nr": 0}, generic)
+    ('indeterminate', 3)
+    >>> gained_motion({"Nc": 3, "Ni": 1, "Nr": 0}, generic)
+    ('coordinated', 2)
+    >>> gained_motion(generic, generic) is None
+    True
+    """
+    if not all(isinstance(n.get(k), int) for n in (here, generic) for k in ("Nc", "Ni", "Nr")):
+        return None
+    now, before = motion_counts(here), motion_counts(generic)
+    for kind in ("indeterminate", "redundant", "coordinated"):
+        if now[kind] > before[kind]:
+            return kind, now[kind]
+    return None
 
 
 @dataclass(frozen=True)
@@ -456,7 +499,10 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     else:
         where = a.configuration.at_text() or "home (all joints at 0)"
     n = a.numbers
-    lines.append(f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}")
+    line = f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}"
+    if len(line) > 110:   # a long configuration: broken after its commas
+        line = _wrap(line.replace(",", ", "), 110)
+    lines.append(line)
     note = values.note(a)
     if isinstance(a, _AtIrrational):
         exact = (f"{', '.join(f'tan({j}/2)' for j in a.exact.tangents)} irrational: "
@@ -743,12 +789,60 @@ def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list) -> None:
         legend.append(Line2D([], [], color="black", linewidth=1.2, label="contact normal"))
 
 
-def _short(exact: sp.Expr, value: sp.Rational) -> str:
-    """The exact entry when it is short, else its value at the drawing point."""
-    for text in (sp.sstr(exact), sp.sstr(value)):
-        if len(text) <= 14:
-            return text
-    return f"{float(value):.4g}"  # float-ok: label only
+#: A ratio is shown as a fraction when its numerator and denominator are at most this.
+SMALL_FRACTION = 99
+
+
+def rate_ratios(rates: Sequence[sp.Rational]) -> list[sp.Rational]:
+    """Joint rates divided by the largest magnitude among them: the same motion, with
+    the fastest joint at rate 1 or -1 (directions kept).
+
+    Example
+    -------
+    >>> rate_ratios([sp.Integer(137020), sp.Integer(-68510), sp.Integer(0)])
+    [1, -1/2, 0]
+    """
+    top = max((abs(r) for r in rates), default=sp.Integer(0))
+    if top == 0:
+        return list(rates)
+    return [sp.Rational(r) / top for r in rates]
+
+
+def ratio_text(r: sp.Rational) -> str:
+    """A ratio as a small exact fraction (``-1/2``), or about four digits when its
+    fraction is not small (``~0.7071``, never a long integer).
+
+    Example
+    -------
+    >>> ratio_text(sp.Rational(-1, 2)), ratio_text(sp.Rational(70711, 100000))
+    ('-1/2', '~0.7071')
+    """
+    r = sp.Rational(r)
+    if abs(r.p) <= SMALL_FRACTION and r.q <= SMALL_FRACTION:
+        return sp.sstr(r)
+    return f"~{float(r):.4g}"  # float-ok: label only
+
+
+def rate_labels(names: Sequence[str], rates: Sequence[sp.Rational],
+                places: Sequence[Any]) -> list[tuple[int, str]]:
+    """The labels of joint rates on a picture: ratios to the fastest joint
+    (:func:`rate_ratios`, :func:`ratio_text`), one label per place: joints at one
+    point (the same key in ``places``) share one label. Returns (index of the first
+    joint at the place, text) for every place with a moving joint.
+
+    Example
+    -------
+    >>> rate_labels(["q4", "q5", "q6"], [sp.Integer(2), sp.Integer(-1), sp.Integer(0)],
+    ...             ["wrist", "wrist", "wrist"])
+    [(0, 'q4: 1, q5: -1/2')]
+    """
+    ratios = rate_ratios(rates)
+    groups: dict[Any, list[int]] = {}
+    for index, (r, place) in enumerate(zip(ratios, places, strict=True)):
+        if r != 0:
+            groups.setdefault(place, []).append(index)
+    return [(members[0], ", ".join(f"{names[i]}: {ratio_text(ratios[i])}" for i in members))
+            for members in groups.values()]
 
 
 def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
@@ -766,7 +860,7 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
         exact_q = a.C22.col(j)
         words = (f"coordinated motion {k} (C12, C22 column {k}): "
                  f"{describe_twist(a.C12.col(j), a)} by moving "
-                 f"{describe_joint_motion(exact_q, a)}")
+                 f"{_joint_words(exact_q, rates, a)}")
     elif kind == "indeterminate":
         twist = values.vector(spatial_twist(a.twist_in_base(a.C11.col(j))))
         words = (f"indeterminate motion {k} (C11 column {k}), joints locked: "
@@ -774,7 +868,7 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
     else:
         rates, exact_q = values.column(a.C23, j), a.C23.col(j)
         words = (f"redundant motion {k} (C23 column {k}), object fixed: "
-                 f"{describe_joint_motion(a.C23.col(j), a)}")
+                 f"{_joint_words(exact_q, rates, a)}")
     vanish = (twist is None or all(x == 0 for x in twist)) and (
         rates is None or all(x == 0 for x in rates))
     if twist is not None and any(x != 0 for x in twist):
@@ -788,12 +882,24 @@ def _draw_motion(ax, a: Analysis, scene: _Scene, values: _Values,
             legend.append(Line2D([], [], color=OBJECT_MOTION_COLOR, linewidth=3.5,
                                  label="object translation"))
     if rates is not None and any(x != 0 for x in rates):
-        _draw_rates(ax, a, scene, rates, list(exact_q))
+        _draw_rates(ax, a, scene, rates)
         legend.append(Line2D([], [], color=JOINT_MOTION_COLOR, linewidth=2,
-                             label="joint rates"))
+                             label="joint rates (ratios to the fastest)"))
     if vanish:
         words += " (zero at the drawn configuration)"
     return _wrap(words, 110)
+
+
+def _joint_words(exact: Sequence[sp.Expr], rates: Sequence[sp.Rational], a: Analysis) -> str:
+    """The joint motion in words; when those carry long integers (``p1_2: 507500``),
+    the ratios to the fastest joint instead, as on the labels."""
+    words = describe_joint_motion(exact, a)
+    if not re.search(r"(?<![\d.])\d{5,}", words):
+        return words
+    ratios = rate_ratios(rates)
+    listed = ", ".join(f"{j}: {ratio_text(r)}" for j, r in zip(a.model.joint_names, ratios,
+                                                               strict=True) if r != 0)
+    return f"joints in the ratio {listed} (the fastest at 1)"
 
 
 def _wrap(text: str, width: int) -> str:
@@ -851,12 +957,12 @@ def _draw_twist(ax, a: Analysis, scene: _Scene, twist: list[sp.Rational]) -> boo
     return moving
 
 
-def _draw_rates(ax, a: Analysis, scene: _Scene, rates: list[sp.Rational],
-                exact: list[sp.Expr]) -> None:
+def _draw_rates(ax, a: Analysis, scene: _Scene, rates: list[sp.Rational]) -> None:
     """Curved arrows about revolute joints, straight arrows along prismatic ones, and
-    the exact rates as labels (``rates`` at the drawing values, ``exact`` as they are
-    in the block)."""
+    labels with the exact ratios of the rates (``rates`` at the drawing values) to
+    the fastest one (see :func:`rate_labels`)."""
     top = max(abs(float(x)) for x in rates)  # float-ok
+    anchors: dict[int, Any] = {}
     for index, (joint, rate) in enumerate(zip(a.model.joints, rates, strict=True)):
         if rate == 0:
             continue
@@ -884,11 +990,16 @@ def _draw_rates(ax, a: Analysis, scene: _Scene, rates: list[sp.Rational],
                           linewidth=3, arrow_length_ratio=0.3)
             q.set_gid(f"motion:rate:{joint.name}")
             anchor = o + sign * 0.25 * size * s  # float-ok: the arrow's tip
-        # the label sits at the arrow head, so joints at one point keep apart
-        ax.text(*anchor, f"{joint.name}' = {_short(exact[index], rate)}", fontsize=8,
-                color="black", zorder=1001, transform=_shift(ax, 6, 6), ha="left",
-                bbox={"boxstyle": "round,pad=0.2", "facecolor": "white", "alpha": 0.8,
-                      "edgecolor": JOINT_MOTION_COLOR})
+        anchors[index] = anchor
+    # one label per place (joints at one point share it), at the first arrow head
+    places = [tuple(np.round(p / scene.size, 6)) for p in scene.joint_points]  # float-ok
+    names = [j.name for j in a.model.joints]
+    for index, text in rate_labels(names, rates, places):
+        label = ax.text(*anchors[index], text, fontsize=8, color="black", zorder=1001,
+                        transform=_shift(ax, 6, 6), ha="left",
+                        bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
+                              "alpha": 0.8, "edgecolor": JOINT_MOTION_COLOR})
+        label.set_gid(f"rate-label:{names[index]}")
 
 
 # ------------------------------------------------------------------ files

@@ -37,6 +37,7 @@ from __future__ import annotations
 import functools
 import io
 import math
+import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -454,11 +455,32 @@ def _ring_size(placed: dict, marks: list) -> float:  # float-ok: marker sizes
     return max(17.0 - 5.0 * count, 6.0)  # float-ok
 
 
-def _label(k: int, c: Component) -> str:
+#: Characters per line of a legend entry, and lines per entry at most.
+LABEL_WIDTH = 64
+LABEL_LINES = 3
+#: Characters per title line.
+TITLE_WIDTH = 78
+
+
+def _wrapped(text: str, width: int, lines: int | None = None) -> str:
+    """``text`` broken into lines of at most ``width`` characters (``lines`` of them at
+    most, the last one ending in an ellipsis when text is left out)."""
+    out = textwrap.wrap(text, width, max_lines=lines, placeholder=" \u2026",
+                        break_on_hyphens=False)
+    return "\n".join(out)
+
+
+def _label(k: int, c: Component, width: int = LABEL_WIDTH) -> str:
+    """The legend entry of component ``k`` (from 0): its number and condition, wrapped.
+
+    Example
+    -------
+    >>> c = Component(["t_q1"], {}, None, True, condition="q1 = 0")
+    >>> _label(0, c)
+    '#1: q1 = 0'
+    """
     text = c.condition or ", ".join(f"{e} = 0" for e in c.equations)
-    if len(text) > 60:
-        text = text[:57] + "..."
-    return f"#{k + 1}: {text}"
+    return _wrapped(f"#{k + 1}: {text}", width, LABEL_LINES)
 
 
 def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
@@ -518,8 +540,9 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     kinds = _kinds(locus, system)
     _check_pair(kinds, pair)
     names = _names(locus, kinds)
-    if ax is None:
-        fig = Figure(figsize=(7.0, 7.6), layout="constrained")  # float-ok: inches
+    own = ax is None
+    if own:
+        fig = Figure(figsize=(WIDTH, WIDTH), layout="constrained")  # float-ok: inches
         FigureCanvasAgg(fig)
         ax = fig.add_subplot()
     else:
@@ -578,18 +601,18 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
             ax.plot([where[0]], [where[1]], linestyle="none", marker="*", markersize=10,
                     color="white", markeredgecolor="black", gid=f"witness:{k + 1}",
                     zorder=4)
+    rows = 0.0  # float-ok: lines of the legend
     if handles:
-        handles.append(Line2D([], [], linestyle="none", marker="*", markersize=10,
-                              color="white", markeredgecolor="black",
-                              label="exact witness point"))
-        ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.09),  # float-ok
-                  ncol=1 if len(handles) > 4 else 2, fontsize=9, frameon=False)
+        rows = _legend(fig, ax, handles, Line2D, own)
     else:
         ax.text(0.5, 0.5, "no real component involves these joints", ha="center",  # float-ok
                 va="center", transform=ax.transAxes, color="0.4")
     ax.set_xlim(lo_a, hi_a)
     ax.set_ylim(lo_b, hi_b)
-    ax.set_aspect("equal" if rev[0] == rev[1] else "auto")
+    if rev[0] == rev[1] and not own:
+        ax.set_aspect("equal")
+    # on a figure of our own the height is chosen for a nearly square axes: a fixed
+    # aspect there would let constrained layout give the title too little room
     for axis, joint, r in ((ax.xaxis, pair[0], rev[0]), (ax.yaxis, pair[1], rev[1])):
         if r:
             _pi_ticks(axis)
@@ -600,8 +623,60 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     ax.grid(True, color="0.9", linewidth=0.8)  # float-ok
     ax.axhline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
     ax.axvline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
-    ax.set_title(_title(locus, pair, sorted(notes), has_others), fontsize=10)
+    title = _title(locus, pair, sorted(notes), has_others)
+    # a fixed place (y given): the layout knows where a title of several lines ends
+    ax.set_title(title, fontsize=10, y=1.0)  # float-ok: axes coordinates
+    if own:
+        fig.set_size_inches(WIDTH, _height(title, rows))
     return fig
+
+
+#: Width of a plot (inches); its height grows with the title and the legend.
+WIDTH = 7.0  # float-ok: inches
+#: Legend entries listed at most (every component is drawn; the rest are counted).
+LEGEND_ENTRIES = 24
+
+
+def _legend(fig, ax, handles: list, Line2D, own: bool) -> float:  # noqa: N803 - a class  # float-ok
+    """The legend below the axes, outside them: a figure legend that constrained
+    layout makes room for (on a figure of our own), else below the given axes. Long
+    lists are cut at :data:`LEGEND_ENTRIES` and the rest counted; more than eight
+    entries go in two narrower columns. Returns its height in lines of text."""
+    left = len(handles) - LEGEND_ENTRIES
+    if left > 0:
+        handles = handles[:LEGEND_ENTRIES]
+        handles.append(Line2D([], [], linestyle="none",
+                              label=f"\u2026 and {left} more (see the report)"))
+    handles.append(Line2D([], [], linestyle="none", marker="*", markersize=10,
+                          color="white", markeredgecolor="black",
+                          label="exact witness point"))
+    ncol = 1 if len(handles) <= 9 else 2
+    if ncol == 2:
+        for h in handles:
+            h.set_label(_wrapped(h.get_label().replace("\n", " "), LABEL_WIDTH // 2 + 4,
+                                 LABEL_LINES))
+    options = {"handles": handles, "ncol": ncol, "fontsize": 8, "frameon": False}
+    if own:
+        fig.legend(loc="outside lower center", **options)
+    else:
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), **options)  # float-ok
+    per = [h.get_label().count("\n") + 1 for h in handles]
+    # matplotlib fills the columns of a legend one after the other
+    tall = -(-len(per) // ncol)
+    columns = [per[i:i + tall] for i in range(0, len(per), tall)]
+    return max(sum(c) + 0.5 * len(c) for c in columns)  # float-ok: lines and gaps
+
+
+def _height(title: str, rows: float) -> float:  # float-ok: inches
+    """A figure height that keeps the axes about 5.5 inches tall under ``title``
+    and above a legend of ``rows`` lines (a line of 8-point text is about 0.15 inch).
+
+    Example
+    -------
+    >>> round(_height("one line", 0), 2)
+    6.59
+    """
+    return 6.4 + 0.19 * (title.count("\n") + 1) + 0.15 * rows  # float-ok: inches
 
 
 def _title(locus: Locus, pair: Sequence[str], notes: list[str], others: bool) -> str:
@@ -614,12 +689,12 @@ def _title(locus: Locus, pair: Sequence[str], notes: list[str], others: bool) ->
         said.append(", ".join(params) + " symbolic, drawn at 1")
     if others:
         said.append("other joints at each component's witness")
-    homes = sorted({n for n in notes if "home" in n})
+    homes = sorted({n.split()[0] for n in notes if "home" in n})
     if homes:
-        said.append("; ".join(homes))
+        said.append(f"{', '.join(homes)} at home (0)")
     if said:
         lines.append("; ".join(said))
-    return "\n".join(lines)
+    return "\n".join(_wrapped(line, TITLE_WIDTH) for line in lines)
 
 
 def plot_png(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),

@@ -43,10 +43,10 @@ from coopkin_sym.analysis.classes import CLASS_NUMBERS, grasp_classes
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
-from coopkin_sym.errors import OutputSkipped, ReportError
+from coopkin_sym.errors import DrawError, OutputSkipped, ReportError
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.present.classes import class_changes_text, classes_text
-from coopkin_sym.present.draw import draw_system
+from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
 from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
 from coopkin_sym.present.passive import PASSIVE_WORDS
@@ -636,7 +636,10 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
             out.append(_P([_t("Real components drawn from their exact polynomials over "
                               "q in [-pi, pi] (t = tan(q/2) is infinite at q = pi); "
                               "isolated components as points; exact witnesses as stars.")]))
+            pictures = [p for p in plots if p[0] == SYSTEM_PICTURE]
             for pair, ref in plots.items():
+                if pictures and pair == pictures[0]:
+                    out.extend(_pictures_intro(locus))
                 out.append(_Plot(tuple(pair), ref))
         else:
             out.append(_P([_t("No plots: no real component to draw.")]))
@@ -1120,37 +1123,124 @@ def parse_pairs(pairs: Sequence[str | Sequence[str]] | None, system: Any = None
     return out
 
 
-def _caption(pair: tuple[str, str]) -> str:
+def _pictures_intro(locus: Locus) -> list:
+    """The heading and the sentence before the pictures of the system."""
+    text = ("The system at the witness of each real component, with a motion it gains "
+            "there (one of the kind whose count grows; the picture's title says which), "
+            "joint rates as ratios to the fastest joint.")
+    left = len(drawable_components(locus)) - MAX_SYSTEM_PICTURES
+    if left > 0:
+        text += (f" {left} more components with a real witness are not drawn (at most "
+                 f"{MAX_SYSTEM_PICTURES} pictures, to keep the report small).")
+    return [_H(3, "The system at each component", "system-pictures"), _P([_t(text)])]
+
+
+def _caption(pair: tuple[str, ...]) -> str:
     if pair[0] == SYSTEM_PICTURE:
+        if len(pair) > 2:
+            return pair[2]
         return f"The system at the witness of {pair[1]} (drawn with lengths as given)"
     return f"Components in the ({pair[0]}, {pair[1]}) plane"
 
 
-# key of the picture of the system at a witness among the plots
+# key of a picture of the system at a witness among the plots
 SYSTEM_PICTURE = "system"
+#: Pictures of the system a report carries at most (one per real component).
+MAX_SYSTEM_PICTURES = 12
+#: Resolution of those pictures (they are large figures; this keeps reports small).
+SYSTEM_PICTURE_DPI = 72
 
 
-def _system_picture(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, str], bytes]:
-    """The system drawn at the first real component's witness, with its motion; a
-    note (:class:`~coopkin_sym.errors.OutputSkipped`) when it cannot be drawn."""
+def _witness_point(comp: Component) -> tuple[dict[str, str], bool] | None:
+    """The point to draw a component at (``--at`` values) and whether it is exact and
+    rational (else algebraic: drawn without its motions); None without a real
+    witness."""
+    if not comp.real:
+        return None
+    if comp.witness:
+        return dict(comp.witness), True
+    point = (comp.algebraic_witness or {}).get("point")
+    if point:
+        return dict(point), False
+    return None
+
+
+def drawable_components(locus: Locus) -> list[int]:
+    """The components (indices from 0) with a real witness to draw the system at.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
+    >>> c = Component(["t_q1"], {"Nm": 3}, {"q1": "0"}, True)
+    >>> without = Component(["t_q1"], {}, None, True)
+    >>> drawable_components(Locus("demo", ["t_q1"], "", {}, [c, without]))
+    [0]
+    """
+    return [k for k, c in enumerate(locus.components) if _witness_point(c) is not None]
+
+
+def _counts_words(kind: str, here: Mapping, generic: Mapping) -> str:
+    now, before = motion_counts(here)[kind], motion_counts(generic)[kind]
+    return f"{kind} motions: {before} generically, {now} here"
+
+
+def _system_caption(locus: Locus, k: int, comp: Component, at: Mapping[str, str],
+                    exact: bool, motion: tuple[str, int] | None) -> str:
+    where = ", ".join(f"{n}={v}" for n, v in at.items())
+    head = f"Component {k + 1} ({comp.condition or 'see its equations'}): the system at "
+    head += f"its witness {where}" if exact else f"its algebraic witness {where}"
+    if motion is None:
+        changed = ", ".join(f"{n} {a} \u2192 {b}" for n, (a, b) in comp.changes.items())
+        return f"{head}; no motion of the object or the joints is gained there ({changed})."
+    kind, index = motion
+    counts = _counts_words(kind, comp.numbers, locus.generic)
+    if not exact:
+        return (f"{head}; it gains {kind} motions ({counts}), not drawn: the blocks are "
+                "not computed at irrational angles.")
+    return (f"{head}, with {kind} motion {index} ({MOTION_KINDS[kind]}), a motion gained "
+            f"there ({counts}).")
+
+
+def _system_pictures(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, ...], bytes]:
+    """The system drawn at the witness of every real component (the first
+    :data:`MAX_SYSTEM_PICTURES`), each with a motion gained there (see
+    :func:`~coopkin_sym.present.draw.gained_motion`); a note
+    (:class:`~coopkin_sym.errors.OutputSkipped`) for each one that cannot be drawn."""
     if system is None or not hasattr(system, "model"):
         return {}
-    for k, comp in enumerate(locus.components):
-        if comp.real and comp.witness:
+    chosen = drawable_components(locus)
+    if not chosen:
+        _skipped("no picture of the system: no component has a real witness to draw it at")
+        return {}
+    if len(chosen) > MAX_SYSTEM_PICTURES:
+        _skipped(f"pictures of the system at {len(chosen) - MAX_SYSTEM_PICTURES} more "
+                 f"components left out (at most {MAX_SYSTEM_PICTURES})")
+    out: dict[tuple[str, ...], bytes] = {}
+    for k in chosen[:MAX_SYSTEM_PICTURES]:
+        comp = locus.components[k]
+        at, exact = _witness_point(comp)
+        motion = gained_motion(comp.numbers, locus.generic)
+        at_text = ",".join(f"{n}={v}" for n, v in at.items())
+        title = f"{locus.system}: component {k + 1}"
+        try:
             try:
-                fig = draw_system(system, at=",".join(f"{n}={v}" for n, v in
-                                                     comp.witness.items()),
-                                  title=f"{locus.system}: component {k + 1}, "
-                                        f"{comp.condition}")
-                buf = io.BytesIO()
-                fig.savefig(buf, format="png", dpi=dpi)
-                return {(SYSTEM_PICTURE, f"component {k + 1}"): buf.getvalue()}
-            except (ImportError, ValueError) as exc:  # the picture is optional here
-                _skipped(f"no picture of the system at component {k + 1}: "
-                         f"{' '.join(str(exc).split())}")
-                return {}
-    _skipped("no picture of the system: no component has a real witness to draw it at")
-    return {}
+                fig = draw_system(system, at=at_text, title=title,
+                                  motion=f"{motion[0]}:{motion[1]}" if motion and exact
+                                  else None)
+            except DrawError:   # the motion is not there after all: the system alone
+                if motion is None or not exact:
+                    raise
+                fig = draw_system(system, at=at_text, title=title)
+                motion = None
+            buf = io.BytesIO()
+            fig.savefig(buf, format="png", dpi=min(dpi, SYSTEM_PICTURE_DPI))
+        except (ImportError, ValueError) as exc:  # the picture is optional here
+            _skipped(f"no picture of the system at component {k + 1}: "
+                     f"{' '.join(str(exc).split())}")
+            continue
+        caption = _system_caption(locus, k, comp, at, exact, motion)
+        out[(SYSTEM_PICTURE, f"component {k + 1}", caption)] = buf.getvalue()
+    return out
 
 
 def _skipped(text: str) -> None:
@@ -1168,7 +1258,7 @@ def _no_pairs(locus: Locus) -> str:
 
 
 def _png_name(stem: str, pair: tuple[str, str]) -> str:
-    safe = [re.sub(r"[^A-Za-z0-9_.-]", "_", j) for j in pair]
+    safe = [re.sub(r"[^A-Za-z0-9_.-]", "_", j) for j in pair[:2]]
     return f"{stem}_{safe[0]}_{safe[1]}.png"
 
 
@@ -1179,7 +1269,7 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
         if not chosen:
             _skipped(f"no plot of the components: {_no_pairs(locus)}")
         pngs = {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}
-        pngs.update(_system_picture(locus, system, dpi))
+        pngs.update(_system_pictures(locus, system, dpi))
         return pngs, None
     except PlotError as exc:
         if "matplotlib" in str(exc) and pairs is None:  # pragma: no cover

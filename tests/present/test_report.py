@@ -398,7 +398,7 @@ def test_plot_pairs_and_errors():
 
 def test_plot_legend_names_each_component():
     fig = plot_components(hand_made(), None)
-    texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
     assert texts == ["#1: q1 = q2 = -pi/2", "#2: q1 = q2 = pi/2", "exact witness point"]
     # no plotted equation involves L, so the title says nothing of it
     assert fig.axes[0].get_title() == ("paper case 1, hard/hard: singular configurations "
@@ -411,15 +411,16 @@ def test_plot_legend_names_each_component():
 def test_write_markdown_with_png_next_to_it(tmp_path, case1):
     out = tmp_path / "report.md"
     written = write_report(case1, out, load("paper-case1-hard"))
+    pictures = [f"report_system_component_{k}.png" for k in range(1, 6)]
     assert written == [out, tmp_path / "report_q1_q2.png",
-                       tmp_path / "report_system_component_1.png"]
+                       *(tmp_path / name for name in pictures)]
     assert "![Components in the (q1, q2) plane](report_q1_q2.png)" in out.read_text()
     png = (tmp_path / "report_q1_q2.png").read_bytes()
     assert png.startswith(PNG_SIGNATURE)
     image = matplotlib.image.imread(tmp_path / "report_q1_q2.png")
     assert image.ndim == 3 and image.shape[0] > 300 and image.shape[1] > 300
     assert sorted(p.name for p in tmp_path.iterdir()) == [
-        "report.md", "report_q1_q2.png", "report_system_component_1.png"]
+        "report.md", "report_q1_q2.png", *pictures]
 
 
 def test_write_html_embeds_the_png_it_writes(tmp_path, case1):
@@ -507,4 +508,4 @@ def test_report_carries_a_picture_of_the_system_at_a_witness(tmp_path):
     picture = tmp_path / "r_system_component_1.png"
     assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     text = (tmp_path / "r.md").read_text()
-    assert "![The system at the witness of component 1" in text
+    assert "![Component 1 (q1 = -pi/2, q2 = -pi/2): the system at its witness" in text

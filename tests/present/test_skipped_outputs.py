@@ -75,7 +75,7 @@ def test_locus_with_plots_has_no_notes(tmp_path):
                                  "--max-depth", "0", "-o", str(tmp_path / "r.md")])
     assert result.exit_code == 0, result.output
     assert notes(result.stderr) == []
-    assert len(list(tmp_path.glob("r_*.png"))) == 2
+    assert len(list(tmp_path.glob("r_*.png"))) == 3     # a plot, the system at 2 components
 
 
 def test_write_report_warns_for_what_it_leaves_out(tmp_path):

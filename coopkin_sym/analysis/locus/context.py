@@ -19,7 +19,10 @@ from __future__ import annotations
 import dataclasses
 import random
 import time
+from collections.abc import Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any
 
 from coopkin_sym.analysis.locus.types import Locus
@@ -31,41 +34,118 @@ __all__ = ["Place", "Progress", "SearchContext"]
 
 
 class Progress:
-    """A rich progress bar on standard error, or nothing (``enabled`` false).
+    """Where the search stands, as a share of the work, and a rich progress bar on
+    standard error when ``enabled``.
+
+    The work is a tree: :meth:`parts` splits the current part into ``n`` equal parts
+    (the factors at one depth, the slices at q = pi), :meth:`step` moves to the next
+    one, and a part split further (a component searched inside) shares its own span
+    among its parts. ``done`` (an exact fraction) is the start of the current part:
+    it only grows, reaches 1 only when the search ends, and moves while long steps
+    run deep in the tree. ``text`` is the current step. The bar shows both, with the
+    time elapsed.
 
     Example
     -------
+    >>> seen = []
     >>> with Progress(False) as bar:
-    ...     bar.add(3)
-    ...     bar.step("depth 0: t_q1")
+    ...     with bar.parts(2):
+    ...         bar.step("depth 0: t_q1")
+    ...         with bar.parts(4):
+    ...             bar.step("depth 1: t_q2")
+    ...             bar.step("depth 1: t_q2 - 1")
+    ...             seen.append(bar.done)
+    ...         bar.step("depth 0: t_q2")
+    ...         seen.append((bar.done, bar.text))
+    >>> seen
+    [Fraction(1, 8), (Fraction(1, 2), 'depth 0: t_q2')]
+    >>> bar.done
+    Fraction(1, 1)
     """
+
+    #: Units of the bar (the share done is shown in whole units of it).
+    UNITS = 10_000
 
     def __init__(self, enabled: bool):
         self.enabled = enabled
         self._progress = None
         self._task = None
+        self.done = Fraction(0)
+        self.text = "locus"
+        # per level: [start, width, bounds of its parts (0 .. total weight), index
+        # of the current part (-1: none yet), its text]
+        self._levels: list[list] = [[Fraction(0), Fraction(1), [0, 1], 0, self.text]]
 
     def __enter__(self):
         if self.enabled:
-            from rich.progress import Progress as RichProgress  # optional, at use
+            from rich.progress import (  # optional, at use
+                BarColumn,
+                SpinnerColumn,
+                TaskProgressColumn,
+                TextColumn,
+                TimeElapsedColumn,
+            )
+            from rich.progress import Progress as RichProgress
+            from rich.table import Column
 
-            self._progress = RichProgress(transient=True)
+            # a description of fixed width, so that the bar keeps its place
+            text = TextColumn("{task.description}",
+                              table_column=Column(width=44, no_wrap=True, overflow="ellipsis"))
+            self._progress = RichProgress(SpinnerColumn(), text,
+                                          BarColumn(), TaskProgressColumn(),
+                                          TimeElapsedColumn(), transient=True)
             self._progress.__enter__()
-            self._task = self._progress.add_task("locus", total=0)
+            self._task = self._progress.add_task(self.text, total=self.UNITS)
         return self
 
     def __exit__(self, *exc):
+        self.done = Fraction(1)
         if self._progress is not None:
+            self._show()
             self._progress.__exit__(*exc)
 
-    def add(self, n: int) -> None:
-        if self._progress is not None:
-            total = self._progress.tasks[0].total or 0
-            self._progress.update(self._task, total=total + n)
+    def _part(self) -> tuple[Fraction, Fraction]:
+        """Start and width of the current part."""
+        start, width, bounds, index, _ = self._levels[-1]
+        i = max(index, 0)
+        total = bounds[-1]
+        return start + width * bounds[i] / total, width * (bounds[i + 1] - bounds[i]) / total
+
+    @contextmanager
+    def parts(self, n: int, weights: Sequence[int] | None = None):
+        """Split the current part into ``n`` parts (at least one), equal or in the
+        proportions ``weights`` (one positive whole number per part), for the block's
+        :meth:`step` calls; at the end the whole part is done."""
+        weights = list(weights) if weights is not None else [1] * max(n, 1)
+        if not weights:
+            weights = [1]
+        bounds = [0]
+        for w in weights:
+            bounds.append(bounds[-1] + max(int(w), 1))
+        start, width = self._part()
+        self._levels.append([start, width, bounds, -1, self.text])
+        try:
+            yield self
+        finally:
+            self._levels.pop()
+            self.text = self._levels[-1][4]     # back to the step this split was in
+            self._advance(start + width)
 
     def step(self, text: str) -> None:
+        """Move to the next part of the innermost split, described by ``text``."""
+        level = self._levels[-1]
+        level[3] = min(level[3] + 1, len(level[2]) - 2)
+        self.text = level[4] = text[:60]
+        self._advance(self._part()[0])
+
+    def _advance(self, to: Fraction) -> None:
+        self.done = max(self.done, min(to, Fraction(1)))
+        self._show()
+
+    def _show(self) -> None:
         if self._progress is not None:
-            self._progress.update(self._task, advance=1, description=text[:60])
+            units = int(self.done * self.UNITS)   # floor: full only when done is 1
+            self._progress.update(self._task, completed=units, description=self.text)
 
 
 @dataclass

@@ -180,9 +180,18 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         locus.notes.append(Remark.of("snapped_model", count=len(model.snapped),
                                      largest=max(x.error for x in model.snapped)))
     locus.notes.append(Remark.of("candidates_probabilistic"))
-    with ctx.reporter:
+    size = pi_size if pi_size is not None else _default_pi_size(ctx)
+    with ctx.reporter, ctx.reporter.parts(2):
+        # the progress: half for the t chart, half for the slices at q = pi (shared
+        # by the slices searched inside; the others only get their numbers decided)
+        ctx.reporter.step("depth 0: the numbers and their candidates")
         _explore(ctx, Place(rows=q_rows, equations=[], point={}, depth=0))
-        _pi_slices(ctx, pi_size if pi_size is not None else _default_pi_size(ctx))
+        ctx.reporter.step("q = pi")
+        # a slice searched inside weighs more than one whose numbers alone are decided
+        weights = [PI_SEARCH_WEIGHT if size is None or len(s) <= size else 1
+                   for s in _pi_subsets(_revolute(ctx))]
+        with ctx.reporter.parts(len(weights), weights):
+            _pi_slices(ctx, size)
         _settle_realness(ctx)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
@@ -193,6 +202,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
                                      progress, free, pi_size)
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
+
+
+#: The share of the progress bar a slice at q = pi searched inside gets, against 1 for
+#: a slice whose numbers alone are decided.
+PI_SEARCH_WEIGHT = 20
 
 
 def _chart(model: Model, config: Configuration) -> tuple[dict, list]:
@@ -514,23 +528,32 @@ def _explore(ctx: SearchContext, place: Place) -> None:
             rests.append(rest)
     ordered = sorted(factors.values(), key=lambda fd: (fd[0].total_degree(), len(fd[0]),
                                                        str(fd[0])))
-    ctx.reporter.add(len(ordered))
-    for f, drops in ordered:
-        ctx.reporter.step(f"depth {place.depth}: {f}")
-        if ctx.expired():
-            ctx.locus.unexplored.append(Remark.of("time_component", polynomial=str(f),
-                                                  depth=place.depth))
-            continue
-        if any(not c.gcd(f).is_constant() for c in place.charts):
-            # the image of f = 0 lies where a parametrization's denominator vanishes:
-            # those points are searched from the enclosing variables (_chart_points)
-            continue
-        split = str(f) in splitting
-        _decide_factor(ctx, place, f, drops, split=split)
-    if rests:
-        _isolated(ctx, place, rests)
-    for search in ctx.deferred.pop():
-        search()
+    # one part of the progress per factor, one for the isolated points and the
+    # searches deferred to the end of this level
+    with ctx.reporter.parts(len(ordered) + 1):
+        for f, drops in ordered:
+            ctx.reporter.step(f"{_where(ctx)}depth {place.depth}: {f}")
+            if ctx.expired():
+                ctx.locus.unexplored.append(Remark.of("time_component", polynomial=str(f),
+                                                      depth=place.depth))
+                continue
+            if any(not c.gcd(f).is_constant() for c in place.charts):
+                # the image of f = 0 lies where a parametrization's denominator
+                # vanishes: those points are searched from the enclosing variables
+                # (_chart_points)
+                continue
+            split = str(f) in splitting
+            _decide_factor(ctx, place, f, drops, split=split)
+        ctx.reporter.step(f"{_where(ctx)}depth {place.depth}: isolated points")
+        if rests:
+            _isolated(ctx, place, rests)
+        for search in ctx.deferred.pop():
+            search()
+
+
+def _where(ctx: SearchContext) -> str:
+    """The slice at q = pi the search is in, for the progress bar ("" in the t chart)."""
+    return "".join(f"{n} = pi, " for n in sorted(ctx.pi))
 
 
 def _note(ctx: SearchContext, kind: str, **facts) -> None:
@@ -1382,16 +1405,14 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
     has the equations ``s_<joint>`` (``s = cot(q/2) = 0``) for the joints at pi.
     ``pi_size``: the largest set of joints at pi searched inside (None: all); larger
     sets get their own numbers decided and a note."""
-    rev = [name for kind, name in ctx.kinds.values() if kind == "revolute"]
-    subsets = [s for size in range(1, len(rev) + 1)
-               for s in itertools.combinations(rev, size)]
-    ctx.reporter.add(len(subsets))
+    rev = _revolute(ctx)
+    subsets = _pi_subsets(rev)
     for subset in subsets:
         where = ", ".join(f"{n} = pi" for n in subset)
+        ctx.reporter.step(where)
         if ctx.expired():
             ctx.locus.unexplored.append(Remark.of("time_pi_set", joints=subset))
             continue
-        ctx.reporter.step(where)
         revolute = dict(ctx.config.revolute)
         for n in subset:
             revolute[n] = (sp.Integer(-1), sp.Integer(0))
@@ -1437,6 +1458,16 @@ def _pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
                             parent=parent))
     if rev:
         ctx.locus.notes.append(Remark.of("pi_chart"))
+
+
+def _revolute(ctx: SearchContext) -> list[str]:
+    """The free revolute joints of the chart."""
+    return [name for kind, name in ctx.kinds.values() if kind == "revolute"]
+
+
+def _pi_subsets(rev: list[str]) -> list[tuple[str, ...]]:
+    """Every non-empty set of the joints ``rev`` (the slices at q = pi), smallest first."""
+    return [s for size in range(1, len(rev) + 1) for s in itertools.combinations(rev, size)]
 
 
 def _default_pi_size(ctx: SearchContext) -> int | None:

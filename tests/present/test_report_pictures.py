@@ -1,0 +1,54 @@
+"""A locus report draws the system at the witness of every real component, with a
+motion gained there, and says which component and which motion."""
+
+from __future__ import annotations
+
+import pytest
+
+pytest.importorskip("matplotlib")
+
+from coopkin_sym import load  # noqa: E402
+from coopkin_sym.analysis.locus.search import compute_locus  # noqa: E402
+from coopkin_sym.present import report  # noqa: E402
+from coopkin_sym.present.draw import gained_motion  # noqa: E402
+from coopkin_sym.present.report import drawable_components, write_report  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def case1():
+    system = load("paper-case1-hard")
+    return system, compute_locus(system)
+
+
+def test_one_picture_per_component_with_a_real_witness(tmp_path, case1):
+    system, locus = case1
+    drawable = drawable_components(locus)
+    assert drawable == [0, 1, 2, 3, 4]        # four rational witnesses, one algebraic
+    written = write_report(locus, tmp_path / "r.md", system=system)
+    names = [p.name for p in written]
+    assert [n for n in names if "_system_" in n] == [
+        f"r_system_component_{k + 1}.png" for k in drawable]
+    text = (tmp_path / "r.md").read_text()
+    captions = [line for line in text.splitlines() if line.startswith("![Component ")]
+    assert len(captions) == len(drawable)
+    for k, caption in zip(drawable, captions, strict=True):
+        assert caption.startswith(f"![Component {k + 1} (")
+        assert f"](r_system_component_{k + 1}.png)" in caption
+    # q1 = q2 = +-pi/2: a coordinated motion more than generically, drawn
+    assert "with coordinated motion 2 (C12, C22), a motion gained there " \
+           "(coordinated motions: 1 generically, 2 here)" in captions[0]
+    # c1 = c2 at irrational angles: the gained indeterminate motions are named
+    assert "indeterminate motions: 1 generically, 3 here" in captions[4]
+    assert "not drawn" in captions[4]
+
+
+def test_gained_motion_and_the_cap(tmp_path, case1, monkeypatch):
+    system, locus = case1
+    assert gained_motion(locus.components[0].numbers, locus.generic) == ("coordinated", 2)
+    assert gained_motion(locus.components[4].numbers, locus.generic) == ("indeterminate", 3)
+    monkeypatch.setattr(report, "MAX_SYSTEM_PICTURES", 2)
+    with pytest.warns(UserWarning, match="3 more components left out"):
+        written = write_report(locus, tmp_path / "r.html", system=system)
+    text = written[0].read_text()
+    assert text.count("<figcaption>Component ") == 2
+    assert "3 more components with a real witness are not drawn (at most 2 pictures" in text
