@@ -1,18 +1,43 @@
-"""Build the notebooks of this folder, without outputs.
+"""Build the notebooks of this folder and run them, storing their outputs.
 
-Run ``python notebooks/make_notebooks.py`` after editing a notebook's cells here; the
-test suite (``python -m pytest``, through nbmake) runs every notebook top to bottom.
+After editing a notebook's cells here, regenerate every notebook with::
+
+    python notebooks/make_notebooks.py
+
+It writes each notebook's cells, runs it top to bottom in a fresh ``python3`` kernel
+(nbclient, from the dev extras) with this folder as working directory, and stores the
+outputs: text, LaTeX, Markdown tables and pictures (PNG at 80 dpi, stored with 256
+colours to keep the files small). ``python notebooks/make_notebooks.py 03``
+regenerates only the notebooks whose names start with ``03``.
+
+Running the command again without a change rewrites the same files: the volatile
+metadata (cell timings, the kernel's Python version) is left out, and a cell whose new
+outputs differ from the stored ones only in volatile parts (printed timings, temporary
+paths, float noise: see ``normalize``) keeps the stored ones.
+
 Each notebook checks the paper's numbers with ``assert`` cells, so a wrong result fails
-the run.
+the run (and the test suite, which runs every notebook through nbmake).
+``tests/test_notebooks_up_to_date.py`` checks that the committed notebooks have the
+cells built here and print the numbers the code prints now.
 """
 
 from __future__ import annotations
 
+import argparse
+import base64
+import copy
+import io
+import os
+import re
+import tempfile
 import textwrap
+import time
 from pathlib import Path
 
 import nbformat
+from nbclient import NotebookClient
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+from PIL import Image
 
 HERE = Path(__file__).resolve().parent
 
@@ -26,6 +51,7 @@ def code(text: str):
 
 
 SETUP = code("""
+    import matplotlib
     import sympy as sp
     from IPython.display import Markdown, Math, display
 
@@ -52,6 +78,9 @@ SETUP = code("""
         body = "".join(f"| {label} | " + " | ".join(str(v) for v in n.as_dict().values())
                        + " |\\n" for label, n in rows)
         return Markdown(head + body)
+
+
+    matplotlib.rcParams["figure.dpi"] = 80  # pictures of modest size
 """)
 
 
@@ -510,6 +539,7 @@ NB03 = [
     import tempfile
     from pathlib import Path
 
+    import matplotlib
     import sympy as sp
     from IPython.display import Image, Markdown, display
 
@@ -523,6 +553,7 @@ NB03 = [
     from coopkin_sym.present.sentences import component_sentences
 
     NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+    matplotlib.rcParams["figure.dpi"] = 80  # pictures of modest size
 
 
     def png(figure):
@@ -1033,6 +1064,8 @@ NB04 = [
 
     import coopkin_sym
     from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+
+    plt.rcParams["figure.dpi"] = 80  # pictures of modest size
 
 
     def float_nm(analysis, tol=None):  # float-ok
@@ -1706,11 +1739,36 @@ NOTEBOOKS = {
 }
 
 
+KERNEL = "python3"
+"""The kernel every notebook runs in."""
+
+METADATA = {
+    "kernelspec": {"display_name": "Python 3", "language": "python", "name": KERNEL},
+    "language_info": {"name": "python"},
+}
+"""The notebook metadata, the same after a run (no Python version)."""
+
+CELL_TIMEOUT = 1800
+"""Seconds one cell may run before the run fails."""
+
+
 def build(name: str, cells: list) -> nbformat.NotebookNode:
-    nb = new_notebook(cells=cells, metadata={
-        "kernelspec": {"display_name": "Python 3", "language": "python", "name": "python3"},
-        "language_info": {"name": "python"},
-    })
+    """A notebook of the given cells, without outputs.
+
+    Parameters
+    ----------
+    name
+        The notebook's file name (``01_two_one_link_arms.ipynb``); its number prefixes
+        the cell ids.
+    cells
+        The cells, made by :func:`md` and :func:`code`.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        A valid nbformat-4 notebook with stable cell ids.
+    """
+    nb = new_notebook(cells=cells, metadata=METADATA)
     stem = name.split("_")[0]
     for i, cell in enumerate(nb.cells):   # stable ids: rebuilding changes nothing
         cell["id"] = f"nb{stem}-{i:02d}"
@@ -1718,10 +1776,233 @@ def build(name: str, cells: list) -> nbformat.NotebookNode:
     return nb
 
 
-def main() -> None:
-    for name, cells in NOTEBOOKS.items():
-        nbformat.write(build(name, cells), HERE / name)
-        print(f"wrote {HERE / name}")
+def compact_png(data: str) -> str:
+    """A base64 PNG redrawn with 256 colours on white (a third of the size, same look).
+
+    Parameters
+    ----------
+    data
+        The base64 text of a PNG, as a notebook stores it.
+
+    Returns
+    -------
+    str
+        The base64 text of the smaller PNG (no text chunks: the same bytes on every run).
+    """
+    picture = Image.open(io.BytesIO(base64.b64decode(data))).convert("RGBA")
+    white = Image.new("RGBA", picture.size, "white")
+    flat = Image.alpha_composite(white, picture).convert("RGB")
+    small = flat.quantize(colors=256, method=Image.Quantize.MEDIANCUT,
+                          dither=Image.Dither.NONE)
+    buffer = io.BytesIO()
+    small.save(buffer, format="PNG", optimize=True)
+    return base64.b64encode(buffer.getvalue()).decode("ascii")
+
+
+_MASKS = [
+    (re.compile(r"/tmp/ipykernel_\d+/\d+\.py"), "<cell>"),
+    (re.compile(re.escape(tempfile.gettempdir()) + r"/[^\s'\"`)]*"), "<tmp>"),
+    (re.compile(r" at 0x[0-9a-fA-F]+"), " at 0x…"),
+    (re.compile(r"\b\d+(?:\.\d+)?(?:e[+-]?\d+)? ?(?:ms|µs|us|s|sec|seconds|min)\b"), "<time>"),
+]
+_FLOAT = re.compile(r"(?<![\w.])-?\d+\.\d+(?:e[+-]?\d+)?(?![\w.])")
+
+
+def _round(match: re.Match) -> str:
+    return f"{float(match.group()):.4g}"  # float-ok: masks float noise in printed text
+
+
+def normalize(text: str) -> str:
+    """Printed text with its volatile parts masked and its exact content kept.
+
+    Parameters
+    ----------
+    text
+        One output's text.
+
+    Returns
+    -------
+    str
+        The text with timings, memory addresses and temporary paths replaced by
+        placeholders, decimal numbers rounded to four significant digits, runs of
+        spaces shortened to one and no spaces inside brackets or at line ends.
+
+    Examples
+    --------
+    >>> normalize("computed in 149.51 s; c1 moved by [0.59998 0.30003 0.3    ]")
+    'computed in <time>; c1 moved by [0.6 0.3 0.3]'
+    >>> normalize("Nm=2, C22 = Matrix([[1], [1]]), L=1/1000, 1e-12 rad")
+    'Nm=2, C22 = Matrix([[1], [1]]), L=1/1000, 1e-12 rad'
+    """
+    for pattern, placeholder in _MASKS:
+        text = pattern.sub(placeholder, text)
+    text = _FLOAT.sub(_round, text)
+    text = re.sub(r"[ \t]+", " ", text)
+    text = re.sub(r"\[ ", "[", re.sub(r" \]", "]", text))
+    return "\n".join(line.rstrip() for line in text.splitlines())
+
+
+def printed(cell: nbformat.NotebookNode, streams: tuple[str, ...] = ("stdout",),
+            pictures: bool = False) -> list[tuple[str, str]]:
+    """What a code cell printed, as (kind, normalized text) pairs in output order.
+
+    Parameters
+    ----------
+    cell
+        A code cell with outputs.
+    streams
+        The streams to include (``"stdout"``, ``"stderr"``); consecutive chunks of one
+        stream are joined, since their splitting varies between runs.
+    pictures
+        Also include each PNG picture (its base64 text, unchanged).
+
+    Returns
+    -------
+    list of (str, str)
+        One pair per stream run, per ``text/*`` form of a result or display (plain
+        text, LaTeX, Markdown, HTML) and per error; ``kind`` says which.
+    """
+    found: list[tuple[str, str]] = []
+    for output in cell.get("outputs", []):
+        if output.output_type == "stream":
+            if output.name in streams:
+                kind = f"stream {output.name}"
+                if found and found[-1][0] == kind:
+                    found[-1] = (kind, found[-1][1] + output.text)
+                else:
+                    found.append((kind, output.text))
+            continue
+        if output.output_type == "error":
+            found.append(("error", f"{output.ename}: {output.evalue}"))
+        for kind, value in sorted(output.get("data", {}).items()):
+            if kind.startswith("text/"):
+                found.append((f"{output.output_type} {kind}", value))
+            elif kind == "image/png" and pictures:
+                found.append((f"{output.output_type} {kind}", value))
+    return [(kind, value if kind.endswith("image/png") else normalize(value))
+            for kind, value in found]
+
+
+def _coalesce_streams(cell: nbformat.NotebookNode) -> None:
+    """Join consecutive chunks of one stream into one output."""
+    outputs = []
+    for output in cell.outputs:
+        if (output.output_type == "stream" and outputs
+                and outputs[-1].output_type == "stream" and outputs[-1].name == output.name):
+            outputs[-1].text += output.text
+        else:
+            outputs.append(output)
+    cell.outputs = outputs
+
+
+def execute(nb: nbformat.NotebookNode,
+            timeout: int = CELL_TIMEOUT) -> nbformat.NotebookNode:
+    """Run a notebook top to bottom in a fresh kernel and store its outputs.
+
+    Parameters
+    ----------
+    nb
+        A notebook from :func:`build`; changed in place.
+    timeout
+        Seconds one cell may run.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        ``nb``, with outputs and execution counts, pictures made smaller by
+        :func:`compact_png`, and without the volatile metadata nbclient records (cell
+        timings, the kernel's ``language_info``).
+
+    Raises
+    ------
+    nbclient.exceptions.CellExecutionError
+        A cell raised (a failed ``assert`` included); the message names the cell.
+    """
+    # pictures inline as PNG, whatever backend the calling process chose
+    env = dict(os.environ, MPLBACKEND="module://matplotlib_inline.backend_inline")
+    client = NotebookClient(nb, timeout=timeout, kernel_name=KERNEL, record_timing=False,
+                            resources={"metadata": {"path": str(HERE)}})
+    client.execute(env=env)
+    nb.metadata = nbformat.from_dict(METADATA)
+    for cell in nb.cells:
+        cell.metadata.pop("execution", None)
+        if cell.cell_type != "code":
+            continue
+        _coalesce_streams(cell)
+        for output in cell.outputs:
+            if "image/png" in output.get("data", {}):
+                output.data["image/png"] = compact_png(output.data["image/png"])
+    nbformat.validate(nb)
+    return nb
+
+
+def keep_unchanged_outputs(committed: nbformat.NotebookNode,
+                           fresh: nbformat.NotebookNode) -> int:
+    """Keep a cell's committed outputs where the fresh ones differ only in volatile parts.
+
+    A cell's outputs are the same when they print the same text once normalized (see
+    :func:`normalize`: timings, addresses, temporary paths, float noise), standard error
+    included, and draw the same pictures byte for byte. Then the committed outputs are
+    kept, so regenerating without a change rewrites the same file.
+
+    Parameters
+    ----------
+    committed
+        The notebook as it was on disk.
+    fresh
+        The same notebook just run (:func:`execute`); changed in place.
+
+    Returns
+    -------
+    int
+        The number of code cells whose new outputs were written.
+    """
+    changed = 0
+    for index, cell in enumerate(fresh.cells):
+        if cell.cell_type != "code":
+            continue
+        old = committed.cells[index] if index < len(committed.cells) else None
+        streams = ("stdout", "stderr")
+        if (old is not None and old.cell_type == "code"
+                and printed(old, streams, pictures=True) == printed(cell, streams,
+                                                                   pictures=True)):
+            cell.outputs = copy.deepcopy(old.outputs)
+            _coalesce_streams(cell)
+            for output in cell.outputs:
+                if output.output_type == "execute_result":
+                    output.execution_count = cell.execution_count
+        else:
+            changed += 1
+    return changed
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Build, run and write the notebooks (all, or those whose names start as given).
+
+    Parameters
+    ----------
+    argv
+        Command-line arguments (``sys.argv[1:]`` when ``None``).
+    """
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("only", nargs="*", metavar="PREFIX",
+                        help="regenerate only the notebooks whose names start with PREFIX")
+    args = parser.parse_args(argv)
+    chosen = [name for name in NOTEBOOKS
+              if not args.only or any(name.startswith(p) for p in args.only)]
+    if not chosen:
+        parser.error(f"no notebook starts with {' or '.join(args.only)}: {', '.join(NOTEBOOKS)}")
+    for name in chosen:
+        start = time.perf_counter()
+        path = HERE / name
+        nb = execute(build(name, NOTEBOOKS[name]))
+        changed = "all"
+        if path.exists():
+            changed = keep_unchanged_outputs(nbformat.read(path, as_version=4), nb)
+        nbformat.write(nb, path)
+        print(f"wrote {path} ({path.stat().st_size // 1024} KB, ran in "
+              f"{time.perf_counter() - start:.0f} s, new outputs in {changed} cells)",
+              flush=True)
 
 
 if __name__ == "__main__":
