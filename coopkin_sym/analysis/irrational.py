@@ -37,7 +37,11 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.mobility import frame_json, numbers_modulo, snapped_json
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
-from coopkin_sym.analysis.passive import PassiveNumbers, passive_numbers
+from coopkin_sym.analysis.passive import (
+    PassiveNumbers,
+    motors_held_still,
+    passive_numbers,
+)
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import NotIrrational
 from coopkin_sym.exact.angles import tangent_name
@@ -239,12 +243,10 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
     passive = None
     if model.passive_joints and not model.locked:
-        dim, zero = model.object_dim, kin.ring.zctx.constant(0)
-        act = {dim + k for k, j in enumerate(model.joints) if j.actuated}
-        locked_rows = [[zero if c in act else e for c, e in enumerate(row)] for row in rows]
-        locked = numbers_modulo(locked_rows, model.with_actuators_locked(), kin.row_contacts,
-                                quotient)
-        passive = passive_numbers(len(act), len(model.joints) - len(act), numbers, locked)
+        locked = numbers_modulo(motors_held_still(model, rows, kin.ring.zctx),
+                                model.with_actuators_locked(), kin.row_contacts, quotient)
+        motors = sum(j.actuated for j in model.joints)
+        passive = passive_numbers(motors, len(model.joints) - motors, numbers, locked)
     values = {kin.symbols[tangent_name(n)]: irrational[n] for n in names}
     motions = point_motions(model, numbers, rows, quotient, kin, values,
                             degree=sp.degree(minimal, _ALPHA))

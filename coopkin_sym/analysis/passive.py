@@ -161,10 +161,8 @@ def passive_analysis(analysis) -> PassiveAnalysis:
     dim, r = analysis.dim, analysis.r
     flags = [j.actuated for j in model.joints]
     act = [k for k, a in enumerate(flags) if a]
-    zero = zctx.constant(0)
-    locked_rows = [[e if c < dim or not flags[c - dim] else zero
-                    for c, e in enumerate(row)] for row in analysis._q_rows]
-    locked = analysis.decompose_rows(model.with_actuators_locked(), locked_rows)
+    locked = analysis.decompose_rows(model.with_actuators_locked(),
+                                     motors_held_still(model, analysis._q_rows, zctx))
     numbers = passive_numbers(len(act), r - len(act), analysis.numbers, locked.numbers)
     # the locked system's reduced echelon N(Dt): the actuated unit vectors, and the
     # vectors of N(Dt_p), zero on every actuated joint
@@ -184,6 +182,25 @@ def passive_analysis(analysis) -> PassiveAnalysis:
                            cols(internal, r), cols(actuated_redundant, len(act)))
 
 
+def motors_held_still(model, q_rows, zctx) -> list:
+    """The integer-polynomial rows of ``Q`` with every actuated joint's column zero:
+    ``Q`` of :meth:`~coopkin_sym.model.model.Model.with_actuators_locked`, without
+    building its kinematics again.
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym import load
+    >>> model = load("five-bar").model           # planar: 3 object columns, then q1..q4
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> [str(e) for e in motors_held_still(model, [[ctx.constant(1)] * 7], ctx)[0]]
+    ['1', '1', '1', '0', '1', '0', '1']
+    """
+    dim, zero = model.object_dim, zctx.constant(0)
+    motors = {dim + k for k, j in enumerate(model.joints) if j.actuated}
+    return [[zero if c in motors else e for c, e in enumerate(row)] for row in q_rows]
+
+
 def _extend(basis: list, candidates: list, n: int, zctx) -> list:
     """The candidates (in order) that each raise the rank of ``basis``: a basis of
     a complement of ``span(basis)`` in ``span(basis + candidates)``."""
@@ -199,5 +216,5 @@ def _extend(basis: list, candidates: list, n: int, zctx) -> list:
     return chosen
 
 
-__all__ = ["PASSIVE_NUMBER_NAMES", "PassiveAnalysis", "PassiveNumbers", "passive_analysis",
-           "passive_numbers"]
+__all__ = ["PASSIVE_NUMBER_NAMES", "PassiveAnalysis", "PassiveNumbers", "motors_held_still",
+           "passive_analysis", "passive_numbers"]
