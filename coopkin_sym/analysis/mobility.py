@@ -41,6 +41,7 @@ import sympy as sp
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
+from coopkin_sym.analysis.generic import NumbersCertificate, RankBound, generic_numbers
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import (
     Numbers,
@@ -50,6 +51,7 @@ from coopkin_sym.analysis.numbers import (
 )
 from coopkin_sym.analysis.passive import PassiveAnalysis, passive_analysis
 from coopkin_sym.analysis.renderers import Displayable, clip
+from coopkin_sym.analysis.sweep.compiled import point_ranks
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name
@@ -110,23 +112,100 @@ class Analysis(Displayable):
     <Analysis paper case 1, hard/hard at q1=pi/2,q2=pi/2: Nm=3 Nc=3 Ni=1 Nr=0 Ng=1 Nd=4 Nh=1>
     """
 
-    def __init__(self, model: Model, config: Configuration, kin: kinematics.Kinematics,
+    def __init__(self, model: Model, config: Configuration,
+                 kin: kinematics.Kinematics | None = None,
                  term_budget: int | None = DEFAULT_TERM_BUDGET):
         self.model = model
         self.configuration = config
-        self.kinematics = kin
         self.term_budget = term_budget
-        ring = kin.ring
-        zctx = ring.zctx
-        r = len(model.joints)
-        self.r = r
+        self.r = len(model.joints)
         self.dim = model.object_dim
-        self.m = len(kin.Q)
-        q_rows = [ring.clear_row(row) for row in kin.Q]
-        self._q_rows = q_rows
-        d = decompose(q_rows, model, kin.row_contacts, zctx)
-        self._c11, self._c23, self._arm_maps, self._coord_u = d.c11, d.c23, d.arm_maps, d.coord_u
-        self.numbers = d.numbers
+        if kin is not None:
+            self.__dict__["kinematics"] = kin
+
+    # --- the numbers first; everything else when it is asked for --------------------
+    @cached_property
+    def kinematics(self) -> kinematics.Kinematics:
+        """``G``, ``D``, ``H`` and ``Q`` over the ring of the symbolic variables."""
+        return kinematics.build(self.model, self.configuration)
+
+    @cached_property
+    def m(self) -> int:
+        """The number of rows of ``Q`` (contact constraints)."""
+        return len(self.kinematics.Q)
+
+    @cached_property
+    def _q_rows(self) -> list:
+        ring = self.kinematics.ring
+        return [ring.clear_row(row) for row in self.kinematics.Q]
+
+    @cached_property
+    def _decomposition(self) -> Decomposition:
+        return decompose(self._q_rows, self.model, self.kinematics.row_contacts,
+                         self.ring.zctx)
+
+    @property
+    def _c11(self) -> list:
+        return self._decomposition.c11
+
+    @property
+    def _c23(self) -> list:
+        return self._decomposition.c23
+
+    @property
+    def _arm_maps(self) -> list[_ArmMap]:
+        return self._decomposition.arm_maps
+
+    @property
+    def _coord_u(self) -> list:
+        return self._decomposition.coord_u
+
+    @cached_property
+    def _first_numbers(self) -> tuple[Numbers, NumbersCertificate]:
+        """The numbers before any subspace: exact ranks of ``Q`` at the point (compiled
+        after the first point of a model), or generic numbers from exact ranks at random
+        points with their certificate (see :mod:`coopkin_sym.analysis.generic`)."""
+        compiled = point_ranks(self.model, self.configuration)
+        if compiled is not None:
+            m, ranks = compiled
+            self.__dict__.setdefault("m", m)
+            ranks_known = [RankBound(name, rank, "point") for name, rank
+                           in zip(("Q", "Gt", "Dt"), ranks, strict=True)]
+            return (numbers_from_ranks(m, self.r, *ranks, dim=self.dim),
+                    NumbersCertificate.from_ranks(ranks_known, 0))
+        kin = self.kinematics
+        return generic_numbers(self._q_rows, self.model, kin.row_contacts, kin.ring.zctx)
+
+    @property
+    def numbers(self) -> Numbers:
+        """The seven numbers (exact; see :attr:`certificate` for how they are known).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2").numbers.Nm
+        3
+        """
+        if "_decomposition" in self.__dict__:
+            return self._decomposition.numbers
+        return self._first_numbers[0]
+
+    @property
+    def certificate(self) -> NumbersCertificate:
+        """How :attr:`numbers` are known: exact ranks (at the point, bounded by the
+        sizes, or by elimination over the field of rational functions) or, when a
+        certificate was too costly, exact ranks at random points with the probability
+        of an error bounded (``error_bits``).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("paper-case2-hard").analyze(generic=True).certificate.exact
+        True
+        """
+        if "_decomposition" in self.__dict__:
+            return NumbersCertificate.by_elimination()
+        return self._first_numbers[1]
 
     def decompose_rows(self, model: Model, q_rows) -> Decomposition:
         """The decomposition of other integer-polynomial rows of ``Q`` over this
@@ -545,6 +624,7 @@ class Analysis(Displayable):
             "snapped": snapped_json(self.model.snapped),
             "field": None,
         }
+        out["certificate"] = self.certificate.as_dict()
         if omitted:
             out["omitted"] = omitted
         if self.model.passive_joints:
@@ -741,7 +821,7 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
 
 def analyze(model: Model, config: Configuration) -> Analysis:
     """Analyze ``model`` at ``config`` exactly."""
-    return Analysis(model, config, kinematics.build(model, config))
+    return Analysis(model, config)
 
 
 def snapped_json(snapped) -> list[dict]:

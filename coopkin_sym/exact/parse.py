@@ -864,6 +864,27 @@ def exact_expr(value: object, symbols: Mapping[str, sp.Symbol] | Iterable[str] |
     return reader.as_sympy(v) if isinstance(v, _Sym) else reader.to_sympy(v)
 
 
+#: integers as the general parser reads them (no leading zero), of at most 60 digits
+_INT = r"(?:0|[1-9]\d{0,59})"
+_SIMPLE_RATIONAL = re.compile(rf"\s*(-?{_INT})\s*(?:/\s*({_INT})\s*)?", re.ASCII)
+
+
+def _simple_rational(value: object) -> sp.Rational | None:
+    """The commonest exact numbers read without the general parser: the texts ``p``
+    and ``p/q`` with integers of at most 60 digits, Python and SymPy integers and
+    rationals; ``None`` for anything else."""
+    if isinstance(value, str):
+        match = _SIMPLE_RATIONAL.fullmatch(value)
+        if match and (match.group(2) is None or int(match.group(2)) != 0):
+            return sp.Rational(int(match.group(1)), int(match.group(2) or 1))
+        return None
+    if isinstance(value, int) and not isinstance(value, bool):
+        return sp.Integer(value) if abs(value) < 10**60 else None
+    if isinstance(value, sp.Rational):
+        return value if value.q < 10**60 and abs(value.p) < 10**60 else None
+    return None
+
+
 def parse_number(value: object, parameters: Mapping[str, sp.Symbol],
                  where: str) -> sp.Expr:
     """Read one exact number: a rational, or a polynomial in the parameters.
@@ -898,6 +919,9 @@ def parse_number(value: object, parameters: Mapping[str, sp.Symbol],
     >>> parse_number("L/2 + 1", {"L": L}, "point")
     L/2 + 1
     """
+    simple = _simple_rational(value)
+    if simple is not None:
+        return simple
     v, reader = _value(value, parameters, where, "parameters")
     if isinstance(v, _Sym):
         expr = v.expr
@@ -1119,6 +1143,11 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
     >>> parse_angle("atan(3/4)", "q1")
     (4/5, 3/5)
     """
+    simple = _simple_angle(text)
+    if simple is not None:
+        c, s = simple
+        return sp.Rational(c.numerator, c.denominator), sp.Rational(s.numerator,
+                                                                    s.denominator)
     q, shown = _angle_value(text, where)
     parts = _angle_parts(q)
     direct = _direct_tangent(parts)
@@ -1144,6 +1173,71 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
     if near:
         message += "; nearest exact angles: " + ", ".join(near)
     raise NumberError(where, message)
+
+
+_SIMPLE_ATAN = re.compile(rf"\s*(-?)\s*2\s*\*\s*atan\(\s*(-?)\s*({_INT})\s*"
+                          rf"(?:/\s*({_INT})\s*)?\)\s*", re.ASCII)
+_SIMPLE_PI = re.compile(r"\s*(-?)\s*(?:([1-9]\d{0,5})\s*\*\s*)?pi\s*(?:/\s*([1-9]\d{0,5})\s*)?",
+                        re.ASCII)
+#: ``(cos, sin)`` of ``k pi / 2`` for ``k`` modulo 4
+_QUARTERS = ((1, 0), (0, 1), (-1, 0), (0, -1))
+
+
+def _circle_point(t: Fraction) -> tuple[Fraction, Fraction]:
+    p, q = t.numerator, t.denominator
+    w = p * p + q * q                  # gcd(q^2 - p^2, w) and gcd(2pq, w) divide 2
+    return Fraction(q * q - p * p, w), Fraction(2 * p * q, w)
+
+
+def _simple_angle(value: object) -> tuple[Fraction, Fraction] | None:
+    """``(cos q, sin q)`` of the commonest exact angles, read without the general
+    parser: the texts ``2*atan(p/q)``, ``k*pi/2`` and ``0`` (and the same SymPy
+    objects); ``None`` for anything else (the general parser then decides).
+
+    Example
+    -------
+    >>> _simple_angle("-2*atan(1/3)"), _simple_angle("3*pi/2"), _simple_angle("pi/3")
+    ((Fraction(4, 5), Fraction(-3, 5)), (Fraction(0, 1), Fraction(-1, 1)), None)
+    >>> _simple_angle("2*atan(1/0)") is None
+    True
+    """
+    if isinstance(value, str):
+        if value.strip() == "0":
+            return Fraction(1), Fraction(0)
+        match = _SIMPLE_ATAN.fullmatch(value)
+        if match:
+            outer, inner, num, den = match.groups()
+            if den is not None and int(den) == 0:
+                return None
+            t = Fraction(int(num), int(den or 1))
+            return _circle_point(-t if (outer == "-") != (inner == "-") else t)
+        match = _SIMPLE_PI.fullmatch(value)
+        if match:
+            sign, k, d = match.groups()
+            if d is not None and int(d) == 0:
+                return None
+            ratio = Fraction(int(k or 1), int(d or 1)) * (-1 if sign else 1) * 2
+            if ratio.denominator == 1:                # a multiple of pi/2
+                c, s = _QUARTERS[int(ratio) % 4]
+                return Fraction(c), Fraction(s)
+        return None
+    if isinstance(value, sp.Basic):
+        if value.is_Integer and value == 0:
+            return Fraction(1), Fraction(0)
+        if isinstance(value, sp.Mul) and len(value.args) == 2:
+            k, f = value.args
+            if k.is_Integer and abs(int(k)) == 2 and isinstance(f, sp.atan) and \
+                    f.args[0].is_Rational:
+                t = to_fraction(f.args[0])
+                return _circle_point(t if int(k) > 0 else -t)
+            if k.is_Rational and f is sp.pi:
+                ratio = to_fraction(k) * 2
+                if ratio.denominator == 1:
+                    c, s = _QUARTERS[int(ratio) % 4]
+                    return Fraction(c), Fraction(s)
+        if value is sp.pi:
+            return Fraction(-1), Fraction(0)
+    return None
 
 
 def _small_angle(parts: _AngleParts) -> bool:

@@ -91,7 +91,8 @@ class Configuration:
                 raise ConfigurationError(f"{where}: unknown name {brief(name)} (known: {known})")
         # a prismatic displacement may use parameters; substitute the given values
         subs = {params[n]: v for n, v in values.items()}
-        prismatic = {n: sp.expand(e.subs(subs)) for n, e in prismatic.items()}
+        prismatic = {n: e if e.is_Rational else sp.expand(e.subs(subs))
+                     for n, e in prismatic.items()}
         return cls(revolute, prismatic, values, free_set)
 
     def at_text(self) -> str:

@@ -55,7 +55,7 @@ from coopkin_sym.present.sentences import (
     irrational_sentences,
     sentences,
 )
-from coopkin_sym.present.text import block_table
+from coopkin_sym.present.text import block_table, certificate_text
 
 __all__ = ["analysis_html", "analysis_latex", "component_html", "install",
            "irrational_html", "irrational_latex", "locus_html", "manipulability_latex",
@@ -287,8 +287,11 @@ def analysis_html(a: Analysis) -> str:
     if a.variables:
         tangents = " (t_q = tan(q/2))" if any(str(v).startswith("t_") for v in a.variables) else ""
         parts.append(f"<p>Symbols: {_e(', '.join(map(str, a.variables)) + tangents)}</p>")
-    parts += [_numbers_table(a.numbers), f"<p>{_e(classes_text(a.numbers))}</p>",
-              _list(said)]
+    parts.append(_numbers_table(a.numbers))
+    doubt = certificate_text(a.certificate)
+    if doubt:
+        parts.append(f"<p><em>{_e(doubt)}</em></p>")
+    parts += [f"<p>{_e(classes_text(a.numbers))}</p>", _list(said)]
     shapes = _shapes(a)
     parts += [_block_html(name, blocks[name], shapes[name], labels[name])
               for name in _BLOCK_NAMES]

@@ -54,6 +54,9 @@ def analysis_text(a: Analysis) -> str:
     n = a.numbers
     lines.append("")
     lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
+    doubt = certificate_text(a.certificate)
+    if doubt:
+        lines.append(doubt)
     lines.append(classes_text(n))
     lines.append("")
     for s in sentences(a):
@@ -74,6 +77,28 @@ def analysis_text(a: Analysis) -> str:
         if mat.cols:
             lines.extend(block_table(mat, labels))
     return "\n".join(lines)
+
+
+def certificate_text(certificate) -> str | None:
+    """One sentence when the numbers are not certified (``None`` when they are).
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.generic import NumbersCertificate, RankBound
+    >>> cert = NumbersCertificate.from_ranks(
+    ...     [RankBound("Q", 6, "size"), RankBound("Gt", 5, "sampled")], 2, 118)
+    >>> print(certificate_text(cert))
+    Probabilistic numbers: rank Gt is the exact rank at 2 random points, not certified; \
+the chance that a number is wrong is below 2^-118.
+    """
+    if certificate.exact:
+        return None
+    open_ranks = [r.matrix for r in certificate.ranks if not r.certified]
+    verb = "is" if len(open_ranks) == 1 else "are"
+    ranks = "rank " + ", ".join(open_ranks)
+    return (f"Probabilistic numbers: {ranks} {verb} the exact rank at {certificate.points} "
+            f"random points, not certified; the chance that a number is wrong is below "
+            f"2^-{certificate.error_bits}.")
 
 
 def snapped_lines(snapped) -> list[str]:

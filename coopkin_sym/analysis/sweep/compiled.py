@@ -11,6 +11,7 @@ import math
 import random
 from collections import OrderedDict
 from collections.abc import Mapping, Sequence
+from functools import cached_property
 from typing import Any
 
 import flint
@@ -18,7 +19,13 @@ import numpy as np
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_of_q
+from coopkin_sym.analysis.generic import generic_numbers
+from coopkin_sym.analysis.numbers import (
+    Numbers,
+    numbers_from_ranks,
+    ranks_from_numbers,
+    ranks_of_q,
+)
 from coopkin_sym.analysis.sweep.grid import _split_point
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import SweepError
@@ -48,6 +55,7 @@ class _Exact:
         self.kinds = plan["kinds"]
         self.njv = plan["njv"]
         self.params = plan["nvars"] - plan["njv"]
+        self.arm_blocks = plan.get("arm_blocks")
         if self.params:
             self.ctx = flint.fmpz_mpoly_ctx.get(tuple(plan["names"]), "degrevlex")
             self.entries = [(k, self.ctx.from_dict(dict(t))) for k, t in plan["terms"]]
@@ -61,8 +69,17 @@ class _Exact:
             return 0, 0, 0
         args = _joint_vector(self.kinds, pairs)
         if not self.params:
-            return ranks_of_q(PolyMatrix.from_integers(m, n, self.program(args)),
-                              dim=self.dim)
+            flat = self.program(args)
+            dim = self.dim
+            rows = [flat[i * n:(i + 1) * n] for i in range(m)]
+            rq = flint.fmpz_mat(rows).rank()
+            rg = flint.fmpz_mat([row[:dim] for row in rows]).rank()
+            if self.arm_blocks is None:
+                rd = flint.fmpz_mat([row[dim:] for row in rows]).rank() if n > dim else 0
+            else:                      # H D is block diagonal: one block per arm
+                rd = sum(flint.fmpz_mat([rows[i][c0:c1] for i in block]).rank()
+                         for block, c0, c1 in self.arm_blocks)
+            return rq, rg, rd
         subs = {i: flint.fmpz(args[i]) for i in range(self.njv)}
         zero = self.ctx.constant(0)
         flat = [zero] * (m * n)
@@ -214,6 +231,20 @@ def _compile_rows(frac_rows, rows, ring, joints, kinds, var_of, param_vars, name
     return terms
 
 
+def _arm_blocks(model: Model, row_contacts: Sequence[int], dim: int) -> list:
+    """The blocks of ``H D``, one per arm with rows and joints, as ``(rows, first
+    column, end column)`` in ``Q``'s columns (rows of contacts on no arm have no joint
+    entries)."""
+    owners = [model.contacts[c].arm for c in row_contacts]
+    blocks = []
+    for a, arm in enumerate(model.arms):
+        rows = [i for i, o in enumerate(owners) if o == a]
+        c0 = dim + model.joint_offset(a)
+        if rows and arm.joints:
+            blocks.append((rows, c0, c0 + len(arm.joints)))
+    return blocks
+
+
 class Compiled:
     """``Q`` of a system compiled for exact evaluation with some joints swept.
 
@@ -291,15 +322,15 @@ class Compiled:
         rows = [ring.clear_row(row) for row in kin.Q]
         terms = _compile_rows(kin.Q, rows, ring, joints, self.kinds, var_of, param_vars,
                               names, n)
-        generic = ranks_of_q(PolyMatrix(rows, n, context=ring.zctx), dim=dim)
-        self.generic_ranks = generic
-        self.generic = self._numbers(*generic)
+        # the generic ranks are computed when a sweep first needs them (a point
+        # analysis never does)
+        self._generic_input = (rows, model, kin.row_contacts, ring.zctx)
         flat_terms = [(k, e, c) for k, ts in terms for e, c in ts]
         nvars = len(names)
         exps = np.array([e for _, e, _ in flat_terms], dtype=np.int64).reshape(-1, nvars)
         used = sorted({k % n for k, _ in terms})
         key = hashlib.sha1(repr((names, terms, self.m, n, dim)).encode()).hexdigest()
-        self.plan = {
+        self._plan = {
             "key": key, "prime": prime, "m": self.m, "n": n, "dim": dim, "names": names,
             "kinds": list(self.kinds), "njv": njv, "nvars": nvars, "terms": terms,
             "exps": exps,
@@ -309,8 +340,32 @@ class Compiled:
                        for i in range(njv, nvars)],
             "object_cols": [c for c in used if c < dim],
             "joint_cols": [c for c in used if c >= dim],
-            "generic": generic,
+            "arm_blocks": _arm_blocks(model, kin.row_contacts, dim),
         }
+
+    @cached_property
+    def generic_ranks(self) -> tuple[int, int, int]:
+        """The exact ranks of ``Q``, ``H G^T`` and ``H D`` with the swept joints
+        symbolic, found arm by arm (see :mod:`coopkin_sym.analysis.generic`: exact ranks
+        at random points, then elimination over ``Q(t, L)`` of the blocks the size
+        bounds leave open)."""
+        rows, model, row_contacts, zctx = self._generic_input
+        numbers, _ = generic_numbers(rows, model, row_contacts, zctx, seed=0,
+                                     certify_seconds=None)
+        return ranks_from_numbers(numbers, self.r, dim=self.dim)
+
+    @cached_property
+    def generic(self) -> Numbers:
+        """The numbers with the swept joints symbolic (over ``Q(t, L)``)."""
+        return self._numbers(*self.generic_ranks)
+
+    @property
+    def plan(self) -> dict:
+        """Everything a worker process needs, as plain data (the generic ranks
+        included)."""
+        if "generic" not in self._plan:
+            self._plan["generic"] = self.generic_ranks
+        return self._plan
 
     def _default(self, full: Configuration, joint: str) -> Value:
         if joint in full.revolute:
@@ -349,7 +404,7 @@ class Compiled:
     def ranks(self, values: Sequence[Value]) -> tuple[int, int, int]:
         """Exact ranks of ``Q``, ``H G^T`` and ``H D`` at the swept values (in the order
         of :attr:`joints`)."""
-        return _exact_for(self.plan).ranks([(v.num, v.den) for v in values])
+        return _exact_for(self._plan).ranks([(v.num, v.den) for v in values])
 
     def numbers_at(self, values: Sequence[Value]) -> Numbers:
         """The exact numbers at the swept values (in the order of :attr:`joints`).
@@ -392,7 +447,8 @@ def compile_system(system: Model | Any, joints: Sequence[str],
     """
     model = model_of(system)
     at_key = at if at is None or isinstance(at, str) else tuple(
-        sorted((str(k), str(v)) for k, v in at.items()))
+        sorted((str(k), f"{int(v.p)}/{int(v.q)}" if getattr(v, "is_Rational", False)
+                else str(v)) for k, v in at.items()))
     key = (id(model), tuple(joints), at_key, prime)
     hit = _COMPILED.get(key)
     if hit is not None and hit[0] is model:
@@ -403,3 +459,78 @@ def compile_system(system: Model | Any, joints: Sequence[str],
     while len(_COMPILED) > 16:
         _COMPILED.popitem(last=False)
     return compiled
+
+
+_SEEN: OrderedDict[tuple, Model] = OrderedDict()
+_JOINTS: OrderedDict[int, tuple[Model, tuple[str, ...], tuple[str, ...]]] = OrderedDict()
+
+
+def _joints_of(model: Model) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The joint names and kinds of ``model`` (cached: read at every point)."""
+    hit = _JOINTS.get(id(model))
+    if hit is None or hit[0] is not model:
+        hit = (model, tuple(j.name for j in model.joints),
+               tuple(j.type for j in model.joints))
+        _JOINTS[id(model)] = hit
+        while len(_JOINTS) > 64:
+            _JOINTS.popitem(last=False)
+    return hit[1], hit[2]
+
+
+def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, int, int]] | None:
+    """``m`` and the exact ranks of ``Q``, ``H G^T`` and ``H D`` at a configuration
+    that gives every joint a value, on the compiled path: ``Q`` is compiled (all joints
+    swept, the parameters at their values) the second time ``model`` is analyzed at a
+    point with the same parameters, then evaluated exactly at each point.
+
+    ``None`` when the compiled path does not apply: a joint is left symbolic, a
+    displacement depends on a symbolic parameter, or this is the first point of the
+    model (a single analysis does not pay for compiling).
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> model = load_model("paper-case1-hard")
+    >>> config = Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1")
+    >>> point_ranks(model, config) is None, point_ranks(model, config)
+    (True, (6, (5, 5, 2)))
+    """
+    if config.free:
+        return None
+    joints, kinds = _joints_of(model)
+    revolute, prismatic = config.revolute, config.prismatic
+    pairs: list[tuple[int, int]] = []
+    for joint, kind in zip(joints, kinds, strict=True):
+        if kind == "revolute":
+            value = revolute.get(joint)
+            if value is None:                         # home
+                pairs.append((0, 1))
+                continue
+            c, s = (sp.Rational(x) for x in value)
+            cp, cq, sp_, sq = int(c.p), int(c.q), int(s.p), int(s.q)
+            if cp == -cq:                             # q = pi
+                pairs.append((1, 0))
+            else:                                     # tan(q/2) = s / (1 + c)
+                pairs.append((sp_ * cq, sq * (cq + cp)))
+        else:
+            d = prismatic.get(joint, 0)
+            if isinstance(d, int):
+                pairs.append((d, 1))
+            elif getattr(d, "is_Rational", False):
+                pairs.append((int(d.p), int(d.q)))
+            else:
+                return None
+    at = config.parameters
+    at_key = tuple(sorted((str(k), f"{int(v.p)}/{int(v.q)}") for k, v in at.items()))
+    key = (id(model), joints, at_key, modular.PRIME)
+    hit = _COMPILED.get(key)
+    if hit is not None and hit[0] is model:
+        compiled = hit[1]
+        return compiled.m, _exact_for(compiled._plan).ranks(pairs)
+    if _SEEN.get(key) is not model:
+        _SEEN[key] = model
+        while len(_SEEN) > 64:
+            _SEEN.popitem(last=False)
+        return None
+    compiled = compile_system(model, joints, at)
+    return compiled.m, _exact_for(compiled._plan).ranks(pairs)

@@ -1,0 +1,129 @@
+"""The numbers that come first: compiled exact ranks at a point and generic numbers
+from exact ranks at random points, checked against the arm-by-arm decomposition
+(the blocks' own numbers) and against the independent reference on random systems."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from independent import reference_numbers_algebraic
+from strategies import random_configurations, random_systems
+
+import coopkin_sym
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.generic import NumbersCertificate, generic_numbers
+from coopkin_sym.analysis.mobility import decompose
+from coopkin_sym.analysis.sweep.compiled import point_ranks
+from coopkin_sym.model.builders import planar_hand, spatial_hand
+from coopkin_sym.model.configuration import Configuration
+
+SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                       HealthCheck.data_too_large])
+
+
+def _decomposed(model, config):
+    kin = kinematics.build(model, config)
+    rows = [kin.ring.clear_row(r) for r in kin.Q]
+    return rows, kin, decompose(rows, model, kin.row_contacts, kin.ring.zctx).numbers
+
+
+@settings(max_examples=60, **SETTINGS)
+@given(st.data())
+def test_point_numbers_compiled_agree_with_reference(data):
+    """Every joint given: the compiled path (second and later points of a model) gives
+    the reference's numbers, at generic-looking and special configurations."""
+    spec = data.draw(random_systems(with_parameter=data.draw(st.booleans())))
+    system = coopkin_sym.load(spec)
+    for _ in range(3):
+        at, text = data.draw(random_configurations(spec))
+        config = system.configuration(text)
+        a = system.analyze(config)
+        expected = reference_numbers_algebraic(spec, at)
+        assert a.numbers.as_dict() == expected, text
+        assert a.certificate.exact
+        # the same configuration again: now certainly on the compiled path
+        assert point_ranks(system.model, config) is not None
+        assert system.analyze(text).numbers.as_dict() == expected
+
+
+@settings(max_examples=40, **SETTINGS)
+@given(st.data())
+def test_generic_numbers_agree_with_elimination(data):
+    """Generic (every joint symbolic, L symbolic or given): the numbers from random
+    points equal the decomposition's, whatever the certificate's time budget (none:
+    every rank certified; zero: the certificate states the error bound)."""
+    spec = data.draw(random_systems(with_parameter=data.draw(st.booleans())))
+    model = coopkin_sym.load(spec).model
+    config = Configuration.parse(model, None, "all")
+    rows, kin, exact = _decomposed(model, config)
+    seed = data.draw(st.integers(0, 2**32))
+    certified, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
+                                      seed=seed, certify_seconds=None)
+    assert certified == exact
+    assert cert.exact and cert.error_bits is None
+    assert all(r.how in {"size", "elimination"} for r in cert.ranks)
+    sampled, cert0 = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
+                                     seed=seed, certify_seconds=0)
+    assert sampled == exact
+    if not cert0.exact:
+        assert cert0.error_bits >= 100
+        assert any(r.how == "sampled" for r in cert0.ranks)
+
+
+@pytest.mark.parametrize("spec", ["paper-case1-hard", "paper-case2-hard",
+                                  "paper-case2-complete", "planar-two-fingers",
+                                  "five-bar", "underactuated-finger"])
+def test_generic_analysis_numbers_before_blocks(spec):
+    """``analyze(generic=True).numbers`` comes before any block and equals the blocks'
+    numbers; once the blocks are built the certificate is the elimination's."""
+    system = coopkin_sym.load(spec)
+    a = system.analyze(generic=True)
+    first, cert = a.numbers, a.certificate
+    assert "_decomposition" not in a.__dict__
+    assert cert.exact
+    a.C11  # noqa: B018  (builds the decomposition)
+    assert "_decomposition" in a.__dict__
+    assert a.numbers == first
+    assert a.certificate == NumbersCertificate.by_elimination()
+
+
+@pytest.mark.parametrize("build, expected", [
+    (lambda: spatial_hand(5, 2), {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0}),
+    (lambda: planar_hand(4, 3), {"Nm": 7, "Nc": 3, "Ni": 0, "Nr": 4}),
+])
+def test_generic_numbers_of_hands_are_certified(build, expected):
+    a = coopkin_sym.load(build()).analyze(generic=True)
+    assert {k: a.numbers.as_dict()[k] for k in expected} == expected
+    assert a.certificate.exact
+
+
+def test_probabilistic_numbers_say_so():
+    """With no time for a certificate, ranks the sizes do not bound are sampled, and
+    the certificate gives the error exponent from the degrees and the points."""
+    model = coopkin_sym.load("paper-case2-hard").model
+    config = Configuration.parse(model, None, "all")
+    rows, kin, exact = _decomposed(model, config)
+    numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
+                                    seed=7, certify_seconds=0)
+    assert numbers == exact
+    assert not cert.exact
+    hows = {r.matrix: r.how for r in cert.ranks}
+    assert hows["Gt"] == "sampled"            # rank 5 of 6 columns: not a size bound
+    assert hows["Dt[s1]"] == "size"           # 3 rows, rank 3
+    # two points, coordinates from 2**63 + 1 integers, minors of degree below 2**7
+    assert 100 <= cert.error_bits <= 2 * 63
+    assert cert.as_dict()["error_bits"] == cert.error_bits
+
+
+def test_point_analysis_blocks_after_numbers():
+    """At a point, the blocks built after the compiled numbers agree with them."""
+    system = coopkin_sym.load("paper-case2-hard")
+    at = "q1=pi/2,q2=2*atan(1/3),q3=-pi/2,q4=1/2,q5=3,q6=pi,q7=2*atan(-2),q8=0,L=2"
+    first = system.analyze(at)
+    assert first.numbers.Nm == 8                 # the first point: no compiling
+    second = system.analyze(at)
+    numbers = second.numbers                     # compiled now
+    assert point_ranks(system.model, second.configuration) is not None
+    assert second.C.shape[1] == numbers.Nm
+    assert second.numbers == numbers == first.numbers
