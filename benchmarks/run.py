@@ -24,7 +24,7 @@ import traceback
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-MODULES = ("bench_sweep", "bench_generic", "bench_locus", "bench_certify")
+MODULES = ("bench_sweep", "bench_generic", "bench_locus", "bench_certify", "bench_scaleout")
 COLUMNS = ("benchmark", "case", "ours_s", "baseline", "baseline_s", "ratio", "note")
 
 

@@ -15,6 +15,7 @@ Example
 (2, 1)
 """
 
+from coopkin_sym.analysis.batch import BatchResult
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.mobility import Analysis, Motion
@@ -31,10 +32,11 @@ from coopkin_sym.errors import (
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 from coopkin_sym.present import display as _display  # noqa: F401  (installs the renderers)
-from coopkin_sym.system import System, load
+from coopkin_sym.system import System, analyze_many, load
 
 __all__ = [
     "Analysis",
+    "BatchResult",
     "BlockTooLarge",
     "Component",
     "Configuration",
@@ -50,6 +52,7 @@ __all__ = [
     "Numbers",
     "SweepResult",
     "System",
+    "analyze_many",
     "load",
 ]
 __version__ = "0.1.0"

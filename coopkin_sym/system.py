@@ -19,8 +19,10 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Mapping, Sequence
+from concurrent.futures import Executor
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.batch import BatchResult, run_batch
 from coopkin_sym.analysis.irrational import IrrationalAnalysis, analyze_irrational
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.locus.types import Locus
@@ -32,6 +34,7 @@ from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model
 from coopkin_sym.present.display import system_html, system_text
 from coopkin_sym.present.draw import draw_system
+from coopkin_sym.present.text import analysis_document
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -170,7 +173,74 @@ class System:
     def _repr_html_(self) -> str:
         return system_html(self.model)
 
+    def analyze_many(self, points: Iterable[str | Mapping | None], *, json: bool = False,
+                     free: Iterable[str] | None = None, executor: Executor | None = None,
+                     progress: bool = False,
+                     chunk: int | None = None) -> list[BatchResult]:
+        """:meth:`analyze` at many configurations, here or on any executor (see
+        :func:`analyze_many`): one :class:`~coopkin_sym.analysis.batch.BatchResult`
+        per point, in order, with the error of a bad point in its own result. The
+        model travels to the workers pickled.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> results = load("paper-case1-hard").analyze_many(["q1=pi/2,q2=pi/2", "q1=7"])
+        >>> results[0].numbers.Nm, results[1].ok
+        (3, False)
+        """
+        return analyze_many([(self.model, at) for at in points], json=json, free=free,
+                            executor=executor, progress=progress, chunk=chunk)
+
 
 def load(source: str | os.PathLike | Mapping) -> System:
     """Load a model file (YAML or JSON), a dict, or a shipped example by name."""
     return System(load_model(source))
+
+
+def analyze_many(items: Iterable[Any], *, generic: bool = False,
+                 free: Iterable[str] | None = None, json: bool = False,
+                 executor: Executor | None = None, progress: bool = False,
+                 chunk: int | None = None) -> list[BatchResult]:
+    """Many analyses (many systems, many configurations), here or on any executor.
+
+    Parameters
+    ----------
+    items
+        Plain data, each a model source (a shipped example's name, a model file, a
+        model as a mapping) or a pair ``(source, at)``, ``at`` in ``--at`` syntax
+        (``"q1=pi/2,L=1"``) or a mapping (None: home).
+    generic, free
+        As for :meth:`System.analyze`, for every item.
+    json
+        Also give each result the JSON document of ``coopkin analyze --json``.
+    executor
+        Any :class:`concurrent.futures.Executor` (a process pool,
+        ``distributed.Client(...).get_executor()``); None runs here.
+    progress
+        Show a progress bar (on stderr).
+    chunk
+        Items per task (see :func:`coopkin_sym.analysis.batch.run_batch`).
+
+    Returns
+    -------
+    list of BatchResult
+        In input order, the same on every executor: the exact numbers (and document)
+        of each item, or the error of that item alone.
+
+    Example
+    -------
+    >>> results = analyze_many(["five-bar", ("paper-case1-hard", "q1=pi/2,q2=pi/2"),
+    ...                         ("paper-case1-hard", "q1=1")])
+    >>> [r.numbers.Nm if r.ok else "error" for r in results]
+    [3, 3, 'error']
+    """
+    options = (generic, None if free is None else tuple(free), json)
+    return run_batch(_analyze_item, items, options=options, executor=executor,
+                     progress=progress, chunk=chunk)
+
+
+def _analyze_item(model: Model, at, generic: bool, free, json: bool):
+    """One item of :func:`analyze_many`: numbers and, when asked, the JSON document."""
+    result = System(model).analyze(at, generic=generic, free=free)
+    return result.numbers, analysis_document(result) if json else None

@@ -6,7 +6,8 @@ exactly over Q, on any :class:`concurrent.futures.Executor` (see
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from concurrent.futures import Executor, as_completed
+from concurrent.futures import Executor
+from contextlib import closing
 from typing import Any
 
 import numpy as np
@@ -17,6 +18,7 @@ from coopkin_sym.analysis.sweep.compiled import _exact_for, _joint_vector, compi
 from coopkin_sym.analysis.sweep.grid import Grid, _split_point
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.analysis.sweep.values import Value
+from coopkin_sym.analysis.tasks import Progress, run_tasks
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.matrix import batch_rank_profile
@@ -92,7 +94,8 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
         Values of the other joints and of parameters.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool, a cluster's
-        executor): chunks of points are mapped over it as plain data.
+        executor such as ``distributed.Client(...).get_executor()``): chunks of
+        points are mapped over it as plain data; the result is the serial one.
     progress
         Show a progress bar (on stderr).
     chunk
@@ -156,20 +159,17 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
     rechecked = np.zeros(total, dtype=bool)
     chunk = max(1, int(chunk))
     starts = list(range(0, total, chunk))
-    with _progress(progress, total, model.name) as advance:
-        if executor is None:
-            for s in starts:
-                r, re = _run_chunk(compiled.plan, pairs, index[s:s + chunk])
-                ranks[s:s + chunk], rechecked[s:s + chunk] = r, re
-                advance(len(r))
-        else:
-            futures = {}
-            for s in starts:
+    with Progress(progress, total, "sweep", model.name) as advance:
+        tasks = []
+        for s in starts:
+            if executor is None:
+                tasks.append((compiled.plan, pairs, index[s:s + chunk]))
+            else:   # a chunk sent away carries only the values it uses
                 sub, local_pairs = _localize(index[s:s + chunk], pairs)
-                futures[executor.submit(_run_chunk, compiled.plan, local_pairs, sub)] = s
-            for fut in as_completed(futures):
-                s = futures[fut]
-                r, re = fut.result()
+                tasks.append((compiled.plan, local_pairs, sub))
+        with closing(run_tasks(_run_chunk, tasks, executor)) as done:
+            for k, (r, re) in done:
+                s = starts[k]
                 ranks[s:s + chunk], rechecked[s:s + chunk] = r, re
                 advance(len(r))
     m, r = compiled.m, compiled.r
@@ -198,35 +198,3 @@ def _localize(index: np.ndarray, pairs: list[list[tuple[int, int]]]):
         sub[:, k] = inverse.ravel()
         local.append([ps[i] for i in used.tolist()])
     return sub, local
-
-
-class _progress:
-    """A rich progress bar on stderr (or nothing)."""
-
-    def __init__(self, show: bool, total: int, name: str):
-        self.show, self.total, self.name = show, total, name
-        self.bar = None
-
-    def __enter__(self):
-        if not self.show:
-            return lambda k: None
-        from rich.console import Console
-        from rich.progress import (
-            BarColumn,
-            MofNCompleteColumn,
-            Progress,
-            TextColumn,
-            TimeRemainingColumn,
-        )
-
-        self.bar = Progress(TextColumn("sweep {task.description}"), BarColumn(),
-                            MofNCompleteColumn(), TimeRemainingColumn(),
-                            console=Console(stderr=True), transient=True)
-        self.bar.__enter__()
-        task = self.bar.add_task(self.name, total=self.total)
-        return lambda k: self.bar.advance(task, k)
-
-    def __exit__(self, *exc):
-        if self.bar is not None:
-            self.bar.__exit__(*exc)
-        return False

@@ -1,0 +1,108 @@
+"""Tasks of plain data mapped over any :class:`concurrent.futures.Executor`.
+
+The sweep (:mod:`coopkin_sym.analysis.sweep`) and the batches of analyses
+(:mod:`coopkin_sym.analysis.batch`) cut their work into tasks whose arguments and
+results are plain data (integers, numpy arrays, dicts, small frozen dataclasses), so
+they run in this process, in a process pool, or on a cluster
+(``distributed.Client(...).get_executor()``) alike. :func:`run_tasks` submits them and
+yields each result with the position of its task as it completes; the caller puts it
+in place, so the outcome never depends on the order of completion. When the caller
+stops early (an error, an interrupt), the tasks still pending are cancelled.
+
+Example
+-------
+>>> from concurrent.futures import ThreadPoolExecutor
+>>> from operator import mul
+>>> with ThreadPoolExecutor(2) as pool:
+...     sorted(run_tasks(mul, [(2, 3), (4, 5)], pool))
+[(0, 6), (1, 20)]
+>>> list(run_tasks(mul, [(2, 3)], None))
+[(0, 6)]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import Executor, as_completed
+from typing import Any
+
+
+def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor | None, *,
+              on_error: Callable[[BaseException], Any] | None = None
+              ) -> Iterator[tuple[int, Any]]:
+    """``(i, fn(*tasks[i]))`` for every task, as each completes.
+
+    Parameters
+    ----------
+    fn
+        A module-level function (it travels to the workers by reference).
+    tasks
+        The argument tuples, plain data.
+    executor
+        Any :class:`concurrent.futures.Executor`, or None to run in order here.
+    on_error
+        With an executor: what a task that failed outside ``fn`` (a worker process that
+        died) yields instead of raising, given the exception.
+
+    Example
+    -------
+    >>> list(run_tasks(divmod, [(7, 2), (9, 4)], None))
+    [(0, (3, 1)), (1, (2, 1))]
+    """
+    if executor is None:
+        for i, args in enumerate(tasks):
+            yield i, fn(*args)
+        return
+    futures = {executor.submit(fn, *args): i for i, args in enumerate(tasks)}
+    try:
+        for future in as_completed(futures):
+            try:
+                result = future.result()
+            except Exception as exc:
+                if on_error is None:
+                    raise
+                result = on_error(exc)
+            yield futures[future], result
+    finally:
+        for future in futures:
+            future.cancel()
+
+
+class Progress:
+    """A rich progress bar on stderr (or nothing): ``with Progress(show, total,
+    "sweep", name) as advance: advance(k)``.
+
+    Example
+    -------
+    >>> with Progress(False, 10, "sweep", "case 1") as advance:
+    ...     advance(10)
+    """
+
+    def __init__(self, show: bool, total: int, what: str, name: str):
+        self.show, self.total, self.what, self.name = show, total, what, name
+        self.bar = None
+
+    def __enter__(self) -> Callable[[int], None]:
+        if not self.show:
+            return lambda k: None
+        from rich.console import Console
+        from rich.markup import escape
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            TextColumn,
+            TimeRemainingColumn,
+        )
+        from rich.progress import Progress as RichProgress
+
+        self.bar = RichProgress(TextColumn(f"{escape(self.what)} {{task.description}}"),
+                                BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                                console=Console(stderr=True), transient=True)
+        self.bar.__enter__()
+        task = self.bar.add_task(escape(self.name), total=self.total)
+        return lambda k: self.bar.advance(task, k)
+
+    def __exit__(self, *exc) -> bool:
+        if self.bar is not None:
+            self.bar.__exit__(*exc)
+        return False
