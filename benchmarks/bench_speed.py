@@ -80,9 +80,14 @@ def _label(source) -> str:
     return f"{name}({', '.join(map(str, args))}{extra})"
 
 
-def _note_certificate(obj) -> str:
-    cert = getattr(obj, "certificate", None)
-    return f"; certificate: {cert}" if cert is not None else ""
+def _note_certificate(analysis) -> str:
+    """The analysis' ``certificate`` (or its numbers'), where the package gives one."""
+    for obj in (analysis, getattr(analysis, "numbers", None)):
+        cert = getattr(obj, "certificate", None)
+        if cert is not None:
+            text = " ".join(str(cert).split())
+            return f"; certificate: {text[:200]}{'...' if len(text) > 200 else ''}"
+    return ""
 
 
 def _fmt(n: dict) -> str:
