@@ -41,6 +41,7 @@ import sympy as sp
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
+from coopkin_sym.analysis.factored import FactoredMotions, factored_motions
 from coopkin_sym.analysis.generic import NumbersCertificate, RankBound, generic_numbers
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import (
@@ -406,6 +407,20 @@ class Analysis(Displayable):
             return "primitive" if self._coordinated is not None else "rational"
         except BlockTooLarge:
             return "rational"
+
+    def coordinated_factored(self) -> FactoredMotions:
+        """The coordinated motions factored: ``C12`` and, arm by arm, the small map
+        ``K_a`` with ``qdot_a = K_a u`` (see :mod:`coopkin_sym.analysis.factored`); the
+        form to use when ``C22`` is too big to expand.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+        >>> len(f.arms), f.twists.shape
+        (2, (3, 3))
+        """
+        return factored_motions(self)
 
     @cached_property
     def C12(self) -> sp.Matrix:

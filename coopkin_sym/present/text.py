@@ -15,6 +15,7 @@ import re
 
 import sympy as sp
 
+from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.classes import classes_text
@@ -71,12 +72,51 @@ def analysis_text(a: Analysis) -> str:
         lines.append("")
         if mat is None:
             lines.append(f"{name}: not shown: {omitted[name]}")
+            if name == "C22":
+                lines.extend(factored_lines(a.coordinated_factored()))
             continue
         labels = object_rows if name in ("C11", "C12") else joint_rows
         lines.append(f"{name} ({mat.rows} x {mat.cols})" + (": empty" if mat.cols == 0 else ""))
         if mat.cols:
             lines.extend(block_table(mat, labels))
     return "\n".join(lines)
+
+
+def factored_lines(f: FactoredMotions) -> list[str]:
+    """The coordinated joint motions in factored form, as text: each arm's map ``K``
+    (``qdot_arm = K u`` for every column ``u`` of ``C12``) and the named factors of
+    the denominators.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+    >>> print("\\n".join(factored_lines(f)[:2]))
+    C22 factored: the joint velocities of each arm are K_arm u for each column u of C12
+    K_left (rows: joints; columns: v_x, v_y, w_z)
+    """
+    out = ["C22 factored: the joint velocities of each arm are K_arm u for each column u "
+           "of C12"]
+    maps = f.maps()
+    for arm in f.arms:
+        out.append(f"K_{arm.name} (rows: joints; columns: {', '.join(f.twist_names)})")
+        out.extend(block_table(maps[arm.name], list(arm.joints)))
+    if f.factors:
+        out.append("where")
+        out.extend(f"  {name} = {sp.sstr(poly)}" for name, poly in f.factors)
+    return out
+
+
+def factored_document(f: FactoredMotions) -> dict:
+    """The factored coordinated motions as plain data (``factored`` of
+    ``coopkin analyze --json``)."""
+    maps = f.maps()
+    return {
+        "arms": [{"name": arm.name, "joints": list(arm.joints),
+                  "map": [[sp.sstr(e) for e in maps[arm.name].row(i)]
+                          for i in range(len(arm.joints))]} for arm in f.arms],
+        "factors": [{"name": name, "polynomial": sp.sstr(poly)} for name, poly in f.factors],
+    }
 
 
 def certificate_text(certificate) -> str | None:
@@ -247,7 +287,10 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
 #: follows for a model with passive joints (docs/analyze-json.md).
 JSON_KEYS = ("system", "configuration", "point", "variables", "joints", "twist", "numbers",
              "classes", "blocks", "shapes", "coordinated_form", "object_frame", "snapped",
-             "field", "omitted", "meaning")
+             "field", "omitted", "meaning", "certificate", "factored")
+
+# the numbers at an irrational point: exact ranks over the number field
+_EXACT_IN_FIELD = {"exact": True, "error_bits": None, "points": 0, "ranks": []}
 
 # why the subspaces of the passive joints are not given at an irrational point
 _IRRATIONAL_PASSIVE = ("at a configuration with irrational coordinates only the "
@@ -280,10 +323,14 @@ def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
         if "passive" in data:
             omitted["passive"] = _IRRATIONAL_PASSIVE
         meaning = irrational_sentences(result)
+        data["certificate"] = _EXACT_IN_FIELD
+        data["factored"] = None
     else:
         if data["coordinated_form"] is None:
             omitted["coordinated_form"] = _FORM_OMITTED
         meaning = sentences(result)
+        data["factored"] = (factored_document(result.coordinated_factored())
+                            if "C22" in omitted else None)
     data.update(omitted=omitted, meaning=meaning)
     out = {k: data[k] for k in JSON_KEYS}
     if "passive" in data:

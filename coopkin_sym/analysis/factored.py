@@ -1,0 +1,188 @@
+"""The coordinated motions in factored form: small per-arm maps instead of big blocks.
+
+Every coordinated motion is an object twist ``u`` (a column of ``C12``) together with
+the joint velocities that realize it. Arm by arm, those are ``qdot_a = K_a u``: ``K_a``
+is a matrix of rational functions of arm ``a``'s own joint variables (and the
+parameters), the same for every column. Expanded, ``K u`` mixes every arm's variables
+and can have millions of terms; factored, it is a few small matrices. The distinct
+irreducible factors of the denominators of every ``K_a`` are named once (``d1``,
+``d2``, ...).
+
+Exactly: ``K_a`` is the linear map of :meth:`~coopkin_sym.analysis.mobility._ArmMap.joints_for`
+(the pivot joints of ``[Dt_a | Gt_a]`` solved with the free joints at rest, then
+reduced against the redundant motions), applied to the unit twists; its columns are
+those joint velocities. ``[C12; K C12]`` spans the same subspace as ``[C12; C22]``.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+>>> [arm.name for arm in f.arms], f.maps()["left"].shape
+(['left', 'right'], (2, 3))
+>>> f.factors[:3]
+(('d1', L), ('d2', t_q2 - 1), ('d3', t_q2 + 1))
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import sympy as sp
+
+from coopkin_sym.exact.ratfunc import RatFunc
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy
+
+if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.mobility import Analysis
+
+
+@dataclass(frozen=True)
+class ArmMap:
+    """One arm's map ``qdot_a = K_a u``: its name, its joints and the entries of ``K_a``
+    as ``(numerator, {factor index: exponent})`` (SymPy numerator, the denominator as
+    powers of the named factors; a constant of the denominator is in the numerator).
+    """
+
+    name: str
+    joints: tuple[str, ...]
+    entries: tuple[tuple[tuple[sp.Expr, tuple[tuple[int, int], ...]], ...], ...]
+
+
+@dataclass(frozen=True)
+class FactoredMotions:
+    """The coordinated motions ``[C12; K C12]`` with ``K`` given arm by arm.
+
+    Attributes
+    ----------
+    twists
+        The object twists of the coordinated motions (columns): ``C12`` before its
+        columns are scaled to clear the joint part's denominators.
+    arms
+        One :class:`ArmMap` per arm with joints.
+    factors
+        The named irreducible factors of the denominators: ``(name, polynomial)``.
+    symbols
+        The symbols of the entries (joint tangents ``t_q``, parameters).
+    twist_names
+        The rows of ``twists``.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze(generic=True)
+    >>> f = a.coordinated_factored()
+    >>> f.maps()["a1"]
+    Matrix([[0, (-t_q1**2/2 - 1/2)/(d1*d2), 0, 0, 0, 1]])
+    >>> f.factors
+    (('d1', L), ('d2', t_q1), ('d3', t_q2))
+    """
+
+    twists: sp.Matrix
+    arms: tuple[ArmMap, ...]
+    factors: tuple[tuple[str, sp.Expr], ...]
+    symbols: tuple[sp.Symbol, ...]
+    twist_names: tuple[str, ...]
+
+    def factor_symbols(self) -> dict[str, sp.Symbol]:
+        """The factor names as SymPy symbols."""
+        return {name: sp.Symbol(name) for name, _ in self.factors}
+
+    def maps(self, expand_factors: bool = False) -> dict[str, sp.Matrix]:
+        """``K_a`` of each arm, denominators written with the factor names (or, with
+        ``expand_factors``, with the factors themselves)."""
+        names = [name for name, _ in self.factors]
+        values = [sp.Symbol(n) for n in names] if not expand_factors else [
+            f for _, f in self.factors]
+        out = {}
+        for arm in self.arms:
+            rows = []
+            for row in arm.entries:
+                cells = []
+                for num, powers in row:
+                    den = sp.Mul(*[values[i] ** e for i, e in powers])
+                    cells.append(num / den if powers else num)
+                rows.append(cells)
+            out[arm.name] = sp.Matrix(rows) if rows else sp.zeros(0, self.twists.rows)
+        return out
+
+    def joint_motions(self) -> sp.Matrix:
+        """``K C12`` expanded into rational functions (``C22`` up to the scale of each
+        column): what the factored form avoids; only for small systems."""
+        ks = self.maps(expand_factors=True)
+        blocks = [ks[arm.name] * self.twists for arm in self.arms]
+        return sp.Matrix.vstack(*blocks).applyfunc(sp.cancel) if blocks else sp.zeros(
+            0, self.twists.cols)
+
+    def at(self, values: Mapping[sp.Symbol, Any]) -> tuple[sp.Matrix, sp.Matrix]:
+        """The exact coordinated motions at a point: ``(C12, K C12)`` with every symbol
+        given a rational value (``{t_q1: 1/3, L: 2, ...}``); a denominator factor that
+        vanishes there is an error (the map is not defined at that point)."""
+        subs = {s: sp.Rational(v) for s, v in values.items()}
+        missing = [s for s in self.symbols if s not in subs]
+        if missing:
+            raise ValueError(f"no value for {', '.join(map(str, missing))}")
+        factor_values = [f.subs(subs) for _, f in self.factors]
+        for (name, _), v in zip(self.factors, factor_values, strict=True):
+            if v == 0:
+                raise ValueError(f"the denominator factor {name} vanishes at this point")
+        u = self.twists.subs(subs)
+        blocks = []
+        for arm in self.arms:
+            rows = []
+            for row in arm.entries:
+                cells = []
+                for num, powers in row:
+                    den = sp.Integer(1)
+                    for i, e in powers:
+                        den *= factor_values[i] ** e
+                    cells.append(num.subs(subs) / den)
+                rows.append(cells)
+            blocks.append(sp.Matrix(rows) * u if rows else sp.zeros(0, u.cols))
+        return u, sp.Matrix.vstack(*blocks) if blocks else sp.zeros(0, u.cols)
+
+
+def factored_motions(analysis: Analysis) -> FactoredMotions:
+    """The factored coordinated motions of ``analysis`` (see the module text)."""
+    ring = analysis.ring
+    zctx = ring.zctx
+    syms = analysis.kinematics.symbols
+    dim = analysis.dim
+    units = [[zctx.constant(1 if i == k else 0) for i in range(dim)] for k in range(dim)]
+    taken = {str(s) for s in syms.values()}
+    factor_index: dict[str, int] = {}
+    factors: list[tuple[str, sp.Expr]] = []
+
+    def name_of(k: int) -> str:
+        name = f"d{k}"
+        while name in taken:
+            name += "_"
+        return name
+
+    def entry(value: RatFunc):
+        if value.num.is_zero():
+            return sp.Integer(0), ()
+        content, parts = value.den.factor()
+        powers = []
+        for f, e in parts:
+            key = str(f)
+            if key not in factor_index:
+                factor_index[key] = len(factors)
+                factors.append((name_of(len(factors) + 1),
+                                poly_to_sympy(f, ring, syms)))
+            powers.append((factor_index[key], int(e)))
+        num = poly_to_sympy(value.num, ring, syms) / sp.Integer(int(content))
+        return num, tuple(sorted(powers))
+
+    arms = []
+    for arm, arm_map in zip(analysis.model.arms, analysis._arm_maps, strict=True):
+        if not arm.joints:
+            continue
+        columns = [arm_map.joints_for(u) for u in units]
+        rows = tuple(tuple(entry(columns[k][j]) for k in range(dim))
+                     for j in range(len(arm.joints)))
+        arms.append(ArmMap(arm.name, tuple(j.name for j in arm.joints), rows))
+    twists = analysis._cols(analysis._coord_u, dim)
+    return FactoredMotions(twists, tuple(arms), tuple(factors),
+                           tuple(syms[n] for n in ring.names), tuple(analysis.model.twist_names))

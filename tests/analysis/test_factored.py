@@ -1,0 +1,87 @@
+"""The factored coordinated motions: ``[C12; K C12]`` lies in the nullspace of ``Q``
+and spans what ``[C12; C22]`` spans, checked exactly at random rational points on
+random systems; the JSON and text outputs give it when ``C22`` is over budget."""
+
+from __future__ import annotations
+
+import json
+import random
+
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from strategies import random_systems
+from typer.testing import CliRunner
+
+import coopkin_sym
+from coopkin_sym.cli import app
+from coopkin_sym.model.builders import planar_hand
+
+
+def _points(symbols, count, seed):
+    rng = random.Random(seed)
+    for _ in range(count):
+        yield {s: sp.Rational(rng.randint(-60, 60), rng.randint(1, 60)) for s in symbols}
+
+
+def _check(a, seed: int, compare_c22: bool) -> int:
+    f = a.coordinated_factored()
+    checked = 0
+    for point in _points(f.symbols, 12, seed):
+        try:
+            u, q = f.at(point)
+        except ValueError:                        # a denominator factor vanishes here
+            continue
+        column = sp.Matrix.vstack(u, q)
+        assert (a.Q.subs(point) * column).is_zero_matrix
+        if compare_c22:
+            theirs = sp.Matrix.vstack(a.C12, a.C22).subs(point)
+            both = sp.Matrix.hstack(column, theirs)
+            assert column.rank() == theirs.rank() == both.rank()
+        if column.rank() == a.numbers.Nc - a.numbers.Ni:
+            checked += 1
+    return checked
+
+
+@settings(max_examples=30, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(st.data())
+def test_factored_motions_of_random_systems(data):
+    spec = data.draw(random_systems(with_parameter=data.draw(st.booleans())))
+    a = coopkin_sym.load(spec).analyze(generic=True)
+    a.term_budget = None
+    if a.numbers.Nc == a.numbers.Ni:
+        assert a.coordinated_factored().twists.cols == 0
+        return
+    assert _check(a, data.draw(st.integers(0, 10**6)), compare_c22=True) > 0
+
+
+def test_factored_motions_of_a_hand():
+    """planar_hand(4, 2): C22's entries run to 100,000 characters; the maps are small
+    and name the finger singularities (t = 1, t = -1) once."""
+    a = coopkin_sym.load(planar_hand(4, 2)).analyze(generic=True)
+    f = a.coordinated_factored()
+    assert max(len(str(e)) for k in f.maps().values() for e in k) < 400
+    assert len(f.factors) == len({str(p) for _, p in f.factors})
+    assert _check(a, 1, compare_c22=False) > 0
+
+
+def test_factored_in_text_and_json():
+    runner = CliRunner()
+    out = runner.invoke(app, ["analyze", "dh-three-finger-hand", "--generic", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    assert data["blocks"]["C22"] is None
+    factored = data["factored"]
+    assert [arm["name"] for arm in factored["arms"]] == ["f1", "f2", "f3"]
+    assert all(len(arm["map"]) == len(arm["joints"]) == 3 for arm in factored["arms"])
+    assert all(len(row) == 6 for arm in factored["arms"] for row in arm["map"])
+    names = {x["name"] for x in factored["factors"]}
+    used = {n for arm in factored["arms"] for row in arm["map"] for e in row
+            for n in names if n in e}
+    assert used and used <= names
+    assert data["certificate"]["exact"] is True
+    text = runner.invoke(app, ["analyze", "dh-three-finger-hand", "--generic"])
+    assert "C22 factored: the joint velocities of each arm are K_arm u" in text.stdout
+    home = json.loads(runner.invoke(app, ["analyze", "paper-case1-hard", "--json"]).stdout)
+    assert home["factored"] is None
