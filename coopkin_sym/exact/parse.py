@@ -1145,9 +1145,7 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
     """
     simple = _simple_angle(text)
     if simple is not None:
-        c, s = simple
-        return sp.Rational(c.numerator, c.denominator), sp.Rational(s.numerator,
-                                                                    s.denominator)
+        return simple
     q, shown = _angle_value(text, where)
     parts = _angle_parts(q)
     direct = _direct_tangent(parts)
@@ -1179,17 +1177,18 @@ _SIMPLE_ATAN = re.compile(rf"\s*(-?)\s*2\s*\*\s*atan\(\s*(-?)\s*({_INT})\s*"
                           rf"(?:/\s*({_INT})\s*)?\)\s*", re.ASCII)
 _SIMPLE_PI = re.compile(r"\s*(-?)\s*(?:([1-9]\d{0,5})\s*\*\s*)?pi\s*(?:/\s*([1-9]\d{0,5})\s*)?",
                         re.ASCII)
+_ONE, _ZERO = sp.Integer(1), sp.Integer(0)
 #: ``(cos, sin)`` of ``k pi / 2`` for ``k`` modulo 4
-_QUARTERS = ((1, 0), (0, 1), (-1, 0), (0, -1))
+_QUARTER_POINTS = ((_ONE, _ZERO), (_ZERO, _ONE), (-_ONE, _ZERO), (_ZERO, -_ONE))
 
 
-def _circle_point(t: Fraction) -> tuple[Fraction, Fraction]:
-    p, q = t.numerator, t.denominator
-    w = p * p + q * q                  # gcd(q^2 - p^2, w) and gcd(2pq, w) divide 2
-    return Fraction(q * q - p * p, w), Fraction(2 * p * q, w)
+def _circle_point(p: int, q: int) -> tuple[sp.Rational, sp.Rational]:
+    """``(cos q, sin q)`` of the angle with ``tan(q/2) = p/q`` (``q > 0``)."""
+    w = p * p + q * q
+    return sp.Rational(q * q - p * p, w), sp.Rational(2 * p * q, w)
 
 
-def _simple_angle(value: object) -> tuple[Fraction, Fraction] | None:
+def _simple_angle(value: object) -> tuple[sp.Rational, sp.Rational] | None:
     """``(cos q, sin q)`` of the commonest exact angles, read without the general
     parser: the texts ``2*atan(p/q)``, ``k*pi/2`` and ``0`` (and the same SymPy
     objects); ``None`` for anything else (the general parser then decides).
@@ -1197,46 +1196,44 @@ def _simple_angle(value: object) -> tuple[Fraction, Fraction] | None:
     Example
     -------
     >>> _simple_angle("-2*atan(1/3)"), _simple_angle("3*pi/2"), _simple_angle("pi/3")
-    ((Fraction(4, 5), Fraction(-3, 5)), (Fraction(0, 1), Fraction(-1, 1)), None)
+    ((4/5, -3/5), (0, -1), None)
     >>> _simple_angle("2*atan(1/0)") is None
     True
     """
     if isinstance(value, str):
         if value.strip() == "0":
-            return Fraction(1), Fraction(0)
+            return _QUARTER_POINTS[0]
         match = _SIMPLE_ATAN.fullmatch(value)
         if match:
             outer, inner, num, den = match.groups()
-            if den is not None and int(den) == 0:
+            q = int(den or 1)
+            if q == 0:
                 return None
-            t = Fraction(int(num), int(den or 1))
-            return _circle_point(-t if (outer == "-") != (inner == "-") else t)
+            p = int(num)
+            return _circle_point(-p if (outer == "-") != (inner == "-") else p, q)
         match = _SIMPLE_PI.fullmatch(value)
         if match:
             sign, k, d = match.groups()
-            if d is not None and int(d) == 0:
-                return None
             ratio = Fraction(int(k or 1), int(d or 1)) * (-1 if sign else 1) * 2
             if ratio.denominator == 1:                # a multiple of pi/2
-                c, s = _QUARTERS[int(ratio) % 4]
-                return Fraction(c), Fraction(s)
+                return _QUARTER_POINTS[int(ratio) % 4]
         return None
     if isinstance(value, sp.Basic):
         if value.is_Integer and value == 0:
-            return Fraction(1), Fraction(0)
+            return _QUARTER_POINTS[0]
         if isinstance(value, sp.Mul) and len(value.args) == 2:
             k, f = value.args
             if k.is_Integer and abs(int(k)) == 2 and isinstance(f, sp.atan) and \
                     f.args[0].is_Rational:
-                t = to_fraction(f.args[0])
-                return _circle_point(t if int(k) > 0 else -t)
+                t = f.args[0]
+                p, q = int(t.p), int(t.q)
+                return _circle_point(p if int(k) > 0 else -p, q)
             if k.is_Rational and f is sp.pi:
                 ratio = to_fraction(k) * 2
                 if ratio.denominator == 1:
-                    c, s = _QUARTERS[int(ratio) % 4]
-                    return Fraction(c), Fraction(s)
+                    return _QUARTER_POINTS[int(ratio) % 4]
         if value is sp.pi:
-            return Fraction(-1), Fraction(0)
+            return _QUARTER_POINTS[2]
     return None
 
 

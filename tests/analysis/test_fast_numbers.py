@@ -127,3 +127,28 @@ def test_point_analysis_blocks_after_numbers():
     assert point_ranks(system.model, second.configuration) is not None
     assert second.C.shape[1] == numbers.Nm
     assert second.numbers == numbers == first.numbers
+
+
+@pytest.mark.parametrize("spec, joints", [("paper-case1-hard", ["q1", "q2"]),
+                                          ("paper-case2-hard", ["q2", "q3"])])
+def test_modular_shortcut_agrees_with_integer_ranks(spec, joints):
+    """The point ranks taken modulo a prime when they reach the generic ranks equal the
+    ranks over the integers on a grid of tangents that hits the singular values."""
+    from coopkin_sym.analysis.sweep.compiled import _exact_for, compile_system
+
+    system = coopkin_sym.load(spec)
+    compiled = compile_system(system, system.joint_names, "L=1")
+    generic = compiled.quick_generic_ranks
+    assert generic == compiled.generic_ranks
+    exact = _exact_for(compiled._plan)
+    tangents = [(0, 1), (1, 0), (1, 1), (-1, 1), (1, 3), (-2, 1), (3, 4)]
+    index = [system.joint_names.index(j) for j in joints]
+    differ = 0
+    for a in tangents:
+        for b in tangents:
+            pairs = [(1, 5)] * len(system.joint_names)
+            pairs[index[0]], pairs[index[1]] = a, b
+            fast, slow = exact.ranks(pairs, generic), exact.ranks(pairs)
+            assert fast == slow
+            differ += slow != generic
+    assert differ > 0                          # the grid holds singular points

@@ -62,8 +62,14 @@ class _Exact:
         else:
             self.program = _straight_line(plan["terms"], plan["nvars"], self.m, self.n)
 
-    def ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
-        """Exact ranks of ``Q``, of its object columns and of its last ``r`` columns."""
+    def ranks(self, pairs: Sequence[tuple[int, int]],
+              generic: tuple[int, int, int] | None = None) -> tuple[int, int, int]:
+        """Exact ranks of ``Q``, of its object columns and of its last ``r`` columns.
+
+        With the exact ``generic`` ranks known, a point whose ranks modulo a prime equal
+        them has exactly those ranks (a rank modulo p is at most the rank over Q, which
+        is at most the generic rank); the others are ranked over the integers.
+        """
         m, n = self.m, self.n
         if m == 0:
             return 0, 0, 0
@@ -71,6 +77,8 @@ class _Exact:
         if not self.params:
             flat = self.program(args)
             dim = self.dim
+            if generic is not None and self._generic_modulo(flat, generic):
+                return generic
             rows = [flat[i * n:(i + 1) * n] for i in range(m)]
             rq = flint.fmpz_mat(rows).rank()
             rg = flint.fmpz_mat([row[:dim] for row in rows]).rank()
@@ -87,6 +95,28 @@ class _Exact:
             flat[k] = poly.subs(subs) if subs else poly
         rows = [flat[i * n:(i + 1) * n] for i in range(m)]
         return ranks_of_q(PolyMatrix(rows, n, context=self.ctx), dim=self.dim)
+
+
+    def _generic_modulo(self, flat: list[int], generic: tuple[int, int, int]) -> bool:
+        """Whether the ranks of the integer ``Q`` (flat, row-major) modulo
+        :data:`POINT_PRIME` are the generic ones."""
+        m, n, dim, p = self.m, self.n, self.dim, POINT_PRIME
+        reduced = [x % p for x in flat]
+        if flint.nmod_mat(m, n, reduced, p).rank() != generic[0]:
+            return False
+        rows = [reduced[i * n:(i + 1) * n] for i in range(m)]
+        if flint.nmod_mat([row[:dim] for row in rows], p).rank() != generic[1]:
+            return False
+        if self.arm_blocks is None:
+            rd = flint.nmod_mat([row[dim:] for row in rows], p).rank() if n > dim else 0
+        else:
+            rd = sum(flint.nmod_mat([rows[i][c0:c1] for i in block], p).rank()
+                     for block, c0, c1 in self.arm_blocks)
+        return rd == generic[2]
+
+
+#: The prime of the point analysis' modular ranks (``2**61 - 1``).
+POINT_PRIME = 2**61 - 1
 
 
 def _straight_line(terms: list, nvars: int, m: int, n: int):
@@ -343,16 +373,28 @@ class Compiled:
             "arm_blocks": _arm_blocks(model, kin.row_contacts, dim),
         }
 
+    def _generic_within(self, seconds: float | None) -> tuple[int, int, int] | None:
+        rows, model, row_contacts, zctx = self._generic_input
+        numbers, cert = generic_numbers(rows, model, row_contacts, zctx, seed=0,
+                                        certify_seconds=seconds)
+        return ranks_from_numbers(numbers, self.r, dim=self.dim) if cert.exact else None
+
+    @cached_property
+    def quick_generic_ranks(self) -> tuple[int, int, int] | None:
+        """The generic ranks when they are certified within a few seconds, else
+        ``None`` (the point analysis then ranks every point over the integers)."""
+        if "generic_ranks" in self.__dict__:
+            return self.generic_ranks
+        return self._generic_within(GENERIC_SECONDS)
+
     @cached_property
     def generic_ranks(self) -> tuple[int, int, int]:
         """The exact ranks of ``Q``, ``H G^T`` and ``H D`` with the swept joints
         symbolic, found arm by arm (see :mod:`coopkin_sym.analysis.generic`: exact ranks
         at random points, then elimination over ``Q(t, L)`` of the blocks the size
         bounds leave open)."""
-        rows, model, row_contacts, zctx = self._generic_input
-        numbers, _ = generic_numbers(rows, model, row_contacts, zctx, seed=0,
-                                     certify_seconds=None)
-        return ranks_from_numbers(numbers, self.r, dim=self.dim)
+        quick = self.__dict__.get("quick_generic_ranks")
+        return quick if quick is not None else self._generic_within(None)
 
     @cached_property
     def generic(self) -> Numbers:
@@ -462,6 +504,9 @@ def compile_system(system: Model | Any, joints: Sequence[str],
 
 
 _SEEN: OrderedDict[tuple, Model] = OrderedDict()
+#: Seconds the point analysis spends, once per compiled system, certifying the generic
+#: ranks that let most points be ranked modulo a prime.
+GENERIC_SECONDS = 2.0
 _JOINTS: OrderedDict[int, tuple[Model, tuple[str, ...], tuple[str, ...]]] = OrderedDict()
 
 
@@ -526,11 +571,12 @@ def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, in
     hit = _COMPILED.get(key)
     if hit is not None and hit[0] is model:
         compiled = hit[1]
-        return compiled.m, _exact_for(compiled._plan).ranks(pairs)
+        return compiled.m, _exact_for(compiled._plan).ranks(pairs,
+                                                            compiled.quick_generic_ranks)
     if _SEEN.get(key) is not model:
         _SEEN[key] = model
         while len(_SEEN) > 64:
             _SEEN.popitem(last=False)
         return None
     compiled = compile_system(model, joints, at)
-    return compiled.m, _exact_for(compiled._plan).ranks(pairs)
+    return compiled.m, _exact_for(compiled._plan).ranks(pairs, compiled.quick_generic_ranks)
