@@ -64,6 +64,7 @@ from coopkin_sym.present.report import (
 from coopkin_sym.present.text import (
     analysis_json,
     analysis_latex,
+    analysis_parts,
     analysis_text,
     irrational_latex,
     irrational_text,
@@ -120,6 +121,9 @@ def analyze(
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
         result = system.analyze(at, generic=generic, free=free_joints)
+        if not (as_json or latex or isinstance(result, IrrationalAnalysis)):
+            _print_parts(analysis_parts(result))
+            return
         if as_json:
             text = analysis_json(result)
         elif not isinstance(result, IrrationalAnalysis):
@@ -129,6 +133,20 @@ def analyze(
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
+
+
+def _print_parts(parts) -> None:
+    """Print each part of a report as soon as it is computed (the numbers first); an
+    interrupt (Ctrl-C) stops the rest and says what was not computed."""
+    names = [name for name, _ in parts]
+    for k, (name, part) in enumerate(parts):
+        try:
+            lines = part()
+        except KeyboardInterrupt:
+            typer.echo(f"interrupted while computing {name}; not shown: "
+                       f"{', '.join(names[k:])}", err=True)
+            raise typer.Exit(130) from None
+        typer.echo("\n".join(lines))
 
 
 @app.command()

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Callable
 
 import sympy as sp
 
@@ -23,7 +24,7 @@ from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_nu
 from coopkin_sym.present.sentences import irrational_sentences, sentences
 
 __all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
-           "analysis_text", "block_table", "irrational_text", "object_frame_text",
+           "analysis_parts", "analysis_text", "block_table", "irrational_text", "object_frame_text",
            "snapped_lines"]
 
 # why an analysis at an irrational point has no blocks
@@ -31,8 +32,72 @@ _IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the 
                        "(and their motions in words) are computed")
 
 
+def analysis_parts(a: Analysis) -> list[tuple[str, Callable[[], list[str]]]]:
+    """The report of ``coopkin analyze`` in the order it is computed and printed: each
+    part's name and a function giving its lines. The numbers come first; the sentences
+    and the blocks (which may take long) after them.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> [name for name, _ in analysis_parts(load("paper-case1-hard").analyze())]
+    ['numbers', 'sentences', 'C11', 'C12', 'C22', 'C23']
+    """
+    def head() -> list[str]:
+        lines = [f"System: {a.model.name}"]
+        where = a.configuration.at_text() or "home (all joints at 0)"
+        if a.configuration.free:
+            where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
+        lines.append(f"Configuration: {where}")
+        twist = "(v_x, v_y, w_z), planar" if a.model.planar else "(v, w)"
+        lines.append(f"Object twist {twist}: {object_frame_text(a.model.object_frame)}")
+        lines.extend(snapped_lines(a.model.snapped))
+        if a.variables:
+            lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
+                         + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
+                                                      for v in a.variables) else ""))
+        n = a.numbers
+        lines.append("")
+        lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
+        doubt = certificate_text(a.certificate)
+        if doubt:
+            lines.append(doubt)
+        lines.append(classes_text(n))
+        return lines
+
+    def said() -> list[str]:
+        lines = [""] + [f"- {s}" for s in sentences(a)]
+        if a.model.passive_joints:
+            lines.append("")
+            lines.extend(passive_lines(a.passive))
+        return lines
+
+    def block(name: str) -> Callable[[], list[str]]:
+        def lines() -> list[str]:
+            out = [""]
+            blocks, omitted = a.available_blocks()
+            mat = blocks[name]
+            if mat is None:
+                out.append(f"{name}: not shown: {omitted[name]}")
+                if name == "C22":
+                    out.extend(factored_lines(a.coordinated_factored()))
+                return out
+            labels = list(a.model.twist_names if name in ("C11", "C12")
+                          else a.model.joint_names)
+            out.append(f"{name} ({mat.rows} x {mat.cols})"
+                       + (": empty" if mat.cols == 0 else ""))
+            if mat.cols:
+                out.extend(block_table(mat, labels))
+            return out
+        return lines
+
+    return [("numbers", head), ("sentences", said)] + [
+        (name, block(name)) for name in ("C11", "C12", "C22", "C23")]
+
+
 def analysis_text(a: Analysis) -> str:
-    """The human report of ``coopkin analyze``: numbers, sentences and blocks.
+    """The human report of ``coopkin analyze``: numbers, sentences and blocks (the
+    parts of :func:`analysis_parts`, joined).
 
     Example
     -------
@@ -40,46 +105,7 @@ def analysis_text(a: Analysis) -> str:
     >>> print(analysis_text(load("paper-case1-hard").analyze()).splitlines()[0])
     System: paper case 1, hard/hard
     """
-    lines = [f"System: {a.model.name}"]
-    where = a.configuration.at_text() or "home (all joints at 0)"
-    if a.configuration.free:
-        where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
-    lines.append(f"Configuration: {where}")
-    twist = "(v_x, v_y, w_z), planar" if a.model.planar else "(v, w)"
-    lines.append(f"Object twist {twist}: {object_frame_text(a.model.object_frame)}")
-    lines.extend(snapped_lines(a.model.snapped))
-    if a.variables:
-        lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
-                     + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
-                                                  for v in a.variables) else ""))
-    n = a.numbers
-    lines.append("")
-    lines.append("  ".join(f"{k} = {v}" for k, v in n.as_dict().items()))
-    doubt = certificate_text(a.certificate)
-    if doubt:
-        lines.append(doubt)
-    lines.append(classes_text(n))
-    lines.append("")
-    for s in sentences(a):
-        lines.append(f"- {s}")
-    if a.model.passive_joints:
-        lines.append("")
-        lines.extend(passive_lines(a.passive))
-    object_rows = list(a.model.twist_names)
-    joint_rows = list(a.model.joint_names)
-    blocks, omitted = a.available_blocks()
-    for name, mat in blocks.items():
-        lines.append("")
-        if mat is None:
-            lines.append(f"{name}: not shown: {omitted[name]}")
-            if name == "C22":
-                lines.extend(factored_lines(a.coordinated_factored()))
-            continue
-        labels = object_rows if name in ("C11", "C12") else joint_rows
-        lines.append(f"{name} ({mat.rows} x {mat.cols})" + (": empty" if mat.cols == 0 else ""))
-        if mat.cols:
-            lines.extend(block_table(mat, labels))
-    return "\n".join(lines)
+    return "\n".join(line for _, part in analysis_parts(a) for line in part())
 
 
 def factored_lines(f: FactoredMotions) -> list[str]:
