@@ -299,7 +299,8 @@ class Analysis(Displayable):
             raise BlockTooLarge(
                 f"{what}: the coordinated joint motions would have entries of up to about "
                 f"{size:,} terms, over the budget of {self.term_budget:,}; keep fewer "
-                "joints symbolic (free=[...] / --free) or set analysis.term_budget = None")
+                "joints symbolic (free=[...] / --free), use coordinated_factored(), or set "
+                "analysis.term_budget = None")
 
     @cached_property
     def _coord_q(self) -> list[list[RatFunc]]:
@@ -345,7 +346,13 @@ class Analysis(Displayable):
                 continue
             if max(len(x) for x in u) * len(common) > budget:
                 return None
-            col = [x * common for x in u] + [e.num * (common / e.den) for e in q]
+            scaled = []
+            for e in q:
+                quotient = common / e.den
+                if len(e.num) * len(quotient) > budget:   # bound the product's terms
+                    return None
+                scaled.append(e.num * quotient)
+            col = [x * common for x in u] + scaled
             out.append(el.primitive(col))
         return out
 
@@ -437,6 +444,14 @@ class Analysis(Displayable):
     def C22(self) -> sp.Matrix:
         """Joint part of the coordinated motions (r x (Nc - Ni))."""
         if self._coordinated is None:
+            size = max((len(e.num) + len(e.den) for q in self._coord_q for e in q),
+                       default=0)
+            if self.term_budget is not None and size > self.term_budget:
+                raise BlockTooLarge(
+                    f"C22: the coordinated joint motions have entries of {size:,} terms, "
+                    f"over the budget of {self.term_budget:,}; keep fewer joints symbolic "
+                    "(free=[...] / --free), use coordinated_factored(), or set "
+                    "analysis.term_budget = None")
             syms = self.kinematics.symbols
             cols = [[ratio_to_sympy(e.num, e.den, self.ring, syms) for e in q]
                     for q in self._coord_q]
