@@ -27,15 +27,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import sympy as sp
 
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
-
-if TYPE_CHECKING:  # pragma: no cover
-    from coopkin_sym.analysis.mobility import Analysis
 
 
 @dataclass(frozen=True)
@@ -43,6 +40,13 @@ class ArmMap:
     """One arm's map ``qdot_a = K_a u``: its name, its joints and the entries of ``K_a``
     as ``(numerator, {factor index: exponent})`` (SymPy numerator, the denominator as
     powers of the named factors; a constant of the denominator is in the numerator).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+    >>> f.arms[0].name, f.arms[0].joints
+    ('left', ('q1', 'q2'))
     """
 
     name: str
@@ -143,8 +147,9 @@ class FactoredMotions:
         return u, sp.Matrix.vstack(*blocks) if blocks else sp.zeros(0, u.cols)
 
 
-def factored_motions(analysis: Analysis) -> FactoredMotions:
-    """The factored coordinated motions of ``analysis`` (see the module text)."""
+def factored_motions(analysis: Any) -> FactoredMotions:
+    """The factored coordinated motions of ``analysis`` (an
+    :class:`~coopkin_sym.analysis.mobility.Analysis`; see the module text)."""
     ring = analysis.ring
     zctx = ring.zctx
     syms = analysis.kinematics.symbols
