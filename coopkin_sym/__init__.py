@@ -57,7 +57,13 @@ _LAZY = {
 }
 
 
+#: The subpackages, also imported on first access (``coopkin_sym.model.examples``).
+_SUBPACKAGES = ("analysis", "exact", "model", "present", "system")
+
+
 def __getattr__(name: str) -> Any:
+    if name in _SUBPACKAGES:
+        return importlib.import_module(f"coopkin_sym.{name}")
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'coopkin_sym' has no attribute {name!r}")

@@ -88,7 +88,8 @@ def test_public_names_import_and_renderers_install_on_first_display():
             "before = 'coopkin_sym.present.display' in sys.modules\n"
             "html = a._repr_html_()\n"
             "assert not before and html.startswith('<div'), (before, html)\n"
-            "assert a.numbers._repr_latex_() is not None\n")
+            "assert a.numbers._repr_latex_() is not None\n"
+            "assert coopkin_sym.model.examples.list_examples()\n")
     assert _loaded_after(code, ("coopkin_sym.present.display",)) == {
         "coopkin_sym.present.display": True}
 
