@@ -20,9 +20,7 @@ Example
 
 from __future__ import annotations
 
-import concurrent.futures
 import json
-import multiprocessing
 import os
 import signal
 import sys
@@ -444,6 +442,9 @@ def worker_count(requested: int, points: int, cpus: int | None = None) -> int:
 def _sweep(system, points, at, workers: int, show: bool):
     """The sweep, in ``worker_count`` processes; on Ctrl-C or an error the worker
     processes are stopped at once (no waiting for their chunks)."""
+    import concurrent.futures
+    import multiprocessing
+
     n = len(points)
     count = worker_count(workers, n)
     if count == 1:
