@@ -15,12 +15,12 @@ Example
 (2, 1)
 """
 
-from coopkin_sym.analysis.batch import BatchResult
-from coopkin_sym.analysis.irrational import IrrationalAnalysis
-from coopkin_sym.analysis.locus.types import Component, Locus
-from coopkin_sym.analysis.mobility import Analysis, Motion
-from coopkin_sym.analysis.numbers import Numbers
-from coopkin_sym.analysis.sweep import SweepResult
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+from coopkin_sym.analysis.renderers import load_before_render
 from coopkin_sym.errors import (
     BlockTooLarge,
     ConfigurationError,
@@ -29,10 +29,62 @@ from coopkin_sym.errors import (
     ManipulabilityError,
     ModelError,
 )
-from coopkin_sym.model.configuration import Configuration
-from coopkin_sym.model.model import Model
-from coopkin_sym.present import display as _display  # noqa: F401  (installs the renderers)
-from coopkin_sym.system import System, analyze_many, load
+
+if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.batch import BatchResult
+    from coopkin_sym.analysis.irrational import IrrationalAnalysis
+    from coopkin_sym.analysis.locus.types import Component, Locus
+    from coopkin_sym.analysis.mobility import Analysis, Motion
+    from coopkin_sym.analysis.numbers import Numbers
+    from coopkin_sym.analysis.sweep import SweepResult
+    from coopkin_sym.model.configuration import Configuration
+    from coopkin_sym.model.model import Model
+    from coopkin_sym.system import System, analyze_many, load
+
+#: Where each public name lives; its module is imported on first access (PEP 562), so
+#: that ``import coopkin_sym`` and the ``coopkin`` command start quickly.
+_LAZY = {
+    "Analysis": "coopkin_sym.analysis.mobility",
+    "BatchResult": "coopkin_sym.analysis.batch",
+    "Component": "coopkin_sym.analysis.locus.types",
+    "Configuration": "coopkin_sym.model.configuration",
+    "IrrationalAnalysis": "coopkin_sym.analysis.irrational",
+    "Locus": "coopkin_sym.analysis.locus.types",
+    "Model": "coopkin_sym.model.model",
+    "Motion": "coopkin_sym.analysis.mobility",
+    "Numbers": "coopkin_sym.analysis.numbers",
+    "SweepResult": "coopkin_sym.analysis.sweep",
+    "System": "coopkin_sym.system",
+    "analyze_many": "coopkin_sym.system",
+    "load": "coopkin_sym.system",
+}
+
+
+#: The subpackages, also imported on first access (``coopkin_sym.model.examples``).
+_SUBPACKAGES = ("analysis", "exact", "model", "present", "system")
+
+
+def __getattr__(name: str) -> Any:
+    if name in _SUBPACKAGES:
+        return importlib.import_module(f"coopkin_sym.{name}")
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'coopkin_sym' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
+
+def _install_display() -> None:
+    """The renderers of the presentation layer, installed on first display."""
+    from coopkin_sym.present import display  # noqa: F401  (registers the renderers)
+
+
+load_before_render(_install_display)
 
 __all__ = [
     "Analysis",

@@ -20,9 +20,7 @@ Example
 
 from __future__ import annotations
 
-import concurrent.futures
 import json
-import multiprocessing
 import os
 import signal
 import sys
@@ -34,43 +32,19 @@ from typing import Annotated
 
 import typer
 
-from coopkin_sym.analysis.irrational import IrrationalAnalysis
-from coopkin_sym.analysis.locus.certify import certify_locus
-from coopkin_sym.analysis.locus.search import LocusError, compute_locus
-from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
-from coopkin_sym.analysis.mobility import InfeasibleMotion
-from coopkin_sym.analysis.sweep import SweepError, grid
 from coopkin_sym.errors import (
+    ConfigurationError,
     CoopkinError,
+    InfeasibleMotion,
     ManipulabilityError,
+    ModelError,
+    NumberError,
     OutputSkipped,
     TimeLimitReached,
 )
-from coopkin_sym.exact.parse import NumberError
-from coopkin_sym.model.configuration import ConfigurationError
-from coopkin_sym.model.examples import describe_example, list_examples
-from coopkin_sym.model.model import ModelError
-from coopkin_sym.present.certificate import certificate_json
-from coopkin_sym.present.draw import DrawError, save_picture
-from coopkin_sym.present.files import check_output_path, write_files
-from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
-from coopkin_sym.present.report import (
-    ReportError,
-    check_target,
-    locus_from_json,
-    parse_pairs,
-    write_report,
-)
-from coopkin_sym.present.text import (
-    analysis_json,
-    analysis_latex,
-    analysis_parts,
-    analysis_text,
-    irrational_latex,
-    irrational_text,
-)
-from coopkin_sym.present.verification import summary_lines, verification_json
-from coopkin_sym.system import load
+
+# Each command imports what it needs when it runs: the command line starts quickly,
+# and ``coopkin analyze`` does not pay for the locus, the reports or the pictures.
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
@@ -117,18 +91,27 @@ def analyze(
 ) -> None:
     """Mobility Nm, connectivity Nc, indeterminacy Ni, redundancy Nr (and Ng, Nd, Nh),
     with the block decomposition of the paper, exactly."""
+    from coopkin_sym.present.text import (
+        analysis_json,
+        analysis_latex,
+        analysis_parts,
+        analysis_text,
+    )
+    from coopkin_sym.system import load
+
     try:
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
         result = system.analyze(at, generic=generic, free=free_joints)
-        if not (as_json or latex or isinstance(result, IrrationalAnalysis)):
+        if not (as_json or latex or _irrational(result)):
             _print_parts(analysis_parts(result))
             return
         if as_json:
             text = analysis_json(result)
-        elif not isinstance(result, IrrationalAnalysis):
+        elif not _irrational(result):
             text = analysis_latex(result) if latex else analysis_text(result)
         else:
+            from coopkin_sym.present.text import irrational_latex, irrational_text
             text = irrational_latex(result) if latex else irrational_text(result)
     except USER_ERRORS as exc:
         _fail(str(exc))
@@ -152,6 +135,8 @@ def _print_parts(parts) -> None:
 @app.command()
 def examples() -> None:
     """List the shipped example systems."""
+    from coopkin_sym.model.examples import describe_example, list_examples
+
     for name in list_examples():
         typer.echo(f"{name:28s} {describe_example(name)}")
 
@@ -173,6 +158,9 @@ def draw(
                             "title).")] = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
+    from coopkin_sym.errors import DrawError
+    from coopkin_sym.present.draw import save_picture
+
     try:
         with _notes():
             path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
@@ -204,11 +192,14 @@ def manipulability_command(
 ) -> None:
     """The kinematic manipulability ellipsoid of chosen object velocities, exactly: E,
     det E, its rank and where it degenerates; at a point also its semi-axes (floats)."""
+    from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
+    from coopkin_sym.system import load
+
     try:
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
         result = system.analyze(at, generic=generic, free=free_joints)
-        if isinstance(result, IrrationalAnalysis):
+        if _irrational(result):
             raise ManipulabilityError("--at: the ellipsoid is computed at rational "
                                       "configurations only (tan(q/2) rational)")
         names = [c.strip() for c in controlled.split(",")] if controlled else None
@@ -243,6 +234,11 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
+    from coopkin_sym.analysis.sweep import grid
+    from coopkin_sym.errors import SweepError
+    from coopkin_sym.present.files import check_output_path, write_files
+    from coopkin_sym.system import load
+
     fmt = "json" if as_json else "csv"
     try:
         target = None
@@ -310,6 +306,12 @@ def locus(
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
+    from coopkin_sym.analysis.locus.search import compute_locus
+    from coopkin_sym.errors import LocusError, ReportError
+    from coopkin_sym.present.report import check_target, parse_pairs, write_report
+    from coopkin_sym.present.verification import verification_json
+    from coopkin_sym.system import load
+
     try:
         check_target(output)
         system = load(model)
@@ -325,6 +327,8 @@ def locus(
                                    progress=show, free=free_joints, pi_size=pi_size)
         locked = system.model.with_actuators_locked() if result.locked else None
         if certify:
+            from coopkin_sym.analysis.locus.certify import certify_locus
+            from coopkin_sym.present.certificate import certificate_json
             result.certificate = certificate_json(certify_locus(system, result,
                                                                 budget=certify_timeout))
             if result.locked is not None:
@@ -358,6 +362,7 @@ def locus(
 
 
 def _verification(system, locus, **options):
+    from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
     try:
         return verify_locus(system, locus, **options)
     except VerifyError as exc:
@@ -367,6 +372,7 @@ def _verification(system, locus, **options):
 def _echo_locked(locked, checked) -> None:
     """The verification of the locked system's locus (where the passive-joint numbers
     change), indented; on failure the main one too, then exit 1."""
+    from coopkin_sym.present.verification import summary_lines
     typer.echo("\n".join(["with the motors held still:"]
                           + ["  " + x for x in summary_lines(locked)]))
     if not locked.ok:
@@ -375,6 +381,7 @@ def _echo_locked(locked, checked) -> None:
 
 
 def _echo_verification(checked) -> None:
+    from coopkin_sym.present.verification import summary_lines
     typer.echo("\n".join(summary_lines(checked)))
     if not checked.ok:
         raise typer.Exit(1)
@@ -396,6 +403,10 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
+    from coopkin_sym.errors import ReportError
+    from coopkin_sym.present.report import locus_from_json
+    from coopkin_sym.present.verification import verification_json
+    from coopkin_sym.system import load
 
     try:
         system = load(model)
@@ -427,6 +438,14 @@ def verify_report(
     _echo_verification(checked)
 
 
+def _irrational(result) -> bool:
+    """Whether ``result`` is an analysis over a number field (an
+    :class:`~coopkin_sym.analysis.irrational.IrrationalAnalysis`, whose module is only
+    imported when that path is taken), not over Q or Q(t, L)."""
+    from coopkin_sym.analysis.mobility import Analysis
+    return not isinstance(result, Analysis)
+
+
 def worker_count(requested: int, points: int, cpus: int | None = None) -> int:
     """Worker processes actually started: never more than requested, than the
     machine's processors, or than the points to share out.
@@ -445,6 +464,9 @@ def worker_count(requested: int, points: int, cpus: int | None = None) -> int:
 def _sweep(system, points, at, workers: int, show: bool):
     """The sweep, in ``worker_count`` processes; on Ctrl-C or an error the worker
     processes are stopped at once (no waiting for their chunks)."""
+    import concurrent.futures
+    import multiprocessing
+
     n = len(points)
     count = worker_count(workers, n)
     if count == 1:

@@ -22,22 +22,18 @@ from collections.abc import Iterable, Mapping, Sequence
 from concurrent.futures import Executor
 from typing import TYPE_CHECKING, Any
 
-from coopkin_sym.analysis.batch import BatchResult, run_batch
-from coopkin_sym.analysis.irrational import IrrationalAnalysis, analyze_irrational
-from coopkin_sym.analysis.locus.search import compute_locus
-from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.mobility import Analysis, analyze
 from coopkin_sym.analysis.renderers import clip
-from coopkin_sym.analysis.sweep import sweep
 from coopkin_sym.errors import ConfigurationError, NotIrrational
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model
-from coopkin_sym.present.display import system_html, system_text
-from coopkin_sym.present.draw import draw_system
-from coopkin_sym.present.text import analysis_document
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
+
+    from coopkin_sym.analysis.batch import BatchResult
+    from coopkin_sym.analysis.irrational import IrrationalAnalysis
+    from coopkin_sym.analysis.locus.types import Locus
 
 
 
@@ -106,6 +102,7 @@ class System:
         except ConfigurationError as error:
             if generic or free or at is None:
                 raise
+            from coopkin_sym.analysis.irrational import analyze_irrational
             try:
                 return analyze_irrational(self.model, at)
             except NotIrrational:
@@ -126,6 +123,7 @@ class System:
         >>> locus.generic["Nm"], [c.condition for c in locus.components][:2]
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
         """
+        from coopkin_sym.analysis.locus.search import compute_locus
         return compute_locus(self, at, max_depth, timeout, progress, free, pi_size)
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
@@ -140,6 +138,7 @@ class System:
         >>> len(fig.axes)
         1
         """
+        from coopkin_sym.present.draw import draw_system
         return draw_system(self, at, motion=motion, title=title)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
@@ -157,6 +156,7 @@ class System:
         >>> res.numbers[:, 0].tolist()
         [3, 2]
         """
+        from coopkin_sym.analysis.sweep import sweep
         return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
 
     def __repr__(self) -> str:
@@ -164,6 +164,7 @@ class System:
                 f"{len(self.model.joints)} joints, {len(self.model.contacts)} contacts)")
 
     def _repr_pretty_(self, p: Any, cycle: bool) -> None:
+        from coopkin_sym.present.display import system_text
         lines = [repr(self)] if cycle else system_text(self.model).split("\n")
         for k, line in enumerate(lines):
             if k:
@@ -171,6 +172,7 @@ class System:
             p.text(line)
 
     def _repr_html_(self) -> str:
+        from coopkin_sym.present.display import system_html
         return system_html(self.model)
 
     def analyze_many(self, points: Iterable[str | Mapping | None], *, json: bool = False,
@@ -235,6 +237,8 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
     >>> [r.numbers.Nm if r.ok else "error" for r in results]
     [3, 3, 'error']
     """
+    from coopkin_sym.analysis.batch import run_batch
+
     options = (generic, None if free is None else tuple(free), json)
     return run_batch(_analyze_item, items, options=options, executor=executor,
                      progress=progress, chunk=chunk)
@@ -243,4 +247,8 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
 def _analyze_item(model: Model, at, generic: bool, free, json: bool):
     """One item of :func:`analyze_many`: numbers and, when asked, the JSON document."""
     result = System(model).analyze(at, generic=generic, free=free)
-    return result.numbers, analysis_document(result) if json else None
+    if not json:
+        return result.numbers, None
+    from coopkin_sym.present.text import analysis_document
+
+    return result.numbers, analysis_document(result)

@@ -51,8 +51,8 @@ from coopkin_sym.analysis.numbers import (
     ranks_from_numbers,
 )
 from coopkin_sym.analysis.passive import PassiveAnalysis, passive_analysis
+from coopkin_sym.analysis.points import point_ranks
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.analysis.sweep.compiled import point_ranks
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name

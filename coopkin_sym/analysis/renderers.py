@@ -3,9 +3,11 @@
 The results of this layer are data, not words. A result class inherits
 :class:`Displayable`: its ``_repr_html_``, ``_repr_latex_`` and ``_repr_pretty_`` ask
 the renderer registered for its class and format (:func:`register`), which the
-presentation layer (:mod:`coopkin_sym.present.display`) installs; importing
-:mod:`coopkin_sym` imports it. With no renderer registered, a result shows as its
-``repr`` (the short one each class defines, with :func:`clip`).
+presentation layer (:mod:`coopkin_sym.present.display`) installs. Importing
+:mod:`coopkin_sym` does not import it (start-up stays short): it sets a loader
+(:func:`load_before_render`) that imports it the first time anything is displayed.
+With no renderer registered, a result shows as its ``repr`` (the short one each class
+defines, with :func:`clip`).
 
 Example
 -------
@@ -30,6 +32,25 @@ FORMATS = ("html", "latex", "pretty")
 
 #: Renderers by (class, format); empty until the presentation layer is imported.
 _RENDERERS: dict[tuple[type, str], Callable[[Any], str]] = {}
+
+#: Loaders still to run before the first lookup (each registers renderers).
+_LOADERS: list[Callable[[], object]] = []
+
+
+def load_before_render(loader: Callable[[], object]) -> None:
+    """Run ``loader()`` once, just before the first renderer lookup: a layer above this
+    one installs its renderers only when something is first displayed.
+
+    Example
+    -------
+    >>> seen = []
+    >>> load_before_render(lambda: seen.append("loaded"))
+    >>> render(3, "html") is None, seen
+    (True, ['loaded'])
+    >>> render(3, "html") is None, seen               # once only
+    (True, ['loaded'])
+    """
+    _LOADERS.append(loader)
 
 
 def register(cls: type, kind: str, renderer: Callable[[Any], str]) -> None:
@@ -67,6 +88,8 @@ def render(obj: object, kind: str) -> str | None:
     >>> render(3, "html") is None
     True
     """
+    while _LOADERS:
+        _LOADERS.pop(0)()
     for cls in type(obj).__mro__:
         renderer = _RENDERERS.get((cls, kind))
         if renderer is not None:
@@ -121,4 +144,5 @@ def clip(text: object, limit: int) -> str:
     return one if len(one) <= limit else one[:max(limit - 3, 0)] + "..."
 
 
-__all__ = ["FORMATS", "Displayable", "clip", "register", "render", "unregister"]
+__all__ = ["FORMATS", "Displayable", "clip", "load_before_render", "register", "render",
+           "unregister"]

@@ -26,10 +26,13 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
+import flint
 import sympy as sp
+from sympy.polys.polyerrors import NotAlgebraic
 
 from coopkin_sym.exact.parse import parse_angle, tangent_text
-from coopkin_sym.exact.rationals import to_sympy
+from coopkin_sym.exact.rationals import to_fraction, to_sympy
+from coopkin_sym.exact.realroot import RealRoot
 
 __all__ = ["COTANGENT_PREFIX", "TANGENT_PREFIX", "ExactAngle", "algebraic_angle",
            "cotangent_name", "joint_of", "tangent_name"]
@@ -190,15 +193,14 @@ def _convergents(x: Fraction):
         p, q = q, r
 
 
-# the largest denominator of a rational multiple of pi recognized in an algebraic angle
-_PI_DENOMINATOR = 120
 _T = sp.Symbol("t")
 
 
 def algebraic_angle(tangent: sp.Expr) -> sp.Expr:
-    """``2 atan(tangent)`` for an algebraic ``tangent``, as a rational multiple of pi
-    when it is one (checked exactly: ``tan(q/2) - tangent`` has minimal polynomial
-    ``t``), else left as ``2*atan(tangent)``.
+    """``2 atan(tangent)`` for a real algebraic ``tangent`` (a SymPy expression), as a
+    rational multiple of pi when it is one (decided exactly, by
+    :meth:`~coopkin_sym.exact.realroot.RealRoot.pi_multiple` on the real root of its
+    minimal polynomial that it is), else left as ``2*atan(tangent)``.
 
     Example
     -------
@@ -207,13 +209,13 @@ def algebraic_angle(tangent: sp.Expr) -> sp.Expr:
     """
     plain = 2 * sp.atan(tangent)
     try:
-        # a candidate multiple of pi from the value (only a guess: checked exactly below)
-        ratio = Fraction(float(plain / sp.pi)).limit_denominator(_PI_DENOMINATOR)  # float-ok
-        if abs(float(plain / sp.pi) - ratio) > 1e-12:  # float-ok: no candidate
-            return plain
-        guess = sp.pi * to_sympy(ratio)
-        if sp.minimal_polynomial(sp.tan(guess / 2) - tangent, _T) != _T:
-            return plain
-    except (TypeError, ValueError, NotImplementedError, sp.PolynomialError):
+        minimal = sp.Poly(sp.minimal_polynomial(tangent, _T), _T)
+        coeffs = [int(c) for c in reversed(minimal.all_coeffs())]
+        roots = [r for r in RealRoot.all_of(coeffs) if r.contains(tangent)]
+    except (TypeError, ValueError, NotImplementedError, NotAlgebraic, sp.PolynomialError):
         return plain
-    return guess
+    if len(roots) != 1:
+        return plain
+    ratio = roots[0].pi_multiple(to_fraction(tangent) if tangent.is_Rational
+                                 else flint.fmpq_poly([0, 1]))
+    return plain if ratio is None else sp.pi * to_sympy(ratio)

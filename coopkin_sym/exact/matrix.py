@@ -38,14 +38,15 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Sequence
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import flint
-import numpy as np
 
 from coopkin_sym.exact import elimination as el
-from coopkin_sym.exact import modular
 from coopkin_sym.exact.quotient import eliminate_modulo, nullspace_modulo, rank_modulo
+
+if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
 
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
@@ -279,22 +280,28 @@ def _dot(a: Sequence[Poly], b: Sequence[Poly]):
     return total
 
 
-def batch_ranks(matrices: np.ndarray, p: int = modular.PRIME) -> np.ndarray:
+def batch_ranks(matrices: np.ndarray, p: int | None = None) -> np.ndarray:
     """The ranks modulo ``p`` of a batch of integer matrices, shape ``(batch, m, n)``
     (any integers; reduced modulo ``p`` here): each a lower bound on the rank over
-    ``Q``, equal to it for all but finitely many primes.
+    ``Q``, equal to it for all but finitely many primes (``p`` by default
+    :data:`~coopkin_sym.exact.modular.PRIME`; NumPy is imported on first use).
 
     Example
     -------
+    >>> import numpy as np
     >>> batch = np.array([[[1, 2], [2, 4]], [[1, 0], [0, 1]]], dtype=np.int64)
     >>> batch_ranks(batch).tolist()
     [1, 2]
     """
+    import numpy as np
+
+    from coopkin_sym.exact import modular
+    p = modular.PRIME if p is None else p
     work = np.remainder(np.asarray(matrices, dtype=np.int64), p).transpose(1, 2, 0).copy()
     return modular.rank_profile(work, p)[0]
 
 
-def batch_rank_profile(matrices: np.ndarray, p: int = modular.PRIME,
+def batch_rank_profile(matrices: np.ndarray, p: int | None = None,
                        prefix: int | None = None) -> tuple[np.ndarray, np.ndarray | None]:
     """Ranks modulo ``p`` of a batch in the sweep's own layout, ``(m, n, batch)``
     residues (overwritten), and with ``prefix`` the ranks of the first ``prefix``
@@ -302,8 +309,10 @@ def batch_rank_profile(matrices: np.ndarray, p: int = modular.PRIME,
 
     Example
     -------
+    >>> import numpy as np
     >>> a = np.array([[[0, 1], [1, 1]], [[1, 2], [2, 4]]]).transpose(1, 2, 0)
     >>> [r.tolist() for r in batch_rank_profile(a, 7, prefix=1)]
     [[2, 1], [1, 1]]
     """
-    return modular.rank_profile(matrices, p, prefix)
+    from coopkin_sym.exact import modular
+    return modular.rank_profile(matrices, modular.PRIME if p is None else p, prefix)

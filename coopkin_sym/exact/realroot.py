@@ -4,7 +4,12 @@ A :class:`RealRoot` is the irreducible polynomial and an isolating interval with
 rational ends, so it can be compared, refined to any precision and written out
 exactly: in radicals for degree two (``-2 + sqrt(3)``), as a SymPy ``CRootOf``
 otherwise. As a tangent half-angle it reads as an angle, recognized exactly when it is
-a rational multiple of pi (``-2 + sqrt(3)`` is ``tan(-pi/12)``).
+a rational multiple of pi (``-2 + sqrt(3)`` is ``tan(-pi/12)``), and so does any
+element of the field ``Q(root)`` (:meth:`RealRoot.angle_at`): by arithmetic, not by
+simplification. With ``t = tan(q/2)``, ``q = 2 pi j/d`` exactly when
+``2 cos q = 2 (1 - t^2)/(1 + t^2)`` has the minimal polynomial of ``2 cos(2 pi/d)``
+(FLINT's ``cos_minpoly``); which of its conjugates it is (which ``j``), and the sign of
+``q``, are read off rational isolating intervals, refined until they decide.
 
 Example
 -------
@@ -19,13 +24,21 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import cache, cached_property
+from math import gcd
 
+import flint
 import sympy as sp
 
-from coopkin_sym.exact.angles import algebraic_angle
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 _T = sp.Symbol("t")
+
+#: The largest denominator of ``q/pi`` recognized in an algebraic angle ``q``.
+PI_DENOMINATOR = 120
+
+#: An element of ``Q(root)``: a rational, or a polynomial in the root (``fmpq_poly``).
+Element = Fraction | flint.fmpq_poly
 
 
 @dataclass(frozen=True)
@@ -89,28 +102,224 @@ class RealRoot:
 
     def expression(self) -> sp.Expr:
         """The root as an exact SymPy expression (radicals up to degree two)."""
+        return self._expression
+
+    @cached_property
+    def _expression(self) -> sp.Expr:
         poly = self._poly_of(self.coeffs)
         if self.degree == 1:
             return sp.Rational(-self.coeffs[0], self.coeffs[1])
         if self.degree == 2:
             for r in sorted(sp.roots(poly, _T), key=lambda e: float(e)):  # float-ok: order
-                if self._contains(r):
+                if self.contains(r):
                     return r
         return sp.CRootOf(poly.as_expr(), self.index)
 
-    def _contains(self, expr: sp.Expr) -> bool:
+    def contains(self, expr: sp.Expr) -> bool:
+        """Whether the real number ``expr`` lies in the isolating interval (then, for
+        a root of the same polynomial, it is this root); a rational root's interval is
+        the point itself."""
         lo = to_sympy(self.lo)
         hi = to_sympy(self.hi)
+        if self.lo == self.hi:
+            return bool(sp.Eq(expr, lo))
         return bool(expr > lo) and bool(expr <= hi)
 
     def angle(self) -> sp.Expr:
-        """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``: see
-        :func:`~coopkin_sym.exact.angles.algebraic_angle`."""
-        return algebraic_angle(self.expression())
+        """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``, a rational multiple of pi
+        when it is one (see :meth:`angle_at`)."""
+        return self.angle_at(flint.fmpq_poly([0, 1]))
+
+    def angle_at(self, value: Element) -> sp.Expr:
+        """The angle ``q = 2 atan(t)`` for ``t = value`` in ``Q(root)`` (a rational, or
+        a polynomial in the root): ``k*pi/n`` when it is one with ``n`` up to
+        :data:`PI_DENOMINATOR` (decided exactly, :meth:`pi_multiple`), else
+        ``2*atan(t)`` with ``t`` written exactly (:func:`element_expression`).
+
+        Example
+        -------
+        >>> import flint
+        >>> (r,) = [r for r in RealRoot.all_of([-3, 0, 1]) if r.lo > 0]    # sqrt(3)
+        >>> r.angle_at(flint.fmpq_poly([0, 1])), r.angle_at(flint.fmpq_poly([0, -1, 1]))
+        (2*pi/3, 2*atan(3 - sqrt(3)))
+        >>> r.angle_at(flint.fmpq_poly([0, flint.fmpq(1, 3)]))     # tan(pi/6) = sqrt(3)/3
+        pi/3
+        """
+        ratio = self.pi_multiple(value)
+        if ratio is not None:
+            return sp.pi * to_sympy(ratio)
+        return _two_atan(element_expression(value, self))
+
+    def pi_multiple(self, value: Element) -> Fraction | None:
+        """``q/pi`` for ``q = 2 atan(value)`` when it is rational with denominator at
+        most :data:`PI_DENOMINATOR`, else None; exact (no float decides).
+
+        A rational ``tan(q/2)`` gives a rational multiple of pi only at 0 and +-1. Else
+        ``y = 2 cos q`` is an element of ``Q(root)``; its minimal polynomial (from the
+        characteristic polynomial of multiplication by ``y``) is looked up among the
+        minimal polynomials of ``2 cos(2 pi/d)``; the conjugate ``2 cos(2 pi j/d)``
+        equal to ``y``, and the sign of ``t``, are found on rational intervals.
+
+        Example
+        -------
+        >>> import flint
+        >>> r = RealRoot.all_of([1, 4, 1])[1]                       # -2 + sqrt(3)
+        >>> r.pi_multiple(flint.fmpq_poly([0, 1])), r.pi_multiple(Fraction(1, 2))
+        (Fraction(-1, 6), None)
+        """
+        v = self._reduced(value)
+        if v.degree() <= 0:
+            t = to_fraction(v[0])
+            return {0: Fraction(0), 1: Fraction(1, 2), -1: Fraction(-1, 2)}.get(t)
+        g = self._field_polynomial()
+        num = (1 - v * v) % g
+        den = (1 + v * v) % g
+        y = (2 * num * _inverse(den, g)) % g
+        d = _cos_minpoly_table().get(_minimal_polynomial(y, g))
+        if d is None:
+            return None
+        found = self._conjugate(v, d)
+        if found is None:  # pragma: no cover - the refinement always separates them
+            return None
+        j, sign = found
+        return Fraction(2 * j * sign, d)
+
+    def _field_polynomial(self) -> flint.fmpq_poly:
+        return flint.fmpq_poly(list(self.coeffs))
+
+    def _reduced(self, value: Element) -> flint.fmpq_poly:
+        if isinstance(value, flint.fmpq_poly):
+            return value % self._field_polynomial()
+        value = to_fraction(value)
+        return flint.fmpq_poly([flint.fmpq(value.numerator, value.denominator)])
+
+    def _conjugate(self, v: flint.fmpq_poly, d: int) -> tuple[int, int] | None:
+        """``(j, sign)`` with ``2 (1 - t^2)/(1 + t^2) = 2 cos(2 pi j/d)`` and ``sign``
+        the sign of ``t = v(root)`` (nonzero), for ``y`` known to be a root of
+        ``cos_minpoly(d)``: rational intervals for ``t`` and ``y`` are narrowed (the
+        root refined) until ``y``'s meets one isolating interval of that polynomial."""
+        js = _conjugate_indices(d)               # j of the roots, smallest root first
+        poly, intervals = _cos_minpoly_roots(d)
+        coeffs = [to_fraction(c) for c in v.coeffs()]
+        width = Fraction(1, 2**16)
+        for _ in range(24):
+            lo, hi = self.refine(width) if self.degree > 1 else (self.lo, self.hi)
+            t_lo, t_hi = _horner(coeffs, lo, hi)
+            s_lo = Fraction(0) if t_lo <= 0 <= t_hi else min(t_lo**2, t_hi**2)
+            s_hi = max(t_lo**2, t_hi**2)
+            y_lo, y_hi = 2 * (1 - s_hi) / (1 + s_hi), 2 * (1 - s_lo) / (1 + s_lo)
+            hits = [k for k, (a, b) in enumerate(intervals) if a <= y_hi and y_lo <= b]
+            if len(hits) == 1 and (t_lo > 0 or t_hi < 0):
+                return js[hits[0]], (1 if t_lo > 0 else -1)
+            width /= 2**16
+            intervals = [_refine_root(poly, a, b, width) if k in hits else (a, b)
+                         for k, (a, b) in enumerate(intervals)]
+        return None  # pragma: no cover
 
     def angle_text(self) -> str:
         """:meth:`angle` in ``--at`` syntax."""
         return sp.sstr(self.angle())
 
 
-__all__ = ["RealRoot"]
+def element_expression(value: Element, root: RealRoot | sp.Expr) -> sp.Expr:
+    """An element of ``Q(root)`` (a rational, or a polynomial in the root) as an exact
+    SymPy expression (the root in radicals up to degree two, else ``CRootOf``).
+
+    Example
+    -------
+    >>> import flint
+    >>> (r,) = [r for r in RealRoot.all_of([-2, 0, 1]) if r.lo > 0]
+    >>> element_expression(flint.fmpq_poly([1, flint.fmpq(1, 2)]), r)
+    sqrt(2)/2 + 1
+    """
+    expr = root.expression() if isinstance(root, RealRoot) else root
+    if isinstance(value, Fraction):
+        return to_sympy(value)
+    coeffs = [sp.Rational(int(c.p), int(c.q)) for c in value.coeffs()]
+    if coeffs == [0, 1]:
+        return expr
+    return sp.radsimp(sp.expand(sum(c * expr**i for i, c in enumerate(coeffs))))
+
+
+def _two_atan(t: sp.Expr) -> sp.Expr:
+    """``2*atan(t)`` for a real algebraic ``t`` known not to be the tangent of a rational
+    multiple of pi, as SymPy writes it (a minus sign taken out) but without SymPy's
+    search of its tables and assumptions (slow on large radicals and ``CRootOf``):
+    ``-2*atan(sqrt(2))``, ``2*atan(1 - sqrt(5))``."""
+    if t.could_extract_minus_sign():
+        return -2 * sp.atan(-t, evaluate=False)
+    return 2 * sp.atan(t, evaluate=False)
+
+
+def _inverse(a: flint.fmpq_poly, g: flint.fmpq_poly) -> flint.fmpq_poly:
+    """``1/a`` modulo the irreducible ``g`` (``a`` not a multiple of ``g``)."""
+    d, s, _ = a.xgcd(g)
+    return (s / d[0]) % g
+
+
+def _minimal_polynomial(y: flint.fmpq_poly, g: flint.fmpq_poly) -> tuple[int, ...]:
+    """The minimal polynomial over Q of ``y`` in ``Q[x]/(g)``, primitive with a positive
+    leading coefficient, integer coefficients lowest degree first: the squarefree part
+    of the characteristic polynomial of multiplication by ``y`` (a power of it)."""
+    n = g.degree()
+    columns = []
+    power = flint.fmpq_poly([1])
+    for _ in range(n):
+        column = (y * power) % g
+        columns.append([column[i] for i in range(n)])
+        power = power * flint.fmpq_poly([0, 1])
+    matrix = flint.fmpq_mat(n, n, [columns[c][r] for r in range(n) for c in range(n)])
+    char = matrix.charpoly()
+    squarefree = char / char.gcd(char.derivative()) if char.degree() > 1 else char
+    integer = squarefree.numer()
+    content = int(integer.content()) * (1 if integer[integer.degree()] > 0 else -1)
+    return tuple(int(c) // content for c in integer.coeffs())
+
+
+@cache
+def _cos_minpoly_table() -> dict[tuple[int, ...], int]:
+    """``d`` by the minimal polynomial of ``2 cos(2 pi/d)``, for every ``d`` whose
+    angles ``2 pi j/d`` have ``q/pi`` with denominator at most :data:`PI_DENOMINATOR`
+    (``d`` odd up to it, ``d`` even up to twice it)."""
+    out = {}
+    for d in range(1, 2 * PI_DENOMINATOR + 1):
+        if d % 2 and d > PI_DENOMINATOR:
+            continue
+        out[tuple(int(c) for c in flint.fmpz_poly.cos_minpoly(d).coeffs())] = d
+    return out
+
+
+@cache
+def _conjugate_indices(d: int) -> tuple[int, ...]:
+    """The ``j`` in ``[0, d/2]`` prime to ``d`` (the conjugates ``2 cos(2 pi j/d)``),
+    in the order of increasing ``2 cos(2 pi j/d)``."""
+    return tuple(sorted((j for j in range(d // 2 + 1) if gcd(j, d) == 1), reverse=True))
+
+
+@cache
+def _cos_minpoly_roots(d: int) -> tuple[sp.Poly, list[tuple[Fraction, Fraction]]]:
+    """``cos_minpoly(d)`` as a SymPy polynomial and rational isolating intervals of its
+    (real, simple) roots, increasing."""
+    poly = sp.Poly([int(c) for c in reversed(flint.fmpz_poly.cos_minpoly(d).coeffs())], _T)
+    return poly, [(to_fraction(a), to_fraction(b)) for (a, b), _m in poly.intervals()]
+
+
+def _refine_root(poly: sp.Poly, lo: Fraction, hi: Fraction,
+                 width: Fraction) -> tuple[Fraction, Fraction]:
+    if lo == hi:
+        return lo, hi
+    a, b = poly.refine_root(to_sympy(lo), to_sympy(hi), eps=to_sympy(width))
+    return to_fraction(a), to_fraction(b)
+
+
+def _horner(coeffs: list[Fraction], lo: Fraction, hi: Fraction) -> tuple[Fraction, Fraction]:
+    """An enclosure of the polynomial ``coeffs`` (lowest degree first) on
+    ``[lo, hi]``, by interval arithmetic on rationals."""
+    a = b = coeffs[-1]
+    for c in reversed(coeffs[:-1]):
+        products = (a * lo, a * hi, b * lo, b * hi)
+        a, b = min(products) + c, max(products) + c
+    return a, b
+
+
+__all__ = ["PI_DENOMINATOR", "RealRoot", "element_expression"]

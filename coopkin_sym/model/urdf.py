@@ -38,8 +38,6 @@ from fractions import Fraction
 from pathlib import Path
 
 import sympy as sp
-from defusedxml import DefusedXmlException
-from defusedxml.ElementTree import ParseError, fromstring
 
 from coopkin_sym import limits
 from coopkin_sym.errors import UrdfError
@@ -120,6 +118,9 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
 def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame = IDENTITY,
                    bound: float = DEFAULT_BOUND) -> UrdfArm:
     """:func:`read_urdf` for the text of a file (``source`` names it in errors)."""
+    from defusedxml import DefusedXmlException  # only when a URDF file is read
+    from defusedxml.ElementTree import ParseError, fromstring
+
     try:
         root = fromstring(text, forbid_dtd=True)
     except DefusedXmlException as exc:

@@ -20,15 +20,18 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from coopkin_sym.analysis.irrational import IrrationalAnalysis, PointMotions
 from coopkin_sym.analysis.kinematics import spatial_twist
-from coopkin_sym.analysis.locus.types import Component, WitnessMotions
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+
+if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.irrational import IrrationalAnalysis, PointMotions
+    from coopkin_sym.analysis.locus.types import Component, WitnessMotions
 
 # entries larger than this (in operations) are not simplified for words
 _MAX_OPS = 400

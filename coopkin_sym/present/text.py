@@ -13,15 +13,18 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from coopkin_sym.analysis.factored import FactoredMotions
-from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
+
+if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.irrational import IrrationalAnalysis
 
 __all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
            "analysis_parts", "analysis_text", "block_table", "irrational_text", "object_frame_text",
@@ -343,7 +346,7 @@ def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
     """
     data = result.as_json()
     omitted = dict(data.get("omitted") or {})
-    if isinstance(result, IrrationalAnalysis):
+    if not isinstance(result, Analysis):  # an IrrationalAnalysis
         omitted.update(dict.fromkeys(data["blocks"], _IRRATIONAL_OMITTED))
         omitted["coordinated_form"] = _IRRATIONAL_OMITTED
         if "passive" in data:

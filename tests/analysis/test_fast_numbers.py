@@ -14,7 +14,7 @@ import coopkin_sym
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.generic import NumbersCertificate, generic_numbers
 from coopkin_sym.analysis.mobility import decompose
-from coopkin_sym.analysis.sweep.compiled import point_ranks
+from coopkin_sym.analysis.points import point_ranks
 from coopkin_sym.model.builders import planar_hand, spatial_hand
 from coopkin_sym.model.configuration import Configuration
 

@@ -172,7 +172,7 @@ def test_analysis_pickles_and_comes_back_from_a_worker():
 
 
 def test_a_report_written_by_another_run_meanwhile_is_not_lost(tmp_path, monkeypatch):
-    import coopkin_sym.cli as cli_module
+    import coopkin_sym.analysis.locus.search as search_module
 
     target = tmp_path / "r.json"
     generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
@@ -181,7 +181,7 @@ def test_a_report_written_by_another_run_meanwhile_is_not_lost(tmp_path, monkeyp
         target.write_text("the other run's report")
         return Locus(system.name, ["t_q1", "t_q2"], "", generic)
 
-    monkeypatch.setattr(cli_module, "compute_locus", another_run_meanwhile)
+    monkeypatch.setattr(search_module, "compute_locus", another_run_meanwhile)
     result = runner.invoke(app, ["locus", "paper-case1-hard", "-o", str(target),
                                  "--no-progress"])
     assert result.exit_code == 2

@@ -18,8 +18,9 @@ from __future__ import annotations
 
 import itertools
 import re
+from collections.abc import Callable
 from fractions import Fraction
-from math import pi
+from math import atan, pi
 
 import flint
 import sympy as sp
@@ -31,12 +32,12 @@ from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
 from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers
-from coopkin_sym.exact.angles import ExactAngle, algebraic_angle
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text, parse_expression
 from coopkin_sym.exact.quotient import Quotient, Tower
-from coopkin_sym.exact.rationals import to_fraction, to_sympy
-from coopkin_sym.exact.realroot import RealRoot
+from coopkin_sym.exact.rationals import to_fraction
+from coopkin_sym.exact.realroot import RealRoot, element_expression
 from coopkin_sym.exact.substitution import substitute
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 from coopkin_sym.model.configuration import Configuration
@@ -172,10 +173,7 @@ def numbers_at_algebraic(ctx: SearchContext, x: str, g, full: dict) -> Numbers:
 
 def value_expr(v, root: sp.Expr) -> sp.Expr:
     """An element of ``Q(alpha)`` (polynomial in alpha) at the real root ``root``."""
-    if isinstance(v, Fraction):
-        return to_sympy(v)
-    coeffs = [sp.Rational(int(c.p), int(c.q)) for c in v.coeffs()]
-    return sp.radsimp(sp.expand(sum(c * root**i for i, c in enumerate(coeffs))))
+    return element_expression(v, root)
 
 
 def value_near(v, a: Fraction) -> Fraction:
@@ -187,15 +185,22 @@ def value_near(v, a: Fraction) -> Fraction:
 
 def algebraic_point_text(ctx: SearchContext, values: dict, root: RealRoot, x: str,
                           only: set[str] | None = None) -> dict[str, str]:
-    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf)."""
+    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf);
+    an angle is a rational multiple of pi when it is one (decided by arithmetic in
+    ``Q(alpha)``, :meth:`~coopkin_sym.exact.realroot.RealRoot.angle_at`)."""
     expr = root.expression()
     out: dict[str, str] = {}
     for n, (kind, name) in ctx.kinds.items():
         if only is not None and n not in only:
             continue
-        v = expr if n == x and n not in values else value_expr(values[n], expr)
-        out[name] = sp.sstr(algebraic_angle(v)) if kind == "revolute" else sp.sstr(v)
+        v = _GENERATOR if n == x and n not in values else values[n]
+        out[name] = sp.sstr(root.angle_at(v) if kind == "revolute"
+                            else element_expression(v, expr))
     return out
+
+
+#: alpha itself, as an element of ``Q(alpha)``.
+_GENERATOR = flint.fmpq_poly([0, 1])
 
 
 def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> str:
@@ -203,19 +208,32 @@ def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> str:
     names = {x, *values}
     roots = RealRoot.all_of(univariate(ctx, g, x).coeffs())
     kinds = {name: kind for kind, name in ctx.kinds.values()}
+    variables = {name: n for n, (_kind, name) in ctx.kinds.items()}
     parts = []
     for root in roots:
         text = algebraic_point_text(ctx, values, root, x, only=names)
-        parts.append(", ".join(readable(k, v, kinds[k]) for k, v in text.items()))
+        a = root.approximation(Fraction(1, 10**30))
+
+        def near(k: str, a: Fraction = a) -> float:  # float-ok: display only
+            n = variables[k]
+            t = float(a if n == x and n not in values else value_near(values[n], a))
+            return 2 * atan(t) if kinds[k] == "revolute" else t  # float-ok
+
+        parts.append(", ".join(readable(k, v, kinds[k], near) for k, v in text.items()))
     return " or ".join(parts)
 
 
-def readable(name: str, exact: str, kind: str) -> str:
+def readable(name: str, exact: str, kind: str,
+             near: Callable[[str], float] | None = None) -> str:  # float-ok
     """``name = exact`` when short, else its value to 4 significant digits (in degrees
-    for an angle); the exact value stays in the witness."""
+    for an angle); the exact value stays in the witness. ``near(name)``, when given,
+    is that value (in radians for an angle), else it is read from ``exact``."""
     if len(exact) <= 32 and "CRootOf" not in exact:
         return f"{name} = {exact}"
-    value = float(parse_expression(exact, [], name).evalf(30))  # float-ok: display only
+    if near is not None:
+        value = near(name)
+    else:
+        value = float(parse_expression(exact, [], name).evalf(30))  # float-ok: display only
     if kind == "revolute":
         return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
     return f"{name} \u2248 {value:.4g}"

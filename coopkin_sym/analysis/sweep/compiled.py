@@ -503,7 +503,6 @@ def compile_system(system: Model | Any, joints: Sequence[str],
     return compiled
 
 
-_SEEN: OrderedDict[tuple, Model] = OrderedDict()
 #: Seconds the point analysis spends, once per compiled system, certifying the generic
 #: ranks that let most points be ranked modulo a prime.
 GENERIC_SECONDS = 2.0
@@ -524,21 +523,19 @@ def _joints_of(model: Model) -> tuple[tuple[str, ...], tuple[str, ...]]:
 
 def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, int, int]] | None:
     """``m`` and the exact ranks of ``Q``, ``H G^T`` and ``H D`` at a configuration
-    that gives every joint a value, on the compiled path: ``Q`` is compiled (all joints
-    swept, the parameters at their values) the second time ``model`` is analyzed at a
-    point with the same parameters, then evaluated exactly at each point.
+    that gives every joint a value, on the compiled path: ``Q`` compiled once (all
+    joints swept, the parameters at their values, cached), then evaluated exactly.
 
-    ``None`` when the compiled path does not apply: a joint is left symbolic, a
-    displacement depends on a symbolic parameter, or this is the first point of the
-    model (a single analysis does not pay for compiling).
+    ``None`` when the compiled path does not apply: a joint is left symbolic or a
+    displacement depends on a symbolic parameter. (:func:`coopkin_sym.analysis.points.
+    point_ranks` calls this from a model's second point on.)
 
     Example
     -------
     >>> from coopkin_sym.model import load_model
     >>> model = load_model("paper-case1-hard")
-    >>> config = Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1")
-    >>> point_ranks(model, config) is None, point_ranks(model, config)
-    (True, (6, (5, 5, 2)))
+    >>> point_ranks(model, Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1"))
+    (6, (5, 5, 2))
     """
     if config.free:
         return None
@@ -573,10 +570,5 @@ def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, in
         compiled = hit[1]
         return compiled.m, _exact_for(compiled._plan).ranks(pairs,
                                                             compiled.quick_generic_ranks)
-    if _SEEN.get(key) is not model:
-        _SEEN[key] = model
-        while len(_SEEN) > 64:
-            _SEEN.popitem(last=False)
-        return None
     compiled = compile_system(model, joints, at)
     return compiled.m, _exact_for(compiled._plan).ranks(pairs, compiled.quick_generic_ranks)
