@@ -111,6 +111,31 @@ class FactoredMotions:
             out[arm.name] = sp.Matrix(rows) if rows else sp.zeros(0, self.twists.rows)
         return out
 
+    def latex(self) -> str:
+        """The factored form as LaTeX: ``\\dot q_{arm} = K_{arm} u`` for each arm, each
+        ``K`` with the named factors, then the factors.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+        >>> print(f.latex().splitlines()[-1])
+        d_{7} = t_{q3}^{2} + 1
+        """
+        lines = []
+        maps = self.maps()
+        for arm in self.arms:
+            name = r"\mathrm{" + arm.name.replace("_", r"\_") + "}"
+            lines.append(rf"\dot q_{{{name}}} = K_{{{name}}}\, u \quad "
+                         r"(u \text{ each column of } C_{12})")
+            lines.append(rf"K_{{{name}}} = {sp.latex(maps[arm.name])}")
+        for fname, poly in self.factors:
+            lines.append(rf"{sp.latex(sp.Symbol(fname))} = {sp.latex(poly)}")
+        return "\n".join(lines)
+
+    def _repr_latex_(self) -> str:
+        return "$$" + r" \\ ".join(self.latex().splitlines()) + "$$"
+
     def joint_motions(self) -> sp.Matrix:
         """``K C12`` expanded into rational functions (``C22`` up to the scale of each
         column): what the factored form avoids; only for small systems."""

@@ -85,3 +85,19 @@ def test_factored_in_text_and_json():
     assert "C22 factored: the joint velocities of each arm are K_arm u" in text.stdout
     home = json.loads(runner.invoke(app, ["analyze", "paper-case1-hard", "--json"]).stdout)
     assert home["factored"] is None
+
+
+def test_factored_latex_renders():
+    """The LaTeX of the factored form names every arm and factor; its equations and
+    factors (not the matrices, which mathtext does not typeset) are read by
+    matplotlib's mathtext."""
+    from matplotlib.mathtext import MathTextParser
+
+    f = coopkin_sym.load("planar-two-fingers").analyze(generic=True).coordinated_factored()
+    lines = f.latex().splitlines()
+    assert len(lines) == 2 * len(f.arms) + len(f.factors)
+    assert all(f"K_{{\\mathrm{{{arm.name}}}}}" in f.latex() for arm in f.arms)
+    parser = MathTextParser("agg")
+    for line in lines[0:2 * len(f.arms):2] + lines[2 * len(f.arms):]:
+        parser.parse(f"${line}$")
+    assert f._repr_latex_().startswith("$$")
