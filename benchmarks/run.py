@@ -59,6 +59,8 @@ def _row(benchmark: str, case: str, note: str) -> dict:
 def _seconds(v) -> str:
     if v is None:
         return "-"
+    if isinstance(v, str):          # already written (a capped run: ">= 60")
+        return v
     if v >= 100:
         return f"{v:.0f}"
     if v >= 1:
@@ -72,6 +74,8 @@ def _ratio(row: dict) -> str:
     v = row.get("ratio")
     if v is None:
         return "-"
+    if isinstance(v, str):
+        return v
     bound = ">= " if "lower bound" in (row.get("note") or "") else ""
     return f"{bound}{v:.3g}"
 

@@ -13,14 +13,11 @@ need much less:
 
   - *Size*: a rank is at most the number of rows and of columns; ``rank Q`` is at most
     ``rank H G^T + rank H D`` and ``rank H D + dim``.
-  - *Kernel*: a rank ``rho`` found at a point is exact when ``ncols - rho`` independent
-    polynomial vectors are verified, exactly, to lie in the nullspace. They are built
-    by Cramer's rule from a ``rho x rho`` submatrix that is nonsingular at the point
-    (so nonsingular generically), and each is checked against every row with exact
-    polynomial arithmetic. This is done for each arm's ``H D`` block, for ``H G^T``
-    (six columns) and for the object constraints left once every arm's joints are
-    eliminated (six columns; rows ``y H G^T`` with ``y`` a verified left-kernel vector
-    of the arm's block), whose rank added to ``rank H D`` is ``rank Q``.
+  - *Elimination*: the blocks the sizes leave open are ranked exactly over the field
+    by fraction-free elimination: ``H G^T`` (six columns), each arm's joint columns
+    eliminated from its own rows (``rank H D``), then the six object columns left
+    over from every arm (their rank added to ``rank H D`` is ``rank Q``). This runs
+    within a time bound.
 
 * **Otherwise probabilistic, and said so.** A rank below its generic value at a point
   means a nonzero minor vanishes there; with coordinates drawn uniformly from
@@ -56,7 +53,7 @@ from coopkin_sym.model.model import Model
 SAMPLE_BITS = 62
 #: Independent random points (each one multiplies the error exponent).
 POINTS = 2
-#: Wall-clock seconds spent on the kernel certificates before the result is given as
+#: Wall-clock seconds spent on the exact eliminations before the result is given as
 #: probabilistic (the numbers themselves never wait on it longer).
 CERTIFY_SECONDS = 2.0
 
@@ -66,7 +63,7 @@ class RankBound:
     """One rank behind the numbers and how its value is known.
 
     ``how`` is ``"size"`` (it equals a bound from the matrix sizes or other certified
-    ranks), ``"kernel"`` (verified nullspace vectors), ``"elimination"`` (computed over
+    ranks), ``"elimination"`` (computed over
     the field of rational functions), ``"point"`` (no variable: the exact rank) or
     ``"sampled"`` (a lower bound at random points, not certified).
 
@@ -104,7 +101,7 @@ class NumbersCertificate:
 
     Example
     -------
-    >>> c = NumbersCertificate.from_ranks([RankBound("Q", 3, "kernel")], points=2)
+    >>> c = NumbersCertificate.from_ranks([RankBound("Q", 3, "elimination")], points=2)
     >>> c.exact, c.error_bits
     (True, None)
     """
@@ -159,9 +156,6 @@ class _Sampled:
     q: int = 0
     gt: int = 0
     arms: list[int] = field(default_factory=list)
-    point: list[int] | None = None             # the point giving the best rank of Q
-    values_gt: list[list[int]] | None = None
-    values_arm: list = field(default_factory=list)
 
 
 def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
@@ -182,7 +176,7 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     points, seed
         How many random points, and a seed (``None``: fresh system randomness).
     certify_seconds
-        Wall-clock bound of the kernel certificates (``None``: no bound).
+        Wall-clock bound of the exact eliminations (``None``: no bound).
 
     Example
     -------
@@ -212,7 +206,7 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     rng = random.Random(seed) if seed is not None else random.SystemRandom()
     bound = 2 ** SAMPLE_BITS
     count = points if nvars else 1
-    best = _Sampled(arms=[-1] * len(arm_blocks), values_arm=[None] * len(arm_blocks))
+    best = _Sampled(arms=[-1] * len(arm_blocks))
     best.q = best.gt = -1
     for _ in range(count):
         check("the ranks at random points")
@@ -220,14 +214,14 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
         values = _value_matrix(q_rows, point)
         rq = _rank(values, all_rows, all_cols)
         if rq > best.q:
-            best.q, best.point = rq, point
+            best.q = rq
         rg = _rank(values, all_rows, gt_cols)
         if rg > best.gt:
-            best.gt, best.values_gt = rg, values
+            best.gt = rg
         for k, (rows, cols) in enumerate(arm_blocks):
             ra = _rank(values, rows, cols)
             if ra > best.arms[k]:
-                best.arms[k], best.values_arm[k] = ra, values
+                best.arms[k] = ra
     rd = sum(best.arms)
     if not nvars:
         ranks = [RankBound("Q", best.q, "point"), RankBound("Gt", best.gt, "point"),
