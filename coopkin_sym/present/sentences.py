@@ -23,6 +23,8 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import sympy as sp
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.polyerrors import BasePolynomialError
 
 from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis
@@ -57,16 +59,114 @@ def _is_zero(e: sp.Expr) -> bool:
     return radicals and sp.radsimp(sp.expand(e)) == 0
 
 
+class _Exprs:
+    """Arithmetic on SymPy expressions with simplification for zero tests: the way
+    entries are compared when they do not all lie in one field SymPy can build."""
+
+    def of(self, e: sp.Expr) -> sp.Expr:
+        return e
+
+    def is_zero(self, x: sp.Expr) -> bool:
+        return _is_zero(x)
+
+    def div(self, a: sp.Expr, b: sp.Expr) -> sp.Expr:
+        return sp.radsimp(sp.cancel(a / b))
+
+    def to_sympy(self, x: sp.Expr) -> sp.Expr:
+        return x
+
+    def rank(self, rows: list[list[sp.Expr]]) -> int:
+        return sp.Matrix(rows).rank(simplify=True)
+
+
+class _Field:
+    """The entries as elements of one exact field that SymPy builds for them (``QQ``,
+    ``QQ(L, t_q1)``, ``QQ<sqrt(3)>(L)``, ...): sums, products and zero tests are then
+    polynomial arithmetic, not simplification of expressions."""
+
+    def __init__(self, domain, exprs: Sequence[sp.Expr], elements: Sequence) -> None:
+        self.domain = domain
+        self._elements = dict(zip(exprs, elements, strict=True))
+
+    @staticmethod
+    def of_entries(exprs: Sequence[sp.Expr]) -> _Field | _Exprs:
+        """The field of ``exprs``: rational functions in their symbols over the
+        rationals or over the number field of their radicals; the expression arithmetic
+        when some entry does not lie in it.
+
+        Example
+        -------
+        >>> L = sp.Symbol("L")
+        >>> _Field.of_entries([sp.sqrt(3) * L, 1 / (1 + L)]).domain
+        QQ<sqrt(3)>(L)
+        """
+        if not all(isinstance(e, int | sp.Expr) for e in exprs):
+            return _Exprs()
+        exprs = list(dict.fromkeys(sp.Integer(e) if isinstance(e, int) else e for e in exprs))
+        symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=sp.default_sort_key)
+        radicals = sorted({p for e in exprs for p in e.atoms(sp.Pow)
+                           if p.base.is_Rational and p.exp.is_Rational and not p.exp.is_Integer},
+                          key=sp.default_sort_key)
+        try:
+            ground = sp.QQ.algebraic_field(*radicals) if radicals else sp.QQ
+            domain = ground.frac_field(*symbols) if symbols else ground
+            elements = [domain.from_sympy(e) for e in exprs]
+        except (BasePolynomialError, NotImplementedError, ValueError, TypeError):
+            return _Exprs()
+        return _Field(domain, exprs, elements)
+
+    def of(self, e: sp.Expr):
+        return self._elements[e]
+
+    def is_zero(self, x) -> bool:
+        return self.domain.is_zero(x)
+
+    def div(self, a, b):
+        return a / b
+
+    def to_sympy(self, x) -> sp.Expr:
+        return self.domain.to_sympy(x)
+
+    def rank(self, rows: list[list]) -> int:
+        return DomainMatrix(rows, (len(rows), len(rows[0])), self.domain).rank()
+
+
+def _exact_points(contacts) -> list[tuple[str, list[sp.Expr]]]:
+    return [(name, [exact_expr(x, None, f"point of {name}") for x in c])
+            for name, c in contacts]
+
+
+def _field(vectors: Sequence[Sequence[sp.Expr]],
+           contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> _Field | _Exprs:
+    """One field for the entries of ``vectors`` and of the points of ``contacts`` (all
+    exact SymPy numbers or expressions)."""
+    return _Field.of_entries([e for v in vectors for e in v]
+                             + [x for _, c in contacts for x in c])
+
+
+def _cross(a: Sequence, b: Sequence) -> list:
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def _dot(a: Sequence, b: Sequence):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
 def _too_big(vec) -> bool:
     return any(sp.count_ops(e) > _MAX_OPS for e in vec)
 
 
-def _direction(d: list[sp.Expr]) -> str:
-    nz = [i for i, e in enumerate(d) if not _is_zero(e)]
+def _text(x: sp.Expr) -> str:
+    return sp.sstr(sp.factor(x))
+
+
+def _direction(d: list, field: _Field | _Exprs) -> str:
+    nz = [i for i, e in enumerate(d) if not field.is_zero(e)]
+    exprs = [field.to_sympy(e) for e in d]
     if len(nz) == 1:
-        sign = "-" if (d[nz[0]].is_negative is True) else ""
+        sign = "-" if (exprs[nz[0]].is_negative is True) else ""
         return f"{sign}{'xyz'[nz[0]]}"
-    return "(" + ", ".join(sp.sstr(sp.factor(e)) for e in d) + ")"
+    return "(" + ", ".join(_text(e) for e in exprs) + ")"
 
 
 def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
@@ -75,27 +175,32 @@ def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
             for contact, point in zip(analysis.model.contacts, kin.points, strict=True)]
 
 
-def _line_name(p: list[sp.Expr], w: list[sp.Expr],
-               contacts: Sequence[tuple[str, Sequence[sp.Expr]]]) -> str:
+def _line_name(p: list, w: list, contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
+               field: _Field | _Exprs) -> str:
     on_line: list[tuple[str, Sequence[sp.Expr]]] = []
     for name, c in contacts:
-        rel = sp.Matrix([c[i] - p[i] for i in range(3)])
-        if all(_is_zero(e) for e in rel.cross(sp.Matrix(w))):
+        rel = [field.of(c[i]) - p[i] for i in range(3)]
+        if all(field.is_zero(e) for e in _cross(rel, w)):
             on_line.append((name, c))
-    places = _places(on_line)
+    places = _places(on_line, field)
     if len(places) >= 2:
         return f"the line through {' and '.join(places[:2])}"
-    point = "(" + ", ".join(sp.sstr(sp.factor(e)) for e in p) + ")"
+    point = "(" + ", ".join(_text(field.to_sympy(e)) for e in p) + ")"
     where = f"through {places[0]}" if places else f"through {point}"
-    return f"the line {where} along {_direction(w)}"
+    return f"the line {where} along {_direction(w, field)}"
 
 
-def _places(contacts: Sequence[tuple[str, Sequence[sp.Expr]]]) -> list[str]:
+def _places(contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
+            field: _Field | _Exprs | None = None) -> list[str]:
     """Contact names grouped by position: ``["c1 (= c2)", "c3"]``."""
+    if field is None:
+        contacts = _exact_points(contacts)
+        field = _field((), contacts)
     groups: list[tuple[Sequence[sp.Expr], list[str]]] = []
     for name, c in contacts:
         for where, names in groups:
-            if all(_is_zero(a - b) for a, b in zip(where, c, strict=True)):
+            if all(field.is_zero(field.of(a) - field.of(b))
+                   for a, b in zip(where, c, strict=True)):
                 names.append(name)
                 break
         else:
@@ -116,18 +221,22 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
     'turn freely about c1 (= c2), in every direction'
     """
     vectors = [spatial_twist([exact_expr(e, None, "twist") for e in v]) for v in vectors]
+    contacts = _exact_points(contacts)
     if len(vectors) == 3 and not any(_too_big(v) for v in vectors):
-        for place, c in _places_with_points(contacts):
+        field = _field(vectors, contacts)
+        twists = [[field.of(e) for e in v] for v in vectors]
+        for place, c in _places_with_points(contacts, field):
             # u = (v, w) fixes the point c when v + w x c = 0
-            if all(all(_is_zero(e) for e in sp.Matrix(v[:3]) + sp.Matrix(v[3:]).cross(
-                    sp.Matrix(c))) for v in vectors) and sp.Matrix(
-                    [v[3:] for v in vectors]).rank(simplify=True) == 3:
+            point = [field.of(x) for x in c]
+            if all(all(field.is_zero(a + b) for a, b in zip(
+                    u[:3], _cross(u[3:], point), strict=True)) for u in twists) and \
+                    field.rank([u[3:] for u in twists]) == 3:
                 return f"turn freely about {place}, in every direction"
     return "; ".join(twist_words(v, contacts) for v in vectors)
 
 
-def _places_with_points(contacts):
-    names = _places(contacts)
+def _places_with_points(contacts, field: _Field | _Exprs):
+    names = _places(contacts, field)
     points = []
     for name in names:
         first = name.split(" ")[0]
@@ -141,6 +250,10 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     the entries are too large); lines are named by the contact points (``(name,
     point)`` pairs) on them.
 
+    The geometry is exact: the entries and the contact points are taken into one
+    field of rational functions (over the rationals or a number field) where SymPy can
+    build it, so that no expression has to be simplified.
+
     Example
     -------
     >>> twist_words([0, 0, 0, 0, 0, 1], [("c1", [0, 0, 0]), ("c2", [0, 0, 5])])
@@ -149,18 +262,19 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     u = spatial_twist([exact_expr(e, None, "twist") for e in u])
     if _too_big(u):
         return _TOO_LARGE
-    v, w = u[:3], u[3:]
-    if all(_is_zero(e) for e in w):
-        return f"translate along {_direction(v)}"
-    wv = sp.Matrix(w)
-    vv = sp.Matrix(v)
-    ww = wv.dot(wv)
-    p = [sp.radsimp(sp.cancel(e / ww)) for e in wv.cross(vv)]
-    pitch = sp.radsimp(sp.cancel(wv.dot(vv) / ww))
-    line = _line_name(p, w, contacts)
-    if _is_zero(pitch):
+    contacts = _exact_points(contacts)
+    field = _field([u], contacts)
+    x = [field.of(e) for e in u]
+    v, w = x[:3], x[3:]
+    if all(field.is_zero(e) for e in w):
+        return f"translate along {_direction(v, field)}"
+    ww = _dot(w, w)
+    p = [field.div(e, ww) for e in _cross(w, v)]
+    pitch = field.div(_dot(w, v), ww)
+    line = _line_name(p, w, contacts, field)
+    if field.is_zero(pitch):
         return f"rotate about {line}"
-    return f"screw about {line} with pitch {sp.sstr(sp.factor(pitch))}"
+    return f"screw about {line} with pitch {_text(field.to_sympy(pitch))}"
 
 
 def describe_twist(u, analysis: Analysis) -> str:

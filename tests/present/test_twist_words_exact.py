@@ -1,0 +1,168 @@
+"""Twists in words computed in one exact field agree with the expression arithmetic.
+
+``twist_words`` and ``object_motions_words`` take the entries and the contact points
+into one field SymPy builds for them (rational functions over the rationals or a
+number field). The old way, simplifying SymPy expressions, is kept for entries outside
+such a field; here it is the independent reference on random twists with rational,
+symbolic and quadratic-irrational entries, with contacts put on the axis on purpose.
+The phrases agree word for word; over a number field the field writes the values in
+lowest terms, so there the values are compared exactly instead of as text.
+"""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+
+from coopkin_sym import load
+from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.present import sentences as sentences_module
+from coopkin_sym.present.sentences import (
+    _Exprs,
+    _Field,
+    _field,
+    _is_zero,
+    object_motions_words,
+    sentences,
+    twist_words,
+)
+
+L, t = sp.symbols("L t_q1")
+SQ3 = sp.sqrt(3)
+
+
+def _entry(rng: random.Random, kind: str) -> sp.Expr:
+    c = sp.Rational(rng.randint(-3, 3), rng.randint(1, 3))
+    if kind == "rational" or rng.random() < 0.3:
+        return c
+    if kind == "symbolic":
+        return c * L + rng.randint(-2, 2) * t + rng.randint(-1, 1) * L * t
+    return c + rng.randint(-2, 2) * SQ3 + rng.randint(0, 1) * L
+
+
+def _twist_and_contacts(rng: random.Random, kind: str):
+    w = [_entry(rng, kind) for _ in range(3)]
+    if rng.random() < 0.15:
+        w = [0, 0, 0]
+    v = [_entry(rng, kind) for _ in range(3)]
+    contacts = []
+    wv = sp.Matrix(w)
+    ww = wv.dot(wv)
+    for k in range(rng.randint(0, 3)):
+        if ww != 0 and rng.random() < 0.6:
+            # a point on the axis: p + s w
+            p = wv.cross(sp.Matrix(v)) / ww
+            s = sp.Rational(rng.randint(-2, 2), rng.randint(1, 2))
+            point = [sp.radsimp(sp.cancel(p[i] + s * w[i])) for i in range(3)]
+        else:
+            point = [_entry(rng, kind) for _ in range(3)]
+        contacts.append((f"c{k + 1}", point))
+    return v + w, contacts
+
+
+def _tuple_end(text: str, start: int) -> tuple[int, list[str]]:
+    """The end of the parenthesized tuple opening at ``start`` and its entries."""
+    depth, parts, last = 0, [], start + 1
+    for i in range(start, len(text)):
+        if text[i] == "(":
+            depth += 1
+        elif text[i] == ")":
+            depth -= 1
+            if depth == 0:
+                return i + 1, parts + [text[last:i]]
+        elif text[i] == "," and depth == 1:
+            parts.append(text[last:i])
+            last = i + 2
+    raise AssertionError(f"unbalanced: {text}")
+
+
+def _skeleton(text: str) -> tuple[str, list[sp.Expr]]:
+    """The words of a twist phrase with each written value (points, directions, the
+    pitch) taken out as an exact expression, read back by the package's parser."""
+    words, values, i = [], [], 0
+    while i < len(text):
+        if text.startswith("pitch ", i):
+            words.append("pitch #")
+            values.append(text[i + 6:])
+            break
+        if text[i] == "(" and text[:i].endswith(("along ", "through ")):
+            i, parts = _tuple_end(text, i)
+            words.append("(#)")
+            values += parts
+            continue
+        words.append(text[i])
+        i += 1
+    names = {"L": L, "t_q1": t}
+    return "".join(words), [exact_expr(v, names, "written value") for v in values]
+
+
+def _same_phrase(a: str, b: str) -> bool:
+    (wa, va), (wb, vb) = _skeleton(a), _skeleton(b)
+    return wa == wb and len(va) == len(vb) and all(
+        _is_zero(x - y) for x, y in zip(va, vb, strict=True))
+
+
+def _with_expressions(fn, *args):
+    old = _Field.of_entries
+    try:
+        _Field.of_entries = staticmethod(lambda exprs: _Exprs())
+        return fn(*args)
+    finally:
+        _Field.of_entries = old
+
+
+@pytest.mark.parametrize("kind", ["rational", "symbolic", "quadratic"])
+def test_twist_words_agree_with_the_expression_arithmetic(kind):
+    rng = random.Random(f"twist words {kind}")
+    lines = 0
+    for _ in range(40):
+        u, contacts = _twist_and_contacts(rng, kind)
+        fast = twist_words(u, contacts)
+        slow = _with_expressions(twist_words, u, contacts)
+        assert fast == slow or (kind == "quadratic" and _same_phrase(fast, slow)), \
+            (u, contacts, fast, slow)
+        lines += " through c" in fast
+    assert lines >= 5        # the contacts on the axis were found
+
+
+def test_the_field_is_exact_for_each_kind():
+    assert isinstance(_field([[1, sp.Rational(1, 2)]]), _Field)
+    assert isinstance(_field([[L * t, 1 / (1 + t)]]), _Field)
+    field = _field([[SQ3 * L, 3 * L**2]])
+    assert isinstance(field, _Field)
+    # (sqrt(3) L)^2 - 3 L^2 is zero in the number field: sqrt(3) is not a new symbol
+    assert field.is_zero(field.of(SQ3 * L) * field.of(SQ3 * L) - field.of(3 * L**2))
+    # outside a field of rational functions: the expression arithmetic
+    assert isinstance(_field([[sp.cos(L), 1]]), _Exprs)
+
+
+def test_three_rotations_about_a_symbolic_point_turn_freely():
+    c = [L, 2 * t, 1 - L]
+    cross = sp.Matrix(c)
+    rotations = []
+    for axis in ([1, t, 0], [0, 1, L], [t, 0, 1]):
+        w = sp.Matrix(axis)
+        v = -w.cross(cross)                       # v + w x c = 0
+        rotations.append([*v, *w])
+    contacts = [("c1", c), ("c2", [0, 0, 0])]
+    assert object_motions_words(rotations, contacts) == \
+        "turn freely about c1, in every direction"
+    assert _with_expressions(object_motions_words, rotations, contacts) == \
+        "turn freely about c1, in every direction"
+
+
+def test_generic_sentences_of_a_shipped_example_are_unchanged(monkeypatch):
+    a = load("paper-case1-hard").analyze(generic=True)
+    fast = sentences(a)
+    monkeypatch.setattr(sentences_module._Field, "of_entries",
+                        staticmethod(lambda exprs: _Exprs()))
+    assert fast == sentences(load("paper-case1-hard").analyze(generic=True))
+
+
+def test_the_phrase_comparison_tells_different_values_apart():
+    a = "screw about the line through (1, sqrt(3), L) along x with pitch 2*L"
+    assert _same_phrase(a, "screw about the line through (1, 3/sqrt(3), L) along x with pitch L + L")
+    assert not _same_phrase(a, "screw about the line through (1, sqrt(3), L) along x with pitch L")
+    assert not _same_phrase(a, "rotate about the line through (1, sqrt(3), L) along x")
