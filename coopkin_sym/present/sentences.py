@@ -185,8 +185,8 @@ def _line_name(p: list, w: list, contacts: Sequence[tuple[str, Sequence[sp.Expr]
     places = _places(on_line, field)
     if len(places) >= 2:
         return f"the line through {' and '.join(places[:2])}"
-    point = "(" + ", ".join(_text(field.to_sympy(e)) for e in p) + ")"
-    where = f"through {places[0]}" if places else f"through {point}"
+    where = (f"through {places[0]}" if places else
+             "through (" + ", ".join(_text(field.to_sympy(e)) for e in p) + ")")
     return f"the line {where} along {_direction(w, field)}"
 
 
