@@ -22,13 +22,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+import flint
 import sympy as sp
-from sympy.polys.matrices import DomainMatrix
+from sympy.core.mul import _keep_coeff
 from sympy.polys.polyerrors import BasePolynomialError
 
 from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -61,7 +64,8 @@ def _is_zero(e: sp.Expr) -> bool:
 
 class _Exprs:
     """Arithmetic on SymPy expressions with simplification for zero tests: the way
-    entries are compared when they do not all lie in one field SymPy can build."""
+    entries are compared when they do not all lie in one field of rational functions
+    over the rationals or a number field."""
 
     def of(self, e: sp.Expr) -> sp.Expr:
         return e
@@ -75,31 +79,32 @@ class _Exprs:
     def to_sympy(self, x: sp.Expr) -> sp.Expr:
         return x
 
-    def rank(self, rows: list[list[sp.Expr]]) -> int:
-        return sp.Matrix(rows).rank(simplify=True)
+    def text(self, x) -> str:
+        return sp.sstr(sp.factor(self.to_sympy(x)))
 
 
-class _Field:
+class _Field(_Exprs):
     """The entries as elements of one exact field that SymPy builds for them (``QQ``,
-    ``QQ(L, t_q1)``, ``QQ<sqrt(3)>(L)``, ...): sums, products and zero tests are then
-    polynomial arithmetic, not simplification of expressions."""
+    ``QQ<sqrt(3)>(L)``, ...): sums, products and zero tests are then polynomial
+    arithmetic, not simplification of expressions. Without radicals the field is
+    :class:`_FlintField` (the same, in python-flint).
+
+    Example
+    -------
+    >>> L = sp.Symbol("L")
+    >>> _Field.of_entries([sp.sqrt(3) * L, 1 / (1 + L)]).domain
+    QQ<sqrt(3)>(L)
+    """
 
     def __init__(self, domain, exprs: Sequence[sp.Expr], elements: Sequence) -> None:
         self.domain = domain
         self._elements = dict(zip(exprs, elements, strict=True))
 
     @staticmethod
-    def of_entries(exprs: Sequence[sp.Expr]) -> _Field | _Exprs:
+    def of_entries(exprs: Sequence[sp.Expr]) -> _Exprs:
         """The field of ``exprs``: rational functions in their symbols over the
         rationals or over the number field of their radicals; the expression arithmetic
-        when some entry does not lie in it.
-
-        Example
-        -------
-        >>> L = sp.Symbol("L")
-        >>> _Field.of_entries([sp.sqrt(3) * L, 1 / (1 + L)]).domain
-        QQ<sqrt(3)>(L)
-        """
+        when some entry does not lie in it."""
         if not all(isinstance(e, int | sp.Expr) for e in exprs):
             return _Exprs()
         exprs = list(dict.fromkeys(sp.Integer(e) if isinstance(e, int) else e for e in exprs))
@@ -108,7 +113,9 @@ class _Field:
                            if p.base.is_Rational and p.exp.is_Rational and not p.exp.is_Integer},
                           key=sp.default_sort_key)
         try:
-            ground = sp.QQ.algebraic_field(*radicals) if radicals else sp.QQ
+            if not radicals:
+                return _FlintField(exprs, symbols)
+            ground = sp.QQ.algebraic_field(*radicals)
             domain = ground.frac_field(*symbols) if symbols else ground
             elements = [domain.from_sympy(e) for e in exprs]
         except (BasePolynomialError, NotImplementedError, ValueError, TypeError):
@@ -127,8 +134,54 @@ class _Field:
     def to_sympy(self, x) -> sp.Expr:
         return self.domain.to_sympy(x)
 
-    def rank(self, rows: list[list]) -> int:
-        return DomainMatrix(rows, (len(rows), len(rows[0])), self.domain).rank()
+
+class _FlintField(_Field):
+    """Rational functions over the rationals as reduced pairs of python-flint integer
+    polynomials (:class:`~coopkin_sym.exact.ratfunc.RatFunc`, lex order of the symbols
+    as SymPy sorts them): fast products and gcds, and factored text through flint.
+
+    Example
+    -------
+    >>> L, t = sp.symbols("L t")
+    >>> f = _FlintField([L * t - L, 1 + t], [L, t])
+    >>> f.text(f.of(L * t - L) / f.of(1 + t))
+    'L*(t - 1)/(t + 1)'
+    """
+
+    def __init__(self, exprs: Sequence[sp.Expr], symbols: Sequence[sp.Symbol]) -> None:
+        self.symbols = list(symbols) or [sp.Dummy("x")]
+        self.ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(self.symbols))),
+                                            "lex")
+        domain = sp.ZZ.frac_field(*self.symbols)
+        elements = []
+        for e in exprs:
+            x = domain.from_sympy(e)
+            elements.append(RatFunc.make(self._poly(x.numer), self._poly(x.denom)))
+        self._elements = dict(zip(exprs, elements, strict=True))
+
+    def _poly(self, p) -> flint.fmpz_mpoly:
+        return self.ctx.from_dict({m: int(c) for m, c in p.to_dict().items()})
+
+    def _expr(self, p: flint.fmpz_mpoly) -> sp.Expr:
+        return sp.Poly.from_dict({tuple(int(e) for e in m): int(c) for m, c in
+                                  p.to_dict().items()}, *self.symbols, domain=sp.ZZ).as_expr()
+
+    def is_zero(self, x: RatFunc) -> bool:
+        return x.is_zero()
+
+    def to_sympy(self, x: RatFunc) -> sp.Expr:
+        return self._expr(x.num) / self._expr(x.den)
+
+    def text(self, x: RatFunc) -> str:
+        if x.is_zero():
+            return "0"
+        factors = []
+        content = sp.Integer(1)
+        for poly, power in ((x.num, 1), (x.den, -1)):
+            c, fs = factor(poly)
+            content *= sp.Integer(c) ** power
+            factors += [self._expr(f) ** (m * power) for f, m in fs]
+        return sp.sstr(_keep_coeff(content, sp.Mul(*factors)))  # as sp.factor writes it
 
 
 def _exact_points(contacts) -> list[tuple[str, list[sp.Expr]]]:
@@ -137,7 +190,7 @@ def _exact_points(contacts) -> list[tuple[str, list[sp.Expr]]]:
 
 
 def _field(vectors: Sequence[Sequence[sp.Expr]],
-           contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> _Field | _Exprs:
+           contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> _Exprs:
     """One field for the entries of ``vectors`` and of the points of ``contacts`` (all
     exact SymPy numbers or expressions)."""
     return _Field.of_entries([e for v in vectors for e in v]
@@ -148,6 +201,10 @@ def _cross(a: Sequence, b: Sequence) -> list:
     return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
+def _det3(rows: Sequence[Sequence]):
+    return _dot(rows[0], _cross(rows[1], rows[2]))
+
+
 def _dot(a: Sequence, b: Sequence):
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
@@ -156,17 +213,12 @@ def _too_big(vec) -> bool:
     return any(sp.count_ops(e) > _MAX_OPS for e in vec)
 
 
-def _text(x: sp.Expr) -> str:
-    return sp.sstr(sp.factor(x))
-
-
-def _direction(d: list, field: _Field | _Exprs) -> str:
+def _direction(d: list, field: _Exprs) -> str:
     nz = [i for i, e in enumerate(d) if not field.is_zero(e)]
-    exprs = [field.to_sympy(e) for e in d]
     if len(nz) == 1:
-        sign = "-" if (exprs[nz[0]].is_negative is True) else ""
+        sign = "-" if (field.to_sympy(d[nz[0]]).is_negative is True) else ""
         return f"{sign}{'xyz'[nz[0]]}"
-    return "(" + ", ".join(_text(e) for e in exprs) + ")"
+    return "(" + ", ".join(field.text(e) for e in d) + ")"
 
 
 def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
@@ -175,23 +227,25 @@ def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
             for contact, point in zip(analysis.model.contacts, kin.points, strict=True)]
 
 
-def _line_name(p: list, w: list, contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
-               field: _Field | _Exprs) -> str:
+def _line_name(n: list, ww, w: list, contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
+               field: _Exprs) -> str:
+    """The axis through ``p = n / ww`` along ``w`` (``n = w x v``, ``ww = w.w``), named
+    by the contacts ``c`` on it: ``(ww c - n) x w = 0``, without dividing."""
     on_line: list[tuple[str, Sequence[sp.Expr]]] = []
     for name, c in contacts:
-        rel = [field.of(c[i]) - p[i] for i in range(3)]
+        rel = [ww * field.of(c[i]) - n[i] for i in range(3)]
         if all(field.is_zero(e) for e in _cross(rel, w)):
             on_line.append((name, c))
     places = _places(on_line, field)
     if len(places) >= 2:
         return f"the line through {' and '.join(places[:2])}"
     where = (f"through {places[0]}" if places else
-             "through (" + ", ".join(_text(field.to_sympy(e)) for e in p) + ")")
+             "through (" + ", ".join(field.text(field.div(e, ww)) for e in n) + ")")
     return f"the line {where} along {_direction(w, field)}"
 
 
 def _places(contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
-            field: _Field | _Exprs | None = None) -> list[str]:
+            field: _Exprs | None = None) -> list[str]:
     """Contact names grouped by position: ``["c1 (= c2)", "c3"]``."""
     if field is None:
         contacts = _exact_points(contacts)
@@ -230,12 +284,12 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
             point = [field.of(x) for x in c]
             if all(all(field.is_zero(a + b) for a, b in zip(
                     u[:3], _cross(u[3:], point), strict=True)) for u in twists) and \
-                    field.rank([u[3:] for u in twists]) == 3:
+                    not field.is_zero(_det3([u[3:] for u in twists])):
                 return f"turn freely about {place}, in every direction"
     return "; ".join(twist_words(v, contacts) for v in vectors)
 
 
-def _places_with_points(contacts, field: _Field | _Exprs):
+def _places_with_points(contacts, field: _Exprs):
     names = _places(contacts, field)
     points = []
     for name in names:
@@ -269,12 +323,11 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     if all(field.is_zero(e) for e in w):
         return f"translate along {_direction(v, field)}"
     ww = _dot(w, w)
-    p = [field.div(e, ww) for e in _cross(w, v)]
-    pitch = field.div(_dot(w, v), ww)
-    line = _line_name(p, w, contacts, field)
-    if field.is_zero(pitch):
+    line = _line_name(_cross(w, v), ww, w, contacts, field)
+    wv = _dot(w, v)
+    if field.is_zero(wv):
         return f"rotate about {line}"
-    return f"screw about {line} with pitch {_text(field.to_sympy(pitch))}"
+    return f"screw about {line} with pitch {field.text(field.div(wv, ww))}"
 
 
 def describe_twist(u, analysis: Analysis) -> str:
@@ -294,16 +347,18 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
     'joints q1 and q2 at opposite speeds'
     """
     q = [exact_expr(e, None, "joint velocity") for e in qdot]
-    moving = [(n, e) for n, e in zip(names, q, strict=True) if not _is_zero(e)]
+    field = _field([q])
+    x = [field.of(e) for e in q]
+    moving = [(n, e) for n, e in zip(names, x, strict=True) if not field.is_zero(e)]
     if len(moving) == 1:
         return f"joint {moving[0][0]} alone"
-    if len(moving) == 2 and _is_zero(moving[0][1] - moving[1][1]):
+    if len(moving) == 2 and field.is_zero(moving[0][1] - moving[1][1]):
         return f"joints {moving[0][0]} and {moving[1][0]} at equal speed"
-    if len(moving) == 2 and _is_zero(moving[0][1] + moving[1][1]):
+    if len(moving) == 2 and field.is_zero(moving[0][1] + moving[1][1]):
         return f"joints {moving[0][0]} and {moving[1][0]} at opposite speeds"
     if _too_big(q):
         return f"joints {', '.join(n for n, _ in moving)} together"
-    parts = ", ".join(f"{n}: {sp.sstr(sp.factor(e))}" for n, e in moving)
+    parts = ", ".join(f"{n}: {field.text(e)}" for n, e in moving)
     return f"joints in the ratio {parts}"
 
 

@@ -24,6 +24,7 @@ from coopkin_sym.present.sentences import (
     _Field,
     _field,
     _is_zero,
+    joint_motion_words,
     object_motions_words,
     sentences,
     twist_words,
@@ -104,6 +105,20 @@ def _same_phrase(a: str, b: str) -> bool:
         _is_zero(x - y) for x, y in zip(va, vb, strict=True))
 
 
+def _same_ratio(a: str, b: str) -> bool:
+    """Two "joints in the ratio q1: e1, q2: e2" phrases name the same joints with
+    exactly equal values."""
+    head = "joints in the ratio "
+    if not (a.startswith(head) and b.startswith(head)):
+        return False
+    pa = [x.split(": ") for x in a[len(head):].split(", ")]
+    pb = [x.split(": ") for x in b[len(head):].split(", ")]
+    names = {"L": L, "t_q1": t}
+    return [n for n, _ in pa] == [n for n, _ in pb] and all(
+        _is_zero(exact_expr(x, names, "value") - exact_expr(y, names, "value"))
+        for (_, x), (_, y) in zip(pa, pb, strict=True))
+
+
 def _with_expressions(fn, *args):
     old = _Field.of_entries
     try:
@@ -163,6 +178,25 @@ def test_generic_sentences_of_a_shipped_example_are_unchanged(monkeypatch):
 
 def test_the_phrase_comparison_tells_different_values_apart():
     a = "screw about the line through (1, sqrt(3), L) along x with pitch 2*L"
-    assert _same_phrase(a, "screw about the line through (1, 3/sqrt(3), L) along x with pitch L + L")
+    assert _same_phrase(a, "screw about the line through (1, 3/sqrt(3), L) along x with "
+                           "pitch L + L")
     assert not _same_phrase(a, "screw about the line through (1, sqrt(3), L) along x with pitch L")
     assert not _same_phrase(a, "rotate about the line through (1, sqrt(3), L) along x")
+
+
+@pytest.mark.parametrize("kind", ["rational", "symbolic", "quadratic"])
+def test_joint_motion_words_agree_with_the_expression_arithmetic(kind):
+    rng = random.Random(f"joint words {kind}")
+    names = ["q1", "q2", "q3", "q4"]
+    said = set()
+    for _ in range(60):
+        qdot = [_entry(rng, kind) if rng.random() < 0.6 else 0 for _ in names]
+        if rng.random() < 0.4:                  # a pair at equal or opposite speeds
+            e = _entry(rng, kind)
+            qdot = [0, e * (1 + L - L), 0, rng.choice([1, -1]) * e]
+        fast = joint_motion_words(qdot, names)
+        slow = _with_expressions(joint_motion_words, qdot, names)
+        assert fast == slow or (kind == "quadratic" and _same_ratio(fast, slow)), \
+            (qdot, fast, slow)
+        said.add(fast.split(" ")[0] + " " + fast.split(" ")[-1])
+    assert len(said) >= 3
