@@ -20,6 +20,8 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 from __future__ import annotations
 
 from collections.abc import Sequence
+from fractions import Fraction
+from math import lcm
 from typing import TYPE_CHECKING
 
 import flint
@@ -152,12 +154,37 @@ class _FlintField(_Field):
         self.symbols = list(symbols) or [sp.Dummy("x")]
         self.ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(self.symbols))),
                                             "lex")
-        domain = sp.ZZ.frac_field(*self.symbols)
-        elements = []
-        for e in exprs:
-            x = domain.from_sympy(e)
-            elements.append(RatFunc.make(self._poly(x.numer), self._poly(x.denom)))
-        self._elements = dict(zip(exprs, elements, strict=True))
+        self._index = {x: k for k, x in enumerate(self.symbols)}
+        self._domain = sp.ZZ.frac_field(*self.symbols)
+        self._elements = {e: self._element(e) for e in exprs}
+
+    def _element(self, e: sp.Expr) -> RatFunc:
+        num, den = sp.fraction(e)
+        fast = [self._sum_of_monomials(num), self._sum_of_monomials(den)]
+        if None not in fast:
+            (n, dn), (d, dd) = fast
+            return RatFunc.make(n * dd, d * dn)
+        x = self._domain.from_sympy(e)
+        return RatFunc.make(self._poly(x.numer), self._poly(x.denom))
+
+    def _sum_of_monomials(self, p: sp.Expr) -> tuple[flint.fmpz_mpoly, int] | None:
+        """``p`` as ``(P, d)`` with ``p = P / d`` when it is a sum of rational multiples
+        of monomials (as the blocks are), read term by term; ``None`` otherwise."""
+        terms: dict[tuple[int, ...], Fraction] = {}
+        for term in sp.Add.make_args(p):
+            coeff, mono = Fraction(1), [0] * len(self.symbols)
+            for f in sp.Mul.make_args(term):
+                base, exp = f.as_base_exp()
+                if f.is_Rational:
+                    coeff *= Fraction(int(f.p), int(f.q))
+                elif base in self._index and exp.is_Integer and exp > 0:
+                    mono[self._index[base]] += int(exp)
+                else:
+                    return None
+            key = tuple(mono)
+            terms[key] = terms.get(key, Fraction(0)) + coeff
+        d = lcm(*(c.denominator for c in terms.values())) if terms else 1
+        return self.ctx.from_dict({m: int(c * d) for m, c in terms.items() if c}), d
 
     def _poly(self, p) -> flint.fmpz_mpoly:
         return self.ctx.from_dict({m: int(c) for m, c in p.to_dict().items()})

@@ -212,15 +212,31 @@ def object_frame_text(frame) -> str:
     return f"v at the object point ({point}), in the object axes, {axes}"
 
 
+def _is_monomial(a: sp.Expr) -> bool:
+    return all(f.is_Number or f.is_Symbol or (f.is_Pow and f.base.is_Symbol)
+               for f in sp.Mul.make_args(a))
+
+
+def _terms(p: sp.Expr) -> int:
+    """The number of terms of ``p`` expanded (counted without expanding when it is a
+    sum of monomials already, as the blocks are)."""
+    args = sp.Add.make_args(p)
+    if all(_is_monomial(a) for a in args):
+        return len(args)
+    return len(sp.Add.make_args(sp.expand(p)))
+
+
 def _cell(e: sp.Expr, width: int = 48) -> str:
     """An entry as text, or its size when it is too long to read in a table."""
-    text = sp.sstr(e)
-    if len(text) <= width:
-        return text
     num, den = sp.fraction(e)
-    terms = len(sp.Add.make_args(sp.expand(num)))
-    extra = "" if den == 1 else f"/{len(sp.Add.make_args(sp.expand(den)))}"
-    return f"<{terms}{extra} terms>"
+    # a sum of more than width/3 terms cannot be written in width characters (each
+    # term takes one and each " + " three): no need to print it to know
+    if len(sp.Add.make_args(num)) * 4 - 3 <= width:
+        text = sp.sstr(e)
+        if len(text) <= width:
+            return text
+    extra = "" if den == 1 else f"/{_terms(den)}"
+    return f"<{_terms(num)}{extra} terms>"
 
 
 def block_table(mat: sp.Matrix, labels: list[str]) -> list[str]:

@@ -18,11 +18,13 @@ import sympy as sp
 
 from coopkin_sym import load
 from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.present import sentences as sentences_module
 from coopkin_sym.present.sentences import (
     _Exprs,
     _Field,
     _field,
+    _FlintField,
     _is_zero,
     joint_motion_words,
     object_motions_words,
@@ -200,3 +202,19 @@ def test_joint_motion_words_agree_with_the_expression_arithmetic(kind):
             (qdot, fast, slow)
         said.add(fast.split(" ")[0] + " " + fast.split(" ")[-1])
     assert len(said) >= 3
+
+
+def test_flint_entries_read_term_by_term_equal_sympy_fractions():
+    rng = random.Random("flint entries")
+    exprs = []
+    for _ in range(60):
+        a, b = _entry(rng, "symbolic"), _entry(rng, "symbolic")
+        exprs += [a, a * b, sp.expand(a * b) / (1 + t**2), (a + 1) / (b * L + 2),
+                  sp.Rational(rng.randint(-9, 9), rng.randint(1, 9))]
+    field = _Field.of_entries(exprs)
+    assert isinstance(field, _FlintField)
+    domain = sp.ZZ.frac_field(*field.symbols)
+    for e in dict.fromkeys(exprs):
+        x = domain.from_sympy(e)
+        assert field.of(e) == RatFunc.make(field._poly(x.numer), field._poly(x.denom)), e
+        assert sp.cancel(field.to_sympy(field.of(e)) - e) == 0
