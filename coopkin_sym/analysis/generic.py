@@ -37,7 +37,7 @@ Example
 from __future__ import annotations
 
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -160,7 +160,8 @@ class _Sampled:
 
 def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
                     points: int = POINTS, seed: int | None = None,
-                    certify_seconds: float | None = CERTIFY_SECONDS
+                    certify_seconds: float | None = CERTIFY_SECONDS,
+                    values_at: Callable[[Sequence[int]], list[list[int]]] | None = None
                     ) -> tuple[Numbers, NumbersCertificate]:
     """The numbers over the fraction field of ``zctx``'s ring, from exact ranks at
     ``points`` random integer points, with their :class:`NumbersCertificate`.
@@ -177,6 +178,10 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
         How many random points, and a seed (``None``: fresh system randomness).
     certify_seconds
         Wall-clock bound of the exact eliminations (``None``: no bound).
+    values_at
+        The integer values of the rows at a point, each row scaled by a nonzero
+        integer (default: the rows evaluated); with it, ``q_rows`` may clear rows only
+        when they are used (:class:`~coopkin_sym.exact.ring.ClearedRows`).
 
     Example
     -------
@@ -211,7 +216,7 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     for _ in range(count):
         check("the ranks at random points")
         point = [rng.randint(-bound, bound) for _ in range(nvars)]
-        values = _value_matrix(q_rows, point)
+        values = values_at(point) if values_at is not None else _value_matrix(q_rows, point)
         rq = _rank(values, all_rows, all_cols)
         if rq > best.q:
             best.q = rq
@@ -247,6 +252,16 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
             how["Gt"] = "elimination"
         if q_bound() == best.q and None not in arm_how:
             return
+        if q_bound() == best.q:
+            # rank Q is known from the sizes: only the open arm blocks are ranked
+            for k, (rows, cols) in enumerate(arm_blocks):
+                if arm_how[k] is None:
+                    block = (q_rows.block(rows, cols) if hasattr(q_rows, "block") else
+                             [[q_rows[i][c] for c in cols] for i in rows])
+                    best.arms[k] = PolyMatrix(block, len(cols), context=zctx).rank()
+                    arm_how[k] = "elimination"
+            if q_bound() == best.q:
+                return
         # arm by arm: each arm's joint columns eliminated from its own rows, then the
         # object rows left over from every arm ranked together (rank Q)
         leftover = [q_rows[i][:dim] for i, o in enumerate(owners) if o is None]

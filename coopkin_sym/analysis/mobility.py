@@ -60,6 +60,7 @@ from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.ratfunc import RatFunc
+from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.exact.sympy_bridge import (
     columns_to_sympy,
     matrix_to_sympy,
@@ -136,9 +137,12 @@ class Analysis(Displayable):
         return len(self.kinematics.Q)
 
     @cached_property
+    def _cleared(self) -> ClearedRows:
+        return ClearedRows(self.kinematics.ring, self.kinematics.Q)
+
+    @cached_property
     def _q_rows(self) -> list:
-        ring = self.kinematics.ring
-        return [ring.clear_row(row) for row in self.kinematics.Q]
+        return list(self._cleared)
 
     @cached_property
     def _decomposition(self) -> Decomposition:
@@ -175,7 +179,8 @@ class Analysis(Displayable):
             return (numbers_from_ranks(m, self.r, *ranks, dim=self.dim),
                     NumbersCertificate.from_ranks(ranks_known, 0))
         kin = self.kinematics
-        return generic_numbers(self._q_rows, self.model, kin.row_contacts, kin.ring.zctx)
+        return generic_numbers(self._cleared, self.model, kin.row_contacts, kin.ring.zctx,
+                               values_at=self._cleared.values_at)
 
     @property
     def numbers(self) -> Numbers:

@@ -123,12 +123,90 @@ class Ring:
         if not row:
             return []
         top = tuple(max(es) for es in zip(*(f.den for f in row), strict=True))
-        nums = [f.num * self.den_poly(tuple(a - b for a, b in zip(top, f.den, strict=True)))
-                for f in row]
-        dens = [int(c.q) for p in nums for c in p.to_dict().values()]
-        d = lcm(*dens) if dens else 1
-        return [self.zctx.from_dict({m: int(c.p) * (d // int(c.q))
-                                     for m, c in p.to_dict().items()}) for p in nums]
+        factors: dict[tuple[int, ...], flint.fmpq_mpoly] = {}
+        nums = []
+        for f in row:
+            missing = tuple(a - b for a, b in zip(top, f.den, strict=True))
+            if any(missing):
+                if missing not in factors:
+                    factors[missing] = self.den_poly(missing)
+                nums.append(f.num * factors[missing])
+            else:
+                nums.append(f.num)
+        d = 1
+        for p in nums:
+            for c in p.coeffs():
+                if c.q != 1:
+                    d = lcm(d, int(c.q))
+        out = []
+        for p in nums:
+            if d != 1:
+                p = p * d                                  # integer coefficients now
+            out.append(self.zctx.from_dict(dict(zip(p.monoms(), [int(c.p) for c in p.coeffs()],
+                                                    strict=True))))
+        return out
+
+
+class ClearedRows(Sequence):
+    """The rows of a matrix of :class:`Frac`, each cleared to integer polynomials
+    (:meth:`Ring.clear_row`) when first used; :meth:`values_at` gives the rows' values
+    at an integer point (each row scaled to integers) without clearing any.
+
+    Example
+    -------
+    >>> ring = Ring(["t_q1"], ["t_q1"])
+    >>> rows = ClearedRows(ring, [[ring.cos_of(0), ring.sin_of(0)]])
+    >>> rows.values_at([2])                  # (cos, sin) at t = 2 is (-3/5, 4/5)
+    [[-3, 4]]
+    >>> [str(e) for e in rows[0]]
+    ['-t_q1^2 + 1', '2*t_q1']
+    """
+
+    def __init__(self, ring: Ring, rows: Sequence[Sequence[Frac]]) -> None:
+        self.ring = ring
+        self.fracs = rows
+        self._cleared: dict[int, list[flint.fmpz_mpoly]] = {}
+
+    def __len__(self) -> int:
+        return len(self.fracs)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[k] for k in range(*i.indices(len(self)))]
+        if i < 0:
+            i += len(self)
+        if i not in self._cleared:
+            self._cleared[i] = self.ring.clear_row(self.fracs[i])
+        return self._cleared[i]
+
+    def block(self, rows: Sequence[int], cols: Sequence[int]) -> list[list[flint.fmpz_mpoly]]:
+        """The block ``rows x cols``, each of its rows cleared on its own (the block's
+        rank and nullspace, not the whole rows', are kept)."""
+        return [self.ring.clear_row([self.fracs[i][c] for c in cols]) for i in rows]
+
+    def values_at(self, point: Sequence[int]) -> list[list[int]]:
+        """The rows at ``point`` (integers; the denominators ``1 + t^2`` never vanish
+        there), each row times one positive integer so that its values are integers:
+        the same rank as the matrix at the point, in any set of rows and columns."""
+        out = []
+        factor_values = [int(f(*point)) for f in self.ring.den_factors]
+        for row in self.fracs:
+            values = []
+            for f in row:
+                if f.num.is_zero():
+                    values.append(flint.fmpq(0))
+                    continue
+                den = 1
+                for v, e in zip(factor_values, f.den, strict=True):
+                    if e:
+                        den *= v**e
+                values.append(f.num(*point) / den)
+            d = 1
+            for v in values:
+                if v.q != 1:
+                    d = lcm(d, int(v.q))
+            out.append([int(v.p) * (d // int(v.q)) for v in values])
+        return out
 
 
 def _to_fmpq(x) -> flint.fmpq:

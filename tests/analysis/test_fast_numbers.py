@@ -15,6 +15,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.generic import NumbersCertificate, generic_numbers
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.analysis.points import point_ranks
+from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.builders import planar_hand, spatial_hand
 from coopkin_sym.model.configuration import Configuration
 
@@ -63,12 +64,45 @@ def test_generic_numbers_agree_with_elimination(data):
     assert certified == exact
     assert cert.exact and cert.error_bits is None
     assert all(r.how in {"size", "elimination"} for r in cert.ranks)
+    # rows cleared only where used, values at the points from the fractions
+    lazy = ClearedRows(kin.ring, kin.Q)
+    fast, cert_fast = generic_numbers(lazy, model, kin.row_contacts, kin.ring.zctx,
+                                      seed=seed, certify_seconds=None,
+                                      values_at=lazy.values_at)
+    assert fast == exact and cert_fast.exact and cert_fast.error_bits is None
     sampled, cert0 = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
                                      seed=seed, certify_seconds=0)
     assert sampled == exact
     if not cert0.exact:
         assert cert0.error_bits >= 100
         assert any(r.how == "sampled" for r in cert0.ranks)
+
+
+@settings(max_examples=30, **SETTINGS)
+@given(st.data())
+def test_values_at_a_point_are_the_cleared_rows_scaled(data):
+    """Each row of ``ClearedRows.values_at`` is a positive multiple of the cleared
+    row's values at the point, and cleared blocks are the blocks of the rows scaled."""
+    spec = data.draw(random_systems(with_parameter=data.draw(st.booleans())))
+    model = coopkin_sym.load(spec).model
+    kin = kinematics.build(model, Configuration.parse(model, None, "all"))
+    lazy = ClearedRows(kin.ring, kin.Q)
+    nvars = kin.ring.zctx.nvars()
+    point = data.draw(st.lists(st.integers(-2**62, 2**62), min_size=nvars, max_size=nvars))
+    for row, values in zip((kin.ring.clear_row(r) for r in kin.Q), lazy.values_at(point),
+                           strict=True):
+        exact = [0 if p.is_zero() else int(p(*point)) for p in row]
+        # values = c * exact with c > 0: every 2x2 "minor" vanishes, signs agree
+        assert all(a * y == b * x for a, x in zip(values, exact, strict=True)
+                   for b, y in zip(values, exact, strict=True))
+        assert all((a > 0) == (x > 0) and (a < 0) == (x < 0)
+                   for a, x in zip(values, exact, strict=True))
+    cols = data.draw(st.lists(st.integers(0, len(kin.Q[0]) - 1), min_size=1, unique=True))
+    for i, row in enumerate(lazy.block(range(len(kin.Q)), cols)):
+        full = kin.ring.clear_row(kin.Q[i])
+        picked = [full[c] for c in cols]
+        assert all((a * y - b * x).is_zero() for a, x in zip(row, picked, strict=True)
+                   for b, y in zip(row, picked, strict=True))
 
 
 @pytest.mark.parametrize("spec", ["paper-case1-hard", "paper-case2-hard",
