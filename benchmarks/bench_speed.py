@@ -30,6 +30,7 @@ Run ``python benchmarks/bench_speed.py [--quick] [--plot FILE]``.
 
 from __future__ import annotations
 
+import compileall
 import math
 import multiprocessing as mp
 import os
@@ -291,15 +292,20 @@ def bench_point(source, count: int, log=print) -> list[dict]:
 
 
 # ------------------------------------------------------------------------ (2) cold CLI
-def _wall(cmd: list[str], env: dict, repeats: int) -> tuple[float, int]:
-    times, rc = [], 0
+def _walls(cmds: dict[str, list[str]], env: dict, repeats: int
+           ) -> dict[str, tuple[float, int]]:
+    """Median wall time and any nonzero exit code of each command, the commands run in
+    turn ``repeats`` times (interleaved, so that a busy moment slows all of them)."""
+    times: dict[str, list[float]] = {k: [] for k in cmds}
+    rcs = dict.fromkeys(cmds, 0)
     for _ in range(repeats):
-        t0 = time.perf_counter()
-        proc = subprocess.run(cmd, env=env, stdout=subprocess.DEVNULL,
-                              stderr=subprocess.PIPE, check=False)
-        times.append(time.perf_counter() - t0)
-        rc = rc or proc.returncode
-    return statistics.median(times), rc
+        for key, cmd in cmds.items():
+            t0 = time.perf_counter()
+            proc = subprocess.run(cmd, env=env, stdout=subprocess.DEVNULL,
+                                  stderr=subprocess.PIPE, check=False)
+            times[key].append(time.perf_counter() - t0)
+            rcs[key] = rcs[key] or proc.returncode
+    return {k: (statistics.median(v), rcs[k]) for k, v in times.items()}
 
 
 def bench_cli(repeats: int, log=print) -> list[dict]:
@@ -309,14 +315,20 @@ def bench_cli(repeats: int, log=print) -> list[dict]:
                                                   if env.get("PYTHONPATH") else []))
     py = sys.executable
     at = "q1=pi/2,L=1"
+    # byte-compiled first, as a regular install is (an editable one under
+    # PYTHONDONTWRITEBYTECODE would compile every module at every start)
+    compileall.compile_dir(str(Path(coopkin_sym.__file__).resolve().parent), quiet=1)
     log(f"  cold CLI: {repeats} runs of each command ...")
-    cli, cli_rc = _wall([py, "-m", "coopkin_sym", "analyze", "paper-case2-hard", "--at", at],
-                        env, repeats)
-    imp_cli, _ = _wall([py, "-c", "import coopkin_sym.cli"], env, repeats)
-    imp_sympy, _ = _wall([py, "-c", "import sympy"], env, repeats)
-    bare, _ = _wall([py, "-c", "pass"], env, repeats)
+    walls = _walls({"cli": [py, "-m", "coopkin_sym", "analyze", "paper-case2-hard", "--at",
+                            at],
+                    "import cli": [py, "-c", "import coopkin_sym.cli"],
+                    "import sympy": [py, "-c", "import sympy"],
+                    "bare": [py, "-c", "pass"]}, env, repeats)
+    (cli, cli_rc), (imp_cli, _) = walls["cli"], walls["import cli"]
+    imp_sympy, bare = walls["import sympy"][0], walls["bare"][0]
     case = f"python -m coopkin_sym analyze paper-case2-hard --at \"{at}\""
-    head = f"median of {repeats} runs" + (f"; CLI exit code {cli_rc}" if cli_rc else "")
+    head = (f"median of {repeats} interleaved runs, package byte-compiled"
+            + (f"; CLI exit code {cli_rc}" if cli_rc else ""))
     rows = [
         {"benchmark": "cold CLI", "case": case, "ours_s": cli,
          "baseline": "python -c \"import sympy\"", "baseline_s": imp_sympy,
@@ -731,7 +743,7 @@ def run(quick: bool = False, log=print) -> list[dict]:
     parts: list[tuple[str, Callable[[], list[dict]]]] = [
         (f"point analysis {_label(s)}", lambda s=s: bench_point(s, count, log))
         for s in POINT_CASES]
-    parts += [("cold CLI", lambda: bench_cli(3 if quick else 5, log)),
+    parts += [("cold CLI", lambda: bench_cli(3 if quick else 11, log)),
               ("generic numbers", lambda: bench_generic_numbers(quick, log)),
               ("blocks", lambda: bench_blocks(quick, log)),
               ("scale-out", lambda: bench_scale_out(quick, log)),
