@@ -20,20 +20,14 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 from __future__ import annotations
 
 from collections.abc import Sequence
-from fractions import Fraction
-from math import lcm
 from typing import TYPE_CHECKING
 
-import flint
 import sympy as sp
-from sympy.core.mul import _keep_coeff
-from sympy.polys.polyerrors import BasePolynomialError
 
 from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis
-from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.entry_field import ExprArithmetic, field_of
 from coopkin_sym.exact.parse import exact_expr
-from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -56,172 +50,15 @@ def _count(n: int, noun: str) -> str:
     return f"{word} {noun}{'' if n == 1 else 's'}"
 
 
-def _is_zero(e: sp.Expr) -> bool:
-    e = sp.cancel(e)
-    if e == 0:
-        return True
-    radicals = any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
-    return radicals and sp.radsimp(sp.expand(e)) == 0
-
-
-class _Exprs:
-    """Arithmetic on SymPy expressions with simplification for zero tests: the way
-    entries are compared when they do not all lie in one field of rational functions
-    over the rationals or a number field."""
-
-    def of(self, e: sp.Expr) -> sp.Expr:
-        return e
-
-    def is_zero(self, x: sp.Expr) -> bool:
-        return _is_zero(x)
-
-    def div(self, a: sp.Expr, b: sp.Expr) -> sp.Expr:
-        return sp.radsimp(sp.cancel(a / b))
-
-    def to_sympy(self, x: sp.Expr) -> sp.Expr:
-        return x
-
-    def text(self, x) -> str:
-        return sp.sstr(sp.factor(self.to_sympy(x)))
-
-
-class _Field(_Exprs):
-    """The entries as elements of one exact field that SymPy builds for them (``QQ``,
-    ``QQ<sqrt(3)>(L)``, ...): sums, products and zero tests are then polynomial
-    arithmetic, not simplification of expressions. Without radicals the field is
-    :class:`_FlintField` (the same, in python-flint).
-
-    Example
-    -------
-    >>> L = sp.Symbol("L")
-    >>> _Field.of_entries([sp.sqrt(3) * L, 1 / (1 + L)]).domain
-    QQ<sqrt(3)>(L)
-    """
-
-    def __init__(self, domain, exprs: Sequence[sp.Expr], elements: Sequence) -> None:
-        self.domain = domain
-        self._elements = dict(zip(exprs, elements, strict=True))
-
-    @staticmethod
-    def of_entries(exprs: Sequence[sp.Expr]) -> _Exprs:
-        """The field of ``exprs``: rational functions in their symbols over the
-        rationals or over the number field of their radicals; the expression arithmetic
-        when some entry does not lie in it."""
-        if not all(isinstance(e, int | sp.Expr) for e in exprs):
-            return _Exprs()
-        exprs = list(dict.fromkeys(sp.Integer(e) if isinstance(e, int) else e for e in exprs))
-        symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=sp.default_sort_key)
-        radicals = sorted({p for e in exprs for p in e.atoms(sp.Pow)
-                           if p.base.is_Rational and p.exp.is_Rational and not p.exp.is_Integer},
-                          key=sp.default_sort_key)
-        try:
-            if not radicals:
-                return _FlintField(exprs, symbols)
-            ground = sp.QQ.algebraic_field(*radicals)
-            domain = ground.frac_field(*symbols) if symbols else ground
-            elements = [domain.from_sympy(e) for e in exprs]
-        except (BasePolynomialError, NotImplementedError, ValueError, TypeError):
-            return _Exprs()
-        return _Field(domain, exprs, elements)
-
-    def of(self, e: sp.Expr):
-        return self._elements[e]
-
-    def is_zero(self, x) -> bool:
-        return self.domain.is_zero(x)
-
-    def div(self, a, b):
-        return a / b
-
-    def to_sympy(self, x) -> sp.Expr:
-        return self.domain.to_sympy(x)
-
-
-class _FlintField(_Field):
-    """Rational functions over the rationals as reduced pairs of python-flint integer
-    polynomials (:class:`~coopkin_sym.exact.ratfunc.RatFunc`, lex order of the symbols
-    as SymPy sorts them): fast products and gcds, and factored text through flint.
-
-    Example
-    -------
-    >>> L, t = sp.symbols("L t")
-    >>> f = _FlintField([L * t - L, 1 + t], [L, t])
-    >>> f.text(f.of(L * t - L) / f.of(1 + t))
-    'L*(t - 1)/(t + 1)'
-    """
-
-    def __init__(self, exprs: Sequence[sp.Expr], symbols: Sequence[sp.Symbol]) -> None:
-        self.symbols = list(symbols) or [sp.Dummy("x")]
-        self.ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{k}" for k in range(len(self.symbols))),
-                                            "lex")
-        self._index = {x: k for k, x in enumerate(self.symbols)}
-        self._domain = sp.ZZ.frac_field(*self.symbols)
-        self._elements = {e: self._element(e) for e in exprs}
-
-    def _element(self, e: sp.Expr) -> RatFunc:
-        num, den = sp.fraction(e)
-        fast = [self._sum_of_monomials(num), self._sum_of_monomials(den)]
-        if None not in fast:
-            (n, dn), (d, dd) = fast
-            return RatFunc.make(n * dd, d * dn)
-        x = self._domain.from_sympy(e)
-        return RatFunc.make(self._poly(x.numer), self._poly(x.denom))
-
-    def _sum_of_monomials(self, p: sp.Expr) -> tuple[flint.fmpz_mpoly, int] | None:
-        """``p`` as ``(P, d)`` with ``p = P / d`` when it is a sum of rational multiples
-        of monomials (as the blocks are), read term by term; ``None`` otherwise."""
-        terms: dict[tuple[int, ...], Fraction] = {}
-        for term in sp.Add.make_args(p):
-            coeff, mono = Fraction(1), [0] * len(self.symbols)
-            for f in sp.Mul.make_args(term):
-                base, exp = f.as_base_exp()
-                if f.is_Rational:
-                    coeff *= Fraction(int(f.p), int(f.q))
-                elif base in self._index and exp.is_Integer and exp > 0:
-                    mono[self._index[base]] += int(exp)
-                else:
-                    return None
-            key = tuple(mono)
-            terms[key] = terms.get(key, Fraction(0)) + coeff
-        d = lcm(*(c.denominator for c in terms.values())) if terms else 1
-        return self.ctx.from_dict({m: int(c * d) for m, c in terms.items() if c}), d
-
-    def _poly(self, p) -> flint.fmpz_mpoly:
-        return self.ctx.from_dict({m: int(c) for m, c in p.to_dict().items()})
-
-    def _expr(self, p: flint.fmpz_mpoly) -> sp.Expr:
-        return sp.Poly.from_dict({tuple(int(e) for e in m): int(c) for m, c in
-                                  p.to_dict().items()}, *self.symbols, domain=sp.ZZ).as_expr()
-
-    def is_zero(self, x: RatFunc) -> bool:
-        return x.is_zero()
-
-    def to_sympy(self, x: RatFunc) -> sp.Expr:
-        return self._expr(x.num) / self._expr(x.den)
-
-    def text(self, x: RatFunc) -> str:
-        if x.is_zero():
-            return "0"
-        factors = []
-        content = sp.Integer(1)
-        for poly, power in ((x.num, 1), (x.den, -1)):
-            c, fs = factor(poly)
-            content *= sp.Integer(c) ** power
-            factors += [self._expr(f) ** (m * power) for f, m in fs]
-        return sp.sstr(_keep_coeff(content, sp.Mul(*factors)))  # as sp.factor writes it
-
-
 def _exact_points(contacts) -> list[tuple[str, list[sp.Expr]]]:
     return [(name, [exact_expr(x, None, f"point of {name}") for x in c])
             for name, c in contacts]
 
 
-def _field(vectors: Sequence[Sequence[sp.Expr]],
-           contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> _Exprs:
-    """One field for the entries of ``vectors`` and of the points of ``contacts`` (all
-    exact SymPy numbers or expressions)."""
-    return _Field.of_entries([e for v in vectors for e in v]
-                             + [x for _, c in contacts for x in c])
+def _field_of(vectors: Sequence[Sequence[sp.Expr]],
+              contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> ExprArithmetic:
+    """One field for the entries of ``vectors`` and the points of ``contacts``."""
+    return field_of(vectors, [c for _, c in contacts])
 
 
 def _cross(a: Sequence, b: Sequence) -> list:
@@ -240,7 +77,7 @@ def _too_big(vec) -> bool:
     return any(sp.count_ops(e) > _MAX_OPS for e in vec)
 
 
-def _direction(d: list, field: _Exprs) -> str:
+def _direction(d: list, field: ExprArithmetic) -> str:
     nz = [i for i, e in enumerate(d) if not field.is_zero(e)]
     if len(nz) == 1:
         sign = "-" if (field.to_sympy(d[nz[0]]).is_negative is True) else ""
@@ -255,7 +92,7 @@ def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
 
 
 def _line_name(n: list, ww, w: list, contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
-               field: _Exprs) -> str:
+               field: ExprArithmetic) -> str:
     """The axis through ``p = n / ww`` along ``w`` (``n = w x v``, ``ww = w.w``), named
     by the contacts ``c`` on it: ``(ww c - n) x w = 0``, without dividing."""
     on_line: list[tuple[str, Sequence[sp.Expr]]] = []
@@ -272,11 +109,11 @@ def _line_name(n: list, ww, w: list, contacts: Sequence[tuple[str, Sequence[sp.E
 
 
 def _places(contacts: Sequence[tuple[str, Sequence[sp.Expr]]],
-            field: _Exprs | None = None) -> list[str]:
+            field: ExprArithmetic | None = None) -> list[str]:
     """Contact names grouped by position: ``["c1 (= c2)", "c3"]``."""
     if field is None:
         contacts = _exact_points(contacts)
-        field = _field((), contacts)
+        field = _field_of((), contacts)
     groups: list[tuple[Sequence[sp.Expr], list[str]]] = []
     for name, c in contacts:
         for where, names in groups:
@@ -304,7 +141,7 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
     vectors = [spatial_twist([exact_expr(e, None, "twist") for e in v]) for v in vectors]
     contacts = _exact_points(contacts)
     if len(vectors) == 3 and not any(_too_big(v) for v in vectors):
-        field = _field(vectors, contacts)
+        field = _field_of(vectors, contacts)
         twists = [[field.of(e) for e in v] for v in vectors]
         for place, c in _places_with_points(contacts, field):
             # u = (v, w) fixes the point c when v + w x c = 0
@@ -316,7 +153,7 @@ def object_motions_words(vectors, contacts: Sequence[tuple[str, Sequence[sp.Expr
     return "; ".join(twist_words(v, contacts) for v in vectors)
 
 
-def _places_with_points(contacts, field: _Exprs):
+def _places_with_points(contacts, field: ExprArithmetic):
     names = _places(contacts, field)
     points = []
     for name in names:
@@ -344,7 +181,7 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     if _too_big(u):
         return _TOO_LARGE
     contacts = _exact_points(contacts)
-    field = _field([u], contacts)
+    field = _field_of([u], contacts)
     x = [field.of(e) for e in u]
     v, w = x[:3], x[3:]
     if all(field.is_zero(e) for e in w):
@@ -374,7 +211,7 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
     'joints q1 and q2 at opposite speeds'
     """
     q = [exact_expr(e, None, "joint velocity") for e in qdot]
-    field = _field([q])
+    field = _field_of([q])
     x = [field.of(e) for e in q]
     moving = [(n, e) for n, e in zip(names, x, strict=True) if not field.is_zero(e)]
     if len(moving) == 1:
