@@ -37,6 +37,9 @@ if TYPE_CHECKING:  # pragma: no cover
 # entries larger than this (in operations) are not simplified for words
 _MAX_OPS = 400
 
+# a point, direction, pitch or ratio longer than this (characters) is named, not written
+_MAX_VALUE = 160
+
 # a motion whose entries are too large to put in words; like every motion phrase it
 # starts with a verb ("the object can still ...", "... by moving ...")
 _TOO_LARGE = "make a motion too large to describe in words (see the blocks)"
@@ -77,12 +80,18 @@ def _too_big(vec) -> bool:
     return any(sp.count_ops(e) > _MAX_OPS for e in vec)
 
 
+def _written(text: str, what: str) -> str:
+    """``text``, or ``what`` named when it is too long to read in a sentence."""
+    return text if len(text) <= _MAX_VALUE else \
+        f"{what} too large to write here"
+
+
 def _direction(d: list, field: ExprArithmetic) -> str:
     nz = [i for i, e in enumerate(d) if not field.is_zero(e)]
     if len(nz) == 1:
         sign = "-" if (field.to_sympy(d[nz[0]]).is_negative is True) else ""
         return f"{sign}{'xyz'[nz[0]]}"
-    return "(" + ", ".join(field.text(e) for e in d) + ")"
+    return _written("(" + ", ".join(field.text(e) for e in d) + ")", "a direction")
 
 
 def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
@@ -103,8 +112,8 @@ def _line_name(n: list, ww, w: list, contacts: Sequence[tuple[str, Sequence[sp.E
     places = _places(on_line, field)
     if len(places) >= 2:
         return f"the line through {' and '.join(places[:2])}"
-    where = (f"through {places[0]}" if places else
-             "through (" + ", ".join(field.text(field.div(e, ww)) for e in n) + ")")
+    where = (f"through {places[0]}" if places else "through " + _written(
+        "(" + ", ".join(field.text(field.div(e, ww)) for e in n) + ")", "a point"))
     return f"the line {where} along {_direction(w, field)}"
 
 
@@ -191,7 +200,8 @@ def twist_words(u, contacts: Sequence[tuple[str, Sequence[sp.Expr]]] = ()) -> st
     wv = _dot(w, v)
     if field.is_zero(wv):
         return f"rotate about {line}"
-    return f"screw about {line} with pitch {field.text(field.div(wv, ww))}"
+    pitch = _written(f"pitch {field.text(field.div(wv, ww))}", "a pitch")
+    return f"screw about {line} with {pitch}"
 
 
 def describe_twist(u, analysis: Analysis) -> str:
@@ -223,6 +233,8 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
     if _too_big(q):
         return f"joints {', '.join(n for n, _ in moving)} together"
     parts = ", ".join(f"{n}: {field.text(e)}" for n, e in moving)
+    if len(parts) > _MAX_VALUE:
+        return f"joints {', '.join(n for n, _ in moving)} together"
     return f"joints in the ratio {parts}"
 
 

@@ -26,6 +26,7 @@ from coopkin_sym.exact.entry_field import (
 )
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.ratfunc import RatFunc
+from coopkin_sym.present import sentences as sentences_module
 from coopkin_sym.present.sentences import (
     joint_motion_words,
     object_motions_words,
@@ -132,7 +133,9 @@ def _with_expressions(fn, *args):
 
 
 @pytest.mark.parametrize("kind", ["rational", "symbolic", "quadratic"])
-def test_twist_words_agree_with_the_expression_arithmetic(kind):
+def test_twist_words_agree_with_the_expression_arithmetic(kind, monkeypatch):
+    # every value written out, however long: the values themselves are compared
+    monkeypatch.setattr(sentences_module, "_MAX_VALUE", 10**9)
     rng = random.Random(f"twist words {kind}")
     lines = 0
     for _ in range(40):
@@ -189,7 +192,8 @@ def test_the_phrase_comparison_tells_different_values_apart():
 
 
 @pytest.mark.parametrize("kind", ["rational", "symbolic", "quadratic"])
-def test_joint_motion_words_agree_with_the_expression_arithmetic(kind):
+def test_joint_motion_words_agree_with_the_expression_arithmetic(kind, monkeypatch):
+    monkeypatch.setattr(sentences_module, "_MAX_VALUE", 10**9)
     rng = random.Random(f"joint words {kind}")
     names = ["q1", "q2", "q3", "q4"]
     said = set()
@@ -220,3 +224,19 @@ def test_flint_entries_read_term_by_term_equal_sympy_fractions():
         x = domain.from_sympy(e)
         assert field.of(e) == RatFunc.make(field._poly(x.numer), field._poly(x.denom)), e
         assert sp.cancel(field.to_sympy(field.of(e)) - e) == 0
+
+
+def test_values_too_long_to_read_are_named_not_written():
+    big = sum(sp.Rational(k + 1, k + 2) * L**k * t ** (12 - k) for k in range(12))
+    # a rotation about an axis along a long direction, through the origin
+    assert twist_words([0, 0, 0, big, 1, 0]) == \
+        "rotate about the line through (0, 0, 0) along a direction too large to write here"
+    # the same axis through a contact: the contact names the line
+    assert twist_words([0, 0, 0, big, 1, 0], [("c1", [0, 0, 0])]) == \
+        "rotate about the line through c1 along a direction too large to write here"
+    words = twist_words([big, 0, 0, 0, 0, 1])           # v = (big, 0, 0), w = z
+    assert words.startswith("rotate about the line through a point too large to write")
+    assert words.endswith(" along z")
+    assert twist_words([0, 0, big, 0, 0, 1]) == \
+        "screw about the line through (0, 0, 0) along z with a pitch too large to write here"
+    assert joint_motion_words([big, 1, 0], ["q1", "q2", "q3"]) == "joints q1, q2 together"
