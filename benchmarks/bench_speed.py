@@ -31,6 +31,7 @@ Run ``python benchmarks/bench_speed.py [--quick] [--plot FILE]``.
 from __future__ import annotations
 
 import compileall
+import gc
 import math
 import multiprocessing as mp
 import os
@@ -199,6 +200,35 @@ POINT_CASES = ["paper-case2-hard", ("planar_hand", (4, 3), {}),
                ("spatial_hand", (5, 4), {"tips": MIXED5})]
 
 
+def _timed(fn: Callable, *args) -> tuple:
+    """``fn(*args)`` and its wall time, with the garbage collector paused as ``timeit``
+    does: the methods take turns at each point, and none is charged for collecting the
+    garbage of another."""
+    gc.collect()
+    gc.disable()
+    try:
+        t0 = time.perf_counter()
+        out = fn(*args)
+        return out, time.perf_counter() - t0
+    finally:
+        gc.enable()
+
+
+def _analysis_numbers(system, at):
+    """The public point analysis, numbers computed (the analysis returned)."""
+    a = system.analyze(at=at)
+    _ = a.numbers
+    return a
+
+
+def _float_point(f, angles, revolute, shape, dim):
+    """The float pipeline at one point: ``tan(q/2)``, the lambdified ``Q``, three SVD
+    ranks."""
+    args = [math.tan(x / 2) if rev else x for x, rev in zip(angles, revolute,  # float-ok
+                                                             strict=True)]
+    return _float_ranks(np.array(f(*args), dtype=float).reshape(*shape), dim)  # float-ok
+
+
 def bench_point(source, count: int, log=print) -> list[dict]:
     system = coopkin_sym.load(_model(source))
     label = _label(source)
@@ -224,35 +254,27 @@ def bench_point(source, count: int, log=print) -> list[dict]:
         angles = [2 * math.atan2(v.numerator, v.denominator) if rev  # float-ok
                   else v.numerator / v.denominator for v, rev in zip(values, revolute,  # float-ok
                                                                     strict=True)]
-        t0 = time.perf_counter()
-        a = system.analyze(at=mapping)
+        a, seconds = _timed(_analysis_numbers, system, mapping)
+        ours.append(seconds)
         numbers = a.numbers.as_dict()
-        ours.append(time.perf_counter() - t0)
         cert = cert or _note_certificate(a)
-        t0 = time.perf_counter()
-        _ = system.analyze(at=text).numbers
-        ours_text.append(time.perf_counter() - t0)
+        ours_text.append(_timed(_analysis_numbers, system, text)[1])
         exact = _ranks_from(numbers, dim, r)
+
         # (a) floats: tan(q/2), lambdified Q, three SVD ranks
-        t0 = time.perf_counter()
-        args = [math.tan(x / 2) if rev else x for x, rev in zip(angles, revolute,  # float-ok
-                                                                 strict=True)]
-        mat = np.array(f(*args), dtype=float).reshape(m, cols)  # float-ok
-        franks = _float_ranks(mat, dim)
-        flt.append(time.perf_counter() - t0)
+        franks, seconds = _timed(_float_point, f, angles, revolute, (m, cols), dim)
+        flt.append(seconds)
         float_wrong += franks != exact
         # (b) SymPy DomainMatrix over QQ of the exact Q at the point (Q untimed)
         q = a.Q
-        t0 = time.perf_counter()
-        dranks, _nullity = domain_ranks(q, dim)
-        dom.append(time.perf_counter() - t0)
+        (dranks, _nullity), seconds = _timed(domain_ranks, q, dim)
+        dom.append(seconds)
         dom_wrong += dranks != exact
         # (c) the floor: ranks mod p (entries reduced mod p untimed)
         rows = modp_entries(q)
         if rows is not None:
-            t0 = time.perf_counter()
-            pranks = modp_ranks(rows, dim)
-            modp.append(time.perf_counter() - t0)
+            pranks, seconds = _timed(modp_ranks, rows, dim)
+            modp.append(seconds)
             modp_wrong += pranks != exact
     med = statistics.median
     o, ot = med(ours), med(ours_text)
