@@ -37,7 +37,7 @@ Example
 from __future__ import annotations
 
 import random
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -47,6 +47,7 @@ from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
 from coopkin_sym.errors import TimeLimitReached
 from coopkin_sym.exact.deadline import check, time_limit
 from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.model import Model
 
 #: Random coordinates are drawn from the integers in ``[-2**SAMPLE_BITS, 2**SAMPLE_BITS]``.
@@ -160,8 +161,7 @@ class _Sampled:
 
 def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
                     points: int = POINTS, seed: int | None = None,
-                    certify_seconds: float | None = CERTIFY_SECONDS,
-                    values_at: Callable[[Sequence[int]], list[list[int]]] | None = None
+                    certify_seconds: float | None = CERTIFY_SECONDS
                     ) -> tuple[Numbers, NumbersCertificate]:
     """The numbers over the fraction field of ``zctx``'s ring, from exact ranks at
     ``points`` random integer points, with their :class:`NumbersCertificate`.
@@ -169,7 +169,9 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     Parameters
     ----------
     q_rows
-        The rows of ``Q`` cleared to integer polynomials (``ring.clear_row``).
+        The rows of ``Q`` cleared to integer polynomials (``ring.clear_row``), or a
+        :class:`~coopkin_sym.exact.ring.ClearedRows` that clears a row only when an
+        elimination uses it and gives the values at the points from the fractions.
     model, row_contacts
         The model and the contact of each row (arm by arm structure).
     zctx
@@ -178,10 +180,6 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
         How many random points, and a seed (``None``: fresh system randomness).
     certify_seconds
         Wall-clock bound of the exact eliminations (``None``: no bound).
-    values_at
-        The integer values of the rows at a point, each row scaled by a nonzero
-        integer (default: the rows evaluated); with it, ``q_rows`` may clear rows only
-        when they are used (:class:`~coopkin_sym.exact.ring.ClearedRows`).
 
     Example
     -------
@@ -216,7 +214,8 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     for _ in range(count):
         check("the ranks at random points")
         point = [rng.randint(-bound, bound) for _ in range(nvars)]
-        values = values_at(point) if values_at is not None else _value_matrix(q_rows, point)
+        values = (q_rows.values_at(point) if isinstance(q_rows, ClearedRows)
+                  else _value_matrix(q_rows, point))
         rq = _rank(values, all_rows, all_cols)
         if rq > best.q:
             best.q = rq
@@ -256,8 +255,8 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
             # rank Q is known from the sizes: only the open arm blocks are ranked
             for k, (rows, cols) in enumerate(arm_blocks):
                 if arm_how[k] is None:
-                    block = (q_rows.block(rows, cols) if hasattr(q_rows, "block") else
-                             [[q_rows[i][c] for c in cols] for i in rows])
+                    block = (q_rows.block(rows, cols) if isinstance(q_rows, ClearedRows)
+                             else [[q_rows[i][c] for c in cols] for i in rows])
                     best.arms[k] = PolyMatrix(block, len(cols), context=zctx).rank()
                     arm_how[k] = "elimination"
             if q_bound() == best.q:

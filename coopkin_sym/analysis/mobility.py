@@ -179,8 +179,7 @@ class Analysis(Displayable):
             return (numbers_from_ranks(m, self.r, *ranks, dim=self.dim),
                     NumbersCertificate.from_ranks(ranks_known, 0))
         kin = self.kinematics
-        return generic_numbers(self._cleared, self.model, kin.row_contacts, kin.ring.zctx,
-                               values_at=self._cleared.values_at)
+        return generic_numbers(self._cleared, self.model, kin.row_contacts, kin.ring.zctx)
 
     @property
     def numbers(self) -> Numbers:

@@ -67,8 +67,7 @@ def test_generic_numbers_agree_with_elimination(data):
     # rows cleared only where used, values at the points from the fractions
     lazy = ClearedRows(kin.ring, kin.Q)
     fast, cert_fast = generic_numbers(lazy, model, kin.row_contacts, kin.ring.zctx,
-                                      seed=seed, certify_seconds=None,
-                                      values_at=lazy.values_at)
+                                      seed=seed, certify_seconds=None)
     assert fast == exact and cert_fast.exact and cert_fast.error_bits is None
     sampled, cert0 = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
                                      seed=seed, certify_seconds=0)
