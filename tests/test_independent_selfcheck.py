@@ -25,6 +25,7 @@ from strategies import (
     random_systems,
     rational_unit_vectors,
 )
+from support import same_span
 
 R = sp.Rational
 NUMBERS_4 = ("Nm", "Nc", "Ni", "Nr")
@@ -32,13 +33,6 @@ NUMBERS_4 = ("Nm", "Nc", "Ni", "Nr")
 
 def numbers(result, keys=NUMBERS_4):
     return {k: result[k] for k in keys}
-
-
-def same_span(a: list[sp.Matrix] | sp.Matrix, b: list[sp.Matrix] | sp.Matrix) -> bool:
-    a = sp.Matrix.hstack(*a) if isinstance(a, list) else a
-    b = sp.Matrix.hstack(*b) if isinstance(b, list) else b
-    ra, rb = a.rank(), b.rank()
-    return ra == rb == sp.Matrix.hstack(a, b).rank()
 
 
 # ----------------------------------------------------------------- paper case study 1

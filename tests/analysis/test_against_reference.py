@@ -17,7 +17,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from independent import reference_analysis
 from strategies import random_configurations, random_systems
-from sympy.polys.matrices import DomainMatrix
+from support import rank, same_span
 from typer.testing import CliRunner
 
 import coopkin_sym
@@ -25,17 +25,6 @@ from coopkin_sym.cli import app
 
 SETTINGS = settings(max_examples=40, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-
-
-def rank(m: sp.Matrix) -> int:
-    if 0 in m.shape:
-        return 0
-    return DomainMatrix.from_Matrix(sp.Matrix(m)).to_field().rank()
-
-
-def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
-    return rank(a) == rank(b) == rank(a.row_join(b)) if a.cols and b.cols else (
-        rank(a) == rank(b) == 0)
 
 
 def a_r(model) -> int:

@@ -14,6 +14,7 @@ from independent import (
     reference_jacobians,
     reference_numbers_algebraic,
 )
+from support import shipped_locus
 from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
@@ -38,7 +39,7 @@ COINCIDENT = ("t_q1 + t_q2", "t_q1**2 + 4*t_q1 + 1")
 
 @pytest.fixture(scope="module")
 def case1():
-    return compute_locus(coopkin_sym.load("paper-case1-hard"))
+    return shipped_locus("paper-case1-hard")
 
 
 def test_case1_finds_exactly_the_five_isolated_families(case1):
@@ -279,6 +280,7 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
     assert all("ranks modulo a polynomial of more than 3000 terms" in u for u in undecided)
 
 
+@pytest.mark.slow  # its fixture, the 3x3 hand's locus, takes 15 to 70 s: run by .ci/run
 def test_three_finger_components_are_where_an_independent_jacobian_drops(three_fingers):
     """Independent check: the reference H D of finger 1 (4x4 transforms, SymPy) at
     symbolic angles has all its 2 x 2 minors in the ideal of the component's equations,

@@ -4,25 +4,12 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
-from sympy.polys.matrices import DomainMatrix
+from support import rank, same_span
 
 import coopkin_sym
 from coopkin_sym import InfeasibleMotion
 
 L = sp.Symbol("L", positive=True)
-
-
-def rank(m: sp.Matrix) -> int:
-    """Exact rank over Q(symbols), by SymPy's DomainMatrix (independent of flint)."""
-    if 0 in m.shape:
-        return 0
-    return DomainMatrix.from_Matrix(sp.Matrix(m)).to_field().rank()
-
-
-def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
-    if a.cols == 0 or b.cols == 0:
-        return rank(a) == rank(b) == 0
-    return rank(a) == rank(b) == rank(a.row_join(b))
 
 
 def is_zero(m: sp.Matrix) -> bool:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import flint
+import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -83,6 +84,7 @@ def test_empty_and_zero_matrices():
 small = st.integers(-4, 4)
 
 
+@pytest.mark.slow  # campaign-style (random matrices): run by .ci/run, not by the default command
 @settings(max_examples=60, deadline=None)
 @given(st.integers(1, 4), st.integers(1, 5), st.data())
 def test_integer_and_polynomial_paths_agree_with_sympy(nrows, ncols, data):

@@ -27,7 +27,8 @@ def _locus_key(locus) -> list:
 
 @pytest.mark.parametrize("name, written, at", [
     ("urdf-two-fingers", fingers_by_hand, None),
-    ("dh-three-finger-hand", _hand_joints, HAND_SLICE),
+    pytest.param("dh-three-finger-hand", _hand_joints, HAND_SLICE,
+                 marks=pytest.mark.slow),  # 10 to 20 s: run by .ci/run
 ])
 def test_the_locus_does_not_depend_on_how_arms_are_written(name, written, at):
     ours, theirs = coopkin_sym.load(name), coopkin_sym.load(written())

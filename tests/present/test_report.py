@@ -15,6 +15,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 import matplotlib.image  # noqa: E402
+from support import shipped_locus  # noqa: E402
 from typer.testing import CliRunner  # noqa: E402
 
 from coopkin_sym import load  # noqa: E402
@@ -94,7 +95,7 @@ def three_joints() -> Locus:
 
 @pytest.fixture(scope="module")
 def case1() -> Locus:
-    return compute_locus(load("paper-case1-hard"))
+    return shipped_locus("paper-case1-hard")
 
 
 # --- the engine's result, as the reports see it ----------------------------------------
@@ -498,7 +499,6 @@ def test_cli_locus_errors_write_nothing(tmp_path):
 
 
 def test_report_carries_a_picture_of_the_system_at_a_witness(tmp_path):
-    from coopkin_sym.analysis.locus.search import compute_locus
     from coopkin_sym.present.report import write_report
 
     system = load("paper-case1-hard")

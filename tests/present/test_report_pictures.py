@@ -4,11 +4,11 @@ motion gained there, and says which component and which motion."""
 from __future__ import annotations
 
 import pytest
+from support import shipped_locus
 
 pytest.importorskip("matplotlib")
 
 from coopkin_sym import load  # noqa: E402
-from coopkin_sym.analysis.locus.search import compute_locus  # noqa: E402
 from coopkin_sym.present import report  # noqa: E402
 from coopkin_sym.present.draw import gained_motion  # noqa: E402
 from coopkin_sym.present.report import drawable_components, write_report  # noqa: E402
@@ -16,8 +16,7 @@ from coopkin_sym.present.report import drawable_components, write_report  # noqa
 
 @pytest.fixture(scope="module")
 def case1():
-    system = load("paper-case1-hard")
-    return system, compute_locus(system)
+    return load("paper-case1-hard"), shipped_locus("paper-case1-hard")
 
 
 def test_one_picture_per_component_with_a_real_witness(tmp_path, case1):

@@ -132,7 +132,9 @@ def _with_expressions(fn, *args):
         EntryField.of_entries = old
 
 
-@pytest.mark.parametrize("kind", ["rational", "symbolic", "quadratic"])
+# the symbolic and quadratic campaigns take 15 to 45 s each: run by .ci/run (-m slow)
+@pytest.mark.parametrize("kind", ["rational", pytest.param("symbolic", marks=pytest.mark.slow),
+                                  pytest.param("quadratic", marks=pytest.mark.slow)])
 def test_twist_words_agree_with_the_expression_arithmetic(kind, monkeypatch):
     # every value written out, however long: the values themselves are compared
     monkeypatch.setattr(sentences_module, "_MAX_VALUE", 10**9)
