@@ -17,7 +17,7 @@ from __future__ import annotations
 import functools
 import math
 
-#: Bytes in a model file or a report read back.
+#: Bytes in a model file, a URDF file or a report read back.
 MAX_FILE_BYTES = 8 * 1024 * 1024
 #: Entries (mappings, lists, scalars) in one file or tree, counting every use of a
 #: YAML alias as a copy.

@@ -39,11 +39,11 @@ from pathlib import Path
 
 import sympy as sp
 
-from coopkin_sym import limits
-from coopkin_sym.errors import UrdfError
+from coopkin_sym.errors import TreeError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then, rotation_rpy
+from coopkin_sym.model.input_files import read_input_text
 
 __all__ = ["DEFAULT_BOUND", "Snapped", "UrdfArm", "UrdfError", "read_urdf", "read_urdf_text"]
 
@@ -103,15 +103,9 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
     """
     path = Path(path)
     try:
-        size = path.stat().st_size
-        if size > limits.MAX_FILE_BYTES:
-            raise UrdfError(f"{path.name}: {size} bytes, more than the limit of "
-                            f"{limits.MAX_FILE_BYTES}")
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise UrdfError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise UrdfError(f"{path.name}: cannot be read ({type(exc).__name__})") from None
+        text = read_input_text(path)
+    except TreeError as exc:
+        raise UrdfError(f"{path}: {exc}") from None
     return read_urdf_text(text, path.name, tip, base, bound)
 
 

@@ -5,12 +5,16 @@ as robot files write them, and one test per refused file."""
 
 from __future__ import annotations
 
+import contextlib
+import json
 import math
+import os
 import random
 from pathlib import Path
 
 import pytest
 import sympy as sp
+from bounded_run import run_coopkin
 from independent import reference_analysis
 
 import coopkin_sym
@@ -278,6 +282,36 @@ def _arm_model(tmp: Path, arm: dict, contact: dict | None = None) -> dict:
 def test_bad_urdf_arms_get_one_clear_error(tmp_path, arm, contact, message):
     with pytest.raises(ModelError, match=message):
         coopkin_sym.load(_arm_model(tmp_path, arm, contact))
+
+
+def _file_arm_model(urdf: Path | str) -> dict:
+    return {"arms": [{"name": "f", "urdf": str(urdf)}],
+            "contacts": [{"name": "c", "link": "f/1", "point": [1, 0, 0], "model": "hard"}]}
+
+
+def test_a_urdf_path_naming_a_pipe_is_refused_before_it_is_read(tmp_path):
+    pipe = tmp_path / "f.urdf"
+    os.mkfifo(pipe)
+    _write(tmp_path, "m.json", json.dumps(_file_arm_model("f.urdf")))
+    try:
+        done = run_coopkin("analyze", str(tmp_path / "m.json"), timeout=30)
+    finally:   # a reader blocked on it (a regression) gets an end of file
+        with contextlib.suppress(OSError):
+            os.close(os.open(pipe, os.O_WRONLY | os.O_NONBLOCK))
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {tmp_path / 'm.json'}: arms[0].urdf: {pipe}: "
+                           f"is a named pipe (FIFO), not a regular file\n")
+
+
+def test_a_urdf_path_naming_a_device_or_a_directory_is_refused(tmp_path):
+    _write(tmp_path, "m.json", json.dumps(_file_arm_model("/dev/zero")))
+    done = run_coopkin("analyze", str(tmp_path / "m.json"), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {tmp_path / 'm.json'}: arms[0].urdf: "
+                           f"/dev/zero: is a character device, not a regular file\n")
+    with pytest.raises(ModelError) as info:
+        coopkin_sym.load(_file_arm_model("/"))
+    assert info.value.problems == ["arms[0].urdf: /: is a directory, not a file"]
 
 
 def test_two_arms_from_one_file_need_prefixes(tmp_path):
