@@ -270,6 +270,13 @@ class _ArmIn(_Entry):
     passive: list[StrictStr] | None = None
 
 
+#: The keys of an arm that say what it is made of (and, for an arm read from a URDF
+#: file, which chain and joint names): when one of them cannot be read, the arm is not
+#: built, and contacts on it are not checked against it.
+_ARM_SHAPE = frozenset({"joints", "dh", "urdf"})
+_URDF_CHOICE = frozenset({"tip", "prefix"})
+
+
 class _DHRowIn(_Entry):
     name: StrictStr
     type: StrictStr
@@ -459,14 +466,23 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     snapped: list[Snapped] = []
     arm_joints: dict[str, tuple[int, int] | None] = {}   # name -> (index, joints)
     joint_paths: dict[str, str] = {}
+    nameless_arm = False   # an arm without a usable name failed
     for i, raw_arm in enumerate(top.arms or []):
         apath = f"arms[{i}]"
-        arm, _ = _validate(_ArmIn, raw_arm, apath, problems)
+        arm, arm_bad = _validate(_ArmIn, raw_arm, apath, problems)
         if arm is None:
             if isinstance(raw_arm, Mapping) and isinstance(raw_arm.get("name"), str):
-                arm_joints[raw_arm["name"]] = None   # exists, but unusable
+                arm_joints.setdefault(raw_arm["name"], None)   # exists, but unusable
+            else:
+                nameless_arm = True
             continue
-        names.add(arm.name, f"{apath}.name", symbol=False)
+        duplicate = arm.name in names.where
+        if not names.add(arm.name, f"{apath}.name", symbol=False) and not duplicate:
+            arm_joints.setdefault(arm.name, None)   # contacts cannot name it
+        if arm_bad & _ARM_SHAPE or (arm.urdf is not None and arm_bad & _URDF_CHOICE):
+            # what the arm is made of could not be read: it has problems, not more
+            arm_joints.setdefault(arm.name, None)
+            continue
         if arm.urdf is not None:
             built = _urdf_arm(arm, apath, parameters, names, problems, joint_paths,
                               source, snapped)
@@ -522,7 +538,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     frames = {arm.name: arm for arm in arms}
     for i, raw_contact in enumerate(top.contacts or []):
         contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
-                           problems, frames)
+                           problems, frames, nameless_arm or not arm_joints)
         if contact is not None:
             contacts.append(contact)
             contact_paths.append(f"contacts[{i}]")
@@ -764,7 +780,12 @@ def _placement(raw: Any, path: str, parameters: dict[str, sp.Symbol],
 
 def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
              arm_joints: dict[str, tuple[int, int] | None],
-             problems: list[str], frames: Mapping[str, Arm]) -> Contact | None:
+             problems: list[str], frames: Mapping[str, Arm],
+             nameless_arm: bool = False) -> Contact | None:
+    """A contact; its link is not checked when it names an arm that could not be read
+    (``arm_joints`` maps it to None: the arm's own entry says why), nor when it names
+    an unknown arm while an arm without a usable name could not be read, or no arm
+    could (``nameless_arm``). Its other entries are checked all the same."""
     entry, bad = _validate(_ContactIn, raw, path, problems)
     if entry is None:
         return None
@@ -776,7 +797,13 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
     match = re.fullmatch(r"([^/\s]+)\s*/\s*(\d+)", text)
     named = re.fullmatch(r"([^/\s]+)\s*/\s*([^/\s]+)", text)
     link_frame = None
-    if match is None and named is not None and named.group(1) in frames \
+    head, slash, _ = text.rpartition("/")
+    head = head.strip()
+    on_failed_arm = bool(slash) and (arm_joints[head] is None if head in arm_joints
+                                     else nameless_arm)
+    if on_failed_arm:
+        pass   # the arm's own entry says what is wrong
+    elif match is None and named is not None and named.group(1) in frames \
             and frames[named.group(1)].links is not None:
         # a URDF link by its name: its moving joints, and its frame
         by_name = {name: (k, frame) for name, k, frame in frames[named.group(1)].links}
@@ -794,9 +821,8 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         problems.append(f"{path}.link: expected ARM/K (the link moved by joint K of arm "
                         f"ARM, ARM/0 its base) or base, got {brief(entry.link)}")
     elif match.group(1) not in arm_joints:
-        if arm_joints:  # with no arms at all, "arms" already has the problem
-            problems.append(f"{path}.link: unknown arm {brief(match.group(1))} "
-                            f"(arms: {', '.join(arm_joints)})")
+        problems.append(f"{path}.link: unknown arm {brief(match.group(1))} "
+                        f"(arms: {', '.join(arm_joints)})")
     elif arm_joints[match.group(1)] is not None:
         arm_index, count = arm_joints[match.group(1)]  # type: ignore[misc]
         digits = match.group(2)
@@ -823,7 +849,7 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         problems.append(f"{path}.frame: expected base (the default: point and normal in "
                         f"the base frame at home) or link (in the link's DH frame), got "
                         f"{brief(entry.frame)}")
-    if len(problems) > before or bad or point is None:
+    if len(problems) > before or bad or point is None or on_failed_arm:
         return None
     if entry.frame == "link":
         arm_name = match.group(1) if match is not None else None

@@ -283,7 +283,7 @@ def _loop_beside_the_chain(tmp: Path) -> Path:
         '<link name="a"/><link name="x"/><link name="b"/><link name="c"/>'))
     return _write(tmp, "m.json", json.dumps(
         {"arms": [{"name": "f", "urdf": "loop.urdf", "tip": "c"}],
-         "contacts": [{"name": "k", "link": "f/1", "point": [1, 0, 0], "model": "hard"}]}))
+         "contacts": [{"name": "k", "link": "f/c", "point": [1, 0, 0], "model": "hard"}]}))
 
 
 def test_a_tip_on_a_closed_loop_is_one_error_at_once(tmp_path):
@@ -453,6 +453,56 @@ def test_a_urdf_path_naming_a_device_or_a_directory_is_refused(tmp_path):
     with pytest.raises(ModelError) as info:
         coopkin_sym.load(_file_arm_model("/"))
     assert info.value.problems == ["arms[0].urdf: /: is a directory, not a file"]
+
+
+FLOATING = _robot(JOINT.format(type="floating", extra=""))
+BRANCHING = _robot('<joint name="j" type="revolute"><parent link="a"/><child link="b"/>'
+                   '<axis xyz="0 0 1"/></joint>'
+                   '<joint name="k" type="prismatic"><parent link="a"/><child link="c"/>'
+                   '<axis xyz="1 0 0"/></joint>',
+                   '<link name="a"/><link name="b"/><link name="c"/>')
+
+
+def _refused_arm_model(tmp: Path, text: str, **arm) -> dict:
+    """Arm f read from ``text`` with contacts on its links by name, by number and in
+    a link's frame; arm g is fine, but its contact has a normal that is not a unit
+    vector (a problem of its own)."""
+    _write(tmp, "f.urdf", text)
+    on = [("f/b", "base"), ("f/b", "link"), ("f/1", "base"), ("f/0", "link")]
+    return {"arms": [{"name": "f", "urdf": str(tmp / "f.urdf"), **arm},
+                     {"name": "g", "joints": [{"name": "p", "type": "revolute",
+                                               "axis": [0, 0, 1], "point": [0, 0, 0]}]}],
+            "contacts": [{"name": "g1", "link": "g/1", "point": [1, 0, 0],
+                          "normal": [0, 3, 0], "model": "hard"}]
+            + [{"name": f"f{k}", "link": link, "frame": frame, "point": [1, 0, 0],
+                "normal": [1, 0, 0], "model": "hard"} for k, (link, frame) in enumerate(on)]}
+
+
+@pytest.mark.parametrize("text, arm, problem", [
+    (FLOATING, {}, "arms[0].urdf: f.urdf: joint 'j': type 'floating' is not supported "
+                   "(revolute, continuous, prismatic and fixed joints make an arm)"),
+    (BRANCHING, {"tip": 7}, "arms[0].tip: expected text, got 7"),
+    (BRANCHING, {"tip": "b", "prefix": ["l_"]}, "arms[0].prefix: expected text, got "
+                                                "['l_']"),
+    (FINGER, {"base": {"rpy": [0, 0, "x"]}},
+     "arms[0].base.rpy[2]: 'x' uses undeclared symbol x (declared parameters: none)"),
+])
+def test_a_refused_urdf_arm_is_the_one_error_about_it(tmp_path, text, arm, problem):
+    with pytest.raises(ModelError) as info:
+        coopkin_sym.load(_refused_arm_model(tmp_path, text, **arm))
+    assert info.value.problems == [problem, "contacts[0].normal: not a unit vector "
+                                            "(squared length 9); did you mean [0, 1, 0]?"]
+
+
+def test_a_refused_urdf_arm_is_one_line_on_the_command_line(tmp_path):
+    model = _refused_arm_model(tmp_path, FLOATING)
+    model["contacts"][0]["normal"] = [0, 1, 0]
+    path = _write(tmp_path, "m.json", json.dumps(model))
+    done = run_coopkin("analyze", str(path), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {path}: arms[0].urdf: f.urdf: joint 'j': "
+                           f"type 'floating' is not supported (revolute, continuous, "
+                           f"prismatic and fixed joints make an arm)\n")
 
 
 def test_two_arms_from_one_file_need_prefixes(tmp_path):
