@@ -33,7 +33,7 @@ from typing import Any, Literal
 import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictBool, StrictStr, ValidationError
 
-from coopkin_sym.errors import ModelError, UrdfError
+from coopkin_sym.errors import ModelError, UndeclaredSymbol, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import (
@@ -409,6 +409,15 @@ class _Names:
         return True
 
 
+class _UndeclaredProblem(str):
+    """The line of a number that uses an undeclared name: not reported when the
+    parameter list could not be read (the names it meant are unknown)."""
+
+
+def _number_problem(exc: NumberError) -> str:
+    return _UndeclaredProblem(exc) if isinstance(exc, UndeclaredSymbol) else str(exc)
+
+
 def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
             problems: list[str], *, rational: bool) -> Vector | None:
     """Three exact numbers; ``rational`` forbids parameters."""
@@ -420,7 +429,7 @@ def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
         try:
             number = parse_number(value, parameters, path)
         except NumberError as exc:
-            problems.append(str(exc))
+            problems.append(_number_problem(exc))
             return None
         if rational and not number.is_Rational:
             problems.append(f"{path}: {brief(value)} uses a parameter; this vector must have "
@@ -455,12 +464,18 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     names = _Names(problems)
 
     parameters: dict[str, sp.Symbol] = {}
+    parameters_unknown = "parameters" in top_bad   # which names were meant is unknown
     for i, pname in enumerate(top.parameters or []):
         path = f"parameters[{i}]"
         if not isinstance(pname, str):
             problems.append(f"{path}: expected a name, got {_brief(pname)}")
+            parameters_unknown = True
+        elif pname in names.where:
+            names.add(pname, path, symbol=True)   # a duplicate: declared all the same
         elif names.add(pname, path, symbol=True):
             parameters[pname] = sp.Symbol(pname, positive=True)
+        else:
+            parameters_unknown = True
 
     arms: list[Arm] = []
     snapped: list[Snapped] = []
@@ -557,8 +572,10 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     if top.planar:
         _planar_problems(arms, joint_paths, zip(contact_paths, contacts, strict=True),
                          object_frame, problems)
+    if parameters_unknown:   # numbers that use a parameter: its entry has the problem
+        problems[:] = [p for p in problems if not isinstance(p, _UndeclaredProblem)]
     if problems:
-        raise ModelError(problems, source)
+        raise ModelError([str(p) for p in problems], source)
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
                  contacts=tuple(contacts), source=source, object_frame=object_frame,
@@ -752,7 +769,7 @@ def _number(value: Any, path: str, parameters: dict[str, sp.Symbol],
     try:
         return parse_number(value, parameters, path)
     except NumberError as exc:
-        problems.append(str(exc))
+        problems.append(_number_problem(exc))
         return None
 
 

@@ -51,7 +51,7 @@ from coopkin_sym.errors import TreeError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then, rotation_rpy
-from coopkin_sym.model.input_files import read_input_text
+from coopkin_sym.model.input_files import read_input_text, size_text
 
 __all__ = ["DEFAULT_BOUND", "Snapped", "UrdfArm", "UrdfError", "read_urdf", "read_urdf_text"]
 
@@ -120,6 +120,9 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
 def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame = IDENTITY,
                    bound: float = DEFAULT_BOUND) -> UrdfArm:
     """:func:`read_urdf` for the text of a file (``source`` names it in errors)."""
+    if len(text) > limits.MAX_FILE_BYTES:
+        raise UrdfError(f"{source}: the text is longer than "
+                        f"{size_text(limits.MAX_FILE_BYTES)} (the limit for a URDF file)")
     root = _parse(text, source)
     if root.tag != "robot":
         raise UrdfError(f"{source}: the root element is <{str(root.tag)[:40]}>, expected "

@@ -683,3 +683,30 @@ def test_a_failed_dh_arm_is_one_line_on_the_command_line(tmp_path):
     assert result.stderr == (f"coopkin: error: {path}: arms[2].convention: expected "
                              f"standard (Denavit-Hartenberg) or modified (Craig), got "
                              f"'craig'\n")
+
+
+@pytest.mark.parametrize("parameters, problem", [
+    ("L", "parameters: expected a list, got 'L'"),
+    (["L L"], "parameters[0]: 'L L' is not a valid name (letters, digits and underscores, "
+              "not starting with a digit)"),
+    (["pi"], "parameters[0]: 'pi' is reserved (it means something else in SymPy text); "
+             "choose another name"),
+    ([5], "parameters[0]: expected a name, got 5"),
+])
+def test_a_parameter_list_that_cannot_be_read_is_the_one_error_about_it(parameters,
+                                                                        problem):
+    """The numbers that use L are not reported as using an undeclared symbol: which
+    names the list meant is unknown; other problems still are."""
+    tree = case1()
+    tree["parameters"] = parameters
+    tree["contacts"][1]["normal"] = [0, 0, 2]
+    assert problems_of(tree).problems == [problem, NORMAL]
+
+
+def test_a_symbol_missing_from_a_parameter_list_that_was_read_is_reported():
+    tree = case1()
+    tree["parameters"] = ["L", "L", "M"]
+    tree["contacts"][0]["point"] = [0, "N", 0]
+    assert problems_of(tree).problems == [
+        "parameters[1]: duplicate name 'L' (already used at parameters[0])",
+        "contacts[0].point: 'N' uses undeclared symbol N (declared parameters: L, M)"]

@@ -376,6 +376,15 @@ def test_urdf_budgets(monkeypatch, limit, value, text, message):
             assert str(info.value) == f"r.urdf: {message}"
 
 
+def test_a_urdf_text_handed_over_is_bounded_like_a_file(monkeypatch):
+    monkeypatch.setattr(limits, "MAX_FILE_BYTES", len(FINGER))
+    assert len(read_urdf_text(FINGER, "f.urdf").joints) == 1
+    with pytest.raises(UrdfError, match=rf"^f\.urdf: the text is longer than "
+                                        rf"{len(FINGER)} bytes \(the limit for a URDF "
+                                        rf"file\)$"):
+        read_urdf_text(FINGER + " ", "f.urdf")
+
+
 def test_a_flood_of_elements_or_of_nesting_stops_the_parse(tmp_path):
     for body, message in (("<a/>" * 2_000_000, "more than 100,000 XML elements"),
                           ("<a>" * 1_000_000 + "</a>" * 1_000_000,
