@@ -403,7 +403,8 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
-    from coopkin_sym.errors import ReportError
+    from coopkin_sym.errors import ReportError, TreeError
+    from coopkin_sym.model.input_files import read_input_text
     from coopkin_sym.present.report import locus_from_json
     from coopkin_sym.present.verification import verification_json
     from coopkin_sym.system import load
@@ -411,9 +412,9 @@ def verify_report(
     try:
         system = load(model)
         try:
-            text = Path(report).read_text()
-        except OSError as exc:
-            raise ReportError(f"{report}: cannot read: {exc.strerror or exc}") from None
+            text = read_input_text(Path(report))
+        except TreeError as exc:
+            raise ReportError(f"{report}: {exc}") from None
         try:
             locus = locus_from_json(text)
         except ValueError as exc:

@@ -6,10 +6,11 @@ one line per problem, naming the entry and what is wrong. Code that wants to tel
 package's own refusals from bugs catches :class:`CoopkinError`.
 
 All of them live here, grouped by the layer that raises them: exact numbers and ideals
-(:class:`NumberError`, :class:`GroebnerError`), files and models (:class:`TreeError`,
-:class:`ModelError`, :class:`ConfigurationError`), analyses (:class:`BlockTooLarge`,
-:class:`InfeasibleMotion`, :class:`ManipulabilityError`, :class:`SweepError`,
-:class:`NotIrrational`, :class:`LocusError`, :class:`CertifyError`, :class:`VerifyError`,
+(:class:`NumberError`, :class:`UndeclaredSymbol`, :class:`GroebnerError`), files and
+models (:class:`TreeError`, :class:`ModelError`, :class:`ConfigurationError`),
+analyses (:class:`BlockTooLarge`, :class:`InfeasibleMotion`,
+:class:`ManipulabilityError`, :class:`SweepError`, :class:`NotIrrational`,
+:class:`LocusError`, :class:`CertifyError`, :class:`VerifyError`,
 :class:`TimeLimitReached`) and outputs (:class:`ReportError`, :class:`ReportInputError`,
 :class:`DrawError`, :class:`PlotError`). Each also keeps its historical base
 (``ValueError``), so older ``except ValueError`` code still catches it.
@@ -81,6 +82,21 @@ class NumberError(ValueError, CoopkinError):
         self.where = where
         self.message = message
         super().__init__(f"{where}: {message}" if where else message)
+
+
+class UndeclaredSymbol(NumberError):
+    """A number or expression that uses a name that is not declared (a parameter, a
+    variable). A model whose parameter list cannot be read does not report these
+    about its numbers: the list's own problem is the one to fix.
+
+    Example
+    -------
+    >>> from coopkin_sym.exact.parse import parse_number
+    >>> parse_number("2*M", {}, "contacts[0].point")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.UndeclaredSymbol: contacts[0].point: '2*M' uses undeclared symbol M ...
+    """
 
 
 class GroebnerError(ValueError, CoopkinError):

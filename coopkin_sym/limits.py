@@ -17,13 +17,23 @@ from __future__ import annotations
 import functools
 import math
 
-#: Bytes in a model file or a report read back.
+#: Bytes in a model file, a URDF file or a report read back.
 MAX_FILE_BYTES = 8 * 1024 * 1024
 #: Entries (mappings, lists, scalars) in one file or tree, counting every use of a
 #: YAML alias as a copy.
 MAX_NODES = 1_000_000
-#: Nesting of mappings and lists in one file or tree.
+#: Nesting of mappings and lists in one file or tree, and of the elements of a URDF
+#: file.
 MAX_DEPTH = 32
+#: Links of one URDF file (large robots have a few hundred).
+MAX_URDF_LINKS = 4000
+#: Joints of one URDF file.
+MAX_URDF_JOINTS = 4000
+#: XML elements of one URDF file (links, joints and everything inside them); their
+#: nesting is bounded by :data:`MAX_DEPTH`.
+MAX_URDF_ELEMENTS = 100_000
+#: Joints (moving and fixed) on the chain of one arm read from a URDF file.
+MAX_URDF_CHAIN = 256
 #: Characters in one number or angle (model values, ``--at``, ``--grid`` ends).
 MAX_NUMBER_TEXT = 1000
 #: Characters in one equation or condition (reports read back, the API).

@@ -45,7 +45,7 @@ import mpmath
 import sympy as sp
 
 from coopkin_sym import limits
-from coopkin_sym.errors import NumberError
+from coopkin_sym.errors import NumberError, UndeclaredSymbol
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 __all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
@@ -174,6 +174,11 @@ class _Reader:
     def fail(self, message: str) -> NumberError:
         return NumberError(self.where, f"{self.shown} {message}")
 
+    def undeclared(self, name: str) -> UndeclaredSymbol:
+        return UndeclaredSymbol(self.where, f"{self.shown} uses undeclared symbol {name} "
+                                            f"(declared {self.kind}: "
+                                            f"{_declared(self.names)})")
+
     def too_large(self, what: str) -> NumberError:
         return self.fail(f"is too large: {what}")
 
@@ -185,8 +190,7 @@ class _Reader:
 
     def symbol(self, name: str) -> _RF:
         if name not in self.symbols:
-            raise self.fail(f"uses undeclared symbol {name} (declared {self.kind}: "
-                            f"{_declared(self.names)})")
+            raise self.undeclared(name)
         return _RF(self.ctx.gens()[self.names.index(name)], self.one)
 
     def _check_int(self, value: int) -> None:
@@ -314,8 +318,7 @@ class _Reader:
         if isinstance(expr, sp.Symbol):
             if expr.name in self.symbols:
                 return self.symbol(expr.name)
-            raise self.fail(f"uses undeclared symbol {expr.name} (declared {self.kind}: "
-                            f"{_declared(self.names)})")
+            raise self.undeclared(expr.name)
         if isinstance(expr, sp.Add | sp.Mul):
             parts = []
             for arg in expr.args:
@@ -666,8 +669,7 @@ def _check_tokens(tokens: list[tuple[str, str]], reader: _Reader) -> None:
             elif following == "(":
                 raise reader.fail(f"uses unknown function {text} (allowed: atan, sqrt)")
             else:
-                raise reader.fail(f"uses undeclared symbol {text} (declared {reader.kind}:"
-                                  f" {_declared(reader.names)})")
+                raise reader.undeclared(text)
         elif kind == "other":
             raise reader.fail("cannot be parsed")
 
@@ -856,8 +858,9 @@ def exact_expr(value: object, symbols: Mapping[str, sp.Symbol] | Iterable[str] |
         mapping = {}
         for s in value.free_symbols:
             if s.name not in syms:
-                raise NumberError(where, f"{_show(value)} uses undeclared symbol {s.name} "
-                                         f"(declared variables: {_declared(syms)})")
+                raise UndeclaredSymbol(where, f"{_show(value)} uses undeclared symbol "
+                                              f"{s.name} (declared variables: "
+                                              f"{_declared(syms)})")
             mapping[s] = syms[s.name]
         return value.xreplace(mapping) if mapping else value
     v, reader = _value(value, syms, where, "variables", limits.MAX_EXPRESSION_TEXT)

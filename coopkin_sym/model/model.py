@@ -33,7 +33,7 @@ from typing import Any, Literal
 import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictBool, StrictStr, ValidationError
 
-from coopkin_sym.errors import ModelError, UrdfError
+from coopkin_sym.errors import ModelError, UndeclaredSymbol, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import (
@@ -270,6 +270,13 @@ class _ArmIn(_Entry):
     passive: list[StrictStr] | None = None
 
 
+#: The keys of an arm that say what it is made of (and, for an arm read from a URDF
+#: file, which chain and joint names): when one of them cannot be read, the arm is not
+#: built, and contacts on it are not checked against it.
+_ARM_SHAPE = frozenset({"joints", "dh", "urdf"})
+_URDF_CHOICE = frozenset({"tip", "prefix"})
+
+
 class _DHRowIn(_Entry):
     name: StrictStr
     type: StrictStr
@@ -402,6 +409,15 @@ class _Names:
         return True
 
 
+class _UndeclaredProblem(str):
+    """The line of a number that uses an undeclared name: not reported when the
+    parameter list could not be read (the names it meant are unknown)."""
+
+
+def _number_problem(exc: NumberError) -> str:
+    return _UndeclaredProblem(exc) if isinstance(exc, UndeclaredSymbol) else str(exc)
+
+
 def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
             problems: list[str], *, rational: bool) -> Vector | None:
     """Three exact numbers; ``rational`` forbids parameters."""
@@ -413,7 +429,7 @@ def _vector(raw: list[Any], path: str, parameters: dict[str, sp.Symbol],
         try:
             number = parse_number(value, parameters, path)
         except NumberError as exc:
-            problems.append(str(exc))
+            problems.append(_number_problem(exc))
             return None
         if rational and not number.is_Rational:
             problems.append(f"{path}: {brief(value)} uses a parameter; this vector must have "
@@ -448,25 +464,40 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     names = _Names(problems)
 
     parameters: dict[str, sp.Symbol] = {}
+    parameters_unknown = "parameters" in top_bad   # which names were meant is unknown
     for i, pname in enumerate(top.parameters or []):
         path = f"parameters[{i}]"
         if not isinstance(pname, str):
             problems.append(f"{path}: expected a name, got {_brief(pname)}")
+            parameters_unknown = True
+        elif pname in names.where:
+            names.add(pname, path, symbol=True)   # a duplicate: declared all the same
         elif names.add(pname, path, symbol=True):
             parameters[pname] = sp.Symbol(pname, positive=True)
+        else:
+            parameters_unknown = True
 
     arms: list[Arm] = []
     snapped: list[Snapped] = []
     arm_joints: dict[str, tuple[int, int] | None] = {}   # name -> (index, joints)
     joint_paths: dict[str, str] = {}
+    nameless_arm = False   # an arm without a usable name failed
     for i, raw_arm in enumerate(top.arms or []):
         apath = f"arms[{i}]"
-        arm, _ = _validate(_ArmIn, raw_arm, apath, problems)
+        arm, arm_bad = _validate(_ArmIn, raw_arm, apath, problems)
         if arm is None:
             if isinstance(raw_arm, Mapping) and isinstance(raw_arm.get("name"), str):
-                arm_joints[raw_arm["name"]] = None   # exists, but unusable
+                arm_joints.setdefault(raw_arm["name"], None)   # exists, but unusable
+            else:
+                nameless_arm = True
             continue
-        names.add(arm.name, f"{apath}.name", symbol=False)
+        duplicate = arm.name in names.where
+        if not names.add(arm.name, f"{apath}.name", symbol=False) and not duplicate:
+            arm_joints.setdefault(arm.name, None)   # contacts cannot name it
+        if arm_bad & _ARM_SHAPE or (arm.urdf is not None and arm_bad & _URDF_CHOICE):
+            # what the arm is made of could not be read: it has problems, not more
+            arm_joints.setdefault(arm.name, None)
+            continue
         if arm.urdf is not None:
             built = _urdf_arm(arm, apath, parameters, names, problems, joint_paths,
                               source, snapped)
@@ -522,7 +553,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     frames = {arm.name: arm for arm in arms}
     for i, raw_contact in enumerate(top.contacts or []):
         contact = _contact(raw_contact, f"contacts[{i}]", parameters, names, arm_joints,
-                           problems, frames)
+                           problems, frames, nameless_arm or not arm_joints)
         if contact is not None:
             contacts.append(contact)
             contact_paths.append(f"contacts[{i}]")
@@ -541,8 +572,10 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     if top.planar:
         _planar_problems(arms, joint_paths, zip(contact_paths, contacts, strict=True),
                          object_frame, problems)
+    if parameters_unknown:   # numbers that use a parameter: its entry has the problem
+        problems[:] = [p for p in problems if not isinstance(p, _UndeclaredProblem)]
     if problems:
-        raise ModelError(problems, source)
+        raise ModelError([str(p) for p in problems], source)
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
                  contacts=tuple(contacts), source=source, object_frame=object_frame,
@@ -736,7 +769,7 @@ def _number(value: Any, path: str, parameters: dict[str, sp.Symbol],
     try:
         return parse_number(value, parameters, path)
     except NumberError as exc:
-        problems.append(str(exc))
+        problems.append(_number_problem(exc))
         return None
 
 
@@ -764,7 +797,12 @@ def _placement(raw: Any, path: str, parameters: dict[str, sp.Symbol],
 
 def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
              arm_joints: dict[str, tuple[int, int] | None],
-             problems: list[str], frames: Mapping[str, Arm]) -> Contact | None:
+             problems: list[str], frames: Mapping[str, Arm],
+             nameless_arm: bool = False) -> Contact | None:
+    """A contact; its link is not checked when it names an arm that could not be read
+    (``arm_joints`` maps it to None: the arm's own entry says why), nor when it names
+    an unknown arm while an arm without a usable name could not be read, or no arm
+    could (``nameless_arm``). Its other entries are checked all the same."""
     entry, bad = _validate(_ContactIn, raw, path, problems)
     if entry is None:
         return None
@@ -776,7 +814,13 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
     match = re.fullmatch(r"([^/\s]+)\s*/\s*(\d+)", text)
     named = re.fullmatch(r"([^/\s]+)\s*/\s*([^/\s]+)", text)
     link_frame = None
-    if match is None and named is not None and named.group(1) in frames \
+    head, slash, _ = text.rpartition("/")
+    head = head.strip()
+    on_failed_arm = bool(slash) and (arm_joints[head] is None if head in arm_joints
+                                     else nameless_arm)
+    if on_failed_arm:
+        pass   # the arm's own entry says what is wrong
+    elif match is None and named is not None and named.group(1) in frames \
             and frames[named.group(1)].links is not None:
         # a URDF link by its name: its moving joints, and its frame
         by_name = {name: (k, frame) for name, k, frame in frames[named.group(1)].links}
@@ -794,9 +838,8 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         problems.append(f"{path}.link: expected ARM/K (the link moved by joint K of arm "
                         f"ARM, ARM/0 its base) or base, got {brief(entry.link)}")
     elif match.group(1) not in arm_joints:
-        if arm_joints:  # with no arms at all, "arms" already has the problem
-            problems.append(f"{path}.link: unknown arm {brief(match.group(1))} "
-                            f"(arms: {', '.join(arm_joints)})")
+        problems.append(f"{path}.link: unknown arm {brief(match.group(1))} "
+                        f"(arms: {', '.join(arm_joints)})")
     elif arm_joints[match.group(1)] is not None:
         arm_index, count = arm_joints[match.group(1)]  # type: ignore[misc]
         digits = match.group(2)
@@ -823,7 +866,7 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         problems.append(f"{path}.frame: expected base (the default: point and normal in "
                         f"the base frame at home) or link (in the link's DH frame), got "
                         f"{brief(entry.frame)}")
-    if len(problems) > before or bad or point is None:
+    if len(problems) > before or bad or point is None or on_failed_arm:
         return None
     if entry.frame == "link":
         arm_name = match.group(1) if match is not None else None

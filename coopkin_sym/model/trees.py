@@ -1,10 +1,11 @@
 """Reading YAML and JSON files into plain trees, safely and within budgets.
 
 Model files and reports read back are trees of mappings, lists and scalars. This
-module reads them with bounded work whatever the input: the file is read up to
-:data:`~coopkin_sym.limits.MAX_FILE_BYTES` (``/dev/zero`` or a 50 MB file is refused
-at once), YAML is read from libyaml's event stream (no recursion, so deep nesting
-cannot crash it) and built here, with
+module reads them with bounded work whatever the input: the file must be a regular
+file (a named pipe or ``/dev/zero`` is refused before it is read) and is read up to
+:data:`~coopkin_sym.limits.MAX_FILE_BYTES` (a 50 MB file is refused at once), YAML is
+read from libyaml's event stream (no recursion, so deep nesting cannot crash it) and
+built here, with
 
 * the YAML 1.2 core schema, with the forms YAML 1.1 reads differently refused as
   ambiguous: ``010`` (1.1: the octal 8), ``1:30`` (1.1: 90), ``0x1F``, ``0o17``;
@@ -41,6 +42,7 @@ import yaml
 
 from coopkin_sym import limits
 from coopkin_sym.errors import TreeError
+from coopkin_sym.model.input_files import read_input_bytes, size_text
 
 __all__ = ["TreeError", "check_tree", "read_file", "read_text"]
 
@@ -61,30 +63,19 @@ _STANDARD_TAGS = {"tag:yaml.org,2002:str", "tag:yaml.org,2002:int",
                   "tag:yaml.org,2002:seq"}
 
 
-def _size_text(n: int) -> str:
-    return f"{n / 1024 / 1024:.1f} MB" if n >= 1024 * 1024 else f"{n:,} bytes"
-
-
 def read_file(path: str | os.PathLike) -> object:
-    """Read a ``.json`` file (by its suffix) or a YAML file into a plain tree.
+    """Read a ``.json`` file (by its suffix) or a YAML file into a plain tree (the
+    file itself is read by :func:`~coopkin_sym.model.input_files.read_input_bytes`:
+    a regular file only, within the size budget).
 
     Raises
     ------
     TreeError
-        Unreadable, not a file, not UTF-8 text, too large, not valid YAML/JSON, or
-        over a budget.
+        Unreadable, not a regular file, not UTF-8 text, too large, not valid
+        YAML/JSON, or over a budget.
     """
     path = Path(path)
-    try:
-        with open(path, "rb") as handle:
-            data = handle.read(limits.MAX_FILE_BYTES + 1)
-    except IsADirectoryError:
-        raise TreeError("is a directory, not a file") from None
-    except OSError as exc:
-        raise TreeError(f"cannot read the file: {exc.strerror or exc}") from None
-    if len(data) > limits.MAX_FILE_BYTES:
-        raise TreeError(f"the file is larger than {_size_text(limits.MAX_FILE_BYTES)} "
-                        "(the limit for a model or a report)")
+    data = read_input_bytes(path)
     if b"\x00" in data:
         raise TreeError("not a text file (it holds NUL bytes)")
     try:
@@ -100,7 +91,7 @@ def read_text(text: str, suffix: str = ".yaml", *, exact_floats: bool = True) ->
     Floats stay text (read exactly later) unless ``exact_floats`` is false (JSON only:
     reports hold measured seconds and distances as floats)."""
     if len(text) > limits.MAX_FILE_BYTES:
-        raise TreeError(f"the text is longer than {_size_text(limits.MAX_FILE_BYTES)}")
+        raise TreeError(f"the text is longer than {size_text(limits.MAX_FILE_BYTES)}")
     if suffix.lower() == ".json":
         tree = _read_json(text, exact_floats)
         check_tree(tree)

@@ -16,7 +16,14 @@ the nearest angle with a rational ``tan(q/2)`` within the bound (``1.5708`` is
 the bound is taken). Every snap is recorded with its distance, so that reports can
 state it. Anything else (floating or planar joints, mimic joints, closed loops, a
 branching robot without a tip) is refused with one line naming the file and the
-element. The file is parsed with ``defusedxml`` (no entities, no external references).
+element; a closed loop is named by its joints and links. The file is parsed with
+``defusedxml`` (no entities, no external references), and the parse stops at the first
+element over a budget of :mod:`coopkin_sym.limits`: links
+(:data:`~coopkin_sym.limits.MAX_URDF_LINKS`), joints
+(:data:`~coopkin_sym.limits.MAX_URDF_JOINTS`), XML elements
+(:data:`~coopkin_sym.limits.MAX_URDF_ELEMENTS`) and their nesting
+(:data:`~coopkin_sym.limits.MAX_DEPTH`); an arm's chain has at most
+:data:`~coopkin_sym.limits.MAX_URDF_CHAIN` joints.
 
 Example
 -------
@@ -40,10 +47,11 @@ from pathlib import Path
 import sympy as sp
 
 from coopkin_sym import limits
-from coopkin_sym.errors import UrdfError
+from coopkin_sym.errors import TreeError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then, rotation_rpy
+from coopkin_sym.model.input_files import read_input_text, size_text
 
 __all__ = ["DEFAULT_BOUND", "Snapped", "UrdfArm", "UrdfError", "read_urdf", "read_urdf_text"]
 
@@ -103,39 +111,31 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
     """
     path = Path(path)
     try:
-        size = path.stat().st_size
-        if size > limits.MAX_FILE_BYTES:
-            raise UrdfError(f"{path.name}: {size} bytes, more than the limit of "
-                            f"{limits.MAX_FILE_BYTES}")
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise UrdfError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise UrdfError(f"{path.name}: cannot be read ({type(exc).__name__})") from None
+        text = read_input_text(path)
+    except TreeError as exc:
+        raise UrdfError(f"{path}: {exc}") from None
     return read_urdf_text(text, path.name, tip, base, bound)
 
 
 def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame = IDENTITY,
                    bound: float = DEFAULT_BOUND) -> UrdfArm:
     """:func:`read_urdf` for the text of a file (``source`` names it in errors)."""
-    from defusedxml import DefusedXmlException  # only when a URDF file is read
-    from defusedxml.ElementTree import ParseError, fromstring
-
-    try:
-        root = fromstring(text, forbid_dtd=True)
-    except DefusedXmlException as exc:
-        raise UrdfError(f"{source}: not a URDF file ({type(exc).__name__}: a DTD, entity "
-                        f"or external reference is forbidden)") from None
-    except ParseError as exc:
-        raise UrdfError(f"{source}: not a URDF file ({' '.join(str(exc).split())})") from None
+    if len(text) > limits.MAX_FILE_BYTES:
+        raise UrdfError(f"{source}: the text is longer than "
+                        f"{size_text(limits.MAX_FILE_BYTES)} (the limit for a URDF file)")
+    root = _parse(text, source)
     if root.tag != "robot":
         raise UrdfError(f"{source}: the root element is <{str(root.tag)[:40]}>, expected "
                         f"<robot>")
     links = [e.get("name") for e in root.findall("link")]
     if not links or None in links:
         raise UrdfError(f"{source}: every <link> needs a name, and a robot at least one")
+    children: dict[str, list] = {}
+    for name in links:
+        if name in children:
+            raise UrdfError(f"{source}: two links are named {brief(name)}")
+        children[name] = []
     parent_of: dict[str, object] = {}
-    children: dict[str, list] = {name: [] for name in links}
     for joint in root.findall("joint"):
         name = joint.get("name")
         where = f"{source}: joint {brief(name)}"
@@ -154,30 +154,124 @@ def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame =
             if link not in children:
                 raise UrdfError(f"{where}: unknown link {brief(link)}")
         if c in parent_of:
-            raise UrdfError(f"{where}: link {brief(c)} already has a parent joint: a closed "
-                            f"loop is not supported")
+            raise UrdfError(f"{where}: link {brief(c)} already has the parent joint "
+                            f"{brief(parent_of[c].get('name'))}: a closed loop is not "
+                            f"supported")
         parent_of[c] = joint
         children[p].append(joint)
+    _refuse_loops(source, links, parent_of)
     roots = [name for name in links if name not in parent_of]
     if len(roots) != 1:
-        raise UrdfError(f"{source}: expected one root link, found "
-                        f"{', '.join(map(brief, roots)) or 'none (a closed loop)'}")
+        raise UrdfError(f"{source}: expected one root link, found {_listed(roots)}")
     chain = _chain(source, roots[0], tip, parent_of, children)
     return _walk(source, root.get("name") or source, roots[0], chain, base, bound)
 
 
+class _BoundedBuilder:
+    """The target of the XML parser: builds the element tree (with ``builder``) and
+    stops the parse at the first element over a budget of :mod:`coopkin_sym.limits`
+    (elements, links, joints, nesting), before the rest of the file is parsed."""
+
+    def __init__(self, source: str, builder):
+        self.source, self.builder = source, builder
+        self.depth = self.elements = 0
+        self.counts = {"link": 0, "joint": 0}
+
+    def start(self, tag: str, attributes: dict):
+        self.elements += 1
+        if self.elements > limits.MAX_URDF_ELEMENTS:
+            raise UrdfError(f"{self.source}: more than {limits.MAX_URDF_ELEMENTS:,} XML "
+                            f"elements (the limit for a URDF file)")
+        if self.depth >= limits.MAX_DEPTH:
+            raise UrdfError(f"{self.source}: XML elements nested more than "
+                            f"{limits.MAX_DEPTH} deep (the limit for a URDF file)")
+        if self.depth == 1 and tag in self.counts:
+            self.counts[tag] += 1
+            most = limits.MAX_URDF_LINKS if tag == "link" else limits.MAX_URDF_JOINTS
+            if self.counts[tag] > most:
+                raise UrdfError(f"{self.source}: more than {most:,} {tag}s (the limit "
+                                f"for a URDF file)")
+        self.depth += 1
+        return self.builder.start(tag, attributes)
+
+    def end(self, tag: str):
+        self.depth -= 1
+        return self.builder.end(tag)
+
+    def data(self, text: str) -> None:
+        self.builder.data(text)
+
+    def close(self):
+        return self.builder.close()
+
+
+def _parse(text: str, source: str):
+    """The root element of a URDF text, parsed by ``defusedxml`` (no DTD, entity or
+    external reference) within the budgets of :class:`_BoundedBuilder`."""
+    from xml.etree.ElementTree import TreeBuilder  # only when a URDF file is read
+
+    from defusedxml import DefusedXmlException
+    from defusedxml.ElementTree import DefusedXMLParser, ParseError
+
+    parser = DefusedXMLParser(target=_BoundedBuilder(source, TreeBuilder()),
+                              forbid_dtd=True)
+    try:
+        parser.feed(text)
+        return parser.close()
+    except DefusedXmlException as exc:
+        raise UrdfError(f"{source}: not a URDF file ({type(exc).__name__}: a DTD, entity "
+                        f"or external reference is forbidden)") from None
+    except ParseError as exc:
+        raise UrdfError(f"{source}: not a URDF file ({' '.join(str(exc).split())})") from None
+
+
+def _listed(names: list, most: int = 6) -> str:
+    """Names for a message: the first ``most``, and how many in all."""
+    if not names:
+        return "none"
+    shown = ", ".join(map(brief, names[:most]))
+    return shown if len(names) <= most else f"{shown}, ... ({len(names)} in all)"
+
+
+def _refuse_loops(source: str, links: list[str], parent_of: dict) -> None:
+    """Refuse a link that is its own ancestor, naming the joints and links of the loop.
+    Each link has at most one parent joint here, so following parents from every link
+    (each link walked once) finds every loop."""
+    done: set[str] = set()
+    for start in links:
+        path: list[str] = []
+        on_path: dict[str, int] = {}
+        link = start
+        while link in parent_of and link not in done:
+            if link in on_path:
+                loop = path[on_path[link]:][::-1]     # from parent to child
+                joints = [parent_of[x].get("name") for x in (*loop[1:], loop[0])]
+                through = f" through {_listed(loop[1:])}" if len(loop) > 1 else ""
+                raise UrdfError(f"{source}: a closed loop: joint"
+                                f"{'s' if len(joints) > 1 else ''} {_listed(joints)} lead"
+                                f"{'' if len(joints) > 1 else 's'} from link "
+                                f"{brief(loop[0])}{through} back to {brief(loop[0])} (a "
+                                f"link cannot be its own ancestor)")
+            on_path[link] = len(path)
+            path.append(link)
+            link = parent_of[link].find("parent").get("link")
+        done.update(path)
+
+
 def _chain(source: str, root: str, tip: str | None, parent_of: dict, children: dict
            ) -> list:
-    """The joints from the root link to ``tip`` (the leaf when the robot is a chain)."""
+    """The joints from the root link to ``tip`` (the leaf when the robot is a chain),
+    at most :data:`~coopkin_sym.limits.MAX_URDF_CHAIN` of them."""
     if tip is None:
         out, link = [], root
         while children[link]:
             if len(children[link]) > 1:
-                names = ", ".join(brief(j.get("name")) for j in children[link])
+                names = _listed([j.get("name") for j in children[link]])
                 raise UrdfError(f"{source}: the robot branches at link {brief(link)} "
                                 f"(joints {names}): name the arm's last link with tip")
             joint = children[link][0]
             out.append(joint)
+            _check_chain_length(source, root, out)
             link = joint.find("child").get("link")
         return out
     if tip not in children:
@@ -186,8 +280,15 @@ def _chain(source: str, root: str, tip: str | None, parent_of: dict, children: d
     while link != root:
         joint = parent_of[link]
         out.append(joint)
+        _check_chain_length(source, root, out)
         link = joint.find("parent").get("link")
     return out[::-1]
+
+
+def _check_chain_length(source: str, root: str, chain: list) -> None:
+    if len(chain) > limits.MAX_URDF_CHAIN:
+        raise UrdfError(f"{source}: the chain from link {brief(root)} has more than "
+                        f"{limits.MAX_URDF_CHAIN} joints (the limit for one arm)")
 
 
 def _walk(source: str, robot: str, root: str, chain: list, base: Frame, bound: float

@@ -1,18 +1,27 @@
-"""Model files and dicts read within budgets: YAML 1.2, aliases, nesting, digits, size."""
+"""Model files and dicts read within budgets: YAML 1.2, aliases, nesting, digits, size;
+regular files only (no named pipe, device, socket or directory), for models and reports."""
 
 from __future__ import annotations
 
 import copy
 import json
+import os
+import socket
+import tempfile
+import threading
 import time
 
 import numpy as np
 import pytest
 import sympy as sp
+from bounded_run import run_coopkin
 from typer.testing import CliRunner
 
 from coopkin_sym import limits, load
 from coopkin_sym.cli import app
+from coopkin_sym.model import input_files
+from coopkin_sym.model.examples import example_path
+from coopkin_sym.model.input_files import read_input_bytes
 from coopkin_sym.model.model import ModelError
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
 
@@ -210,9 +219,139 @@ def test_long_file_name():
 
 def test_dev_zero_and_directories():
     start = time.monotonic()
-    assert "larger than 8.0 MB" in problems("/dev/zero")
+    assert problems("/dev/zero") == "/dev/zero: is a character device, not a regular file"
     assert time.monotonic() - start < 2
-    assert "is a directory" in problems("/")
+    assert problems("/") == "/: is a directory, not a file"
+
+
+@pytest.fixture
+def fifo(tmp_path):
+    """A named pipe that nobody writes to: a reader that opens it blocks forever."""
+    path = tmp_path / "pipe.yaml"
+    os.mkfifo(path)
+    yield path
+    try:   # a reader blocked on it (a regression) gets an end of file
+        os.close(os.open(path, os.O_WRONLY | os.O_NONBLOCK))
+    except OSError:
+        pass
+
+
+@pytest.fixture
+def socket_file():
+    """A Unix socket in a short temporary folder (their paths are short)."""
+    folder = tempfile.mkdtemp(prefix="ck")
+    path = os.path.join(folder, "s.yaml")
+    server = socket.socket(socket.AF_UNIX)
+    server.bind(path)
+    yield path
+    server.close()
+    os.unlink(path)
+    os.rmdir(folder)
+
+
+def in_thread(call, seconds: float = 10.0):
+    """``call()`` in a thread, its result or exception; the test fails (instead of
+    hanging) when it is still running after ``seconds``."""
+    out: list = []
+
+    def run():
+        try:
+            out.append(call())
+        except Exception as exc:  # noqa: BLE001 - handed to the test
+            out.append(exc)
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    thread.join(seconds)
+    assert not thread.is_alive(), f"still running after {seconds} s"
+    return out[0]
+
+
+def test_a_named_pipe_as_model_file_is_refused_before_it_is_read(fifo):
+    error = in_thread(lambda: load(fifo))
+    assert isinstance(error, ModelError)
+    assert error.problems == ["is a named pipe (FIFO), not a regular file"]
+    assert str(error) == f"{fifo}: is a named pipe (FIFO), not a regular file"
+
+
+def test_a_named_pipe_as_model_file_on_the_command_line(fifo):
+    done = run_coopkin("analyze", str(fifo), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == f"coopkin: error: {fifo}: is a named pipe (FIFO), not a " \
+                          f"regular file\n"
+
+
+def test_sockets_and_devices_are_refused(socket_file):
+    assert problems(socket_file) == f"{socket_file}: is a socket, not a regular file"
+    assert problems("/dev/null") == "/dev/null: is a character device, not a regular file"
+
+
+def test_a_file_swapped_for_a_pipe_after_the_check_is_refused(fifo, monkeypatch):
+    """The kind is checked again on the opened file: a path that was a regular file
+    when it was looked at and is a pipe when it is opened is still refused (opening
+    it does not block)."""
+    regular = os.stat(__file__)
+    real_stat = os.stat
+
+    def stat_before_the_swap(path, *args, **kwargs):
+        return regular if os.fspath(path) == os.fspath(fifo) else \
+            real_stat(path, *args, **kwargs)
+
+    monkeypatch.setattr(input_files.os, "stat", stat_before_the_swap)
+    error = in_thread(lambda: read_input_bytes(fifo))
+    assert isinstance(error, TreeError)
+    assert str(error) == "is a named pipe (FIFO), not a regular file"
+
+
+def test_no_more_than_the_limit_is_read(tmp_path, monkeypatch):
+    monkeypatch.setattr(limits, "MAX_FILE_BYTES", 100)
+    path = tmp_path / "m.yaml"
+    path.write_bytes(b"#" * 100)
+    assert read_input_bytes(path) == b"#" * 100
+    path.write_bytes(b"#" * 101)
+    with pytest.raises(TreeError, match=r"^the file is larger than 100 bytes \(the limit "
+                                        r"for a model file, a URDF file or a report\)$"):
+        read_input_bytes(path)
+
+
+@pytest.mark.skipif(not os.path.exists("/proc/self/status"), reason="needs /proc")
+def test_a_file_whose_size_is_not_known_is_read_up_to_the_limit(monkeypatch):
+    """Files of /proc say they are empty: what is read is still bounded."""
+    assert os.stat("/proc/self/status").st_size == 0
+    monkeypatch.setattr(limits, "MAX_FILE_BYTES", 100)
+    with pytest.raises(TreeError, match="larger than 100 bytes"):
+        read_input_bytes("/proc/self/status")
+
+
+def test_missing_and_unreadable_files(tmp_path):
+    with pytest.raises(TreeError, match="^no such file$"):
+        read_input_bytes(tmp_path / "none.yaml")
+    with pytest.raises(TreeError, match="^cannot read the file: embedded null byte$"):
+        read_input_bytes("a\x00b")
+    loop = tmp_path / "loop.yaml"
+    loop.symlink_to(loop)
+    with pytest.raises(TreeError, match="^cannot read the file: Too many levels of "
+                                        "symbolic links$"):
+        read_input_bytes(loop)
+
+
+def test_a_report_read_back_is_checked_like_a_model_file(fifo, tmp_path, monkeypatch):
+    done = run_coopkin("verify", "paper-case1-hard", str(fifo), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == f"coopkin: error: {fifo}: is a named pipe (FIFO), not a " \
+                          f"regular file\n"
+    result = runner.invoke(app, ["verify", "paper-case1-hard", str(tmp_path)])
+    assert result.exit_code == 2
+    assert result.stderr == f"coopkin: error: {tmp_path}: is a directory, not a file\n"
+    most = example_path("paper-case1-hard").stat().st_size   # the model is read
+    report = tmp_path / "r.json"
+    report.write_text("{}" + " " * (most - 1))
+    monkeypatch.setattr(limits, "MAX_FILE_BYTES", most)
+    result = runner.invoke(app, ["verify", "paper-case1-hard", str(report)])
+    assert result.exit_code == 2
+    assert result.stderr == (f"coopkin: error: {report}: the file is larger than "
+                             f"{most:,} bytes (the limit for a model file, a URDF file "
+                             f"or a report)\n")
 
 
 def test_a_50_mb_yaml_is_refused_at_once(tmp_path):

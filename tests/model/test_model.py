@@ -593,3 +593,120 @@ def test_top_level_not_a_mapping(tmp_path):
     path = Path(tmp_path / "list.yaml")
     path.write_text("- 1\n- 2\n", encoding="utf-8")
     assert_problem(problems_of(path), "(top level)", "expected a mapping")
+
+
+# ------------------------------------------------------------------------- one error per problem
+
+DH_ARM = {"name": "d", "dh": [{"name": "q3", "type": "revolute", "a": "L"},
+                              {"name": "q4", "type": "revolute", "a": "L"}]}
+
+
+def _with_arm(arm: dict, *links: str) -> dict[str, Any]:
+    """Case 1 with ``arm`` added as arms[2], contacts on it at ``links`` (in its link
+    frames), and a non-unit normal on contact c2 (of arm a2, a problem of its own)."""
+    tree = case1()
+    tree["arms"].append(arm)
+    tree["contacts"][1]["normal"] = [0, 0, 2]
+    tree["contacts"] += [{"name": f"c{3 + k}", "link": link, "point": [0, 0, 0],
+                          "normal": [1, 0, 0], "model": "hard", "frame": "link"}
+                         for k, link in enumerate(links)]
+    return tree
+
+
+NORMAL = "contacts[1].normal: not a unit vector (squared length 4); did you mean [0, 0, 1]?"
+
+
+@pytest.mark.parametrize("change, problem", [
+    ({"dh": [{"name": "q3", "type": "revolute", "alpha": "x"}]},
+     "arms[2].dh[0].alpha: 'x' uses undeclared symbol x (declared parameters: none)"),
+    ({"convention": "craig"},
+     "arms[2].convention: expected standard (Denavit-Hartenberg) or modified (Craig), got "
+     "'craig'"),
+    ({"base": {"xyz": [0, 0]}}, "arms[2].base.xyz: expected 3 numbers, got 2"),
+    ({"dh": "x"}, "arms[2].dh: expected a list, got 'x'"),
+])
+def test_a_failed_dh_arm_is_the_one_error_about_it(change, problem):
+    err = problems_of(_with_arm({**DH_ARM, **change}, "d/1", "d/2", "d/b", "d/0"))
+    assert err.problems == [problem, NORMAL]
+
+
+@pytest.mark.parametrize("change, problem", [
+    ({"joints": "x"}, "arms[2].joints: expected a list, got 'x'"),
+    ({"urdf": 5}, "arms[2].urdf: expected text, got 5"),
+    ({"name": "p q"},
+     "arms[2].name: 'p q' is not a valid name (letters, digits and underscores, not "
+     "starting with a digit)"),
+])
+def test_an_arm_that_cannot_be_read_is_the_one_error_about_it(change, problem):
+    arm = {"name": "p", "joints": [{"name": "q3", "type": "revolute", "axis": [0, 0, 1],
+                                    "point": [0, 0, 0]}], **change}
+    name = arm["name"]
+    err = problems_of(_with_arm(arm, f"{name}/1", f"{name}/b"))
+    assert err.problems == [problem, NORMAL]
+
+
+def test_a_plain_arm_with_a_bad_joint_still_has_its_links_checked():
+    """The links of an arm given by its joints are known even when a joint is wrong:
+    a contact on a link it does not have is a problem of its own."""
+    arm = {"name": "p", "joints": [{"name": "q3", "type": "rotary", "axis": [0, 0, 1],
+                                    "point": [0, 0, 0]}]}
+    tree = _with_arm(arm)
+    tree["contacts"].append({"name": "c3", "link": "p/2", "point": [0, 0, 0],
+                             "model": "hard"})
+    assert problems_of(tree).problems == [
+        "arms[2].joints[0].type: unknown joint type 'rotary' (expected revolute or "
+        "prismatic)", NORMAL, "contacts[2].link: arm p has 1 joint, no link 2"]
+
+
+def test_an_arm_without_a_name_or_no_arms_is_the_one_error():
+    tree = _with_arm({"joints": []}, "p/1", "p/b")
+    assert problems_of(tree).problems == ["arms[2]: missing key 'name'", NORMAL]
+    tree = _with_arm(DH_ARM, "p/1", "p/b")
+    tree["arms"] = "a1"
+    assert problems_of(tree).problems == ["arms: expected a list, got 'a1'", NORMAL]
+    tree["arms"] = []
+    assert problems_of(tree).problems == ["arms: at least one arm with one joint is "
+                                          "needed", NORMAL]
+
+
+def test_a_failed_dh_arm_is_one_line_on_the_command_line(tmp_path):
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    tree = _with_arm({**DH_ARM, "convention": "craig"}, "d/1", "d/b")
+    tree["contacts"][1]["normal"] = [0, 0, 1]
+    path = tmp_path / "m.json"
+    path.write_text(json.dumps(tree), encoding="utf-8")
+    result = CliRunner().invoke(app, ["analyze", str(path)])
+    assert result.exit_code == 2
+    assert result.stderr == (f"coopkin: error: {path}: arms[2].convention: expected "
+                             f"standard (Denavit-Hartenberg) or modified (Craig), got "
+                             f"'craig'\n")
+
+
+@pytest.mark.parametrize("parameters, problem", [
+    ("L", "parameters: expected a list, got 'L'"),
+    (["L L"], "parameters[0]: 'L L' is not a valid name (letters, digits and underscores, "
+              "not starting with a digit)"),
+    (["pi"], "parameters[0]: 'pi' is reserved (it means something else in SymPy text); "
+             "choose another name"),
+    ([5], "parameters[0]: expected a name, got 5"),
+])
+def test_a_parameter_list_that_cannot_be_read_is_the_one_error_about_it(parameters,
+                                                                        problem):
+    """The numbers that use L are not reported as using an undeclared symbol: which
+    names the list meant is unknown; other problems still are."""
+    tree = case1()
+    tree["parameters"] = parameters
+    tree["contacts"][1]["normal"] = [0, 0, 2]
+    assert problems_of(tree).problems == [problem, NORMAL]
+
+
+def test_a_symbol_missing_from_a_parameter_list_that_was_read_is_reported():
+    tree = case1()
+    tree["parameters"] = ["L", "L", "M"]
+    tree["contacts"][0]["point"] = [0, "N", 0]
+    assert problems_of(tree).problems == [
+        "parameters[1]: duplicate name 'L' (already used at parameters[0])",
+        "contacts[0].point: 'N' uses undeclared symbol N (declared parameters: L, M)"]

@@ -5,15 +5,21 @@ as robot files write them, and one test per refused file."""
 
 from __future__ import annotations
 
+import contextlib
+import json
 import math
+import os
 import random
+import time
 from pathlib import Path
 
 import pytest
 import sympy as sp
+from bounded_run import run_coopkin, run_python
 from independent import reference_analysis
 
 import coopkin_sym
+from coopkin_sym import limits
 from coopkin_sym.analysis.kinematics import build
 from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
@@ -218,7 +224,27 @@ JOINT = ('<joint name="j" type="{type}"><parent link="a"/><child link="b"/>{extr
      r"joint 'j': mimics 'k'; coupled joints are not supported"),
     (_robot(JOINT.format(type="revolute", extra="")
             + '<joint name="k" type="revolute"><parent link="a"/><child link="b"/></joint>'),
-     r"joint 'k': link 'b' already has a parent joint: a closed loop is not supported"),
+     r"joint 'k': link 'b' already has the parent joint 'j': a closed loop is not "
+     r"supported"),
+    (_robot('<joint name="j" type="fixed"><parent link="b"/><child link="b"/></joint>'),
+     r"^r\.urdf: a closed loop: joint 'j' leads from link 'b' back to 'b' \(a link "
+     r"cannot be its own ancestor\)$"),
+    (_robot('<joint name="j" type="fixed"><parent link="b"/><child link="c"/></joint>'
+            '<joint name="k" type="fixed"><parent link="c"/><child link="b"/></joint>',
+            '<link name="a"/><link name="b"/><link name="c"/>'),
+     r"^r\.urdf: a closed loop: joints 'k', 'j' lead from link 'c' through 'b' back to "
+     r"'c' \(a link cannot be its own ancestor\)$"),
+    (_robot('<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+            '<joint name="k" type="fixed"><parent link="b"/><child link="c"/></joint>'
+            '<joint name="m" type="fixed"><parent link="c"/><child link="a"/></joint>',
+            '<link name="a"/><link name="b"/><link name="c"/>'),
+     r"^r\.urdf: a closed loop: joints 'k', 'm', 'j' lead from link 'b' through 'c', 'a' "
+     r"back to 'b' \(a link cannot be its own ancestor\)$"),
+    (_robot("", '<link name="a"/><link name="b"/><link name="a"/>'),
+     r"^r\.urdf: two links are named 'a'$"),
+    (_robot("", "".join(f'<link name="l{i}"/>' for i in range(10))),
+     r"^r\.urdf: expected one root link, found 'l0', 'l1', 'l2', 'l3', 'l4', 'l5', \.\.\. "
+     r"\(10 in all\)$"),
     (_robot('<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
             '<joint name="k" type="fixed"><parent link="a"/><child link="c"/></joint>',
             '<link name="a"/><link name="b"/><link name="c"/>'),
@@ -242,6 +268,134 @@ JOINT = ('<joint name="j" type="{type}"><parent link="a"/><child link="b"/>{extr
 def test_bad_urdf_gets_one_clear_error(text, message):
     with pytest.raises(UrdfError, match=message):
         read_urdf_text(text, "r.urdf")
+
+
+def _loop_beside_the_chain(tmp: Path) -> Path:
+    """A model whose URDF arm ends at a tip on a closed loop that the root does not
+    reach (walking from that tip towards the root never ended)."""
+    _write(tmp, "loop.urdf", _robot(
+        '<joint name="j0" type="revolute"><parent link="a"/><child link="x"/>'
+        '<axis xyz="0 0 1"/></joint>'
+        '<joint name="j1" type="revolute"><parent link="b"/><child link="c"/>'
+        '<axis xyz="0 0 1"/></joint>'
+        '<joint name="j2" type="revolute"><parent link="c"/><child link="b"/>'
+        '<axis xyz="0 0 1"/></joint>',
+        '<link name="a"/><link name="x"/><link name="b"/><link name="c"/>'))
+    return _write(tmp, "m.json", json.dumps(
+        {"arms": [{"name": "f", "urdf": "loop.urdf", "tip": "c"}],
+         "contacts": [{"name": "k", "link": "f/c", "point": [1, 0, 0], "model": "hard"}]}))
+
+
+def test_a_tip_on_a_closed_loop_is_one_error_at_once(tmp_path):
+    model = _loop_beside_the_chain(tmp_path)
+    done = run_coopkin("analyze", str(model), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {model}: arms[0].urdf: loop.urdf: a closed "
+                           f"loop: joints 'j2', 'j1' lead from link 'c' through 'b' back "
+                           f"to 'c' (a link cannot be its own ancestor)\n")
+
+
+def _chain_text(joints: int, *, links_first: bool = True, body: str = "",
+                short: bool = False) -> str:
+    """A chain of revolute joints l0 -> l1 -> ... (``short``: fixed joints with nothing
+    but their links)."""
+    links = "".join(f'<link name="l{i}"/>' for i in range(joints + 1))
+    inside = "" if short else \
+        '<origin xyz="0 0 0.1" rpy="0 0 0.3"/><axis xyz="0 0 1"/>' + body
+    chain = "".join(f'<joint name="j{i}" type="{"fixed" if short else "revolute"}">'
+                    f'<parent link="l{i}"/><child link="l{i + 1}"/>{inside}</joint>'
+                    for i in range(joints))
+    return f'<robot name="r">{links + chain if links_first else chain + links}</robot>'
+
+
+# a URDF file of 5,000 or 70,000 joints, timed in a fresh interpreter
+_TIMED = """
+import json, sys, time
+from coopkin_sym.errors import UrdfError
+from coopkin_sym.model.urdf import read_urdf
+start = time.monotonic()
+try:
+    read_urdf(sys.argv[1])
+    message = None
+except UrdfError as exc:
+    message = str(exc)
+print(json.dumps([message, time.monotonic() - start]))
+"""
+
+
+@pytest.mark.parametrize("joints, links_first, what", [
+    (5000, True, "links"), (5000, False, "joints"), (70_000, True, "links"),
+    (70_000, False, "joints")])
+def test_urdf_files_of_thousands_of_joints_are_refused_at_once(tmp_path, joints,
+                                                               links_first, what):
+    path = _write(tmp_path, "big.urdf", _chain_text(joints, links_first=links_first,
+                                                    short=joints > 5000))
+    assert path.stat().st_size < 8 * 1024 * 1024
+    done = run_python(_TIMED.replace("sys.argv[1]", repr(str(path))), timeout=60)
+    message, seconds = json.loads(done.stdout)
+    assert message == f"big.urdf: more than 4,000 {what} (the limit for a URDF file)"
+    assert seconds < 0.5
+
+
+def test_a_large_urdf_file_is_one_line_on_the_command_line(tmp_path):
+    _write(tmp_path, "big.urdf", _chain_text(5000))
+    model = _write(tmp_path, "m.json", json.dumps(
+        {"arms": [{"name": "f", "urdf": "big.urdf"}],
+         "contacts": [{"name": "k", "link": "f/1", "point": [1, 0, 0], "model": "hard"}]}))
+    done = run_coopkin("analyze", str(model), timeout=60)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {model}: arms[0].urdf: big.urdf: more than "
+                           f"4,000 links (the limit for a URDF file)\n")
+
+
+@pytest.mark.parametrize("limit, value, text, message", [
+    ("MAX_URDF_LINKS", 3, _chain_text(2), None),
+    ("MAX_URDF_LINKS", 2, _chain_text(2), "more than 2 links (the limit for a URDF file)"),
+    ("MAX_URDF_JOINTS", 2, _chain_text(2), None),
+    ("MAX_URDF_JOINTS", 1, _chain_text(2), "more than 1 joints (the limit for a URDF "
+                                           "file)"),
+    ("MAX_URDF_ELEMENTS", 14, _chain_text(2), None),   # robot, 3 links, 2 x 5 in joints
+    ("MAX_URDF_ELEMENTS", 13, _chain_text(2), "more than 13 XML elements (the limit for "
+                                              "a URDF file)"),
+    ("MAX_DEPTH", 4, _chain_text(2, body="<a><b/></a>"), None),
+    ("MAX_DEPTH", 3, _chain_text(2, body="<a><b/></a>"), "XML elements nested more than "
+                                                         "3 deep (the limit for a URDF "
+                                                         "file)"),
+    ("MAX_URDF_CHAIN", 2, _chain_text(2), None),
+    ("MAX_URDF_CHAIN", 1, _chain_text(2), "the chain from link 'l0' has more than 1 "
+                                          "joints (the limit for one arm)"),
+])
+def test_urdf_budgets(monkeypatch, limit, value, text, message):
+    monkeypatch.setattr(limits, limit, value)
+    for tip in (None, "l2"):
+        if message is None:
+            assert len(read_urdf_text(text, "r.urdf", tip=tip).joints) == 2
+        else:
+            with pytest.raises(UrdfError) as info:
+                read_urdf_text(text, "r.urdf", tip=tip)
+            assert str(info.value) == f"r.urdf: {message}"
+
+
+def test_a_urdf_text_handed_over_is_bounded_like_a_file(monkeypatch):
+    monkeypatch.setattr(limits, "MAX_FILE_BYTES", len(FINGER))
+    assert len(read_urdf_text(FINGER, "f.urdf").joints) == 1
+    with pytest.raises(UrdfError, match=rf"^f\.urdf: the text is longer than "
+                                        rf"{len(FINGER)} bytes \(the limit for a URDF "
+                                        rf"file\)$"):
+        read_urdf_text(FINGER + " ", "f.urdf")
+
+
+def test_a_flood_of_elements_or_of_nesting_stops_the_parse(tmp_path):
+    for body, message in (("<a/>" * 2_000_000, "more than 100,000 XML elements"),
+                          ("<a>" * 1_000_000 + "</a>" * 1_000_000,
+                           "XML elements nested more than 32 deep")):
+        text = f'<robot name="r"><link name="l"/>{body}</robot>'
+        assert len(text) < 8 * 1024 * 1024
+        start = time.monotonic()
+        with pytest.raises(UrdfError, match=f"^r.urdf: {message} \\(the limit for a URDF "
+                                            f"file\\)$"):
+            read_urdf_text(text, "r.urdf")
+        assert time.monotonic() - start < 2
 
 
 def test_tip_chooses_a_chain_of_a_branching_robot():
@@ -278,6 +432,86 @@ def _arm_model(tmp: Path, arm: dict, contact: dict | None = None) -> dict:
 def test_bad_urdf_arms_get_one_clear_error(tmp_path, arm, contact, message):
     with pytest.raises(ModelError, match=message):
         coopkin_sym.load(_arm_model(tmp_path, arm, contact))
+
+
+def _file_arm_model(urdf: Path | str) -> dict:
+    return {"arms": [{"name": "f", "urdf": str(urdf)}],
+            "contacts": [{"name": "c", "link": "f/1", "point": [1, 0, 0], "model": "hard"}]}
+
+
+def test_a_urdf_path_naming_a_pipe_is_refused_before_it_is_read(tmp_path):
+    pipe = tmp_path / "f.urdf"
+    os.mkfifo(pipe)
+    _write(tmp_path, "m.json", json.dumps(_file_arm_model("f.urdf")))
+    try:
+        done = run_coopkin("analyze", str(tmp_path / "m.json"), timeout=30)
+    finally:   # a reader blocked on it (a regression) gets an end of file
+        with contextlib.suppress(OSError):
+            os.close(os.open(pipe, os.O_WRONLY | os.O_NONBLOCK))
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {tmp_path / 'm.json'}: arms[0].urdf: {pipe}: "
+                           f"is a named pipe (FIFO), not a regular file\n")
+
+
+def test_a_urdf_path_naming_a_device_or_a_directory_is_refused(tmp_path):
+    _write(tmp_path, "m.json", json.dumps(_file_arm_model("/dev/zero")))
+    done = run_coopkin("analyze", str(tmp_path / "m.json"), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {tmp_path / 'm.json'}: arms[0].urdf: "
+                           f"/dev/zero: is a character device, not a regular file\n")
+    with pytest.raises(ModelError) as info:
+        coopkin_sym.load(_file_arm_model("/"))
+    assert info.value.problems == ["arms[0].urdf: /: is a directory, not a file"]
+
+
+FLOATING = _robot(JOINT.format(type="floating", extra=""))
+BRANCHING = _robot('<joint name="j" type="revolute"><parent link="a"/><child link="b"/>'
+                   '<axis xyz="0 0 1"/></joint>'
+                   '<joint name="k" type="prismatic"><parent link="a"/><child link="c"/>'
+                   '<axis xyz="1 0 0"/></joint>',
+                   '<link name="a"/><link name="b"/><link name="c"/>')
+
+
+def _refused_arm_model(tmp: Path, text: str, **arm) -> dict:
+    """Arm f read from ``text`` with contacts on its links by name, by number and in
+    a link's frame; arm g is fine, but its contact has a normal that is not a unit
+    vector (a problem of its own)."""
+    _write(tmp, "f.urdf", text)
+    on = [("f/b", "base"), ("f/b", "link"), ("f/1", "base"), ("f/0", "link")]
+    return {"arms": [{"name": "f", "urdf": str(tmp / "f.urdf"), **arm},
+                     {"name": "g", "joints": [{"name": "p", "type": "revolute",
+                                               "axis": [0, 0, 1], "point": [0, 0, 0]}]}],
+            "contacts": [{"name": "g1", "link": "g/1", "point": [1, 0, 0],
+                          "normal": [0, 3, 0], "model": "hard"}]
+            + [{"name": f"f{k}", "link": link, "frame": frame, "point": [1, 0, 0],
+                "normal": [1, 0, 0], "model": "hard"} for k, (link, frame) in enumerate(on)]}
+
+
+@pytest.mark.parametrize("text, arm, problem", [
+    (FLOATING, {}, "arms[0].urdf: f.urdf: joint 'j': type 'floating' is not supported "
+                   "(revolute, continuous, prismatic and fixed joints make an arm)"),
+    (BRANCHING, {"tip": 7}, "arms[0].tip: expected text, got 7"),
+    (BRANCHING, {"tip": "b", "prefix": ["l_"]}, "arms[0].prefix: expected text, got "
+                                                "['l_']"),
+    (FINGER, {"base": {"rpy": [0, 0, "x"]}},
+     "arms[0].base.rpy[2]: 'x' uses undeclared symbol x (declared parameters: none)"),
+])
+def test_a_refused_urdf_arm_is_the_one_error_about_it(tmp_path, text, arm, problem):
+    with pytest.raises(ModelError) as info:
+        coopkin_sym.load(_refused_arm_model(tmp_path, text, **arm))
+    assert info.value.problems == [problem, "contacts[0].normal: not a unit vector "
+                                            "(squared length 9); did you mean [0, 1, 0]?"]
+
+
+def test_a_refused_urdf_arm_is_one_line_on_the_command_line(tmp_path):
+    model = _refused_arm_model(tmp_path, FLOATING)
+    model["contacts"][0]["normal"] = [0, 1, 0]
+    path = _write(tmp_path, "m.json", json.dumps(model))
+    done = run_coopkin("analyze", str(path), timeout=30)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == (f"coopkin: error: {path}: arms[0].urdf: f.urdf: joint 'j': "
+                           f"type 'floating' is not supported (revolute, continuous, "
+                           f"prismatic and fixed joints make an arm)\n")
 
 
 def test_two_arms_from_one_file_need_prefixes(tmp_path):
