@@ -5,15 +5,16 @@ ends in a traceback: it raises a subclass of :class:`CoopkinError` whose message
 one line per problem, naming the entry and what is wrong. Code that wants to tell the
 package's own refusals from bugs catches :class:`CoopkinError`.
 
-All of them live here, grouped by the layer that raises them: exact numbers and ideals
-(:class:`NumberError`, :class:`UndeclaredSymbol`, :class:`GroebnerError`), files and
-models (:class:`TreeError`, :class:`ModelError`, :class:`ConfigurationError`),
-analyses (:class:`BlockTooLarge`, :class:`InfeasibleMotion`,
-:class:`ManipulabilityError`, :class:`SweepError`, :class:`NotIrrational`,
-:class:`LocusError`, :class:`CertifyError`, :class:`VerifyError`,
-:class:`TimeLimitReached`) and outputs (:class:`ReportError`, :class:`ReportInputError`,
-:class:`DrawError`, :class:`PlotError`). Each also keeps its historical base
-(``ValueError``), so older ``except ValueError`` code still catches it.
+All of them live here, grouped by the layer that raises them: arguments of the API
+(:class:`ArgumentError`, :class:`ArgumentTypeError`, :class:`MissingDependency`), exact
+numbers and ideals (:class:`NumberError`, :class:`UndeclaredSymbol`,
+:class:`GroebnerError`), files and models (:class:`TreeError`, :class:`ModelError`,
+:class:`ConfigurationError`), analyses (:class:`BlockTooLarge`,
+:class:`InfeasibleMotion`, :class:`ManipulabilityError`, :class:`SweepError`,
+:class:`NotIrrational`, :class:`LocusError`, :class:`CertifyError`,
+:class:`VerifyError`, :class:`TimeLimitReached`) and outputs (:class:`ReportError`,
+:class:`ReportInputError`, :class:`DrawError`, :class:`PlotError`). Each also keeps its
+historical base (``ValueError``), so older ``except ValueError`` code still catches it.
 
 One warning, :class:`OutputSkipped`, says that a part of an output was left out
 while the rest was written (a plot with nothing to show, a motion not available at
@@ -64,6 +65,45 @@ class TimeLimitReached(CoopkinError):
         shown = f"{seconds:g}"
         super().__init__(f"time bound of {shown} s reached"
                          + (f" during {where}" if where else ""))
+
+
+class ArgumentError(ValueError, CoopkinError):
+    """An argument of the API that cannot be used: a value out of range, an unknown
+    name or format, a matrix of the wrong shape, a request the object cannot answer.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.builders import planar_hand
+    >>> planar_hand(0, 2)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ArgumentError: fingers of planar_hand: need at least one ...
+    """
+
+
+class ArgumentTypeError(TypeError, ArgumentError):
+    """An argument of the API of a kind the function does not take (also a
+    ``TypeError``).
+
+    Example
+    -------
+    >>> from coopkin_sym.exact.rationals import to_fraction
+    >>> to_fraction(0.5)
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ArgumentTypeError: not an exact rational: 0.5
+    """
+
+
+class MissingDependency(ImportError, CoopkinError):
+    """An optional package that a requested output needs is not installed; the
+    message says what to install.
+
+    Example
+    -------
+    >>> str(MissingDependency("to_pandas needs pandas: pip install pandas"))
+    'to_pandas needs pandas: pip install pandas'
+    """
 
 
 class NumberError(ValueError, CoopkinError):

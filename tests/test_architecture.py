@@ -9,6 +9,7 @@ dependency cannot hide.
 from __future__ import annotations
 
 import ast
+import builtins
 from pathlib import Path
 
 import pytest
@@ -126,3 +127,98 @@ def test_every_public_class_has_an_example():
                 if ">>>" not in (ast.get_docstring(node) or ""):
                     missing.append(f"{module}.{node.name}")
     assert missing == []
+
+
+# --- every error a package error --------------------------------------------------------
+
+#: Built-in exceptions raised where a Python protocol expects them, never for bad input:
+#: (module, exception, function) -> why. An entry that no longer matches a raise fails
+#: the test, so the list cannot outlive the code.
+PROTOCOL_RAISES = {
+    ("coopkin_sym", "AttributeError", "__getattr__"): "module attributes (PEP 562)",
+    ("coopkin_sym.analysis.locus.remarks", "KeyError", "__getitem__"): "the mapping protocol",
+    ("coopkin_sym.analysis.locus.remarks", "TypeError", "__contains__"):
+        "a Remark is data: `in` on its text is refused",
+    ("coopkin_sym.analysis.locus.remarks", "TypeError", "__iter__"):
+        "a Remark is data: iterating over its text is refused",
+    ("coopkin_sym.exact.numberfield", "ZeroDivisionError", "inverse"):
+        "division by zero in a field, as for Python's numbers",
+    ("coopkin_sym.exact.ratfunc", "ZeroDivisionError", "make"):
+        "division by zero in a field, as for Python's numbers",
+    ("coopkin_sym.exact.ratfunc", "ZeroDivisionError", "__truediv__"):
+        "division by zero in a field, as for Python's numbers",
+    ("coopkin_sym.present.files", "OSError", "_keep_aside"):
+        "caught by write_files, which raises the caller's package error",
+    ("coopkin_sym.cli", "KeyboardInterrupt", "_interrupted"): "Ctrl-C unwinds the command",
+    ("coopkin_sym.cli", "Exit", "*"): "the command's exit status (typer)",
+}
+#: An internal invariant: raised only by a bug, never by input.
+INVARIANT = "AssertionError"
+
+
+def _raises(path: Path):
+    """(function name, raised expression) for every ``raise X`` / ``raise X(...)``."""
+    tree = ast.parse(path.read_text(), str(path))
+    found = []
+
+    def visit(node, function):
+        for child in ast.iter_child_nodes(node):
+            name = (child.name if isinstance(child, ast.FunctionDef | ast.AsyncFunctionDef)
+                    else function)
+            if isinstance(child, ast.Raise) and child.exc is not None:
+                exc = child.exc.func if isinstance(child.exc, ast.Call) else child.exc
+                found.append((function, exc, child.lineno))
+            visit(child, name)
+
+    visit(tree, "<module>")
+    caught = {n.id for h in ast.walk(tree) if isinstance(h, ast.ExceptHandler) and h.type
+              for n in ast.walk(h.type) if isinstance(n, ast.Name)}
+    return found, caught
+
+
+def _resolve(module, expr):
+    """The object a raised name or dotted name stands for in ``module``, or None."""
+    parts = []
+    while isinstance(expr, ast.Attribute):
+        parts.append(expr.attr)
+        expr = expr.value
+    if not isinstance(expr, ast.Name):
+        return None
+    value = getattr(module, expr.id, getattr(builtins, expr.id, None))
+    for part in reversed(parts):
+        value = getattr(value, part, None)
+    return value
+
+
+def test_every_error_raised_is_a_package_error():
+    """Every exception class the package raises is a :class:`CoopkinError` (so a user
+    catches the package's refusals with one class), a private one its own module
+    catches, an internal invariant, or a protocol exception listed above."""
+    import importlib
+
+    from coopkin_sym.errors import CoopkinError
+
+    wrong, used = [], set()
+    for name, path in MODULES.items():
+        if name.endswith("__main__"):
+            continue              # importing it runs the command
+        module = importlib.import_module(name)
+        found, caught = _raises(path)
+        for function, expr, line in found:
+            value = _resolve(module, expr)
+            if not (isinstance(value, type) and issubclass(value, BaseException)):
+                continue          # a variable or a function that builds the error
+            if issubclass(value, CoopkinError) or value.__name__ == INVARIANT:
+                continue
+            if value.__name__.startswith("_") and value.__name__ in caught:
+                continue          # control flow inside the module
+            key = next((k for k in ((name, value.__name__, function),
+                                    (name, value.__name__, "*")) if k in PROTOCOL_RAISES),
+                       None)
+            if key is not None:
+                used.add(key)
+                continue
+            wrong.append(f"{path.relative_to(PACKAGE.parent)}:{line}: {function} raises "
+                         f"{value.__name__}")
+    assert wrong == []
+    assert sorted(set(PROTOCOL_RAISES) - used) == []

@@ -31,6 +31,7 @@ from typing import Any
 
 import sympy as sp
 
+from coopkin_sym.errors import ConfigurationError
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
@@ -151,11 +152,11 @@ class FactoredMotions:
         subs = {s: sp.Rational(v) for s, v in values.items()}
         missing = [s for s in self.symbols if s not in subs]
         if missing:
-            raise ValueError(f"no value for {', '.join(map(str, missing))}")
+            raise ConfigurationError(f"no value for {', '.join(map(str, missing))}")
         factor_values = [f.subs(subs) for _, f in self.factors]
         for (name, _), v in zip(self.factors, factor_values, strict=True):
             if v == 0:
-                raise ValueError(f"the denominator factor {name} vanishes at this point")
+                raise ConfigurationError(f"the denominator factor {name} vanishes at this point")
         u = self.twists.subs(subs)
         blocks = []
         for arm in self.arms:

@@ -18,6 +18,7 @@ import numpy as np
 
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.analysis.numbers import numbers_from_ranks
+from coopkin_sym.errors import ArgumentError
 
 
 def float_matrix(m) -> np.ndarray:
@@ -31,7 +32,7 @@ def float_numbers(analysis: Analysis) -> dict[str, int]:
     ranks of ``Q``, ``H G^T`` and ``H D`` by ``numpy.linalg.matrix_rank``
     (default tolerance) on the float64 image of the exact matrices."""
     if analysis.variables:
-        raise ValueError("float_numbers needs a configuration with every joint and "
+        raise ArgumentError("float_numbers needs a configuration with every joint and "
                          f"parameter set (free: {', '.join(map(str, analysis.variables))})")
     q = float_matrix(analysis.Q)
     r, m = analysis.r, analysis.m

@@ -43,7 +43,7 @@ from coopkin_sym.analysis.passive import (
     passive_numbers,
 )
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.errors import NotIrrational
+from coopkin_sym.errors import ArgumentError, NotIrrational
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
@@ -271,7 +271,7 @@ def _in_slot(zctx, coeffs: Sequence, k: int):
         c = sp.Rational(c)
         if c:
             if c.q != 1:
-                raise ValueError("integer coefficients expected")
+                raise ArgumentError("integer coefficients expected")
             mon = [0] * n
             mon[k] = i
             terms[tuple(mon)] = int(c)

@@ -27,6 +27,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from coopkin_sym.errors import ArgumentError
+
 #: The formats a renderer can be registered for.
 FORMATS = ("html", "latex", "pretty")
 
@@ -62,10 +64,10 @@ def register(cls: type, kind: str, renderer: Callable[[Any], str]) -> None:
     >>> register(int, "svg", str)
     Traceback (most recent call last):
     ...
-    ValueError: unknown display format 'svg' (formats: html, latex, pretty)
+    coopkin_sym.errors.ArgumentError: unknown display format 'svg' (formats: html, latex, pretty)
     """
     if kind not in FORMATS:
-        raise ValueError(f"unknown display format {kind!r} (formats: {', '.join(FORMATS)})")
+        raise ArgumentError(f"unknown display format {kind!r} (formats: {', '.join(FORMATS)})")
     _RENDERERS[(cls, kind)] = renderer
 
 

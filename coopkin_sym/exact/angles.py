@@ -30,6 +30,7 @@ import flint
 import sympy as sp
 from sympy.polys.polyerrors import NotAlgebraic
 
+from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.parse import parse_angle, tangent_text
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
@@ -140,7 +141,7 @@ class ExactAngle:
             err = abs(math.remainder(2 * math.atan2(a, b) - q, 2 * math.pi))  # float-ok
             if err <= bound:  # float-ok
                 return cls(a, b), err
-        raise ValueError(f"cannot snap the angle {q!r} within {bound} rad")  # pragma: no cover
+        raise NumberError("", f"cannot snap the angle {q!r} within {bound} rad")  # pragma: no cover
 
     @property
     def tangent(self) -> Fraction | None:

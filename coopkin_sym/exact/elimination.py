@@ -33,6 +33,7 @@ from collections.abc import Callable, Sequence
 
 import flint
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.deadline import check
 
 Poly = flint.fmpz_mpoly
@@ -213,7 +214,7 @@ def nullspace(rows: Sequence[Sequence[Poly]], ncols: int | None = None,
         ncols = len(rows[0]) if ncols is None else ncols
         zctx = rows[0][0].context() if zctx is None else zctx
     if ncols is None or zctx is None:
-        raise ValueError("nullspace of an empty matrix needs ncols and zctx")
+        raise ArgumentError("nullspace of an empty matrix needs ncols and zctx")
     reduced, pivots = gauss_jordan(rows, ncols, canonical=False, reduce=True)
     pivot_set = set(pivots)
     out = []

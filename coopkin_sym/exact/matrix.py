@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import flint
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.quotient import eliminate_modulo, nullspace_modulo, rank_modulo
 
@@ -135,7 +136,7 @@ class PolyMatrix:
         self.context = context
         self._integers: flint.fmpz_mat | None = None
         if any(len(r) != ncols for r in self.rows):
-            raise ValueError(f"every row must have {ncols} entries")
+            raise ArgumentError(f"every row must have {ncols} entries")
 
     @classmethod
     def from_integers(cls, nrows: int, ncols: int, entries: Sequence[int]) -> PolyMatrix:
@@ -241,7 +242,7 @@ class PolyMatrix:
         """The determinant (square matrices), reduced in the domain."""
         self._require_rows("det")
         if len(self.rows) != self.ncols:
-            raise ValueError(f"a determinant needs a square matrix, not {self.shape}")
+            raise ArgumentError(f"a determinant needs a square matrix, not {self.shape}")
         if not self.rows:
             return self.context.constant(1)
         d = el.determinant(self.rows)
@@ -254,12 +255,12 @@ class PolyMatrix:
 
     def _require_rows(self, what: str) -> None:
         if self._integers is not None:
-            raise ValueError(f"{what}: a matrix built from_integers gives its rank and "
+            raise ArgumentError(f"{what}: a matrix built from_integers gives its rank and "
                              "column blocks only")
 
     def _require_polynomials(self, what: str) -> None:
         if not self._is_polynomials():
-            raise ValueError(f"{what} is computed over Q(x) only, not over {self.domain!r}")
+            raise ArgumentError(f"{what} is computed over Q(x) only, not over {self.domain!r}")
 
     def __repr__(self) -> str:
         m, n = self.shape

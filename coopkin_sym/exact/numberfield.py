@@ -23,6 +23,8 @@ from fractions import Fraction
 
 import flint
 
+from coopkin_sym.errors import ArgumentError
+
 Element = flint.fmpq_poly
 KPoly = list[Element]
 
@@ -40,7 +42,7 @@ class NumberField:
 
     def __init__(self, g: flint.fmpq_poly):
         if g.degree() < 1:
-            raise ValueError("a number field needs a polynomial of positive degree")
+            raise ArgumentError("a number field needs a polynomial of positive degree")
         self.g = g
 
     def element(self, a) -> Element:
@@ -58,7 +60,7 @@ class NumberField:
             raise ZeroDivisionError("zero has no inverse")
         d, s, _ = a.xgcd(self.g)
         if d.degree() != 0:
-            raise ValueError(f"{self.g} is not irreducible (it shares {d} with {a})")
+            raise ArgumentError(f"{self.g} is not irreducible (it shares {d} with {a})")
         return self.element(s / d)
 
     def _trim(self, p: Sequence) -> KPoly:

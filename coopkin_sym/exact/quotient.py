@@ -30,6 +30,7 @@ from collections.abc import Sequence
 
 import flint
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.elimination import combine, primitive
 
@@ -59,7 +60,7 @@ class Quotient:
     def __init__(self, f: Poly, k: int):
         degree = f.degrees()[k]
         if degree < 1:
-            raise ValueError(f"{f} does not involve variable {k}")
+            raise ArgumentError(f"{f} does not involve variable {k}")
         self.f, self.k, self.degree = f, k, degree
         self.zctx = f.context()
         self.lead = _coefficient(f, k, degree)
@@ -118,7 +119,7 @@ class Tower:
         for q in moduli:
             if not q.lead.is_constant() or any(
                     d and i != q.k for i, d in enumerate(q.f.degrees())):
-                raise ValueError(f"{q.f} is not univariate with a constant leading "
+                raise ArgumentError(f"{q.f} is not univariate with a constant leading "
                                  "coefficient")
         self.moduli = list(moduli)
         self.zctx = self.moduli[0].zctx

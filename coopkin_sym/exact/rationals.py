@@ -20,13 +20,15 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from coopkin_sym.errors import ArgumentTypeError
+
 __all__ = ["to_fmpq", "to_fraction", "to_sympy"]
 
 
 def _parts(x) -> tuple[int, int]:
     """Numerator and denominator of an exact rational of any of the four types."""
     if isinstance(x, bool):
-        raise TypeError("a boolean is not a rational")
+        raise ArgumentTypeError("a boolean is not a rational")
     if isinstance(x, int):
         return x, 1
     if isinstance(x, Fraction):
@@ -37,7 +39,7 @@ def _parts(x) -> tuple[int, int]:
         return int(x.p), int(x.q)
     if isinstance(x, sp.Basic) and x.is_Rational:
         return int(x.p), int(x.q)
-    raise TypeError(f"not an exact rational: {x!r}")
+    raise ArgumentTypeError(f"not an exact rational: {x!r}")
 
 
 def to_sympy(x) -> sp.Rational:

@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.core.add import _addsort
 from sympy.core.mul import _mulsort
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.rationals import to_fmpq, to_sympy
 from coopkin_sym.exact.ring import Frac, Ring
 
@@ -100,18 +101,18 @@ def poly_from_sympy(expr, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> flint
     elif isinstance(expr, Fraction):
         expr = to_sympy(expr)
     if not isinstance(expr, sp.Expr):
-        raise ValueError(f"a {type(expr).__name__} is not a number")
+        raise ArgumentError(f"a {type(expr).__name__} is not a number")
     if expr.is_Rational:
         return ring.qctx.constant(to_fmpq(expr))
     index = {symbols[n]: k for k, n in enumerate(ring.names)}
     used = sorted(expr.free_symbols, key=lambda s: index.get(s, -1))
     if not used or any(s not in index for s in used):
-        raise ValueError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
+        raise ArgumentError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
                          f"{', '.join(ring.names) or 'no variable'}")
     try:
         poly = sp.Poly(expr, *used, domain=sp.QQ)
     except (sp.PolynomialError, sp.CoercionFailed) as exc:
-        raise ValueError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
+        raise ArgumentError(f"{sp.sstr(expr)[:80]} is not a polynomial in "
                          f"{', '.join(ring.names)}") from exc
     terms = {}
     for monom, c in poly.terms():

@@ -31,6 +31,8 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+from coopkin_sym.errors import ArgumentError
+
 CONTACT_MODELS = ("complete", "soft", "hard", "frictionless")
 
 #: Rational tangent half-angles of 24 directions in the plane, about 7.5 + 15 k degrees.
@@ -63,7 +65,7 @@ def circle_point(k: int) -> tuple[Fraction, Fraction]:
 def _spread(count: int) -> list[int]:
     """Table indices of ``count`` directions spread around the circle."""
     if count > 24:
-        raise ValueError(f"at most 24 fingers or arms, got {count}")
+        raise ArgumentError(f"at most 24 fingers or arms, got {count}")
     return [(24 * i) // count for i in range(count)]
 
 
@@ -99,10 +101,10 @@ def _local(u: tuple[Fraction, Fraction], a: Fraction, b: Fraction, z: Fraction) 
 def _models(spec, count: int, what: str) -> list[str]:
     models = [spec] * count if isinstance(spec, str) else list(spec)
     if len(models) != count:
-        raise ValueError(f"{what}: expected {count} contact models, got {len(models)}")
+        raise ArgumentError(f"{what}: expected {count} contact models, got {len(models)}")
     for m in models:
         if m not in CONTACT_MODELS:
-            raise ValueError(f"{what}: unknown contact model {m!r} "
+            raise ArgumentError(f"{what}: unknown contact model {m!r} "
                              f"(one of {', '.join(CONTACT_MODELS)})")
     return models
 
@@ -117,10 +119,10 @@ def _optional_model(spec: bool | str, what: str) -> str | None:
 
 def _check_size(count: int, joints: int, what: str, max_joints: int | None = None) -> None:
     if count < 1 or joints < 1:
-        raise ValueError(f"{what}: need at least one {what.split()[0]} and one joint each, "
+        raise ArgumentError(f"{what}: need at least one {what.split()[0]} and one joint each, "
                          f"got {count} and {joints}")
     if max_joints is not None and joints > max_joints:
-        raise ValueError(f"{what}: at most {max_joints} joints each, got {joints}")
+        raise ArgumentError(f"{what}: at most {max_joints} joints each, got {joints}")
 
 
 def _describe(models: list[str]) -> str:

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.angles import ExactAngle
 
 __all__ = ["CONVENTIONS", "DHJoint", "DHRow", "Frame", "IDENTITY", "dh_joints",
@@ -76,7 +77,7 @@ def _cos_sin(angle: ExactAngle | int) -> tuple[sp.Rational, sp.Rational]:
     if isinstance(angle, ExactAngle):
         return angle.cos_sin
     if angle != 0:
-        raise ValueError("a DH angle given as a number must be 0; use an ExactAngle")
+        raise ArgumentError("a DH angle given as a number must be 0; use an ExactAngle")
     return sp.Integer(1), sp.Integer(0)
 
 
@@ -185,7 +186,7 @@ def dh_joints(rows: Sequence[DHRow], convention: str, base: Frame
     ((0, -1, 0), (0, 0, 1))
     """
     if convention not in CONVENTIONS:
-        raise ValueError(f"unknown DH convention {convention!r}")
+        raise ArgumentError(f"unknown DH convention {convention!r}")
     frames = [base]
     joints = []
     for row in rows:

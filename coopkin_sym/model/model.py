@@ -33,7 +33,7 @@ from typing import Any, Literal
 import sympy as sp
 from pydantic import BaseModel, ConfigDict, StrictBool, StrictStr, ValidationError
 
-from coopkin_sym.errors import ModelError, UndeclaredSymbol, UrdfError
+from coopkin_sym.errors import ArgumentTypeError, ModelError, UndeclaredSymbol, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import (
@@ -915,7 +915,7 @@ def model_of(source: Any) -> Model:
     """
     model = source if isinstance(source, Model) else getattr(source, "model", None)
     if not isinstance(model, Model):
-        raise TypeError(f"expected a model or a system, got {type(source).__name__}")
+        raise ArgumentTypeError(f"expected a model or a system, got {type(source).__name__}")
     return model
 
 

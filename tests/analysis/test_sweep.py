@@ -30,6 +30,7 @@ from coopkin_sym.analysis.sweep import (
     sweep,
 )
 from coopkin_sym.cli import app
+from coopkin_sym.errors import MissingDependency
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.parse import angle_text, parse_angle
 
@@ -407,5 +408,5 @@ def test_to_pandas():
 def test_to_pandas_without_pandas(monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)       # import pandas fails
     res = CASE1.sweep(["q1=pi/2"])
-    with pytest.raises(ImportError, match="pip install pandas"):
+    with pytest.raises(MissingDependency, match="pip install pandas"):
         res.to_pandas()

@@ -10,6 +10,7 @@ import sympy as sp
 from independent import reference_analysis
 
 import coopkin_sym
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.model.builders import arm_cell, circle_point, planar_hand, spatial_hand
 
 NUMBER_KEYS = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
@@ -92,7 +93,7 @@ def test_circle_points_are_rational_unit_and_distinct():
     (lambda: planar_hand(0, 2), "at least one"),
 ])
 def test_bad_sizes_and_models_are_refused(bad, message):
-    with pytest.raises(ValueError, match=message):
+    with pytest.raises(ArgumentError, match=message):
         bad()
 
 

@@ -15,6 +15,7 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from strategies import random_systems
 
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.model.examples import describe_example, example_path, list_examples
 from coopkin_sym.model.model import Arm, Contact, Joint, Model, ModelError, load_model
 
@@ -90,7 +91,7 @@ def test_list_examples():
 def test_example_path_and_unknown_example():
     path = example_path("paper-case1-hard")
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
-    with pytest.raises(ValueError, match="unknown example 'x'; shipped examples: "
+    with pytest.raises(ArgumentError, match="unknown example 'x'; shipped examples: "
                                          "dh-three-finger-hand, dh-two-puma560-box, "
                                          "five-bar, paper-case1-complete-hard, "):
         example_path("x")

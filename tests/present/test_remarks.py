@@ -9,6 +9,7 @@ import pytest
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.remarks import REASONS, REMARK_KINDS, Remark, add_once
 from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.present import remarks as words
 from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report import locus_from_json, render_json
@@ -62,11 +63,11 @@ def test_every_reason_is_worded(reason):
 
 
 def test_remarks_are_checked_values():
-    with pytest.raises(ValueError, match="unknown remark kind 'nope'"):
+    with pytest.raises(ArgumentError, match="unknown remark kind 'nope'"):
         Remark.of("nope")
-    with pytest.raises(ValueError, match="needs the facts polynomial"):
+    with pytest.raises(ArgumentError, match="needs the facts polynomial"):
         Remark.of("no_real_points")
-    with pytest.raises(ValueError, match="unknown reason 'tired'"):
+    with pytest.raises(ArgumentError, match="unknown reason 'tired'"):
         Remark.of("enclosing_not_searched", equations=(), reason="tired", bound=None)
     with pytest.raises(TypeError, match="remark_text"):
         "x" in Remark.of("pi_chart")  # noqa: B015 - a remark is not text to search

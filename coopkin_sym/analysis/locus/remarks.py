@@ -21,6 +21,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from coopkin_sym.errors import ArgumentError
+
 #: Every kind of remark, with the facts it holds. Groups: what was not explored
 #: (``Locus.unexplored``), what is said once per search (``Locus.notes``), factors
 #: (``Locus.dropped`` and ``Locus.parameter_conditions``) and how a component's
@@ -119,10 +121,10 @@ class Remark:
     -------
     >>> Remark.of("time_depth", depth=1, equations=("t_q1",))["equations"]
     ('t_q1',)
-    >>> Remark.of("time_depth", depth=1)
+    >>> Remark.of("time_depth", depth=1)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: remark 'time_depth' needs the facts depth, equations (given: depth)
+    coopkin_sym.errors.ArgumentError: remark 'time_depth' needs the facts depth, ...
     """
 
     kind: str
@@ -134,12 +136,12 @@ class Remark:
         tuples, so remarks compare and hash as values)."""
         names = REMARK_KINDS.get(kind)
         if names is None:
-            raise ValueError(f"unknown remark kind {kind!r}")
+            raise ArgumentError(f"unknown remark kind {kind!r}")
         if set(facts) != set(names):
-            raise ValueError(f"remark {kind!r} needs the facts {', '.join(names)} "
+            raise ArgumentError(f"remark {kind!r} needs the facts {', '.join(names)} "
                              f"(given: {', '.join(facts) or 'none'})")
         if "reason" in facts and facts["reason"] not in REASONS:
-            raise ValueError(f"remark {kind!r}: unknown reason {facts['reason']!r}")
+            raise ArgumentError(f"remark {kind!r}: unknown reason {facts['reason']!r}")
         return cls(kind, tuple((n, _frozen(facts[n])) for n in names))
 
     def __getitem__(self, name: str) -> Any:

@@ -28,7 +28,7 @@ from coopkin_sym.analysis.numbers import (
 )
 from coopkin_sym.analysis.sweep.grid import _split_point
 from coopkin_sym.analysis.sweep.values import Value
-from coopkin_sym.errors import SweepError
+from coopkin_sym.errors import ArgumentError, SweepError
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
@@ -312,7 +312,7 @@ class Compiled:
                  prime: int = modular.PRIME):
         model = model_of(system).in_base_frame()  # numbers only
         if not (2 < prime < 2**31 and sp.isprime(prime)):
-            raise ValueError(f"prime: expected an odd prime below 2**31, got {prime}")
+            raise ArgumentError(f"prime: expected an odd prime below 2**31, got {prime}")
         self.model = model
         self.prime = prime
         kinds = {j.name: j.type for j in model.joints}

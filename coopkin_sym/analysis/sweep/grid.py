@@ -5,6 +5,7 @@ package's one parser (see :mod:`coopkin_sym.analysis.sweep`).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from fractions import Fraction
@@ -88,6 +89,8 @@ class Grid:
                 if v.snapped]
 
 
+_INTEGER = re.compile(r"[+-]?[0-9]+")
+
 def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
     """Read ``"q1=-pi..pi:181,q2=0..1/2:11"`` into ``{joint: (lo, hi, count)}``.
 
@@ -114,13 +117,11 @@ def parse_grid(text: str) -> dict[str, tuple[str, str, int]]:
         if len(count.strip()) > 12 and count.strip().isdigit():
             raise SweepError(f"--grid {brief(part)}: the count is over the limit of "
                              f"{limits.MAX_GRID_COUNT:,} points per joint")
-        try:
-            n = int(count.strip()) if len(count.strip()) <= 12 else None
-            if n is None:
-                raise ValueError(count)
-        except ValueError:
-            raise SweepError(f"--grid {brief(part)}: the count {brief(count.strip())} is not an "
-                             f"integer") from None
+        digits = count.strip()
+        if len(digits) > 12 or not _INTEGER.fullmatch(digits):
+            raise SweepError(f"--grid {brief(part)}: the count {brief(digits)} is not an "
+                             f"integer")
+        n = int(digits)
         if name in axes:
             raise SweepError(f"--grid: {name} given more than once")
         axes[name] = (lo.strip(), hi.strip(), n)

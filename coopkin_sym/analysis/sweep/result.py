@@ -15,6 +15,7 @@ import numpy as np
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers, numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.analysis.sweep.values import Value
+from coopkin_sym.errors import MissingDependency
 
 
 @dataclass
@@ -189,7 +190,7 @@ class SweepResult(Displayable):
         try:
             import pandas as pd
         except ImportError:
-            raise ImportError("SweepResult.to_pandas needs pandas: pip install pandas") \
+            raise MissingDependency("SweepResult.to_pandas needs pandas: pip install pandas") \
                 from None
         floats = self._floats()
         data: dict[str, object] = {}

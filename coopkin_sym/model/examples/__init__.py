@@ -22,6 +22,8 @@ from __future__ import annotations
 from importlib.resources import files
 from pathlib import Path
 
+from coopkin_sym.errors import ArgumentError
+
 __all__ = ["describe_example", "example_path", "list_examples"]
 
 _SUFFIX = ".yaml"
@@ -54,7 +56,7 @@ def example_path(name: str) -> Path:
     """
     names = list_examples()
     if name not in names:
-        raise ValueError(f"unknown example '{name}'; shipped examples: {', '.join(names)}")
+        raise ArgumentError(f"unknown example '{name}'; shipped examples: {', '.join(names)}")
     return Path(str(files(__name__) / f"{name}{_SUFFIX}"))
 
 
