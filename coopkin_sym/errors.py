@@ -234,6 +234,21 @@ class BlockTooLarge(ValueError, CoopkinError):
     """
 
 
+class NotAvailable(AttributeError, CoopkinError):
+    """A part of a result that this kind of result does not have (the blocks of an
+    analysis at irrational coordinates); also an ``AttributeError``, so ``hasattr``
+    answers ``False``.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6").C12  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.NotAvailable: C12 is not available at a configuration with ...
+    """
+
+
 class InfeasibleMotion(ValueError, CoopkinError):
     """A requested velocity that the system cannot realize without breaking a contact.
 

@@ -136,6 +136,8 @@ def test_every_public_class_has_an_example():
 #: the test, so the list cannot outlive the code.
 PROTOCOL_RAISES = {
     ("coopkin_sym", "AttributeError", "__getattr__"): "module attributes (PEP 562)",
+    ("coopkin_sym.analysis.irrational", "AttributeError", "__getattr__"):
+        "an attribute no analysis has (the rational-only ones are NotAvailable)",
     ("coopkin_sym.analysis.locus.remarks", "KeyError", "__getitem__"): "the mapping protocol",
     ("coopkin_sym.analysis.locus.remarks", "TypeError", "__contains__"):
         "a Remark is data: `in` on its text is refused",

@@ -43,7 +43,7 @@ from coopkin_sym.analysis.passive import (
     passive_numbers,
 )
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.errors import ArgumentError, NotIrrational
+from coopkin_sym.errors import ArgumentError, NotAvailable, NotIrrational
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
@@ -91,6 +91,16 @@ class PointMotions:
         return [kinematics.twist_in_base(u, self.object_frame) for u in self.object_twists]
 
 
+#: The parts of a rational :class:`~coopkin_sym.analysis.mobility.Analysis` that an
+#: analysis over a number field does not compute.
+RATIONAL_ONLY = frozenset({
+    "C", "C11", "C12", "C22", "C23", "D", "G", "H", "Q", "blocks", "available_blocks",
+    "block_terms", "coordinated_factored", "coordinated_form", "coordinated_terms",
+    "decompose_rows", "in_angles", "joint_velocities", "object_velocities",
+    "manipulability", "kinematics", "twist_in_base", "classes", "certificate", "check",
+    "where", "ring", "poly", "m"})
+
+
 @dataclass(frozen=True)
 class IrrationalAnalysis(Displayable):
     """The numbers at a configuration with irrational coordinates.
@@ -126,6 +136,19 @@ class IrrationalAnalysis(Displayable):
     passive: PassiveNumbers | None = None
     model: Model | None = field(default=None, repr=False, compare=False)
     variables: tuple[str, ...] = ()
+
+    def __getattr__(self, name: str):
+        # only called for names the dataclass does not have: the parts of a rational
+        # analysis that are not computed over a number field get a package error
+        if name in RATIONAL_ONLY:
+            at = ",".join(f"{k}={v}" for k, v in self.at.items())
+            raise NotAvailable(
+                f"{name} is not available at a configuration with irrational coordinates "
+                f"({clip(at, 100)}, over Q({clip(self.alpha, 50)})): only the numbers"
+                f"{' and the motions behind Ni and Nr (.motions)' if self.motions else ''} "
+                f"are computed there; the blocks, matrices and maps need a rational "
+                f"configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
+        raise AttributeError(f"'IrrationalAnalysis' object has no attribute {name!r}")
 
     def __repr__(self) -> str:
         at = ",".join(f"{k}={v}" for k, v in self.at.items())

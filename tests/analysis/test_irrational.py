@@ -13,9 +13,11 @@ from hypothesis import strategies as st
 from independent import reference_numbers_algebraic
 from typer.testing import CliRunner
 
+import coopkin_sym
 import coopkin_sym.model.examples
 from coopkin_sym.analysis.irrational import NotIrrational, analyze_irrational
 from coopkin_sym.cli import app
+from coopkin_sym.errors import NotAvailable
 from coopkin_sym.model.configuration import ConfigurationError
 from coopkin_sym.model.model import load_model
 from coopkin_sym.present.sentences import irrational_sentences
@@ -91,3 +93,19 @@ def test_cli_transcendental_angle_is_one_clear_error():
     assert result.exit_code == 2
     assert result.stderr.startswith("coopkin: error: --at q1: angle '1' is not exact")
     assert result.stderr.count("\n") == 1
+
+
+def test_rational_only_parts_are_a_package_error_naming_what_is_missing():
+    a = coopkin_sym.load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")
+    for name in ("C12", "Q", "joint_velocities", "coordinated_factored"):
+        with pytest.raises(NotAvailable) as info:
+            getattr(a, name)
+        assert str(info.value) == (
+            f"{name} is not available at a configuration with irrational coordinates "
+            "(q1=-pi/6,q2=pi/6, over Q(-2 + sqrt(3))): only the numbers and the motions "
+            "behind Ni and Nr (.motions) are computed there; the blocks, matrices and maps "
+            "need a rational configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
+        assert isinstance(info.value, AttributeError) and not hasattr(a, name)
+    with pytest.raises(AttributeError) as info:
+        _ = a.no_such_part
+    assert not isinstance(info.value, NotAvailable)
