@@ -26,14 +26,18 @@ Example
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
 
-from coopkin_sym.errors import ConfigurationError
+from coopkin_sym.errors import ArgumentTypeError, ConfigurationError
+from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ratfunc import RatFunc
+from coopkin_sym.exact.rationals import to_sympy
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
+from coopkin_sym.model.configuration import Configuration
 
 
 @dataclass(frozen=True)
@@ -89,6 +93,7 @@ class FactoredMotions:
     factors: tuple[tuple[str, sp.Expr], ...]
     symbols: tuple[sp.Symbol, ...]
     twist_names: tuple[str, ...]
+    model: Any = field(default=None, repr=False, compare=False)
 
     def factor_symbols(self) -> dict[str, sp.Symbol]:
         """The factor names as SymPy symbols."""
@@ -145,11 +150,25 @@ class FactoredMotions:
         return sp.Matrix.vstack(*blocks).applyfunc(sp.cancel) if blocks else sp.zeros(
             0, self.twists.cols)
 
-    def at(self, values: Mapping[sp.Symbol, Any]) -> tuple[sp.Matrix, sp.Matrix]:
-        """The exact coordinated motions at a point: ``(C12, K C12)`` with every symbol
-        given a rational value (``{t_q1: 1/3, L: 2, ...}``); a denominator factor that
-        vanishes there is an error (the map is not defined at that point)."""
-        subs = {s: sp.Rational(v) for s, v in values.items()}
+    def at(self, values: str | Mapping[Any, Any]) -> tuple[sp.Matrix, sp.Matrix]:
+        """The exact coordinated motions at a point: ``(C12, K C12)``.
+
+        ``values`` is ``--at`` text or a mapping by joint and parameter name
+        (``"q1=2*atan(1/3),L=2"``; unset joints at home, as for
+        :meth:`~coopkin_sym.system.System.analyze`), or a mapping of the symbols
+        (``{t_q1: Rational(1, 3), L: 2}``, every symbol given an exact rational). A
+        denominator factor that vanishes there is an error (the map is not defined at
+        that point), and so is ``q = pi`` (outside the ``t = tan(q/2)`` chart).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> f = load("paper-case1-hard").analyze(generic=True).coordinated_factored()
+        >>> u, qdot = f.at("q1=pi/2,q2=2*atan(1/3),L=1")
+        >>> u.T, qdot.T
+        (Matrix([[0, 16/9, 0, 0, 0, -16/9]]), Matrix([[-32/9, -16/9]]))
+        """
+        subs = self._point(values)
         missing = [s for s in self.symbols if s not in subs]
         if missing:
             raise ConfigurationError(f"no value for {', '.join(map(str, missing))}")
@@ -171,6 +190,42 @@ class FactoredMotions:
                 rows.append(cells)
             blocks.append(sp.Matrix(rows) * u if rows else sp.zeros(0, u.cols))
         return u, sp.Matrix.vstack(*blocks) if blocks else sp.zeros(0, u.cols)
+
+
+    def _point(self, values: str | Mapping[Any, Any]) -> dict[sp.Symbol, sp.Expr]:
+        """The value of each symbol at the point ``values`` (see :meth:`at`)."""
+        if isinstance(values, Mapping) and values and all(
+                isinstance(k, sp.Symbol) for k in values):
+            known = set(self.symbols)
+            out = {}
+            for symbol, value in values.items():
+                if symbol not in known:
+                    raise ConfigurationError(
+                        f"{symbol}: not a variable of the factored motions (variables: "
+                        f"{', '.join(map(str, self.symbols))})")
+                try:
+                    out[symbol] = to_sympy(value)
+                except ArgumentTypeError:
+                    raise ConfigurationError(f"{symbol}: expected an exact rational, got "
+                                             f"{brief(repr(value))}") from None
+            return out
+        if self.model is None:
+            raise ConfigurationError("values: a mapping of the symbols is needed (these "
+                                     "factored motions carry no model to read names with)")
+        config = Configuration.parse(self.model, values)
+        by_name: dict[str, sp.Expr] = dict(config.parameters)
+        for joint in self.model.joints:
+            if joint.type == "revolute":
+                c, s = config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))
+                if c == -1 and tangent_name(joint.name) in map(str, self.symbols):
+                    raise ConfigurationError(
+                        f"--at {joint.name}: q = pi lies outside the t = tan(q/2) chart of "
+                        f"the factored form")
+                by_name[tangent_name(joint.name)] = s / (1 + c) if c != -1 else None
+            else:
+                by_name[joint.name] = config.prismatic.get(joint.name, sp.Integer(0))
+        return {x: by_name[str(x)] for x in self.symbols
+                if by_name.get(str(x)) is not None and by_name[str(x)].is_Rational}
 
 
 def factored_motions(analysis: Any) -> FactoredMotions:
@@ -216,4 +271,5 @@ def factored_motions(analysis: Any) -> FactoredMotions:
         arms.append(ArmMap(arm.name, tuple(j.name for j in arm.joints), rows))
     twists = analysis._cols(analysis._coord_u, dim)
     return FactoredMotions(twists, tuple(arms), tuple(factors),
-                           tuple(syms[n] for n in ring.names), tuple(analysis.model.twist_names))
+                           tuple(syms[n] for n in ring.names), tuple(analysis.model.twist_names),
+                           analysis.model)

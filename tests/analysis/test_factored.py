@@ -12,10 +12,12 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from strategies import random_systems
+from support import same_span
 from typer.testing import CliRunner
 
 import coopkin_sym
 from coopkin_sym.cli import app
+from coopkin_sym.errors import ConfigurationError
 from coopkin_sym.model.builders import planar_hand
 
 
@@ -103,3 +105,28 @@ def test_factored_latex_renders():
     for line in lines[0:2 * len(f.arms):2] + lines[2 * len(f.arms):]:
         parser.parse(f"${line}$")
     assert f._repr_latex_().startswith("$$")
+
+
+def test_at_takes_at_text_names_and_symbols_and_spans_the_point_analysis():
+    system = coopkin_sym.load("planar-two-fingers")
+    f = system.analyze(generic=True).coordinated_factored()
+    symbols = {str(x): x for x in f.symbols}
+    for text in ("q1=2*atan(1/3),q2=2*atan(-2),q3=2*atan(1/5),q4=2*atan(2/7),L=2",
+                 "q1=pi/2,q2=2*atan(1/2),q3=-pi/2,q4=2*atan(3),L=1"):
+        u, qdot = f.at(text)
+        a = system.analyze(text)
+        assert same_span(sp.Matrix.vstack(u, qdot), sp.Matrix.vstack(a.C12, a.C22))
+        values = dict(item.split("=") for item in text.split(","))
+        assert f.at(values) == (u, qdot)                    # names as keys, text values
+        point = system.configuration(text)
+        by_symbol = {symbols[f"t_{j}"]: s / (1 + c) for j, (c, s) in point.revolute.items()}
+        by_symbol[symbols["L"]] = point.parameters["L"]
+        assert f.at(by_symbol) == (u, qdot)
+    with pytest.raises(ConfigurationError, match="q = pi lies outside the t = tan"):
+        f.at("q1=pi,L=1")
+    with pytest.raises(ConfigurationError, match="unknown name 'q9'"):
+        f.at("q9=0")
+    with pytest.raises(ConfigurationError, match="expected an exact rational, got '0.5'"):
+        f.at({symbols["t_q1"]: 0.5})
+    with pytest.raises(ConfigurationError, match="no value for L"):
+        f.at("q1=pi/2")
