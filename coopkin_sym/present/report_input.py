@@ -57,6 +57,8 @@ __all__ = ["ReportInputError", "validate_report"]
 KINDS = ("hypersurface", "subvariety", "isolated", "chart")
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _RESERVED = {*FUNCTIONS, "pi", "CRootOf", "E", "I", "oo", "nan", "zoo"}
+#: A name used as a symbol (not called as a function).
+_SYMBOL_USE = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\b(?!\s*\()")
 _DECIMAL = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
@@ -205,6 +207,7 @@ class _Checker:
         self.tree = tree
         self.problems: list[str] = []
         self.variables: list[str] = []
+        self.variables_read = True   # False when an entry of ``variables`` is refused
         self.polynomials: dict[str, NamedPolynomial] = {}  # entry -> its polynomial
 
     def add(self, where: str, message: str) -> None:
@@ -221,6 +224,11 @@ class _Checker:
         return True
 
     def expression(self, where: str, text: str, names, polynomial: bool = False) -> None:
+        if names is self.variables and not self.variables_read:
+            # a variable was refused: its entry has the error, and a name of this text
+            # that may be it is not reported again (the rest of the text is checked)
+            names = [*names, *(n for n in dict.fromkeys(_SYMBOL_USE.findall(text))
+                               if n not in _RESERVED)]
         try:
             expr = parse_expression(text, names, where)
         except NumberError as exc:
@@ -266,6 +274,8 @@ class _Checker:
                     self.add(f"variables[{i}]", f"{brief(v)} given twice")
                 seen.add(v)
                 self.variables.append(v)
+            else:
+                self.variables_read = False
         # s_<joint> = cot(q/2), the chart at q = pi, for every t_<joint>
         self.variables += [cotangent_name(v[2:]) for v in list(self.variables)
                            if v.startswith("t_") and cotangent_name(v[2:]) not in seen]

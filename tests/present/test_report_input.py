@@ -185,3 +185,14 @@ def test_a_witness_root_of_degree_four_is_read_back():
     # the same name outside CRootOf is still refused in a root (a root is a number)
     assert any("uses undeclared symbol t" in line
                for line in refused(tree(components__0__algebraic_witness__root="t + 1")))
+
+
+def test_a_refused_variable_is_one_problem_not_one_per_equation_using_it():
+    # the equations use t_q1, which the refused entry may have meant: they used to get
+    # one "uses undeclared symbol t_q1" each; the rest of each text is still checked
+    lines = refused(tree(variables__0="t_q1**2",
+                         components__0__equations__1="1/t_q2 + exec('x')"))
+    assert lines == [
+        "not a locus report: variables[0]: 't_q1**2' is not a name",
+        "not a locus report: components[0].equations[1]: '1/t_q2 + exec('x')' uses "
+        "unknown function exec (allowed: atan, sqrt)"]
