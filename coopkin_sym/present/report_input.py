@@ -175,26 +175,40 @@ _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
 
 
 def _path(loc: tuple) -> str:
+    """``components[0].witness.q1``; a key that is not a plain name is quoted and
+    shortened (``generic['a b']``), so that a path is always one short line."""
     out = ""
     for part in loc:
-        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+        if isinstance(part, int):
+            out += f"[{part}]"
+        elif not _IDENTIFIER.fullmatch(str(part)):
+            out += f"[{brief(str(part))}]"
+        else:
+            out += f".{part}" if out else str(part)
     return out or "(top level)"
+
+
+#: Fields that take a number of either type (``StrictFloat | StrictInt``): pydantic
+#: ends the path of their errors with the type it tried, once per type.
+_EITHER_NUMBER = ("seconds", "distance")
+_TYPE_TAGS = ("str", "int", "float", "bool", "none")
 
 
 def _render(exc: ValidationError) -> list[str]:
     out = []
     for err in exc.errors(include_url=False):
         loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and (
-            p.startswith("function-") or p in ("str", "int", "float", "bool", "none",
-                                               "_FloatCheckIn", "_AlgebraicIn",
+            p.startswith("function-") or p in ("_FloatCheckIn", "_AlgebraicIn",
                                                "_CertificateIn"))))
+        message = " ".join(str(err["msg"]).split())
+        if len(loc) >= 2 and loc[-1] in _TYPE_TAGS and loc[-2] in _EITHER_NUMBER:
+            loc, message = loc[:-1], "input should be a number"   # one line, not two
         kind = err["type"]
         if kind == "missing":
             out.append(f"{_path(loc[:-1])}: missing key '{loc[-1]}'")
         elif kind == "extra_forbidden":
             out.append(f"{_path(loc[:-1])}: unknown key {brief(str(loc[-1]))}")
         else:
-            message = " ".join(str(err["msg"]).split())
             out.append(f"{_path(loc)}: {message[:1].lower()}{message[1:]}"
                        f" (got {brief(err.get('input'))})")
     return sorted(dict.fromkeys(out))
@@ -305,8 +319,8 @@ class _Checker:
                 if table == "depths" and not key.isdigit():
                     self.add(f"{where}.depths", f"{brief(key)} is not a depth")
                 if min(entry.tests, entry.failed) < 0 or entry.failed > entry.tests:
-                    self.add(f"{where}.{table}.{key}", "counts must satisfy 0 <= failed "
-                                                       "<= tests")
+                    self.add(_path((where, table, key)), "counts must satisfy 0 <= "
+                                                         "failed <= tests")
         for name in ("failed", "checks"):
             for j, check in enumerate(getattr(cert, name) or []):
                 if check.inside is not None and not 0 <= check.inside < count:

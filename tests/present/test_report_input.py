@@ -196,3 +196,31 @@ def test_a_refused_variable_is_one_problem_not_one_per_equation_using_it():
         "not a locus report: variables[0]: 't_q1**2' is not a name",
         "not a locus report: components[0].equations[1]: '1/t_q2 + exec('x')' uses "
         "unknown function exec (allowed: atan, sqrt)"]
+
+
+@pytest.mark.parametrize(("changes", "message"), [
+    # a key named like a type was dropped from the path ("float_checks[0].Nm")
+    ({"components__0__float_checks__0__float": {"Nm": "a"}},
+     "components[0].float_checks[0].float.Nm: input should be a valid integer (got 'a')"),
+    ({"generic": {"int": "a"}}, "generic.int: input should be a valid integer (got 'a')"),
+    # a key with a line break broke the line; a key that is no name is quoted
+    ({"generic": {"N\nm": "a"}}, "generic['N m']: input should be a valid integer (got 'a')"),
+    ({"generic": {"": "a"}}, "generic['']: input should be a valid integer (got 'a')"),
+    # a number of either type: one line, not one per type tried
+    ({"seconds": "a"}, "seconds: input should be a number (got 'a')"),
+    ({"components__0__float_checks__0__distance": None},
+     "components[0].float_checks[0].distance: input should be a number (got 'None')"),
+])
+def test_structure_problems_name_their_entry_on_one_line(changes, message):
+    assert refused(tree(**changes)) == [f"not a locus report: {message}"]
+
+
+def test_a_certificate_table_key_with_a_line_break_stays_on_its_line():
+    data = json.loads(render_json(locus()))
+    data["certificate"] = {
+        "system": "demo", "certified": False, "summary": "not certified: x",
+        "depths": {}, "charts": {"t\nq": {"certified": False, "why": "", "tests": 1,
+                                          "failed": 2}},
+        "tests": 1, "certified_by": {}, "failed": [], "notes": [], "seconds": 0}
+    assert refused(data) == ["not a locus report: certificate.charts['t q']: counts must "
+                             "satisfy 0 <= failed <= tests"]
