@@ -49,7 +49,8 @@ from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 __all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
-           "exact_expr", "parse_angle", "parse_expression", "parse_number"]
+           "exact_expr", "parse_angle", "parse_expression", "parse_number",
+           "parse_polynomial"]
 
 #: Functions allowed in text, besides the declared names and ``pi``.
 FUNCTIONS = ("atan", "sqrt", "Rational", "Integer")
@@ -264,6 +265,10 @@ class _Reader:
         degree = max(a.num.total_degree(), a.den.total_degree(), 0)
         if degree * n > limits.MAX_DEGREE:
             raise self.too_large(f"degree over {limits.MAX_DEGREE}")
+        if len(a.num) == 1 and a.den.is_one():   # a monomial: one power, no squarings
+            if (_height(a.num) - 1) * n > limits.max_bits():
+                raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
+            return self._reduced(a.num ** n, self.one)
         result = _RF(self.one, self.one)
         base = a
         while n:
@@ -782,6 +787,44 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     value, reader = _read(text, _symbols(symbols), where, kind=kind,
                           max_length=max_length or limits.MAX_EXPRESSION_TEXT)
     return reader.as_sympy(value) if isinstance(value, _Sym) else reader.to_sympy(value)
+
+
+def parse_polynomial(text: str, names: Iterable[str], where: str) -> flint.fmpq_mpoly:
+    """Read a polynomial with rational coefficients in ``names`` from text, as
+    :func:`parse_expression` does, but without building a SymPy expression: a
+    polynomial of many terms (an equation of a report read back) is read in a
+    fraction of the time.
+
+    Returns
+    -------
+    flint.fmpq_mpoly
+        In a context whose variables are ``names``, in order, each once
+        (``p.context().names()``).
+
+    Raises
+    ------
+    NumberError
+        What :func:`parse_expression` refuses, and a text that is not a polynomial
+        (it divides by an expression in the names, or has an irrational constant).
+
+    Example
+    -------
+    >>> parse_polynomial("(t_q1 + 1)**2 / 2", ["t_q1", "L"], "equation")
+    1/2*t_q1^2 + t_q1 + 1/2
+    >>> parse_polynomial("1/t_q1", ["t_q1"], "equation")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.NumberError: equation: '1/t_q1' is not a polynomial
+    """
+    if not isinstance(text, str):
+        raise NumberError(where, f"{_show(text)} is not text (got {type(text).__name__})")
+    value, reader = _read(text, _symbols(list(dict.fromkeys(names))), where, kind="variables",
+                          max_length=limits.MAX_EXPRESSION_TEXT)
+    if isinstance(value, _Sym) or not value.den.is_constant():
+        raise reader.fail("is not a polynomial")
+    d = int(value.den.leading_coefficient())
+    ctx = flint.fmpq_mpoly_ctx.get(reader.names, "lex")
+    return ctx.from_dict({m: flint.fmpq(int(c), d) for m, c in value.num.to_dict().items()})
 
 
 def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,

@@ -30,7 +30,6 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
-import sympy as sp
 from pydantic import (
     BaseModel,
     ConfigDict,
@@ -47,7 +46,13 @@ from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportInputError
 from coopkin_sym.exact.angles import cotangent_name
-from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.exact.parse import (
+    FUNCTIONS,
+    NumberError,
+    brief,
+    parse_expression,
+    parse_polynomial,
+)
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
@@ -244,17 +249,14 @@ class _Checker:
             names = [*names, *(n for n in dict.fromkeys(_SYMBOL_USE.findall(text))
                                if n not in _RESERVED)]
         try:
-            expr = parse_expression(text, names, where)
+            if polynomial:  # read once, without SymPy: the component keeps it
+                read = parse_polynomial(text, names, where)
+                self.polynomials[where] = NamedPolynomial.from_flint(
+                    read, read.context().names())
+            else:
+                parse_expression(text, names, where)
         except NumberError as exc:
             self.problems.append(str(exc))
-            return
-        if polynomial and not expr.is_polynomial(*[s for s in expr.free_symbols]):
-            self.add(where, f"{brief(text)} is not a polynomial")
-        elif polynomial:
-            try:  # read once: the component keeps it
-                self.polynomials[where] = NamedPolynomial.from_sympy(sp.expand(expr), where)
-            except NumberError as exc:
-                self.problems.append(str(exc))
 
     def numbers(self, where: str, numbers: Mapping[str, int]) -> None:
         for key, value in numbers.items():

@@ -224,3 +224,16 @@ def test_a_certificate_table_key_with_a_line_break_stays_on_its_line():
         "tests": 1, "certified_by": {}, "failed": [], "notes": [], "seconds": 0}
     assert refused(data) == ["not a locus report: certificate.charts['t q']: counts must "
                              "satisfy 0 <= failed <= tests"]
+
+
+def test_equations_are_read_without_sympy(monkeypatch):
+    # a report's equation of 10,000 terms took 5 s through SymPy (expand, Poly),
+    # 40,000 terms 21 s; the polynomials now come from the parser's own arithmetic
+    from coopkin_sym.exact.polynomial import NamedPolynomial
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("an equation went through SymPy")
+    monkeypatch.setattr(NamedPolynomial, "from_sympy", refuse)
+    monkeypatch.setattr("sympy.expand", refuse)
+    read = locus_from_json(tree(components__0__equations__0="(t_q1 + 1)**2/4 - t_q2"))
+    assert read.components[0].polynomials[0].text == "t_q1**2/4 + t_q1/2 - t_q2 + 1/4"
