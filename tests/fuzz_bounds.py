@@ -17,6 +17,8 @@ Example
 >>> import time
 >>> run_bounded(lambda: time.sleep(5), seconds=0.2).kind
 'timeout'
+>>> run_bounded(lambda: len(bytearray(3 * CASE_MEMORY))).error_type
+'MemoryError'
 """
 
 from __future__ import annotations

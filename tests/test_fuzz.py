@@ -36,6 +36,7 @@ from fuzz_inputs import (
 )
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from strategies import random_systems
 from typer.testing import CliRunner
 
 from coopkin_sym import load
@@ -133,8 +134,26 @@ def _load_and_analyze(tree) -> list[int]:
     return [numbers.Nm, numbers.Nc]
 
 
+PLANAR = {"name": "planar", "planar": True, "parameters": ["L"],
+          "arms": [{"name": "a1", "joints": [
+              {"name": "q1", "type": "revolute", "axis": [0, 0, 1], "point": [0, 0, 0],
+               "actuated": False},
+              {"name": "q2", "type": "revolute", "axis": [0, 0, 1], "point": ["L", 0, 0]}]},
+              {"name": "a2", "joints": [
+                  {"name": "q3", "type": "revolute", "axis": [0, 0, 1], "point": [0, "L", 0]}]}],
+          "contacts": [{"name": "c1", "link": "a1/2", "point": ["2*L", 0, 0],
+                        "normal": [-1, 0, 0], "model": "hard"},
+                       {"name": "c2", "link": "a2/1", "point": [0, "2*L", 0],
+                        "normal": [0, -1, 0], "model": "complete"}],
+          "object": {"point": ["L", "L", 0], "rpy": [0, 0, "pi/2"]}}
+model_dictionaries = st.one_of(
+    mutated(BASE, values), mutated(PLANAR, values),
+    random_systems(max_arms=3, max_joints=3, max_contacts=3, with_parameter=True)
+    .flatmap(lambda model: mutated(model, values)))
+
+
 @FUZZ
-@given(mutated(BASE, values))
+@given(model_dictionaries)
 def test_model_dictionaries(tree):
     problem_lines(run_bounded(lambda: _load_and_analyze(tree)), tree)
 
