@@ -23,6 +23,7 @@ import tempfile
 from fractions import Fraction
 from pathlib import Path
 
+import mpmath
 import pytest
 from fuzz_bounds import CASE_SECONDS, Outcome, run_bounded
 from fuzz_inputs import (
@@ -42,7 +43,8 @@ from typer.testing import CliRunner
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.cli import app
-from coopkin_sym.model.urdf import read_urdf_text
+from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.model.urdf import DEFAULT_BOUND, read_urdf_text
 from coopkin_sym.present.report import (
     locus_from_json,
     render_html,
@@ -161,18 +163,43 @@ def test_model_dictionaries(tree):
 # ------------------------------------------------------------------------ URDF files
 
 
-def _read_urdf(data: bytes, tip: str | None) -> int:
+def _read_urdf(data: bytes, tip: str | None) -> list[tuple[str, str, str, float]]:
     text = data.decode("utf-8", errors="surrogateescape")
-    return len(read_urdf_text(text, "r.urdf", tip=tip).joints)
+    arm = read_urdf_text(text, "r.urdf", tip=tip)
+    return [(s.where, s.given, s.exact, s.error) for s in arm.snapped]
+
+
+def _snap_distance(where: str, given: str, exact: str) -> mpmath.mpf:
+    """How far the exact value of a snap is from the float given, in radians,
+    computed with enough digits for the float's size."""
+    if where.endswith(" axis"):
+        v = [mpmath.mpf(float(x)) for x in given.split()]
+        w = [mpmath.mpf(Fraction(x).numerator) / Fraction(x).denominator
+             for x in exact.strip("()").split(",")]
+        dot = sum(a * b for a, b in zip(v, w, strict=True)) / mpmath.norm(v)
+        return mpmath.acos(max(-1, min(1, dot)))
+    x = mpmath.mpf(float(given))
+    cos, sin = ExactAngle.parse(exact, where).cos_sin
+    c, s = mpmath.mpf(cos.p) / cos.q, mpmath.mpf(sin.p) / sin.q
+    return abs(mpmath.atan2(mpmath.sin(x) * c - mpmath.cos(x) * s,
+                            mpmath.cos(x) * c + mpmath.sin(x) * s))
 
 
 def check_urdf_text(data: bytes, tip: str | None, seconds: float = CASE_SECONDS) -> None:
-    """:func:`read_urdf_text` of the document: an arm, or one line naming the file."""
+    """:func:`read_urdf_text` of the document: an arm whose every snap is within the
+    bound, as it states, or one line naming the file."""
     outcome = run_bounded(lambda: _read_urdf(data, tip), seconds)
     lines = problem_lines(outcome, (data[:3000], tip))
     assert outcome.kind == "result" or outcome.error_type == "UrdfError", outcome
     for line in lines:
         assert line.startswith("r.urdf: "), (data[:3000], tip, line)
+    with mpmath.workdps(400):
+        for where, given, exact, error in outcome.value or []:
+            distance = _snap_distance(where, given, exact)
+            # the stated distance is a float estimate: acos of a float dot product
+            # near 1 (an axis 1.4e-8 rad away is stated 0.0)
+            assert distance <= DEFAULT_BOUND * (1 + 1e-9) and abs(distance - error) <= 1e-7, (
+                where, given, exact, error, mpmath.nstr(distance, 5))
 
 
 def _urdf_model(path: Path, tip: str | None) -> dict:
@@ -239,12 +266,27 @@ def _tip_in_loop(data: bytes, tip: str | None) -> bool:
     return False
 
 
+def _huge_angles(data: bytes, tip: str | None) -> bool:
+    """An rpy angle of 1e8 radians or more: it is reduced modulo a float 2*pi, so the
+    angle snapped to is not the one given (1e16 lands 0.39 rad away), while the snap
+    states a distance within the bound."""
+    for triple in re.findall(rb'rpy="([^"]*)"', data):
+        for token in triple.split():
+            try:
+                if abs(float(token)) >= 1e8:
+                    return True
+            except ValueError:
+                continue
+    return False
+
+
 def _many_joints(data: bytes, tip: str | None) -> bool:
     """More than 1000 joints: no budget applies, a long chain runs for minutes."""
     return data.count(b"<joint ") > 1000
 
 
-OPEN_URDF_BUGS = {"text": (_surrogates, _axis_magnitudes, _tip_in_loop, _many_joints),
+OPEN_URDF_BUGS = {"text": (_surrogates, _axis_magnitudes, _tip_in_loop, _many_joints,
+                           _huge_angles),
                   "file": (_axis_magnitudes, _tip_in_loop, _many_joints)}
 
 
@@ -317,6 +359,9 @@ OPEN_URDF_EXAMPLES = [
     pytest.param("text", _one_joint(axis="1e200 1e200 0"), None, id="axis-1e200",
                  marks=pytest.mark.xfail(strict=True, reason="urdf: the error on a huge "
                                          "axis names neither the file nor the joint")),
+    pytest.param("text", _one_joint(rpy="1e16 0 0"), None, id="rpy-1e16",
+                 marks=pytest.mark.xfail(strict=True, reason="urdf: an angle of 1e16 rad "
+                                         "snaps 0.39 rad away, stated as 5e-8")),
     pytest.param("text", _one_joint(rpy="0 0 1.5\udce9"), None, id="lone-surrogate",
                  marks=pytest.mark.xfail(strict=True, reason="urdf: text with a lone "
                                          "surrogate raises UnicodeEncodeError")),
