@@ -459,8 +459,14 @@ REAL_REPORT = _real_report()
 
 def _read_and_render(data) -> int:
     locus = locus_from_json(data)
-    for render in (render_markdown, render_html, render_latex):
-        render(locus)
+    markdown, html, latex = (render(locus) for render in (render_markdown, render_html,
+                                                           render_latex))
+    # text from the report never becomes markup (the strategies plant these); in
+    # Markdown, a code span shows its text as it is, and \< is a plain <
+    outside_code = re.sub(r"`[^`\n]*`", "", markdown)
+    assert "<script" not in html.lower()
+    assert not re.search(r"(?<!\\)<script", outside_code, re.IGNORECASE)
+    assert "\\input{/etc" not in latex, "a LaTeX command from the report was kept"
     return len(locus.components)
 
 
