@@ -498,3 +498,39 @@ def report_entries_changed(draw, base: dict, marker: str) -> dict:
             point = component["float_checks"][0]["point"]
             point[draw(st.sampled_from(sorted(point) + ["q9"]))] = draw(texts)
     return tree
+
+
+# -------------------------------------------------------------------- expressions
+
+_ATOMS = ["0", "1", "2", "7", "10", "0.5", "1e-3", "1e300", "1e-300", "9" * 400, "1e999",
+          "t", "s", "L", "pi", "x", "E", "I", "oo", "nan", "__class__", ".5", "5.", "00"]
+
+
+@st.composite
+def expressions(draw, depth: int = 4) -> str:
+    """Random text in (and just outside) the parser's grammar: numbers, names, pi,
+    atan, sqrt, Rational, Integer, CRootOf, unknown functions, + - * / ** ^, brackets,
+    large exponents and nesting."""
+    if depth == 0 or draw(st.integers(0, 3)) == 0:
+        return draw(st.sampled_from(_ATOMS))
+    kind = draw(st.sampled_from(["binary", "binary", "power", "call", "unary", "paren",
+                                 "junk"]))
+    inner = expressions(depth - 1)
+    if kind == "binary":
+        op = draw(st.sampled_from(["+", "-", "*", "/", " + ", "*-"]))
+        return draw(inner) + op + draw(inner)
+    if kind == "power":
+        exponent = draw(st.sampled_from(["2", "3", "-1", "-2", "1000", "1001", "999999",
+                                         "0.5", "(1/2)", "t", "-0", "2**3"]))
+        return f"({draw(inner)})" + draw(st.sampled_from(["**", "^"])) + exponent
+    if kind == "call":
+        name = draw(st.sampled_from(["atan", "sqrt", "Rational", "Integer", "CRootOf",
+                                     "sin", "exp", "eval", "atan"]))
+        args = draw(st.lists(inner, min_size=1, max_size=2))
+        return f"{name}({', '.join(args)})"
+    if kind == "unary":
+        return draw(st.sampled_from(["-", "+", "--", "- -"])) + draw(inner)
+    if kind == "paren":
+        return "(" * draw(st.integers(1, 60)) + draw(inner) + ")" * draw(st.integers(0, 60))
+    return draw(inner) + draw(st.sampled_from(["", ")", "(", ",", "=", ";", "'", "\\n",
+                                               "\\x00", "[0]", ".real", " if 1 else 0"]))

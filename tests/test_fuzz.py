@@ -25,10 +25,12 @@ from pathlib import Path
 
 import mpmath
 import pytest
+import sympy as sp
 from fuzz_bounds import CASE_SECONDS, Outcome, run_bounded
 from fuzz_inputs import (
     PAYLOAD_MARKER_NAME,
     dh_models,
+    expressions,
     mutated,
     payloads,
     report_entries_changed,
@@ -43,7 +45,14 @@ from typer.testing import CliRunner
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.cli import app
+from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.parse import (
+    parse_angle,
+    parse_expression,
+    parse_number,
+    parse_polynomial,
+)
 from coopkin_sym.model.urdf import DEFAULT_BOUND, read_urdf_text
 from coopkin_sym.present.report import (
     locus_from_json,
@@ -158,6 +167,39 @@ model_dictionaries = st.one_of(
 @given(model_dictionaries)
 def test_model_dictionaries(tree):
     problem_lines(run_bounded(lambda: _load_and_analyze(tree)), tree)
+
+
+# ----------------------------------------------------------------------- expressions
+
+
+def _read_expression(text: str) -> list[str]:
+    """Every reading of the one parser: a value or a NumberError each."""
+    readers = [lambda: parse_expression(text, ["t", "s"], "x"),
+               lambda: parse_number(text, {"L": sp.Symbol("L", positive=True)}, "x"),
+               lambda: parse_angle(text, "x"),
+               lambda: parse_polynomial(text, ["t", "s"], "x")]
+    out = []
+    for read in readers:
+        try:
+            out.append(str(read())[:100])
+        except NumberError as exc:
+            assert "\n" not in str(exc) and str(exc).startswith("x: "), str(exc)
+            out.append(f"error: {exc}")
+    return out
+
+
+@FUZZ
+@given(expressions())
+def test_expressions(text):
+    problem_lines(run_bounded(lambda: _read_expression(text)), text)
+
+
+@pytest.mark.slow
+@campaign
+@CAMPAIGN
+@given(expressions(depth=6))
+def test_expressions_campaign(text):
+    problem_lines(run_bounded(lambda: _read_expression(text)), text)
 
 
 # ------------------------------------------------------------------------ URDF files
