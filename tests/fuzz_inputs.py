@@ -129,7 +129,7 @@ _AXES = st.one_of(
     st.sampled_from(["0 0 1", "1 0 0", "0 -1 0", "0.6 0.8 0", "0 0 -1"]),
     st.tuples(*[st.floats(-1, 1, allow_nan=False, width=32)] * 3)
     .filter(lambda v: sum(x * x for x in v) > 1e-6)
-    .map(lambda v: " ".join(repr(float(x)) for x in v)))
+    .map(lambda v: " ".join(repr(float(x)) for x in v)))  # float-ok: URDF text
 
 Element = tuple  # (tag, {attribute: value}, [children])
 _DEEP = "<deep>"  # the tag of an element nested in attrs["depth"] <group> elements
@@ -333,7 +333,8 @@ GOOD_LENGTHS = [0, 1, -1, "1/2", "L", "2*L", "L/2 + 1", 0.4318, "0.15005", "-3/7
 BAD_DH_VALUES = [
     "pi/3", "pi/99991", "1e400", "1e-400", "2*atan(10**999)", "2*atan(1/" + "7" * 999 + ")",
     "atan(1)", "sqrt(2)", "pi*L", "L", "q1", "x", "2*atan(L)", "1.5708", 1.5707963,
-    float("nan"), float("inf"), -float("inf"), 10**999, -(10**999), 10**1200, "9" * 1001,
+    float("nan"), float("inf"), -float("inf"), 10**999, -(10**999), 10**1200,  # float-ok
+    "9" * 1001,
     "10**1000", "10**1001", "(L+1)**1000", "L**1001", "1/0", "0/0", "zoo", "oo", "nan",
     "pi/2" + " + pi/2" * 20, "atan(1/2)*2" + " + atan(1/3)*2" * 9, "(" * 60 + "1" + ")" * 60,
     "", " ", "-", "revolute", True, False, None, [], {}, [1, 2], {"theta": 0},
@@ -432,7 +433,8 @@ def report_leaves(marker: str) -> st.SearchStrategy:
         st.sampled_from(BAD_POLYNOMIALS), st.sampled_from(BAD_WITNESS_VALUES),
         st.sampled_from(payloads(marker)),
         st.sampled_from([10**400, -(10**400), 10**4000, -1, 2**63, 1e308, -0.0, 0.5,
-                         float("nan"), float("inf"), True, None, [], {}, "", "x" * 100_000,
+                         float("nan"), float("inf"),  # float-ok: hostile values
+                         True, None, [], {}, "", "x" * 100_000,
                          nested(31), nested(40), [[0, 1]], [1, 2, 3], {"Nm": -1},
                          {"Nx": 1}, {"q1": "pi/2"}, {"t_q1": "0"}, ["t_q1 + 1"]]),
         st.integers(-10, 10), st.text(max_size=30))

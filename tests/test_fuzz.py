@@ -15,10 +15,12 @@ package yet, so there is nothing of theirs to fuzz.
 
 from __future__ import annotations
 
+import atexit
 import copy
 import json
 import os
 import re
+import shutil
 import tempfile
 from fractions import Fraction
 from pathlib import Path
@@ -75,7 +77,8 @@ CAMPAIGN = settings(FUZZ, max_examples=10 * EXAMPLES)
 #: The campaigns (ten times the examples) run with COOPKIN_FUZZ_CAMPAIGN=1 only.
 campaign = pytest.mark.skipif(not os.environ.get("COOPKIN_FUZZ_CAMPAIGN"),
                               reason="set COOPKIN_FUZZ_CAMPAIGN=1 for the long campaign")
-WORK = Path(tempfile.mkdtemp(prefix="coopkin-fuzz-"))
+WORK = Path(tempfile.mkdtemp(prefix="coopkin-fuzz-"))   # files of the cases, removed at exit
+atexit.register(shutil.rmtree, WORK, True)
 
 #: One line of an error: "where: what is wrong" (the entry, then the problem).
 _LINE = re.compile(r"[^\s:][^\n]*?: \S.*")
@@ -212,15 +215,15 @@ def _read_urdf(data: bytes, tip: str | None) -> list[tuple[str, str, str, float]
 
 
 def _snap_distance(where: str, given: str, exact: str) -> mpmath.mpf:
-    """How far the exact value of a snap is from the float given, in radians,
-    computed with enough digits for the float's size."""
+    """How far the exact value of a snap is from the float given, in radians (the
+    caller's 400 digits are enough for any float, 1e308 included)."""
     if where.endswith(" axis"):
-        v = [mpmath.mpf(float(x)) for x in given.split()]
+        v = [mpmath.mpf(float(x)) for x in given.split()]  # float-ok: the URDF's floats
         w = [mpmath.mpf(Fraction(x).numerator) / Fraction(x).denominator
              for x in exact.strip("()").split(",")]
         dot = sum(a * b for a, b in zip(v, w, strict=True)) / mpmath.norm(v)
         return mpmath.acos(max(-1, min(1, dot)))
-    x = mpmath.mpf(float(given))
+    x = mpmath.mpf(float(given))  # float-ok: the URDF's float, exactly
     cos, sin = ExactAngle.parse(exact, where).cos_sin
     c, s = mpmath.mpf(cos.p) / cos.q, mpmath.mpf(sin.p) / sin.q
     return abs(mpmath.atan2(mpmath.sin(x) * c - mpmath.cos(x) * s,
@@ -315,7 +318,7 @@ def _huge_angles(data: bytes, tip: str | None) -> bool:
     for triple in re.findall(rb'rpy="([^"]*)"', data):
         for token in triple.split():
             try:
-                if abs(float(token)) >= 1e8:
+                if abs(float(token)) >= 1e8:  # float-ok: a URDF float's size
                     return True
             except ValueError:
                 continue
