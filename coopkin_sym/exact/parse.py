@@ -1208,8 +1208,9 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
         c, s = point
         return to_sympy(c), sp.Rational(s.numerator,
                                                                       s.denominator)
-    message = (f"angle {shown} is not exact: tan(q/2) = {tangent} is irrational; exact "
-               f"angles have a rational tan(q/2)")
+    value = "its tan(q/2)" if tangent == _LONG_TANGENT else f"tan(q/2) = {tangent}"
+    message = (f"angle {shown} is not exact: {value} is irrational; exact angles have a "
+               f"rational tan(q/2)")
     near = _nearest_angles(q)
     if near:
         message += "; nearest exact angles: " + ", ".join(near)
@@ -1321,7 +1322,11 @@ def _tangent_text(q: sp.Expr, parts: _AngleParts) -> str:
     if not parts.atans and not parts.other and not parts.radians and \
             parts.pi_coeff.denominator <= 24:
         return sp.sstr(sp.tan(q / 2))
-    return f"tan({sp.sstr(q / 2)})" if len(sp.sstr(q)) < 80 else "tan(q/2)"
+    return f"tan({sp.sstr(q / 2)})" if len(sp.sstr(q)) < 80 else _LONG_TANGENT
+
+
+#: :func:`_tangent_text` of an angle too long to write in a message.
+_LONG_TANGENT = "tan(q/2)"
 
 
 def _half_angle_tangent(q: sp.Expr) -> sp.Expr:
@@ -1337,9 +1342,15 @@ def _half_angle_tangent(q: sp.Expr) -> sp.Expr:
 
 
 def _nearest_angles(q: sp.Expr) -> list[str]:
-    """A few exact angles near ``q`` (floats used only to suggest candidates)."""
+    """A few exact angles near ``q`` (floats used only to suggest candidates). ``q``
+    is reduced modulo ``2 pi`` with as many digits as its integer part has, plus 30:
+    a large angle (``10**80 + 1/3``) gets the angles near it, not near a float's
+    remainder."""
     try:
-        value = float(sp.N(q, 30))  # float-ok: only to suggest nearby exact angles
+        size = abs(sp.N(q, 15))
+        digits = 30 + (int(sp.floor(sp.log(size, 10))) if size > 1 else 0)
+        # float-ok: only to suggest nearby exact angles
+        value = float(sp.N(sp.Mod(q, 2 * sp.pi), digits))  # float-ok
     except (TypeError, ValueError, OverflowError):
         return []
     if not math.isfinite(value):  # float-ok
@@ -1433,9 +1444,10 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
     except (sp.polys.polyerrors.NotAlgebraic, NotImplementedError, ValueError,
             TypeError):
         if bound is not None:
-            raise NumberError(where, f"angle {shown}: tan(q/2) = {_tangent_text(q, parts)}"
-                                     " is algebraic but could not be written in "
-                                     "radicals") from None
+            tangent = _tangent_text(q, parts)
+        value = "its tan(q/2)" if tangent == _LONG_TANGENT else f"tan(q/2) = {tangent}"
+        raise NumberError(where, f"angle {shown}: {value} is algebraic but could not "
+                                 "be written in radicals") from None
         raise NumberError(where, f"angle {shown}: tan(q/2) = {t} is not an "
                                  "algebraic number") from None
     if sp.degree(polynomial, sp.Symbol("t")) > limits.MAX_ANGLE_DEGREE:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from decimal import Decimal
 from fractions import Fraction
 
@@ -295,3 +296,27 @@ def test_a_power_of_a_monomial_is_one_power_within_the_digit_budget():
     # powers of monomials skip the squarings; the budgets hold the same way
     assert parse_polynomial("(-2*t)**1000", ["t"], "eq").to_dict() == {(1000,): 2**1000}
     assert str(parse_expression("(t/2)**3 * (2*t)**-2", ["t"], "eq")) == "t/32"
+
+
+def test_an_angle_too_long_to_show_is_not_said_to_have_tan_q2_equal_to_itself():
+    # it read "tan(q/2) = tan(q/2) is irrational"
+    with pytest.raises(NumberError) as caught:
+        parse_angle("1e400", "x")
+    assert str(caught.value).startswith(
+        "x: angle '1e400' is not exact: its tan(q/2) is irrational; exact angles have a "
+        "rational tan(q/2); nearest exact angles: ")
+
+
+@pytest.mark.parametrize("text", ["10**80 + 1/3", "10**999", "1e16", "123456789123/7"])
+def test_the_angles_suggested_for_a_large_angle_are_near_it(text):
+    # the angle was reduced modulo a float 2*pi: for 10**80 + 1/3 the suggestions
+    # were 0.96 rad away (-1.79 for -2.75)
+    import mpmath
+    with pytest.raises(NumberError) as caught:
+        parse_angle(text, "x")
+    with mpmath.workdps(1100):
+        value = parse_expression(text, [], "x")
+        exact = mpmath.mpf(int(value.p)) / int(value.q)
+        reduced = float(mpmath.atan2(mpmath.sin(exact), mpmath.cos(exact)))  # float-ok
+    shown = [float(a) for a in re.findall(r"\((-?\d+\.\d+)\)", str(caught.value))]  # float-ok
+    assert len(shown) >= 2 and all(abs(a - reduced) < 0.05 for a in shown), (shown, reduced)
