@@ -60,6 +60,14 @@ def tree_paths(tree: Any, prefix: tuple = ()):
             yield from tree_paths(v, (*prefix, i))
 
 
+def _depth(tree: Any, limit: int = 8) -> int:
+    """Nesting of lists and mappings in ``tree``, counted up to ``limit``."""
+    if limit == 0 or not isinstance(tree, dict | list):
+        return 0
+    items = tree.values() if isinstance(tree, dict) else tree
+    return 1 + max((_depth(v, limit - 1) for v in items), default=0)
+
+
 def nested(depth: int, leaf: Any = 0) -> Any:
     """``leaf`` inside ``depth`` alternating lists and mappings."""
     out = leaf
@@ -82,22 +90,24 @@ def mutated(draw, base: Any, leaves: st.SearchStrategy, max_changes: int = 4):
         for key in path[:-1]:
             parent = parent[key]
         action = draw(st.sampled_from(["replace", "replace", "delete", "add", "copy"]))
+        # leaves are copied: a list or mapping among them is shared by every draw
         if action == "replace":
-            parent[path[-1]] = draw(leaves)
+            parent[path[-1]] = copy.deepcopy(draw(leaves))
         elif action == "copy":  # another entry of the tree (a duplicate, a wrong type)
             other = draw(st.sampled_from(paths))
             value: Any = tree
             for key in other:
                 value = value[key]
-            parent[path[-1]] = copy.deepcopy(value)
+            if _depth(value) <= 3:  # copies of copies of the root would grow forever
+                parent[path[-1]] = copy.deepcopy(value)
         elif action == "delete" and isinstance(parent, dict):
             del parent[path[-1]]
         elif action == "delete":
             parent.pop(path[-1])
         elif isinstance(parent, dict):
-            parent[draw(st.text(max_size=8))] = draw(leaves)
+            parent[draw(st.text(max_size=8))] = copy.deepcopy(draw(leaves))
         else:
-            parent.append(draw(leaves))
+            parent.append(copy.deepcopy(draw(leaves)))
     return tree
 
 

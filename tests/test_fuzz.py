@@ -45,6 +45,7 @@ from strategies import random_systems
 from typer.testing import CliRunner
 
 from coopkin_sym import load
+from coopkin_sym.analysis.locus.certify import certify_locus
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.errors import NumberError
@@ -56,6 +57,7 @@ from coopkin_sym.exact.parse import (
     parse_polynomial,
 )
 from coopkin_sym.model.urdf import DEFAULT_BOUND, read_urdf_text
+from coopkin_sym.present.certificate import certificate_json
 from coopkin_sym.present.report import (
     locus_from_json,
     render_html,
@@ -502,6 +504,21 @@ def _real_report() -> dict:
 REAL_REPORT = _real_report()
 
 
+def _certified_report_with_locked_joints() -> dict:
+    """The JSON report of ``coopkin locus underactuated-finger --certify``: a
+    certificate, and the locus of the system with its actuators locked (``locked``)."""
+    system = load("underactuated-finger")
+    locus = system.locus()
+    locus.certificate = certificate_json(certify_locus(system, locus, timeout=10))
+    tree = json.loads(render_json(locus))
+    tree["components"] = tree["components"][:2]
+    tree["locked"]["components"] = tree["locked"]["components"][:2]
+    return tree
+
+
+CERTIFIED_REPORT = _certified_report_with_locked_joints()
+
+
 def _read_and_render(data) -> int:
     locus = locus_from_json(data)
     markdown, html, latex = (render(locus) for render in (render_markdown, render_html,
@@ -544,6 +561,8 @@ report_cases = st.tuples(
               mutated(REAL_REPORT, report_leaves(str(MARKER)), max_changes=12),
               report_entries_changed(REAL_REPORT, str(MARKER)),
               report_entries_changed(REAL_REPORT, str(MARKER)),
+              mutated(CERTIFIED_REPORT, report_leaves(str(MARKER))),
+              report_entries_changed(CERTIFIED_REPORT, str(MARKER)),
               st.text(max_size=60)),
     st.sampled_from(["tree", "text", "text", "truncated", "bytes"]))
 
