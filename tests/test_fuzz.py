@@ -418,7 +418,7 @@ OPEN_URDF_EXAMPLES = [
 @pytest.mark.parametrize(("route", "data", "tip"), OPEN_URDF_EXAMPLES)
 def test_open_urdf_problems(route, data, tip):
     assert any(bug(data, tip) for bug in OPEN_URDF_BUGS[route])  # left out above
-    (check_urdf_text if route == "text" else check_urdf_file)(data, tip, seconds=3.0)
+    (check_urdf_text if route == "text" else check_urdf_file)(data, tip, seconds=2.0)
 
 
 # ------------------------------------------------------------------------- DH tables
