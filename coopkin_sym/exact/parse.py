@@ -49,7 +49,8 @@ from coopkin_sym.errors import NumberError, UndeclaredSymbol
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 __all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
-           "exact_expr", "parse_angle", "parse_expression", "parse_number"]
+           "exact_expr", "parse_angle", "parse_expression", "parse_number",
+           "parse_polynomial"]
 
 #: Functions allowed in text, besides the declared names and ``pi``.
 FUNCTIONS = ("atan", "sqrt", "Rational", "Integer")
@@ -268,6 +269,10 @@ class _Reader:
         degree = max(a.num.total_degree(), a.den.total_degree(), 0)
         if degree * n > limits.MAX_DEGREE:
             raise self.too_large(f"degree over {limits.MAX_DEGREE}")
+        if len(a.num) == 1 and a.den.is_one():   # a monomial: one power, no squarings
+            if (_height(a.num) - 1) * n > limits.max_bits():
+                raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
+            return self._reduced(a.num ** n, self.one)
         result = _RF(self.one, self.one)
         base = a
         while n:
@@ -786,6 +791,44 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     return reader.as_sympy(value) if isinstance(value, _Sym) else reader.to_sympy(value)
 
 
+def parse_polynomial(text: str, names: Iterable[str], where: str) -> flint.fmpq_mpoly:
+    """Read a polynomial with rational coefficients in ``names`` from text, as
+    :func:`parse_expression` does, but without building a SymPy expression: a
+    polynomial of many terms (an equation of a report read back) is read in a
+    fraction of the time.
+
+    Returns
+    -------
+    flint.fmpq_mpoly
+        In a context whose variables are ``names``, in order, each once
+        (``p.context().names()``).
+
+    Raises
+    ------
+    NumberError
+        What :func:`parse_expression` refuses, and a text that is not a polynomial
+        (it divides by an expression in the names, or has an irrational constant).
+
+    Example
+    -------
+    >>> parse_polynomial("(t_q1 + 1)**2 / 2", ["t_q1", "L"], "equation")
+    1/2*t_q1^2 + t_q1 + 1/2
+    >>> parse_polynomial("1/t_q1", ["t_q1"], "equation")
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.NumberError: equation: '1/t_q1' is not a polynomial
+    """
+    if not isinstance(text, str):
+        raise NumberError(where, f"{_show(text)} is not text (got {type(text).__name__})")
+    value, reader = _read(text, _symbols(list(dict.fromkeys(names))), where, kind="variables",
+                          max_length=limits.MAX_EXPRESSION_TEXT)
+    if isinstance(value, _Sym) or not value.den.is_constant():
+        raise reader.fail("is not a polynomial")
+    d = int(value.den.leading_coefficient())
+    ctx = flint.fmpq_mpoly_ctx.get(reader.names, "lex")
+    return ctx.from_dict({m: flint.fmpq(int(c), d) for m, c in value.num.to_dict().items()})
+
+
 def _value(value: object, parameters: Mapping[str, sp.Symbol], where: str,
            kind: str, max_length: int | None = None) -> tuple[object, _Reader]:
     """Any accepted input as a value of the reader (the common front of
@@ -1168,8 +1211,9 @@ def parse_angle(text: object, where: str) -> tuple[sp.Rational, sp.Rational]:
         c, s = point
         return to_sympy(c), sp.Rational(s.numerator,
                                                                       s.denominator)
-    message = (f"angle {shown} is not exact: tan(q/2) = {tangent} is irrational; exact "
-               f"angles have a rational tan(q/2)")
+    value = "its tan(q/2)" if tangent == _LONG_TANGENT else f"tan(q/2) = {tangent}"
+    message = (f"angle {shown} is not exact: {value} is irrational; exact angles have a "
+               f"rational tan(q/2)")
     near = _nearest_angles(q)
     if near:
         message += "; nearest exact angles: " + ", ".join(near)
@@ -1281,7 +1325,11 @@ def _tangent_text(q: sp.Expr, parts: _AngleParts) -> str:
     if not parts.atans and not parts.other and not parts.radians and \
             parts.pi_coeff.denominator <= 24:
         return sp.sstr(sp.tan(q / 2))
-    return f"tan({sp.sstr(q / 2)})" if len(sp.sstr(q)) < 80 else "tan(q/2)"
+    return f"tan({sp.sstr(q / 2)})" if len(sp.sstr(q)) < 80 else _LONG_TANGENT
+
+
+#: :func:`_tangent_text` of an angle too long to write in a message.
+_LONG_TANGENT = "tan(q/2)"
 
 
 def _half_angle_tangent(q: sp.Expr) -> sp.Expr:
@@ -1297,9 +1345,15 @@ def _half_angle_tangent(q: sp.Expr) -> sp.Expr:
 
 
 def _nearest_angles(q: sp.Expr) -> list[str]:
-    """A few exact angles near ``q`` (floats used only to suggest candidates)."""
+    """A few exact angles near ``q`` (floats used only to suggest candidates). ``q``
+    is reduced modulo ``2 pi`` with as many digits as its integer part has, plus 30:
+    a large angle (``10**80 + 1/3``) gets the angles near it, not near a float's
+    remainder."""
     try:
-        value = float(sp.N(q, 30))  # float-ok: only to suggest nearby exact angles
+        size = abs(sp.N(q, 15))
+        digits = 30 + (int(sp.floor(sp.log(size, 10))) if size > 1 else 0)
+        # float-ok: only to suggest nearby exact angles
+        value = float(sp.N(sp.Mod(q, 2 * sp.pi), digits))  # float-ok
     except (TypeError, ValueError, OverflowError):
         return []
     if not math.isfinite(value):  # float-ok
@@ -1393,9 +1447,10 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
     except (sp.polys.polyerrors.NotAlgebraic, NotImplementedError, ValueError,
             TypeError):
         if bound is not None:
-            raise NumberError(where, f"angle {shown}: tan(q/2) = {_tangent_text(q, parts)}"
-                                     " is algebraic but could not be written in "
-                                     "radicals") from None
+            tangent = _tangent_text(q, parts)
+        value = "its tan(q/2)" if tangent == _LONG_TANGENT else f"tan(q/2) = {tangent}"
+        raise NumberError(where, f"angle {shown}: {value} is algebraic but could not "
+                                 "be written in radicals") from None
         raise NumberError(where, f"angle {shown}: tan(q/2) = {t} is not an "
                                  "algebraic number") from None
     if sp.degree(polynomial, sp.Symbol("t")) > limits.MAX_ANGLE_DEGREE:

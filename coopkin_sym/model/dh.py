@@ -36,8 +36,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from coopkin_sym.errors import ArgumentError
+from coopkin_sym import limits
+from coopkin_sym.errors import ArgumentError, NumberError
 from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.parse import brief
 
 __all__ = ["CONVENTIONS", "DHJoint", "DHRow", "Frame", "IDENTITY", "dh_joints",
            "frame_from_xyz_rpy", "frame_then", "in_base", "rotation_rpy"]
@@ -171,10 +173,33 @@ class DHJoint:
     point: Vector
 
 
-def dh_joints(rows: Sequence[DHRow], convention: str, base: Frame
+def _largest_bits(frame: Frame) -> int:
+    """Bits of the largest numerator or denominator in a frame's entries."""
+    r, p = frame
+    bits = 0
+    for entry in (*r, *p):
+        numbers = (entry.atoms(sp.Rational) if isinstance(entry, sp.Basic)
+                   else (sp.Rational(entry),))
+        for number in numbers:
+            bits = max(bits, abs(number.p).bit_length(), number.q.bit_length())
+    return bits
+
+
+def dh_joints(rows: Sequence[DHRow], convention: str, base: Frame, where: str = "dh"
               ) -> tuple[list[DHJoint], list[Frame]]:
     """The joints at home and the frames of links ``0..n`` (0: the base placement) of
     a DH table.
+
+    Every row's rotation multiplies the denominators of the frames after it, so the
+    numbers of the frames are bounded like numbers read from a file (at most
+    :data:`~coopkin_sym.limits.MAX_DIGITS` digits): a table whose frames would have
+    larger ones is refused at the row where they appear (``where`` names the table
+    in the message), before it takes minutes.
+
+    Raises
+    ------
+    NumberError
+        A frame with a number of more than ``MAX_DIGITS`` digits.
 
     Example
     -------
@@ -202,6 +227,12 @@ def dh_joints(rows: Sequence[DHRow], convention: str, base: Frame
             r, p = frame
             axis, point = _vec(r[:, 2]), p
             frame = frame_then(frame, sp.eye(3), [0, 0, row.d])
+        if _largest_bits(frame) > limits.max_bits():
+            raise NumberError(f"{where}[{len(joints)}] (joint {brief(row.name)})",
+                              f"the link frame at home has a number of more than "
+                              f"{limits.MAX_DIGITS} digits (the rotations of the rows "
+                              f"up to here multiply their denominators); use angles "
+                              f"whose tan(q/2) have fewer digits")
         joints.append(DHJoint(row.name, row.type, axis, point))
         frames.append(frame)
     return joints, frames

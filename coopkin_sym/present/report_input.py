@@ -30,7 +30,6 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
-import sympy as sp
 from pydantic import (
     BaseModel,
     ConfigDict,
@@ -47,7 +46,13 @@ from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import ReportInputError
 from coopkin_sym.exact.angles import cotangent_name
-from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.exact.parse import (
+    FUNCTIONS,
+    NumberError,
+    brief,
+    parse_expression,
+    parse_polynomial,
+)
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
@@ -57,6 +62,8 @@ __all__ = ["ReportInputError", "validate_report"]
 KINDS = ("hypersurface", "subvariety", "isolated", "chart")
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _RESERVED = {*FUNCTIONS, "pi", "CRootOf", "E", "I", "oo", "nan", "zoo"}
+#: A name used as a symbol (not called as a function).
+_SYMBOL_USE = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\b(?!\s*\()")
 _DECIMAL = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
@@ -173,26 +180,40 @@ _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
 
 
 def _path(loc: tuple) -> str:
+    """``components[0].witness.q1``; a key that is not a plain name is quoted and
+    shortened (``generic['a b']``), so that a path is always one short line."""
     out = ""
     for part in loc:
-        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+        if isinstance(part, int):
+            out += f"[{part}]"
+        elif not _IDENTIFIER.fullmatch(str(part)):
+            out += f"[{brief(str(part))}]"
+        else:
+            out += f".{part}" if out else str(part)
     return out or "(top level)"
+
+
+#: Fields that take a number of either type (``StrictFloat | StrictInt``): pydantic
+#: ends the path of their errors with the type it tried, once per type.
+_EITHER_NUMBER = ("seconds", "distance")
+_TYPE_TAGS = ("str", "int", "float", "bool", "none")
 
 
 def _render(exc: ValidationError) -> list[str]:
     out = []
     for err in exc.errors(include_url=False):
         loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and (
-            p.startswith("function-") or p in ("str", "int", "float", "bool", "none",
-                                               "_FloatCheckIn", "_AlgebraicIn",
+            p.startswith("function-") or p in ("_FloatCheckIn", "_AlgebraicIn",
                                                "_CertificateIn"))))
+        message = " ".join(str(err["msg"]).split())
+        if len(loc) >= 2 and loc[-1] in _TYPE_TAGS and loc[-2] in _EITHER_NUMBER:
+            loc, message = loc[:-1], "input should be a number"   # one line, not two
         kind = err["type"]
         if kind == "missing":
             out.append(f"{_path(loc[:-1])}: missing key '{loc[-1]}'")
         elif kind == "extra_forbidden":
             out.append(f"{_path(loc[:-1])}: unknown key {brief(str(loc[-1]))}")
         else:
-            message = " ".join(str(err["msg"]).split())
             out.append(f"{_path(loc)}: {message[:1].lower()}{message[1:]}"
                        f" (got {brief(err.get('input'))})")
     return sorted(dict.fromkeys(out))
@@ -205,6 +226,7 @@ class _Checker:
         self.tree = tree
         self.problems: list[str] = []
         self.variables: list[str] = []
+        self.variables_read = True   # False when an entry of ``variables`` is refused
         self.polynomials: dict[str, NamedPolynomial] = {}  # entry -> its polynomial
 
     def add(self, where: str, message: str) -> None:
@@ -221,18 +243,20 @@ class _Checker:
         return True
 
     def expression(self, where: str, text: str, names, polynomial: bool = False) -> None:
+        if names is self.variables and not self.variables_read:
+            # a variable was refused: its entry has the error, and a name of this text
+            # that may be it is not reported again (the rest of the text is checked)
+            names = [*names, *(n for n in dict.fromkeys(_SYMBOL_USE.findall(text))
+                               if n not in _RESERVED)]
         try:
-            expr = parse_expression(text, names, where)
+            if polynomial:  # read once, without SymPy: the component keeps it
+                read = parse_polynomial(text, names, where)
+                self.polynomials[where] = NamedPolynomial.from_flint(
+                    read, read.context().names())
+            else:
+                parse_expression(text, names, where)
         except NumberError as exc:
             self.problems.append(str(exc))
-            return
-        if polynomial and not expr.is_polynomial(*[s for s in expr.free_symbols]):
-            self.add(where, f"{brief(text)} is not a polynomial")
-        elif polynomial:
-            try:  # read once: the component keeps it
-                self.polynomials[where] = NamedPolynomial.from_sympy(sp.expand(expr), where)
-            except NumberError as exc:
-                self.problems.append(str(exc))
 
     def numbers(self, where: str, numbers: Mapping[str, int]) -> None:
         for key, value in numbers.items():
@@ -266,6 +290,8 @@ class _Checker:
                     self.add(f"variables[{i}]", f"{brief(v)} given twice")
                 seen.add(v)
                 self.variables.append(v)
+            else:
+                self.variables_read = False
         # s_<joint> = cot(q/2), the chart at q = pi, for every t_<joint>
         self.variables += [cotangent_name(v[2:]) for v in list(self.variables)
                            if v.startswith("t_") and cotangent_name(v[2:]) not in seen]
@@ -295,8 +321,8 @@ class _Checker:
                 if table == "depths" and not key.isdigit():
                     self.add(f"{where}.depths", f"{brief(key)} is not a depth")
                 if min(entry.tests, entry.failed) < 0 or entry.failed > entry.tests:
-                    self.add(f"{where}.{table}.{key}", "counts must satisfy 0 <= failed "
-                                                       "<= tests")
+                    self.add(_path((where, table, key)), "counts must satisfy 0 <= "
+                                                         "failed <= tests")
         for name in ("failed", "checks"):
             for j, check in enumerate(getattr(cert, name) or []):
                 if check.inside is not None and not 0 <= check.inside < count:

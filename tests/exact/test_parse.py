@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from decimal import Decimal
 from fractions import Fraction
 
@@ -10,7 +11,14 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from coopkin_sym.exact.parse import NumberError, angle_text, parse_angle, parse_number
+from coopkin_sym.exact.parse import (
+    NumberError,
+    angle_text,
+    parse_angle,
+    parse_expression,
+    parse_number,
+    parse_polynomial,
+)
 
 L = sp.Symbol("L", positive=True)
 PARAMS = {"L": L}
@@ -251,3 +259,64 @@ def test_angle_round_trip(t):
 
 def test_angle_round_trip_pi():
     assert parse_angle(angle_text(sp.Integer(-1), sp.Integer(0)), "q") == (-1, 0)
+
+
+# -------------------------------------------------------------------- parse_polynomial
+
+
+@pytest.mark.parametrize("text", ["(t + 2*s)**3 / 6 - t", "-(s - 1)**2 * (t/3 + 1)",
+                                  "t**1000 - 1", "(-3*t**2)**3 + s**7", "5", "0",
+                                  "t^2 + 0.25*s", "Rational(3, 7)*t - Integer(2)"])
+def test_parse_polynomial_is_the_expression_the_parser_reads(text):
+    read = parse_polynomial(text, ["t", "s", "t"], "eq")
+    assert read.context().names() == ("t", "s")
+    t, s = sp.symbols("t s")
+    expected = sp.Poly(parse_expression(text, ["t", "s"], "eq"), t, s, domain=sp.QQ)
+    assert {m: Fraction(int(c.p), int(c.q)) for m, c in expected.terms() if c} == {
+        m: Fraction(int(c.p), int(c.q)) for m, c in read.to_dict().items()}
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("1/t", "eq: '1/t' is not a polynomial"),
+    ("t/(1 + s)", "eq: 't/(1 + s)' is not a polynomial"),
+    ("pi*t", "eq: 'pi*t' is not a polynomial"),
+    ("sqrt(2)*t", "eq: 'sqrt(2)*t' is not a polynomial"),
+    ("u + 1", "eq: 'u + 1' uses undeclared symbol u (declared variables: t, s)"),
+    ("(10*t)**1000", "eq: '(10*t)**1000' is too large: a number of more than 1000 digits"),
+    ("(2*t)**1001", "eq: '(2*t)**1001' is too large: an exponent over 1000"),
+    ("t**600*s**600", "eq: 't**600*s**600' is too large: degree over 1000"),
+])
+def test_parse_polynomial_refuses_what_is_not_a_polynomial_within_budgets(text, message):
+    with pytest.raises(NumberError) as caught:
+        parse_polynomial(text, ["t", "s"], "eq")
+    assert str(caught.value) == message
+
+
+def test_a_power_of_a_monomial_is_one_power_within_the_digit_budget():
+    # powers of monomials skip the squarings; the budgets hold the same way
+    assert parse_polynomial("(-2*t)**1000", ["t"], "eq").to_dict() == {(1000,): 2**1000}
+    assert str(parse_expression("(t/2)**3 * (2*t)**-2", ["t"], "eq")) == "t/32"
+
+
+def test_an_angle_too_long_to_show_is_not_said_to_have_tan_q2_equal_to_itself():
+    # it read "tan(q/2) = tan(q/2) is irrational"
+    with pytest.raises(NumberError) as caught:
+        parse_angle("1e400", "x")
+    assert str(caught.value).startswith(
+        "x: angle '1e400' is not exact: its tan(q/2) is irrational; exact angles have a "
+        "rational tan(q/2); nearest exact angles: ")
+
+
+@pytest.mark.parametrize("text", ["10**80 + 1/3", "10**999", "1e16", "123456789123/7"])
+def test_the_angles_suggested_for_a_large_angle_are_near_it(text):
+    # the angle was reduced modulo a float 2*pi: for 10**80 + 1/3 the suggestions
+    # were 0.96 rad away (-1.79 for -2.75)
+    import mpmath
+    with pytest.raises(NumberError) as caught:
+        parse_angle(text, "x")
+    with mpmath.workdps(1100):
+        value = parse_expression(text, [], "x")
+        exact = mpmath.mpf(int(value.p)) / int(value.q)
+        reduced = float(mpmath.atan2(mpmath.sin(exact), mpmath.cos(exact)))  # float-ok
+    shown = [float(a) for a in re.findall(r"\((-?\d+\.\d+)\)", str(caught.value))]  # float-ok
+    assert len(shown) >= 2 and all(abs(a - reduced) < 0.05 for a in shown), (shown, reduced)

@@ -13,7 +13,7 @@ from independent import reference_analysis
 
 import coopkin_sym
 from coopkin_sym.analysis.kinematics import build
-from coopkin_sym.errors import ModelError
+from coopkin_sym.errors import ModelError, NumberError
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.examples import example_path
@@ -306,3 +306,26 @@ def test_dh_joint_names_share_the_one_namespace():
     raw = _model({"dh": [ROW, dict(ROW)]})
     with pytest.raises(ModelError, match=r"arms\[0\]\.dh\[1\]\.name: .*'q1'"):
         coopkin_sym.load(raw)
+
+
+def test_a_table_whose_frames_outgrow_the_digit_budget_is_refused_at_the_row():
+    # each rotation by 2*atan(123456789/987654321) multiplies the frames' denominators
+    # by up to 10**36 (theta and alpha both turn): at dh[31] a frame has more than
+    # 1000 digits; the table used to be accepted, taking minutes for 1000 rows
+    angle = "2*atan(123456789/987654321)"
+    rows = [dict(ROW, name=f"q{k}", theta=angle, alpha=angle) for k in range(120)]
+    with pytest.raises(NumberError) as caught:
+        coopkin_sym.load(_model({"dh": rows}, dict(CONTACT, link="a/120")))
+    assert str(caught.value) == (
+        "dh[31] (joint 'q31'): the link frame at home has a number of more than 1000 "
+        "digits (the rotations of the rows up to here multiply their denominators); use "
+        "angles whose tan(q/2) have fewer digits")
+
+
+def test_a_long_table_of_small_angles_is_within_the_digit_budget():
+    rows = [dict(ROW, name=f"q{k}", alpha="2*atan(1/2)") for k in range(200)]
+    model = coopkin_sym.load(_model({"dh": rows}, dict(CONTACT, link="a/200"))).model
+    # joint 200 turns about z of frame 199, turned about x by 199 * alpha (numbers of
+    # 140 digits): (0, -sin, cos) of that angle
+    turn = sp.expand((sp.Rational(3, 5) + sp.I * sp.Rational(4, 5)) ** 199)
+    assert model.arms[0].joints[-1].axis == (0, -sp.im(turn), sp.re(turn))

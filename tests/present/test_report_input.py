@@ -185,3 +185,55 @@ def test_a_witness_root_of_degree_four_is_read_back():
     # the same name outside CRootOf is still refused in a root (a root is a number)
     assert any("uses undeclared symbol t" in line
                for line in refused(tree(components__0__algebraic_witness__root="t + 1")))
+
+
+def test_a_refused_variable_is_one_problem_not_one_per_equation_using_it():
+    # the equations use t_q1, which the refused entry may have meant: they used to get
+    # one "uses undeclared symbol t_q1" each; the rest of each text is still checked
+    lines = refused(tree(variables__0="t_q1**2",
+                         components__0__equations__1="1/t_q2 + exec('x')"))
+    assert lines == [
+        "not a locus report: variables[0]: 't_q1**2' is not a name",
+        "not a locus report: components[0].equations[1]: '1/t_q2 + exec('x')' uses "
+        "unknown function exec (allowed: atan, sqrt)"]
+
+
+@pytest.mark.parametrize(("changes", "message"), [
+    # a key named like a type was dropped from the path ("float_checks[0].Nm")
+    ({"components__0__float_checks__0__float": {"Nm": "a"}},
+     "components[0].float_checks[0].float.Nm: input should be a valid integer (got 'a')"),
+    ({"generic": {"int": "a"}}, "generic.int: input should be a valid integer (got 'a')"),
+    # a key with a line break broke the line; a key that is no name is quoted
+    ({"generic": {"N\nm": "a"}}, "generic['N m']: input should be a valid integer (got 'a')"),
+    ({"generic": {"": "a"}}, "generic['']: input should be a valid integer (got 'a')"),
+    # a number of either type: one line, not one per type tried
+    ({"seconds": "a"}, "seconds: input should be a number (got 'a')"),
+    ({"components__0__float_checks__0__distance": None},
+     "components[0].float_checks[0].distance: input should be a number (got 'None')"),
+])
+def test_structure_problems_name_their_entry_on_one_line(changes, message):
+    assert refused(tree(**changes)) == [f"not a locus report: {message}"]
+
+
+def test_a_certificate_table_key_with_a_line_break_stays_on_its_line():
+    data = json.loads(render_json(locus()))
+    data["certificate"] = {
+        "system": "demo", "certified": False, "summary": "not certified: x",
+        "depths": {}, "charts": {"t\nq": {"certified": False, "why": "", "tests": 1,
+                                          "failed": 2}},
+        "tests": 1, "certified_by": {}, "failed": [], "notes": [], "seconds": 0}
+    assert refused(data) == ["not a locus report: certificate.charts['t q']: counts must "
+                             "satisfy 0 <= failed <= tests"]
+
+
+def test_equations_are_read_without_sympy(monkeypatch):
+    # a report's equation of 10,000 terms took 5 s through SymPy (expand, Poly),
+    # 40,000 terms 21 s; the polynomials now come from the parser's own arithmetic
+    from coopkin_sym.exact.polynomial import NamedPolynomial
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("an equation went through SymPy")
+    monkeypatch.setattr(NamedPolynomial, "from_sympy", refuse)
+    monkeypatch.setattr("sympy.expand", refuse)
+    read = locus_from_json(tree(components__0__equations__0="(t_q1 + 1)**2/4 - t_q2"))
+    assert read.components[0].polynomials[0].text == "t_q1**2/4 + t_q1/2 - t_q2 + 1/4"
