@@ -234,6 +234,12 @@ def _exact(x) -> Fraction:
     return Fraction(*to_rational(x._mpi_[0]))
 
 
+def _nearest_integer(x) -> int:
+    """The integer nearest the middle of the interval ``x`` (computed exactly)."""
+    middle = (_exact(x.a) + _exact(x.b)) / 2
+    return math.floor(middle + Fraction(1, 2))
+
+
 def _snap_at(q: Fraction, bound: Fraction, prec: int) -> ExactAngle | None:
     """:meth:`ExactAngle.snap` decided with intervals of ``prec`` bits, or None when
     they are too wide to decide."""
@@ -242,8 +248,10 @@ def _snap_at(q: Fraction, bound: Fraction, prec: int) -> ExactAngle | None:
     try:
         iv.prec = prec
         pi, qi, b = iv.pi, _interval(q), _interval(bound)
-        turns = int(mpmath.nint((qi / (2 * pi)).mid))
+        turns = _nearest_integer(qi / (2 * pi))
         r = qi - 2 * pi * turns           # q - 2 pi turns, about in [-pi, pi]
+        if r.delta > 1 or abs(_exact(r.a)) > 4 or abs(_exact(r.b)) > 4:
+            return None                   # too wide to tell the turn
         for beyond in (r + b - pi, -r + b - pi):     # is pi (or -pi) within the bound?
             if beyond.a >= 0:
                 return ExactAngle(1, 0)
@@ -278,10 +286,11 @@ def _distance(angle: ExactAngle, q: Fraction, prec: int) -> float:  # float-ok
             iv.prec = prec
             two_pi = 2 * iv.pi
             d = 2 * iv.atan2(iv.mpf(angle.num), iv.mpf(angle.den)) - _interval(q)
-            d = d - two_pi * int(mpmath.nint((d / two_pi).mid))
+            d = d - two_pi * _nearest_integer(d / two_pi)
             if d.b < 0:
                 d = -d
-            if (d.a > 0 and d.delta <= d.a * mpmath.mpf(2) ** -60) or prec > _MAX_SNAP_PREC:
+            if (d.a > 0 and d.b < 4 and d.delta <= d.a * mpmath.mpf(2) ** -60) \
+                    or prec > _MAX_SNAP_PREC:
                 return float((_exact(d.a) + _exact(d.b)) / 2)  # float-ok: for display
             prec *= 2
     finally:

@@ -29,8 +29,9 @@ def _mpf(x: Fraction):
 
 
 def angle_distance(angle: ExactAngle, q: Fraction):
-    """|angle - q| up to whole turns, in 150-digit arithmetic."""
-    with mpmath.workdps(150):
+    """|angle - q| up to whole turns, with 120 digits after those of ``q``."""
+    digits = len(str(abs(q.numerator) // q.denominator)) + 120
+    with mpmath.workdps(digits):
         d = 2 * mpmath.atan2(angle.num, angle.den) - _mpf(q)
         two_pi = 2 * mpmath.pi
         return abs(d - two_pi * mpmath.nint(d / two_pi))
@@ -45,7 +46,8 @@ def tangent_interval(q: Fraction, bound: Fraction):
 
 
 @given(st.one_of(st.floats(min_value=-1e6, max_value=1e6, allow_subnormal=False),
-                 st.floats(min_value=-1e-6, max_value=1e-6)),
+                 st.floats(min_value=-1e-6, max_value=1e-6),
+                 st.floats(allow_nan=False, allow_infinity=False)),
        BOUNDS)
 @settings(max_examples=300, deadline=None)
 def test_a_snapped_angle_is_exact_within_the_bound_and_its_distance_is_exact(q, bound):
@@ -82,6 +84,21 @@ def test_the_snapping_bound_is_honoured_far_below_double_precision():
     assert angle.text == "2*atan(37320538/37320539)"
     assert angle_distance(angle, Fraction("1.5707963")) <= mpmath.mpf(10) ** -15
     assert f"{error:.6g}" == f"{float(angle_distance(angle, Fraction('1.5707963'))):.6g}"
+
+
+@pytest.mark.parametrize("q, bound, text", [
+    (Fraction("1e300"), Fraction(1, 10**9), "2*atan(-44657/37682)"),
+    (10**999 + Fraction(1, 3), Fraction(1, 10**15), "2*atan(57612941/1499062)"),
+    (Fraction(-10**200, 7), Fraction(1, 10), "2*atan(-3/2)"),
+])
+def test_huge_angles_are_reduced_by_whole_turns_exactly(q, bound, text):
+    # 1e300 rad was snapped to pi, 2.4e283 rad away, when the turns were counted in
+    # doubles
+    angle, error = ExactAngle.snap(q, bound)
+    assert angle.text == text
+    exact = angle_distance(angle, q)
+    assert exact <= _mpf(bound)
+    assert abs(mpmath.mpf(error) - exact) <= exact * mpmath.mpf(2) ** -50
 
 
 def test_pi_and_zero_are_chosen_when_within_the_bound():
