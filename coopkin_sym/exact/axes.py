@@ -33,6 +33,9 @@ __all__ = ["axis_angle", "snap_axis"]
 
 Vector = tuple[Fraction, Fraction, Fraction]
 
+#: Tries of ever closer points (three always suffice: a point within bound/(2 sqrt 2)
+#: of the stereographic coordinates is within the bound).
+_MAX_TRIES = 8
 #: The largest precision (bits) of the intervals that decide whether an axis is within
 #: the bound (the comparison is with an irrational number: refining always ends).
 _MAX_PREC = 1 << 16
@@ -61,7 +64,7 @@ def snap_axis(v: Vector, bound: Fraction) -> tuple[Vector, float]:  # float-ok
     others = [i for i in range(3) if i != big]
     sign = 1 if v[big] > 0 else -1
     h = bound
-    while True:
+    for _ in range(_MAX_TRIES):
         plane = [_near(v[i], abs(v[big]), norm2, h) for i in others]
         a, c = plane
         s = 1 + a * a + c * c
@@ -72,6 +75,7 @@ def snap_axis(v: Vector, bound: Fraction) -> tuple[Vector, float]:  # float-ok
         if _within(v, norm2, w, bound):
             return w, axis_angle(v, w)
         h /= 2
+    raise ValueError(f"cannot snap the axis {v} within {bound} rad")  # pragma: no cover
 
 
 def axis_angle(v: Vector, w: Vector) -> float:  # float-ok: for display
