@@ -726,9 +726,10 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
               snapped: list[Snapped],
               notes: tuple[list[Renamed], list[IgnoredJoint]]) -> Arm | None:
     """An arm read from a URDF file (relative paths: from the model file's folder).
-    Joint names that are not identifiers, and link names that ``ARM/LINK`` cannot
-    write, get safe names (:func:`~coopkin_sym.model.urdf.variable_names`), listed in
-    ``notes`` with the joints off the chain that were ignored."""
+    Joint names that are not identifiers, are reserved or are parameters, and link
+    names that ``ARM/LINK`` cannot write, get safe names
+    (:func:`~coopkin_sym.model.urdf.variable_names`), listed in ``notes`` with the
+    joints off the chain that were ignored."""
     before = len(problems)
     for key in ("joints", "dh", "convention"):
         if getattr(arm, key) is not None:
@@ -759,7 +760,8 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
         problems.append(f"{path}.urdf: {exc}")
         return None
     label = f"{path} ({where.name})"
-    safe = variable_names([j.name for j in read.joints], prefix, RESERVED_NAMES)
+    safe = variable_names([j.name for j in read.joints], prefix,
+                          RESERVED_NAMES | frozenset(parameters))
     joints = []
     passive = set(arm.passive or ())
     for k, j in enumerate(read.joints):

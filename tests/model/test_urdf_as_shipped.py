@@ -157,6 +157,15 @@ def test_safe_names_follow_the_prefix_and_avoid_names_in_the_file(tmp_path):
     assert model.joint_names == ("joint_0_0_2", "joint_1_0", "joint_0_0")
 
 
+def test_a_joint_named_like_a_parameter_is_renamed(tmp_path):
+    model = _model(tmp_path, "a.urdf", ALLEGRO.replace('name="joint_1.0"', 'name="L"'),
+                   "link_0.0")
+    model["parameters"] = ["L"]
+    loaded = coopkin_sym.load(model).model
+    assert loaded.joint_names == ("joint_0_0", "L_", "lambda_")
+    assert Renamed("arms[0] (a.urdf)", "joint", "L", "L_") in loaded.renamed
+
+
 def test_passive_joints_are_named_as_in_the_file_or_by_their_safe_name(tmp_path):
     for passive in (["joint_1.0"], ["joint_1_0"]):
         model = coopkin_sym.load(_model(tmp_path, "a.urdf", ALLEGRO, "link_0.0",
