@@ -211,8 +211,8 @@ def urdf_note_lines(renamed, ignored) -> list[str]:
         lines.extend(f"  {r.where}: {r.what} {brief(r.given)} is {r.name}" for r in renamed)
     if ignored:
         lines.append(f"Ignored: {len(ignored)} joint{'' if len(ignored) == 1 else 's'} of "
-                     f"URDF files off the arms' chains (mimic, floating or planar joints "
-                     f"that are not part of the system):")
+                     f"URDF files off the arms' chains, left out (an arm cannot have "
+                     f"them: mimic, floating, planar or of an unknown type):")
         for j in ignored:
             what = brief(j.type) if j.type is not None else "no type"
             if j.mimics is not None:

@@ -1,7 +1,8 @@
-"""Snapping floats to exact angles and exact unit axes: the bound always holds (checked
-here in 150-digit arithmetic, independently of the package's intervals), the distance
-reported is the exact one to display precision, and the value is the simplest one
-(checked by brute force over smaller denominators)."""
+"""Snapping floats to exact angles and exact unit axes: the bound always holds
+(checked here with 120 digits beyond those of the angle, independently of the
+package's intervals), the distance reported is the exact one to display precision,
+and the value is the simplest one (checked by brute force over smaller
+denominators)."""
 
 from __future__ import annotations
 

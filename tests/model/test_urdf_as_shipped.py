@@ -81,8 +81,9 @@ def test_joints_off_the_chain_are_ignored_and_said(tmp_path):
                      "panda_finger_joint1"),
         IgnoredJoint("arms[0] (panda.urdf)", "camera_joint", "floating", None))
     lines = analysis_text(system.analyze()).splitlines()
-    start = lines.index("Ignored: 2 joints of URDF files off the arms' chains (mimic, "
-                        "floating or planar joints that are not part of the system):")
+    start = lines.index("Ignored: 2 joints of URDF files off the arms' chains, left out "
+                        "(an arm cannot have them: mimic, floating, planar or of an "
+                        "unknown type):")
     assert lines[start + 1:start + 3] == [
         "  arms[0] (panda.urdf): joint 'panda_finger_joint2' ('prismatic', mimics "
         "'panda_finger_joint1')",
