@@ -16,7 +16,7 @@ from bounded_run import run_coopkin
 import coopkin_sym
 from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.model.urdf import IgnoredJoint, Renamed, read_urdf_text
-from coopkin_sym.present.text import analysis_text
+from coopkin_sym.present.text import analysis_text, urdf_note_lines
 
 
 def _joint(name: str, kind: str, parent: str, child: str, extra: str = "",
@@ -231,3 +231,18 @@ def test_a_snapped_axis_honours_a_tight_bound_and_states_its_distance(tmp_path):
     assert ("  arms[0] (r.urdf): joint 'q' axis: 0.7071068 0.7071068 0 -> "
             "(927538921/1311738121, 927538920/1311738121, 0) (5.4e-10 rad away)"
             in analysis_text(system.analyze()).splitlines())
+
+
+def test_off_chain_joints_of_unknown_or_no_type_are_ignored_and_said():
+    text = PANDA.replace('"floating"', '"spherical"').replace(
+        '<joint name="panda_finger_joint1" type="prismatic"',
+        '<joint name="panda_finger_joint1"')
+    arm = read_urdf_text(text, "p.urdf", tip="panda_hand")
+    assert arm.ignored == (
+        IgnoredJoint("p.urdf", "panda_finger_joint1", None, None),
+        IgnoredJoint("p.urdf", "panda_finger_joint2", "prismatic", "panda_finger_joint1"),
+        IgnoredJoint("p.urdf", "camera_joint", "spherical", None))
+    assert urdf_note_lines((), arm.ignored)[1:] == [
+        "  p.urdf: joint 'panda_finger_joint1' (no type)",
+        "  p.urdf: joint 'panda_finger_joint2' ('prismatic', mimics 'panda_finger_joint1')",
+        "  p.urdf: joint 'camera_joint' ('spherical')"]
