@@ -7,7 +7,8 @@ A revolute joint ``q`` enters every polynomial through its tangent half-angle
 tangent half-angle is rational or infinite, held as homogeneous integers
 ``tan(q/2) = num/den`` (``(1, 0)`` is ``q = pi``): it is read from text by the package's
 one parser (:func:`~coopkin_sym.exact.parse.parse_angle`), written back in ``--at``
-syntax, snapped from a float within a stated bound (the float only chooses), and
+syntax, snapped from a float (or an exact rational) to the simplest exact angle within
+a stated bound (decided exactly: the bound always holds), and
 nudged by a small distance (for float checks near a witness). An angle with an
 irrational but algebraic tangent half-angle is written by :func:`algebraic_angle`.
 
@@ -27,16 +28,18 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 import flint
+import mpmath
 import sympy as sp
+from mpmath.libmp import to_rational
 from sympy.polys.polyerrors import NotAlgebraic
 
-from coopkin_sym.errors import NumberError
+from coopkin_sym.errors import ArgumentError, NumberError
 from coopkin_sym.exact.parse import parse_angle, tangent_text
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 
 __all__ = ["COTANGENT_PREFIX", "TANGENT_PREFIX", "ExactAngle", "algebraic_angle",
-           "cotangent_name", "joint_of", "tangent_name"]
+           "cotangent_name", "joint_of", "simplest_between", "tangent_name"]
 
 #: The ring variable of a revolute joint is ``t_<joint>`` = tan(q/2) ...
 TANGENT_PREFIX = "t_"
@@ -117,31 +120,36 @@ class ExactAngle:
         return cls.from_cos_sin(*parse_angle(text, where))
 
     @classmethod
-    def snap(cls, q: float, bound: float) -> tuple[ExactAngle, float]:  # float-ok
-        """The angle near ``q`` (radians) with the smallest rational tangent
-        half-angle within ``bound``: the first continued-fraction convergent of
-        ``tan(q/2)`` (of ``cot(q/2)`` beyond 1) that meets it; and its distance to
-        ``q``. The float only chooses: the angle returned is exact.
+    def snap(cls, q: float | Fraction, bound: float | Fraction  # float-ok
+             ) -> tuple[ExactAngle, float]:  # float-ok: the distance, for display
+        """The simplest exact angle within ``bound`` of ``q`` (radians; a float is its
+        exact binary value, a :class:`~fractions.Fraction` is exact): ``0`` or ``pi``
+        when one is within the bound, else the angle whose ``tan(q/2)`` is the rational
+        with the smallest denominator in the interval of tangents within the bound
+        (:func:`simplest_between`); and its distance to ``q``. The decisions are exact
+        (interval arithmetic, refined until certain), so the distance never exceeds
+        the bound; the distance returned is rounded to a float for display.
 
         Example
         -------
-        >>> angle, error = ExactAngle.snap(math.pi / 3, 1e-3)
-        >>> angle.text, error < 1e-3
-        ('2*atan(15/26)', True)
+        >>> angle, error = ExactAngle.snap(Fraction("1.5707963"), Fraction(1, 10**6))
+        >>> angle.text, f"{error:.3g}"
+        ('pi/2', '2.68e-08')
+        >>> ExactAngle.snap(math.pi / 3, 1e-3)[0].text
+        '2*atan(15/26)'
         """
-        q = math.remainder(q, 2 * math.pi)  # float-ok: choosing only
-        t = math.tan(q / 2)  # float-ok
-        inverse = abs(t) > 1  # float-ok
-        for f in _convergents(Fraction(1 / t if inverse else t)):  # float-ok
-            if inverse:
-                a, b = (1, 0) if f == 0 else (f.denominator * (1 if f > 0 else -1),
-                                              abs(f.numerator))
-            else:
-                a, b = f.numerator, f.denominator
-            err = abs(math.remainder(2 * math.atan2(a, b) - q, 2 * math.pi))  # float-ok
-            if err <= bound:  # float-ok
-                return cls(a, b), err
-        raise NumberError("", f"cannot snap the angle {q!r} within {bound} rad")  # pragma: no cover
+        q, bound = Fraction(q), Fraction(bound)
+        if not 0 < bound < Fraction(3, 2):
+            raise ArgumentError(f"a snapping bound must be between 0 and 3/2 rad, got {bound}")
+        if q == 0:
+            return cls(0, 1), 0.0
+        prec = 64 + abs(q.numerator // q.denominator).bit_length() + bound.denominator.bit_length()
+        while prec <= _MAX_SNAP_PREC:
+            angle = _snap_at(q, bound, prec)
+            if angle is not None:
+                return angle, _distance(angle, q, prec)
+            prec *= 2
+        raise NumberError("", f"cannot snap the angle {q} within {bound} rad")  # pragma: no cover
 
     @property
     def tangent(self) -> Fraction | None:
@@ -182,16 +190,112 @@ class ExactAngle:
         return ExactAngle.from_tangent(Fraction(math.tan(q / 2)))  # float-ok: exact value
 
 
-def _convergents(x: Fraction):
-    """The continued fraction convergents of ``x``, in order (the last is ``x``)."""
-    p, q = x.numerator, x.denominator
-    h0, h1, k0, k1 = 0, 1, 1, 0
-    while q:
-        a, r = divmod(p, q)
-        h0, h1 = h1, a * h1 + h0
-        k0, k1 = k1, a * k1 + k0
-        yield Fraction(h1, k1)
-        p, q = q, r
+#: The largest precision (bits) of the intervals that decide a snap; an undecided snap
+#: past it is impossible (the ends of the interval are irrational) but would be an error.
+_MAX_SNAP_PREC = 1 << 16
+
+
+def simplest_between(lo: Fraction, hi: Fraction) -> Fraction:
+    """The simplest rational in the closed interval ``[lo, hi]``: the one with the
+    smallest denominator (it has the smallest absolute numerator too: the first
+    one met going down the Stern-Brocot tree), ``0`` when the interval holds it.
+
+    Example
+    -------
+    >>> simplest_between(Fraction(3, 10), Fraction(7, 20)), simplest_between(Fraction(-5, 2), 1)
+    (Fraction(1, 3), Fraction(0, 1))
+    """
+    lo, hi = Fraction(lo), Fraction(hi)
+    if lo > hi:
+        raise ArgumentError(f"an empty interval [{lo}, {hi}]")
+    if lo <= 0 <= hi:
+        return Fraction(0)
+    if hi < 0:
+        return -simplest_between(-hi, -lo)
+    terms = []
+    while True:
+        whole = lo.numerator // lo.denominator
+        if whole == lo or whole + 1 <= hi:
+            value = Fraction(whole if whole == lo else whole + 1)
+            break
+        terms.append(whole)                  # lo, hi in (whole, whole + 1)
+        lo, hi = 1 / (hi - whole), 1 / (lo - whole)
+    for whole in reversed(terms):
+        value = whole + 1 / value
+    return value
+
+
+def _interval(x: Fraction):
+    """A certified enclosure of the rational ``x`` (at the current interval precision)."""
+    return mpmath.iv.mpf(x.numerator) / x.denominator
+
+
+def _exact(x) -> Fraction:
+    """The exact value of a (finite) end ``x.a`` or ``x.b`` of an interval."""
+    return Fraction(*to_rational(x._mpi_[0]))
+
+
+def _nearest_integer(x) -> int:
+    """The integer nearest the middle of the interval ``x`` (computed exactly)."""
+    middle = (_exact(x.a) + _exact(x.b)) / 2
+    return math.floor(middle + Fraction(1, 2))
+
+
+def _snap_at(q: Fraction, bound: Fraction, prec: int) -> ExactAngle | None:
+    """:meth:`ExactAngle.snap` decided with intervals of ``prec`` bits, or None when
+    they are too wide to decide."""
+    iv = mpmath.iv
+    saved = iv.prec
+    try:
+        iv.prec = prec
+        pi, qi, b = iv.pi, _interval(q), _interval(bound)
+        turns = _nearest_integer(qi / (2 * pi))
+        r = qi - 2 * pi * turns           # q - 2 pi turns, about in [-pi, pi]
+        if r.delta > 1 or abs(_exact(r.a)) > 4 or abs(_exact(r.b)) > 4:
+            return None                   # too wide to tell the turn
+        for beyond in (r + b - pi, -r + b - pi):     # is pi (or -pi) within the bound?
+            if beyond.a >= 0:
+                return ExactAngle(1, 0)
+            if beyond.b >= 0:
+                return None
+        if turns == 0:                    # r = q exactly: is 0 within the bound?
+            if abs(q) <= bound:
+                return ExactAngle(0, 1)
+        else:
+            low, high = r - b, r + b
+            if low.b <= 0 <= high.a:
+                return ExactAngle(0, 1)
+            if low.a <= 0 <= high.b:
+                return None
+        low, high = iv.tan((r - b) / 2), iv.tan((r + b) / 2)
+        if _exact(low.b) > _exact(high.a):
+            return None
+        t = simplest_between(_exact(low.a), _exact(high.b))
+        if not _exact(low.b) <= t <= _exact(high.a):
+            return None
+        return ExactAngle(t.numerator, t.denominator)
+    finally:
+        iv.prec = saved
+
+
+def _distance(angle: ExactAngle, q: Fraction, prec: int) -> float:  # float-ok
+    """``|angle - q|`` up to whole turns, to 60 bits at least (for display)."""
+    iv = mpmath.iv
+    saved = iv.prec
+    try:
+        while True:
+            iv.prec = prec
+            two_pi = 2 * iv.pi
+            d = 2 * iv.atan2(iv.mpf(angle.num), iv.mpf(angle.den)) - _interval(q)
+            d = d - two_pi * _nearest_integer(d / two_pi)
+            if d.b < 0:
+                d = -d
+            if (d.a > 0 and d.b < 4 and d.delta <= d.a * mpmath.mpf(2) ** -60) \
+                    or prec > _MAX_SNAP_PREC:
+                return float((_exact(d.a) + _exact(d.b)) / 2)  # float-ok: for display
+            prec *= 2
+    finally:
+        iv.prec = saved
 
 
 _T = sp.Symbol("t")

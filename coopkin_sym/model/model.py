@@ -27,6 +27,7 @@ import re
 import reprlib
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from fractions import Fraction
 from pathlib import Path
 from typing import Any, Literal
 
@@ -47,7 +48,14 @@ from coopkin_sym.model.dh import (
 )
 from coopkin_sym.model.examples import example_path, list_examples
 from coopkin_sym.model.trees import TreeError, check_tree, read_file
-from coopkin_sym.model.urdf import DEFAULT_BOUND, Snapped, read_urdf
+from coopkin_sym.model.urdf import (
+    DEFAULT_BOUND,
+    IgnoredJoint,
+    Renamed,
+    Snapped,
+    read_urdf,
+    variable_names,
+)
 
 JointType = Literal["revolute", "prismatic"]
 ContactModel = Literal["complete", "soft", "hard", "frictionless"]
@@ -134,7 +142,10 @@ class Model:
     """A whole system: parameters, arms, contacts; ``object_frame`` is where object
     twists are referenced (a point, in the base frame) and the axes they are written
     in (a rotation whose columns are those axes), or None for the base origin and axes.
-    ``snapped`` lists the floats of URDF files replaced by exact values. A ``planar``
+    ``snapped`` lists the floats of URDF files replaced by exact values, ``renamed``
+    the names of URDF files that are not identifiers and the names used for them,
+    ``ignored`` the joints off the chains of URDF arms that an arm could not have
+    (mimic, floating, planar joints). A ``planar``
     system moves in the base's xy-plane: its object twists are ``(v_x, v_y, w_z)``.
     ``locked`` names joints held still: they keep their angle or displacement (a
     configuration variable) but have no velocity (their columns of ``D`` are zero);
@@ -156,6 +167,8 @@ class Model:
     snapped: tuple[Snapped, ...] = ()
     planar: bool = False
     locked: frozenset[str] = frozenset()
+    renamed: tuple[Renamed, ...] = ()
+    ignored: tuple[IgnoredJoint, ...] = ()
 
     @property
     def object_dim(self) -> int:
@@ -230,6 +243,9 @@ class Model:
 # ----------------------------------------------------------------------------- loading
 
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+#: A URDF link name that a contact can write after its arm (``ARM/LINK``): not all
+#: digits (``ARM/K`` counts joints), no slash, no space.
+_LINK_NAME = re.compile(r"(?!\d+$)[^/\s]+")
 
 #: Names a parameter or joint may not have: they mean something else in SymPy text.
 RESERVED_NAMES: frozenset[str] = frozenset(
@@ -479,6 +495,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
 
     arms: list[Arm] = []
     snapped: list[Snapped] = []
+    urdf_notes: tuple[list[Renamed], list[IgnoredJoint]] = ([], [])
     arm_joints: dict[str, tuple[int, int] | None] = {}   # name -> (index, joints)
     joint_paths: dict[str, str] = {}
     nameless_arm = False   # an arm without a usable name failed
@@ -500,7 +517,7 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
             continue
         if arm.urdf is not None:
             built = _urdf_arm(arm, apath, parameters, names, problems, joint_paths,
-                              source, snapped)
+                              source, snapped, urdf_notes)
             arm_joints.setdefault(arm.name, (i, len(built.joints)) if built else None)
             if built is not None:
                 arms.append(built)
@@ -579,7 +596,8 @@ def _build(tree: object, source: str | None, default_name: str) -> Model:
     return Model(name=top.name if top.name is not None else default_name,
                  parameters=tuple(parameters.values()), arms=tuple(arms),
                  contacts=tuple(contacts), source=source, object_frame=object_frame,
-                 snapped=tuple(snapped), planar=bool(top.planar))
+                 snapped=tuple(snapped), planar=bool(top.planar),
+                 renamed=tuple(urdf_notes[0]), ignored=tuple(urdf_notes[1]))
 
 
 def _vec_text(v) -> str:
@@ -705,8 +723,13 @@ def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names
 
 def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names,
               problems: list[str], joint_paths: dict[str, str], source: str | None,
-              snapped: list[Snapped]) -> Arm | None:
-    """An arm read from a URDF file (relative paths: from the model file's folder)."""
+              snapped: list[Snapped],
+              notes: tuple[list[Renamed], list[IgnoredJoint]]) -> Arm | None:
+    """An arm read from a URDF file (relative paths: from the model file's folder).
+    Joint names that are not identifiers, are reserved or are parameters, and link
+    names that ``ARM/LINK`` cannot write, get safe names
+    (:func:`~coopkin_sym.model.urdf.variable_names`), listed in ``notes`` with the
+    joints off the chain that were ignored."""
     before = len(problems)
     for key in ("joints", "dh", "convention"):
         if getattr(arm, key) is not None:
@@ -719,9 +742,13 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
             if not 0 < value < 1:
                 raise NumberError(f"{path}.snap", f"expected a bound between 0 and 1 "
                                   f"(radians), got {brief(arm.snap)}")
-            bound = float(value)  # float-ok: a snapping bound, not a decision
+            bound = Fraction(str(value))
         except NumberError as exc:
             problems.append(str(exc))
+    prefix = arm.prefix or ""
+    if prefix and not _IDENTIFIER.fullmatch(prefix):
+        problems.append(f"{path}.prefix: {brief(prefix)} is not a valid start of a name "
+                        f"(letters, digits and underscores, not starting with a digit)")
     if len(problems) > before or base is None:
         return None
     where = Path(arm.urdf)
@@ -732,16 +759,20 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
     except UrdfError as exc:
         problems.append(f"{path}.urdf: {exc}")
         return None
-    prefix = arm.prefix or ""
+    label = f"{path} ({where.name})"
+    safe = variable_names([j.name for j in read.joints], prefix,
+                          RESERVED_NAMES | frozenset(parameters))
     joints = []
     passive = set(arm.passive or ())
     for k, j in enumerate(read.joints):
-        name = prefix + j.name
+        name = safe[j.name]
+        if name != prefix + j.name:
+            notes[0].append(Renamed(label, "joint", j.name, name))
         if names.add(name, f"{path}.urdf: joint {k + 1} ({brief(j.name)})", symbol=True):
             joint_paths[name] = f"{path}.urdf"
         joints.append(Joint(name, j.type, j.axis, j.point,  # type: ignore[arg-type]
-                            j.name not in passive))
-    unknown = sorted(passive - {j.name for j in read.joints})
+                            not passive & {j.name, name}))
+    unknown = sorted(passive - {j.name for j in read.joints} - set(safe.values()))
     if unknown:
         what = "is not a moving joint" if len(unknown) == 1 else "are not moving joints"
         problems.append(f"{path}.passive: {', '.join(map(brief, unknown))} {what} of the "
@@ -749,9 +780,17 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
                         f"{', '.join(j.name for j in read.joints)})")
     if len(problems) > before:
         return None
-    snapped.extend(Snapped(f"{path} ({where.name}): {s.where}", s.given, s.exact, s.error)
+    snapped.extend(Snapped(f"{label}: {s.where}", s.given, s.exact, s.error)
                    for s in read.snapped)
-    links = tuple((name, k, (sp.ImmutableMatrix(r), p)) for name, k, (r, p) in read.links)
+    notes[1].extend(replace(ignored, where=label) for ignored in read.ignored)
+    link_names = [name for name, _, _ in read.links]
+    written = [name for name in link_names if _LINK_NAME.fullmatch(name)]
+    link_safe = variable_names([n for n in link_names if not _LINK_NAME.fullmatch(n)],
+                               reserved=frozenset(written), lead="link_")
+    for given, name in link_safe.items():
+        notes[0].append(Renamed(label, "link", given, name))
+    links = tuple((link_safe.get(name, name), k, (sp.ImmutableMatrix(r), p))
+                  for name, k, (r, p) in read.links)
     return Arm(arm.name, tuple(joints), None, links)
 
 

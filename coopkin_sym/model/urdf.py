@@ -8,15 +8,20 @@ revolute here, limits are ignored), ``prismatic`` joints and ``fixed`` joints (m
 into the next link). It returns each moving joint's axis and a point on it at home and
 the frame of every link on the chain, in the arm's base frame, like a DH table does.
 
-Numbers are read exactly where they are exact: ``xyz`` entries are decimals (``0.4318``
-is ``2159/5000``). Angles and axes written as floats are snapped: an ``rpy`` angle to
-the nearest angle with a rational ``tan(q/2)`` within the bound (``1.5708`` is
-``pi/2``), an axis to a nearby exact unit vector (``0.7071 0.7071 0`` is
-``(1, 1, 0)/sqrt(2)``, which is not rational: the nearest rational unit vector within
-the bound is taken). Every snap is recorded with its distance, so that reports can
-state it. Anything else (floating or planar joints, mimic joints, closed loops, a
-branching robot without a tip) is refused with one line naming the file and the
-element; a closed loop is named by its joints and links. The file is parsed with
+Numbers are read exactly: ``xyz`` entries are decimals (``0.4318`` is ``2159/5000``),
+and so are angles and axes, which are then snapped: an ``rpy`` angle to the simplest
+exact angle within the bound (:meth:`~coopkin_sym.exact.angles.ExactAngle.snap`:
+``1.5708`` is ``pi/2``), an axis to an exact rational unit vector within the bound
+(:func:`~coopkin_sym.exact.axes.snap_axis`: ``0.7071 0.7071 0`` is near
+``(1, 1, 0)/sqrt(2)``, which is not rational). Every snap is decided exactly and
+recorded with its distance, so that reports can state it. Only the chain is checked:
+joints off it that an arm could not have (mimic, floating, planar or unknown types)
+are ignored and listed (:class:`IgnoredJoint`); on the chain they are refused with the
+reason. Names that are not identifiers get safe names in the model layer
+(:func:`variable_names`). Anything else (closed loops, a branching robot without a
+tip, a xacro file, whose expansion would run the expressions it holds) is refused
+with one line naming the file and the element; a closed loop is named by its joints
+and links. The file is parsed with
 ``defusedxml`` (no entities, no external references), and the parse stops at the first
 element over a budget of :mod:`coopkin_sym.limits`: links
 (:data:`~coopkin_sym.limits.MAX_URDF_LINKS`), joints
@@ -40,7 +45,8 @@ Example
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
 
@@ -49,14 +55,16 @@ import sympy as sp
 from coopkin_sym import limits
 from coopkin_sym.errors import TreeError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.axes import snap_axis
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then, rotation_rpy
 from coopkin_sym.model.input_files import read_input_text, size_text
 
-__all__ = ["DEFAULT_BOUND", "Snapped", "UrdfArm", "UrdfError", "read_urdf", "read_urdf_text"]
+__all__ = ["DEFAULT_BOUND", "IgnoredJoint", "Renamed", "Snapped", "UrdfArm", "UrdfError",
+           "read_urdf", "read_urdf_text", "variable_names"]
 
 #: Default bound on snapping a URDF float (radians, for angles and axis directions).
-DEFAULT_BOUND = 1e-6
+DEFAULT_BOUND = Fraction(1, 10**6)
 
 _TYPES = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic",
           "fixed": None}
@@ -80,10 +88,47 @@ class Snapped:
 
 
 @dataclass(frozen=True)
+class IgnoredJoint:
+    """A joint of a URDF file off the arm's chain that the arm could not have had
+    (a mimic joint, or a type other than revolute, continuous, prismatic and fixed):
+    where (the file), its name, its type and the joint it mimics (None: no mimic).
+
+    Example
+    -------
+    >>> IgnoredJoint("panda.urdf", "panda_finger_joint2", "prismatic",
+    ...              "panda_finger_joint1").mimics
+    'panda_finger_joint1'
+    """
+
+    where: str
+    joint: str | None
+    type: str | None
+    mimics: str | None
+
+
+@dataclass(frozen=True)
+class Renamed:
+    """A name of a URDF file that is not a usable variable (or link) name, and the
+    name it was given: where (the file), what (``joint`` or ``link``), the name in
+    the file and the name used.
+
+    Example
+    -------
+    >>> Renamed("allegro.urdf", "joint", "joint_0.0", "joint_0_0").name
+    'joint_0_0'
+    """
+
+    where: str
+    what: str
+    given: str
+    name: str
+
+
+@dataclass(frozen=True)
 class UrdfArm:
     """One arm read from a URDF file: its moving joints at home (base frame), the links
-    on its chain (name, number of moving joints up to it, frame at home), and what was
-    snapped.
+    on its chain (name, number of moving joints up to it, frame at home), what was
+    snapped, and the joints off the chain that were ignored.
 
     Example
     -------
@@ -98,10 +143,11 @@ class UrdfArm:
     joints: tuple[DHJoint, ...]
     links: tuple[tuple[str, int, Frame], ...]
     snapped: tuple[Snapped, ...]
+    ignored: tuple[IgnoredJoint, ...] = ()
 
 
 def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
-              bound: float = DEFAULT_BOUND) -> UrdfArm:
+              bound: Fraction | float = DEFAULT_BOUND) -> UrdfArm:
     """The arm of a URDF file, from its root link to ``tip`` (see the module).
 
     Raises
@@ -118,11 +164,12 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
 
 
 def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame = IDENTITY,
-                   bound: float = DEFAULT_BOUND) -> UrdfArm:
+                   bound: Fraction | float = DEFAULT_BOUND) -> UrdfArm:
     """:func:`read_urdf` for the text of a file (``source`` names it in errors)."""
     if len(text) > limits.MAX_FILE_BYTES:
         raise UrdfError(f"{source}: the text is longer than "
                         f"{size_text(limits.MAX_FILE_BYTES)} (the limit for a URDF file)")
+    _refuse_xacro(source, text)
     root = _parse(text, source)
     if root.tag != "robot":
         raise UrdfError(f"{source}: the root element is <{str(root.tag)[:40]}>, expected "
@@ -139,13 +186,6 @@ def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame =
     for joint in root.findall("joint"):
         name = joint.get("name")
         where = f"{source}: joint {brief(name)}"
-        kind = joint.get("type")
-        if kind not in _TYPES:
-            raise UrdfError(f"{where}: type {brief(kind)} is not supported (revolute, "
-                            f"continuous, prismatic and fixed joints make an arm)")
-        if joint.find("mimic") is not None:
-            raise UrdfError(f"{where}: mimics {brief(joint.find('mimic').get('joint'))}; "
-                            f"coupled joints are not supported")
         parent, child = joint.find("parent"), joint.find("child")
         if name is None or parent is None or child is None:
             raise UrdfError(f"{where}: needs a name, a <parent link> and a <child link>")
@@ -164,7 +204,55 @@ def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame =
     if len(roots) != 1:
         raise UrdfError(f"{source}: expected one root link, found {_listed(roots)}")
     chain = _chain(source, roots[0], tip, parent_of, children)
-    return _walk(source, root.get("name") or source, roots[0], chain, base, bound)
+    for joint in chain:
+        _check_on_chain(source, joint)
+    on_chain = {id(joint) for joint in chain}
+    ignored = tuple(IgnoredJoint(source, joint.get("name"), joint.get("type"),
+                                 _mimicked(joint))
+                    for joint in root.findall("joint")
+                    if id(joint) not in on_chain and (joint.get("type") not in _TYPES
+                                                     or joint.find("mimic") is not None))
+    arm = _walk(source, root.get("name") or source, roots[0], chain, base, bound)
+    return replace(arm, ignored=ignored)
+
+
+def _refuse_xacro(source: str, text: str) -> None:
+    """Refuse a xacro file (a ``.xacro`` name, a ``xmlns:xacro`` declaration or a
+    ``<xacro:`` element): expanding one evaluates the Python expressions it holds,
+    which a model file never runs; ROS's ``xacro`` command writes the plain URDF."""
+    marks = [m for m in ("xmlns:xacro", "<xacro:") if m in text]
+    if not marks and not source.lower().endswith(".xacro"):
+        return
+    why = f"it has {' and '.join(marks)}" if marks else "its name ends in .xacro"
+    if source.lower().endswith(".xacro"):
+        stem = source[:-6] if source[:-6].lower().endswith(".urdf") else f"{source[:-6]}.urdf"
+    else:
+        stem = f"{Path(source).stem}.expanded.urdf"
+    raise UrdfError(f"{source}: a xacro file ({why}) is not read: expanding it runs the "
+                    f"expressions it contains; write the plain URDF first with ROS's xacro "
+                    f"command (xacro {source} > {stem}) and read that file")
+
+
+def _mimicked(joint) -> str | None:
+    """The joint a ``<mimic>`` element names ('' when it names none), or None."""
+    mimic = joint.find("mimic")
+    return None if mimic is None else mimic.get("joint") or ""
+
+
+def _check_on_chain(source: str, joint) -> None:
+    """Refuse a joint on the arm's chain that the arm cannot have: a type other than
+    revolute, continuous, prismatic and fixed, or a mimic (coupled) joint."""
+    where = f"{source}: joint {brief(joint.get('name'))}"
+    kind = joint.get("type")
+    if kind not in _TYPES:
+        raise UrdfError(f"{where}: type {brief(kind)} is not supported on the arm's chain "
+                        f"(revolute, continuous, prismatic and fixed joints make an arm)")
+    mimicked = _mimicked(joint)
+    if mimicked is not None:
+        raise UrdfError(f"{where}: mimics {brief(mimicked)}; a mimic (coupled) joint on "
+                        f"the arm's chain is not supported (each joint is a variable of "
+                        f"its own): make it fixed in a copy of the file, or choose a tip "
+                        f"whose chain has none")
 
 
 class _BoundedBuilder:
@@ -291,8 +379,9 @@ def _check_chain_length(source: str, root: str, chain: list) -> None:
                         f"{limits.MAX_URDF_CHAIN} joints (the limit for one arm)")
 
 
-def _walk(source: str, robot: str, root: str, chain: list, base: Frame, bound: float
-          ) -> UrdfArm:
+def _walk(source: str, robot: str, root: str, chain: list, base: Frame,
+          bound: Fraction | float) -> UrdfArm:
+    bound = Fraction(bound)
     snapped: list[Snapped] = []
     frame = base
     links = [(root, 0, frame)]
@@ -335,60 +424,86 @@ def _numbers(source: str, where: str, what: str, text: str | None) -> tuple:
         raise UrdfError(str(exc)) from None
 
 
-def _float(source: str, where: str, text: str) -> float:  # float-ok: URDF floats
+def _exact_float(source: str, where: str, text: str) -> Fraction:
+    """A float of the file, read exactly as the decimal it is (``1.5708`` is
+    ``19635/12500``), within the budgets of the one number parser."""
     try:
-        value = float(text)  # float-ok: a URDF float, snapped below
+        value = float(text)  # float-ok: only checks that the text is a finite float
     except ValueError:
         raise UrdfError(f"{source}: {where}: {brief(text)} is not a number") from None
     if not math.isfinite(value):
         raise UrdfError(f"{source}: {where}: {brief(text)} is not a finite number")
-    return value
+    try:
+        return Fraction(str(parse_number(text, {}, f"{source}: {where}")))
+    except NumberError as exc:
+        raise UrdfError(str(exc)) from None
 
 
-def _angle(source: str, where: str, text: str, bound: float, snapped: list) -> ExactAngle:
-    """An angle in radians: 0 exactly, else the exact angle nearest within ``bound``."""
-    value = _float(source, where, text)  # float-ok: snapped to an exact angle
+def _angle(source: str, where: str, text: str, bound: Fraction, snapped: list
+           ) -> ExactAngle:
+    """An angle in radians: 0 exactly, else the simplest exact angle within ``bound``
+    of the decimal given (:meth:`~coopkin_sym.exact.angles.ExactAngle.snap`)."""
+    value = _exact_float(source, where, text)
     angle, error = ExactAngle.snap(value, bound)
     if value != 0:
         snapped.append(Snapped(f"{where}", text, angle.text, error))
     return angle
 
 
-def _axis(source: str, where: str, text: str | None, bound: float, snapped: list
+def _axis(source: str, where: str, text: str | None, bound: Fraction, snapped: list
           ) -> tuple:
     """An exact unit axis: the given one when it is exactly a unit vector, else the
-    rational unit vector nearest to its direction within ``bound`` (radians)."""
+    unit vector :func:`~coopkin_sym.exact.axes.snap_axis` gives within ``bound``."""
     parts = _tokens(source, where, "axis xyz", text if text is not None else "1 0 0")
-    try:
-        exact = [Fraction(str(parse_number(t, {}, f"{source}: {where}: axis xyz")))
-                 for t in parts]
-    except NumberError as exc:
-        raise UrdfError(str(exc)) from None
+    exact = [_exact_float(source, f"{where} axis xyz", t) for t in parts]
     if sum(x * x for x in exact) == 1:
         return tuple(sp.Rational(x.numerator, x.denominator) for x in exact)
     if not any(exact):
         raise UrdfError(f"{source}: {where}: axis xyz {brief(text)} is the zero vector")
-    unit, error = _rational_unit([float(x) for x in exact], bound)  # float-ok: snapping
+    unit, error = snap_axis(tuple(exact), bound)
     snapped.append(Snapped(f"{where} axis", " ".join(parts),
                            "(" + ", ".join(str(x) for x in unit) + ")", error))
-    return unit
+    return tuple(sp.Rational(x.numerator, x.denominator) for x in unit)
 
 
-def _rational_unit(v: list[float], bound: float) -> tuple[tuple, float]:  # float-ok
-    """The rational unit vector nearest to ``v``'s direction within ``bound`` radians:
-    the inverse stereographic image of rational approximations of its projection (from
-    the pole away from ``v``), finer until within the bound."""
-    norm = math.sqrt(sum(x * x for x in v))  # float-ok
-    u = [x / norm for x in v]  # float-ok
-    sign = 1 if u[2] >= 0 else -1
-    a, b = u[0] / (1 + sign * u[2]), u[1] / (1 + sign * u[2])  # float-ok
-    for digits in range(0, 16):
-        fa = Fraction(a).limit_denominator(10**digits)
-        fb = Fraction(b).limit_denominator(10**digits)
-        s = 1 + fa * fa + fb * fb
-        w = (2 * fa / s, 2 * fb / s, sign * (1 - fa * fa - fb * fb) / s)
-        dot = sum(float(x) * y for x, y in zip(w, u, strict=True))  # float-ok
-        error = math.acos(max(-1.0, min(1.0, dot)))  # float-ok
-        if error <= bound:
-            return tuple(sp.Rational(x.numerator, x.denominator) for x in w), error
-    raise UrdfError(f"no rational unit vector within {bound:g} rad of {v}")
+_NOT_NAME = re.compile(r"[^A-Za-z0-9_]+")
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def variable_names(names: list[str], prefix: str = "", reserved: frozenset[str] = frozenset(),
+                   lead: str = "j_") -> dict[str, str]:
+    """Safe, unique, deterministic names for the names of a URDF file (after
+    ``prefix``): a name that is an identifier (letters, digits, ``_``, not starting
+    with a digit) and not ``reserved`` is kept; in any other, each run of other
+    characters becomes ``_``, ``lead`` goes before a leading digit, ``_`` after a
+    reserved word; a name taken by a kept name or an earlier one gets the first free
+    suffix ``_2``, ``_3``, ... Names are taken in the order given.
+
+    Example
+    -------
+    >>> variable_names(["joint_0.0", "joint_0_0", "3-finger"])
+    {'joint_0.0': 'joint_0_0_2', 'joint_0_0': 'joint_0_0', '3-finger': 'j_3_finger'}
+    >>> variable_names(["lambda", "a b"], reserved=frozenset({"lambda"}))
+    {'lambda': 'lambda_', 'a b': 'a_b'}
+    """
+    def usable(name: str) -> bool:
+        return bool(_NAME.fullmatch(name)) and name not in reserved
+
+    out: dict[str, str] = {}
+    taken = {prefix + n for n in names if usable(prefix + n)}
+    for given in names:
+        name = prefix + given
+        if usable(name):
+            out[given] = name
+            continue
+        safe = _NOT_NAME.sub("_", name) or "_"
+        if safe[0].isdigit():
+            safe = lead + safe
+        if safe in reserved:
+            safe += "_"
+        candidate, k = safe, 2
+        while candidate in taken or candidate in reserved:
+            candidate, k = f"{safe}_{k}", k + 1
+        taken.add(candidate)
+        out[given] = candidate
+    return out

@@ -19,6 +19,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.exact.parse import brief
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
@@ -28,7 +29,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
            "analysis_parts", "analysis_text", "block_table", "irrational_text", "object_frame_text",
-           "snapped_lines"]
+           "snapped_lines", "urdf_note_lines"]
 
 # why an analysis at an irrational point has no blocks
 _IRRATIONAL_OMITTED = ("at a configuration with irrational coordinates only the numbers "
@@ -55,6 +56,7 @@ def analysis_parts(a: Analysis) -> list[tuple[str, Callable[[], list[str]]]]:
         twist = "(v_x, v_y, w_z), planar" if a.model.planar else "(v, w)"
         lines.append(f"Object twist {twist}: {object_frame_text(a.model.object_frame)}")
         lines.extend(snapped_lines(a.model.snapped))
+        lines.extend(urdf_note_lines(a.model.renamed, a.model.ignored))
         if a.variables:
             lines.append(f"Symbols: {', '.join(map(str, a.variables))}"
                          + (" (t_q = tan(q/2))" if any(str(v).startswith("t_")
@@ -186,6 +188,37 @@ def snapped_lines(snapped) -> list[str]:
             "files replaced by exact values (the analysis is exact for those):",
             *(f"  {s.where}: {s.given} -> {s.exact} ({s.error:.2g} rad away)"
               for s in snapped)]
+
+
+def urdf_note_lines(renamed, ignored) -> list[str]:
+    """The names of URDF files given safe names, and the joints off the arms' chains
+    that were ignored, one line each.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.urdf import IgnoredJoint, Renamed
+    >>> lines = urdf_note_lines([Renamed("arms[0] (h.urdf)", "joint", "j_0.0", "j_0_0")],
+    ...     [IgnoredJoint("arms[1] (p.urdf)", "finger2", "prismatic", "finger1")])
+    >>> lines[1], lines[3]
+    ("  arms[0] (h.urdf): joint 'j_0.0' is j_0_0", "  arms[1] (p.urdf): joint 'finger2' \
+('prismatic', mimics 'finger1')")
+    """
+    lines = []
+    if renamed:
+        lines.append(f"Renamed: {len(renamed)} name{'' if len(renamed) == 1 else 's'} of "
+                     f"URDF files that are not usable names (write the new name, e.g. in "
+                     f"--at or link: ARM/LINK):")
+        lines.extend(f"  {r.where}: {r.what} {brief(r.given)} is {r.name}" for r in renamed)
+    if ignored:
+        lines.append(f"Ignored: {len(ignored)} joint{'' if len(ignored) == 1 else 's'} of "
+                     f"URDF files off the arms' chains, left out (an arm cannot have "
+                     f"them: mimic, floating, planar or of an unknown type):")
+        for j in ignored:
+            what = brief(j.type) if j.type is not None else "no type"
+            if j.mimics is not None:
+                what += f", mimics {brief(j.mimics)}"
+            lines.append(f"  {j.where}: joint {brief(j.joint)} ({what})")
+    return lines
 
 
 def object_frame_text(frame) -> str:

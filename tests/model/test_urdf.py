@@ -217,11 +217,14 @@ JOINT = ('<joint name="j" type="{type}"><parent link="a"/><child link="b"/>{extr
 
 @pytest.mark.parametrize("text, message", [
     (_robot(JOINT.format(type="floating", extra="")),
-     r"joint 'j': type 'floating' is not supported"),
+     r"^r\.urdf: joint 'j': type 'floating' is not supported on the arm's chain "
+     r"\(revolute, continuous, prismatic and fixed joints make an arm\)$"),
     (_robot(JOINT.format(type="planar", extra="")),
-     r"joint 'j': type 'planar' is not supported"),
+     r"^r\.urdf: joint 'j': type 'planar' is not supported on the arm's chain "),
     (_robot(JOINT.format(type="revolute", extra='<mimic joint="k"/>')),
-     r"joint 'j': mimics 'k'; coupled joints are not supported"),
+     r"^r\.urdf: joint 'j': mimics 'k'; a mimic \(coupled\) joint on the arm's chain is "
+     r"not supported \(each joint is a variable of its own\): make it fixed in a copy of "
+     r"the file, or choose a tip whose chain has none$"),
     (_robot(JOINT.format(type="revolute", extra="")
             + '<joint name="k" type="revolute"><parent link="a"/><child link="b"/></joint>'),
      r"joint 'k': link 'b' already has the parent joint 'j': a closed loop is not "
@@ -425,7 +428,9 @@ def _arm_model(tmp: Path, arm: dict, contact: dict | None = None) -> dict:
     ({"joints": []}, None, r"arms\[0\]\.joints: an arm read from a URDF file has no joints"),
     ({"snap": 2}, None, r"arms\[0\]\.snap: expected a bound between 0 and 1"),
     ({"urdf": "missing.urdf"}, None, r"arms\[0\]\.urdf: .*missing\.urdf: no such file"),
-    ({"prefix": "1"}, None, r"arms\[0\]\.urdf: joint 1 \('q'\): "),
+    ({"prefix": "1"}, None, r"^arms\[0\]\.prefix: '1' is not a valid start of a name "
+                            r"\(letters, digits and underscores, not starting with a "
+                            r"digit\)$"),
     ({}, {"name": "c", "link": "f/z", "point": [0, 0, 0], "model": "hard"},
      r"contacts\[0\]\.link: arm f has no link 'z' on its chain \(links: a, b\)"),
 ])
@@ -489,7 +494,8 @@ def _refused_arm_model(tmp: Path, text: str, **arm) -> dict:
 
 @pytest.mark.parametrize("text, arm, problem", [
     (FLOATING, {}, "arms[0].urdf: f.urdf: joint 'j': type 'floating' is not supported "
-                   "(revolute, continuous, prismatic and fixed joints make an arm)"),
+                   "on the arm's chain (revolute, continuous, prismatic and fixed joints "
+                   "make an arm)"),
     (BRANCHING, {"tip": 7}, "arms[0].tip: expected text, got 7"),
     (BRANCHING, {"tip": "b", "prefix": ["l_"]}, "arms[0].prefix: expected text, got "
                                                 "['l_']"),
@@ -510,8 +516,9 @@ def test_a_refused_urdf_arm_is_one_line_on_the_command_line(tmp_path):
     done = run_coopkin("analyze", str(path), timeout=30)
     assert (done.returncode, done.stdout) == (2, "")
     assert done.stderr == (f"coopkin: error: {path}: arms[0].urdf: f.urdf: joint 'j': "
-                           f"type 'floating' is not supported (revolute, continuous, "
-                           f"prismatic and fixed joints make an arm)\n")
+                           f"type 'floating' is not supported on the arm's chain "
+                           f"(revolute, continuous, prismatic and fixed joints make an "
+                           f"arm)\n")
 
 
 def test_two_arms_from_one_file_need_prefixes(tmp_path):
