@@ -39,7 +39,7 @@ from fuzz_inputs import (
     report_leaves,
     urdf_documents,
 )
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from strategies import random_systems
 from typer.testing import CliRunner
@@ -272,82 +272,19 @@ def check_urdf_file(data: bytes, tip: str | None, seconds: float = CASE_SECONDS)
         assert re.match(r"(arms|contacts)\[\d+\]", line), (data[:3000], tip, line)
 
 
-# Open problems of coopkin_sym/model/urdf.py, being fixed there: each has regression
-# examples below (xfail, strict: they pass once it is fixed, and then the xfail goes),
-# and the random tests leave its class of inputs out until then (remove the entry
-# with the xfail).
-
-
-def _surrogates(data: bytes, tip: str | None) -> bool:
-    """Text (not a file) with lone surrogates: read_urdf_text raises
-    UnicodeEncodeError from the XML parser."""
-    return re.search("[\ud800-\udfff]", data.decode("utf-8", "surrogateescape")) is not None
-
-
-def _axis_magnitudes(data: bytes, tip: str | None) -> bool:
-    """An axis entry above 1e150 or below 1e-150 in magnitude (not 0): the float
-    snapping overflows (OverflowError), divides by zero (ZeroDivisionError) or fails
-    with a message that names neither the file nor the joint."""
-    for vector in re.findall(rb'<axis xyz="([^"]*)"', data):
-        for token in vector.split():
-            try:
-                value = abs(Fraction(token.decode()))
-            except (ValueError, ZeroDivisionError, UnicodeDecodeError):
-                continue
-            if value and not Fraction(1, 10**150) < value < 10**150:
-                return True
-    return False
-
-
-def _tip_in_loop(data: bytes, tip: str | None) -> bool:
-    """A tip link whose chain of parents is a loop (a cycle of joints apart from the
-    root): read_urdf_text never returns."""
-    parent = dict(re.findall(rb'<parent link="([^"]*)"/><child link="([^"]*)"/>', data))
-    parent = {child: par for par, child in parent.items()}
-    link, seen = (tip or "").encode(), set()
-    while link in parent:
-        if link in seen:
-            return True
-        seen.add(link)
-        link = parent[link]
-    return False
-
-
-def _huge_angles(data: bytes, tip: str | None) -> bool:
-    """An rpy angle of 1e8 radians or more: it is reduced modulo a float 2*pi, so the
-    angle snapped to is not the one given (1e16 lands 0.39 rad away), while the snap
-    states a distance within the bound."""
-    for triple in re.findall(rb'rpy="([^"]*)"', data):
-        for token in triple.split():
-            try:
-                if abs(float(token)) >= 1e8:  # float-ok: a URDF float's size
-                    return True
-            except ValueError:
-                continue
-    return False
-
-
-def _many_joints(data: bytes, tip: str | None) -> bool:
-    """More than 1000 joints: no budget applies, a long chain runs for minutes."""
-    return data.count(b"<joint ") > 1000
-
-
-OPEN_URDF_BUGS = {"text": (_surrogates, _axis_magnitudes, _tip_in_loop, _many_joints,
-                           _huge_angles),
-                  "file": (_axis_magnitudes, _tip_in_loop, _many_joints)}
+# Inputs that once escaped coopkin_sym/model/urdf.py (hangs, Python errors, a wrong
+# snap); each is a regression example below.
 
 
 @FUZZ
 @given(urdf_documents())
 def test_urdf_text(case):
-    assume(not any(bug(*case) for bug in OPEN_URDF_BUGS["text"]))
     check_urdf_text(*case)
 
 
 @FUZZ
 @given(urdf_documents())
 def test_urdf_arms_of_models(case):
-    assume(not any(bug(*case) for bug in OPEN_URDF_BUGS["file"]))
     check_urdf_file(*case)
 
 
@@ -356,7 +293,6 @@ def test_urdf_arms_of_models(case):
 @CAMPAIGN
 @given(urdf_documents())
 def test_urdf_campaign(case):
-    assume(not any(bug(*case) for bug in OPEN_URDF_BUGS["text"]))
     check_urdf_text(*case)
     check_urdf_file(*case)
 
@@ -383,41 +319,27 @@ def _long_chain(joints: int) -> bytes:
     return f'<robot name="r">{links}{chain}</robot>'.encode()
 
 
-OPEN_URDF_EXAMPLES = [
-    pytest.param("text", LOOP, "c1", id="tip-on-a-loop",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: a tip on a loop of "
-                                         "parent/child links hangs (issue 25)")),
-    pytest.param("file", LOOP, "c2", id="tip-on-a-loop-file",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: a tip on a loop of "
-                                         "parent/child links hangs (issue 25)")),
-    pytest.param("text", _long_chain(70_000), None, id="70000-joints",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: no budget on joints "
-                                         "and links, 70,000 joints run for minutes "
-                                         "(issue 25)")),
-    pytest.param("text", _one_joint(axis="1e400 0 0"), None, id="axis-1e400",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: a huge axis entry "
-                                         "raises OverflowError")),
-    pytest.param("file", _one_joint(axis="1e-400 0 0"), None, id="axis-1e-400",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: a tiny axis entry "
-                                         "raises ZeroDivisionError")),
-    pytest.param("text", _one_joint(axis="1e-200 1e-200 0"), None, id="axis-1e-200",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: a tiny axis raises "
-                                         "ZeroDivisionError")),
-    pytest.param("text", _one_joint(axis="1e200 1e200 0"), None, id="axis-1e200",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: the error on a huge "
-                                         "axis names neither the file nor the joint")),
-    pytest.param("text", _one_joint(rpy="1e16 0 0"), None, id="rpy-1e16",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: an angle of 1e16 rad "
-                                         "snaps 0.39 rad away, stated as 5e-8")),
-    pytest.param("text", _one_joint(rpy="0 0 1.5\udce9"), None, id="lone-surrogate",
-                 marks=pytest.mark.xfail(strict=True, reason="urdf: text with a lone "
-                                         "surrogate raises UnicodeEncodeError")),
+URDF_REGRESSIONS = [
+    # a tip on a loop of parent/child links walked for ever
+    pytest.param("text", LOOP, "c1", id="tip-on-a-loop"),
+    pytest.param("file", LOOP, "c2", id="tip-on-a-loop-file"),
+    # no budget on joints and links: 70,000 joints ran for minutes
+    pytest.param("text", _long_chain(70_000), None, id="70000-joints"),
+    # axis entries: OverflowError, ZeroDivisionError, an error naming neither the file
+    # nor the joint
+    pytest.param("text", _one_joint(axis="1e400 0 0"), None, id="axis-1e400"),
+    pytest.param("file", _one_joint(axis="1e-400 0 0"), None, id="axis-1e-400"),
+    pytest.param("text", _one_joint(axis="1e-200 1e-200 0"), None, id="axis-1e-200"),
+    pytest.param("text", _one_joint(axis="1e200 1e200 0"), None, id="axis-1e200"),
+    # an angle of 1e16 rad snapped 0.39 rad away, stated as 5e-8
+    pytest.param("text", _one_joint(rpy="1e16 0 0"), None, id="rpy-1e16"),
+    # text with a lone surrogate raised UnicodeEncodeError
+    pytest.param("text", _one_joint(rpy="0 0 1.5\udce9"), None, id="lone-surrogate"),
 ]
 
 
-@pytest.mark.parametrize(("route", "data", "tip"), OPEN_URDF_EXAMPLES)
-def test_open_urdf_problems(route, data, tip):
-    assert any(bug(data, tip) for bug in OPEN_URDF_BUGS[route])  # left out above
+@pytest.mark.parametrize(("route", "data", "tip"), URDF_REGRESSIONS)
+def test_urdf_inputs_that_once_escaped(route, data, tip):
     (check_urdf_text if route == "text" else check_urdf_file)(data, tip, seconds=2.0)
 
 

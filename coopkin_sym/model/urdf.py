@@ -169,6 +169,11 @@ def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame =
     if len(text) > limits.MAX_FILE_BYTES:
         raise UrdfError(f"{source}: the text is longer than "
                         f"{size_text(limits.MAX_FILE_BYTES)} (the limit for a URDF file)")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as exc:      # a lone surrogate: no file holds one
+        raise UrdfError(f"{source}: not valid text (character {exc.start + 1} is a lone "
+                        f"surrogate, which no UTF-8 file holds)") from None
     _refuse_xacro(source, text)
     root = _parse(text, source)
     if root.tag != "robot":
