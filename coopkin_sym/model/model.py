@@ -715,7 +715,11 @@ def _dh_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Names
             passive.add(row.name)
     if len(problems) > before or base is None:
         return None
-    dh, frames = dh_joints(rows, convention, base)
+    try:
+        dh, frames = dh_joints(rows, convention, base, where=f"{path}.dh")
+    except NumberError as exc:     # link frames whose numbers outgrow the budget
+        problems.append(str(exc))
+        return None
     joints = tuple(Joint(j.name, j.type, j.axis, j.point,  # type: ignore[arg-type]
                          j.name not in passive) for j in dh)
     return Arm(arm.name, joints, tuple((sp.ImmutableMatrix(r), p) for r, p in frames))

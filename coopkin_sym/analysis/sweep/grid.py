@@ -243,7 +243,7 @@ def _angle_levels(lo: sp.Expr, hi: sp.Expr, count: int, bound: float,  # float-o
 def _snapped(requested: str, q: float, bound: float) -> Value:  # float-ok
     try:
         angle, err = ExactAngle.snap(q, bound)
-    except ValueError as exc:  # pragma: no cover - a convergent always meets the bound
+    except ValueError as exc:  # pragma: no cover - the simplest rational within the bound exists
         raise SweepError(str(exc)) from None
     exact = Value.from_tangent(angle.tangent)
     return Value(exact.text, exact.num, exact.den, requested, err)
