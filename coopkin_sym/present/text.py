@@ -365,7 +365,7 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
 #: follows for a model with passive joints (docs/analyze-json.md).
 JSON_KEYS = ("system", "configuration", "point", "variables", "joints", "twist", "numbers",
              "classes", "blocks", "shapes", "coordinated_form", "object_frame", "snapped",
-             "field", "omitted", "meaning", "certificate", "factored")
+             "renamed", "ignored", "field", "omitted", "meaning", "certificate", "factored")
 
 # the numbers at an irrational point: exact ranks over the number field
 _EXACT_IN_FIELD = {"exact": True, "error_bits": None, "points": 0, "ranks": []}
@@ -409,11 +409,29 @@ def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
         meaning = sentences(result)
         data["factored"] = (factored_document(result.coordinated_factored())
                             if "C22" in omitted else None)
-    data.update(omitted=omitted, meaning=meaning)
+    data.update(omitted=omitted, meaning=meaning, **urdf_notes_json(result.model))
     out = {k: data[k] for k in JSON_KEYS}
     if "passive" in data:
         out["passive"] = data["passive"]
     return out
+
+
+def urdf_notes_json(model) -> dict[str, list[dict]]:
+    """The names of URDF files given safe names (``renamed``) and the joints off an
+    arm's chain that were left out (``ignored``), as plain data.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> urdf_notes_json(load("urdf-two-fingers").model)
+    {'renamed': [], 'ignored': []}
+    """
+    renamed = getattr(model, "renamed", ()) if model is not None else ()
+    ignored = getattr(model, "ignored", ()) if model is not None else ()
+    return {"renamed": [{"where": r.where, "what": r.what, "given": r.given, "name": r.name}
+                        for r in renamed],
+            "ignored": [{"where": i.where, "joint": i.joint, "type": i.type,
+                         "mimics": i.mimics} for i in ignored]}
 
 
 def analysis_json(result: Analysis | IrrationalAnalysis) -> str:

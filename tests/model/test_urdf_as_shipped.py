@@ -16,7 +16,7 @@ from bounded_run import run_coopkin
 import coopkin_sym
 from coopkin_sym.errors import ModelError, UrdfError
 from coopkin_sym.model.urdf import IgnoredJoint, Renamed, read_urdf_text
-from coopkin_sym.present.text import analysis_text, urdf_note_lines
+from coopkin_sym.present.text import analysis_document, analysis_text, urdf_note_lines
 
 
 def _joint(name: str, kind: str, parent: str, child: str, extra: str = "",
@@ -246,3 +246,28 @@ def test_off_chain_joints_of_unknown_or_no_type_are_ignored_and_said():
         "  p.urdf: joint 'panda_finger_joint1' (no type)",
         "  p.urdf: joint 'panda_finger_joint2' ('prismatic', mimics 'panda_finger_joint1')",
         "  p.urdf: joint 'camera_joint' ('spherical')"]
+
+
+def test_renamed_and_ignored_are_in_the_analysis_json_and_fit_the_schema(tmp_path):
+    import jsonschema
+
+    schema = json.loads((Path(__file__).resolve().parents[2] / "docs"
+                         / "analyze-json.schema.json").read_text())
+    panda = coopkin_sym.load(_model(tmp_path, "panda.urdf", PANDA, "panda_hand",
+                                    tip="panda_hand"))
+    allegro = coopkin_sym.load(_model(tmp_path, "allegro.urdf", ALLEGRO, "link_1"))
+    for system in (panda, allegro):
+        for result in (system.analyze(), system.analyze(generic=True)):
+            jsonschema.validate(analysis_document(result), schema)
+    data = analysis_document(panda.analyze())
+    assert data["renamed"] == []
+    assert data["ignored"] == [
+        {"where": "arms[0] (panda.urdf)", "joint": "panda_finger_joint2",
+         "type": "prismatic", "mimics": "panda_finger_joint1"},
+        {"where": "arms[0] (panda.urdf)", "joint": "camera_joint", "type": "floating",
+         "mimics": None}]
+    renamed = analysis_document(allegro.analyze())["renamed"]
+    assert renamed[0] == {"where": "arms[0] (allegro.urdf)", "what": "joint",
+                          "given": "joint_0.0", "name": "joint_0_0"}
+    assert [r["name"] for r in renamed] == ["joint_0_0", "joint_1_0", "lambda_", "link_1",
+                                            "link_2"]
