@@ -87,6 +87,11 @@ class Configuration:
                                              f"positive, got {v}")
                 values[name] = v
             else:
+                safe = [r.name for r in getattr(model, "renamed", ()) if r.given == name]
+                if safe:
+                    raise ConfigurationError(
+                        f"{where}: {brief(name)} is called {safe[0]} here (a name of a URDF "
+                        f"file that is not a variable name gets a safe one)")
                 known = ", ".join(list(joints) + list(params))
                 raise ConfigurationError(f"{where}: unknown name {brief(name)} (known: {known})")
         # a prismatic displacement may use parameters; substitute the given values

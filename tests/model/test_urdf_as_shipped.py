@@ -14,7 +14,7 @@ import pytest
 from bounded_run import run_coopkin
 
 import coopkin_sym
-from coopkin_sym.errors import ModelError, UrdfError
+from coopkin_sym.errors import ConfigurationError, ModelError, UrdfError
 from coopkin_sym.model.urdf import IgnoredJoint, Renamed, read_urdf_text
 from coopkin_sym.present.text import analysis_document, analysis_text, urdf_note_lines
 
@@ -185,8 +185,9 @@ def test_a_renamed_joint_is_set_with_its_safe_name_on_the_command_line(tmp_path)
         ["joint_0_0", "joint_1_0", "lambda_"], "joint_1_0=pi/2")
     bad = run_coopkin("analyze", str(path), "--at", "joint_1.0=pi/2", timeout=60)
     assert (bad.returncode, bad.stdout) == (2, "")
-    assert bad.stderr == ("coopkin: error: --at joint_1.0: unknown name 'joint_1.0' "
-                          "(known: joint_0_0, joint_1_0, lambda_)\n")
+    assert bad.stderr == ("coopkin: error: --at joint_1.0: 'joint_1.0' is called "
+                          "joint_1_0 here (a name of a URDF file that is not a variable "
+                          "name gets a safe one)\n")
 
 
 XACRO = ('<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
@@ -271,3 +272,12 @@ def test_renamed_and_ignored_are_in_the_analysis_json_and_fit_the_schema(tmp_pat
                           "given": "joint_0.0", "name": "joint_0_0"}
     assert [r["name"] for r in renamed] == ["joint_0_0", "joint_1_0", "lambda_", "link_1",
                                             "link_2"]
+
+
+def test_a_name_from_the_file_on_the_command_line_points_to_its_safe_name(tmp_path):
+    system = coopkin_sym.load(_model(tmp_path, "allegro.urdf", ALLEGRO, "link_1"))
+    with pytest.raises(ConfigurationError) as info:
+        system.analyze("joint_0.0=pi/2")
+    assert str(info.value) == ("--at joint_0.0: 'joint_0.0' is called joint_0_0 here (a "
+                               "name of a URDF file that is not a variable name gets a "
+                               "safe one)")
