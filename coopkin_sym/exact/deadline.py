@@ -62,17 +62,19 @@ _CURRENT: contextvars.ContextVar[Bound | None] = contextvars.ContextVar(
 
 
 @contextmanager
-def time_limit(seconds: float | None, owner: str = "") -> Iterator[Bound | None]:
+def time_limit(seconds: float | None, owner: str = "",
+               margin: float = 0.0) -> Iterator[Bound | None]:
     """Run the body under a bound of ``seconds`` (``None``: no new bound), set by
     ``owner`` (see :func:`active`). Inside an outer bound the tighter of the two
-    applies."""
+    applies. With a ``margin`` the bound ends that many seconds early (time left to
+    hand back a partial result), its messages still naming ``seconds``."""
     if seconds is None:
         yield _CURRENT.get()
         return
     now = time.monotonic()
     outer = _CURRENT.get()
-    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now,  # float-ok: time
-                  owner=owner, outer=outer)
+    seconds = float(seconds)  # float-ok: a time
+    bound = Bound(now + max(seconds - margin, 0.0), seconds, now, owner=owner, outer=outer)
     if outer is not None and outer.end < bound.end:
         bound.end, bound.seconds = outer.end, outer.seconds
     token = _CURRENT.set(bound)
