@@ -71,8 +71,8 @@ class System:
         return Configuration.parse(self.model, at, free)
 
     def analyze(self, at: str | Mapping | Configuration | None = None, *,
-                generic: bool = False,
-                free: Iterable[str] | None = None) -> Analysis | IrrationalAnalysis:
+                generic: bool = False, free: Iterable[str] | None = None,
+                timeout: float | None = None) -> Analysis | IrrationalAnalysis:
         """Exact mobility and kinematic analysis.
 
         Parameters
@@ -88,13 +88,29 @@ class System:
             Keep every joint variable symbolic (the generic analysis over Q(t, L)).
         free
             Joint names to keep symbolic (the rest at their values).
+        timeout
+            Wall-clock bound in seconds on the analysis (its numbers, computed at once
+            then, and the decomposition behind them), held even inside steps that
+            cannot be interrupted (see :func:`coopkin_sym.exact.bounded.run_bounded`);
+            past it
+            :class:`~coopkin_sym.errors.TimeLimitReached` names the step.
 
         Example
         -------
         >>> from coopkin_sym import load
         >>> load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6").numbers.Ni
         3
+        >>> load("paper-case1-hard").analyze(generic=True, timeout=60).numbers.Nm
+        2
         """
+        if timeout is not None:
+            from coopkin_sym.exact.bounded import run_bounded
+
+            def numbers():
+                result = self.analyze(at, generic=generic, free=free)
+                result.numbers  # noqa: B018 - computed under the bound, kept in the result
+                return result
+            return run_bounded(numbers, timeout, owner="System.analyze")
         if isinstance(at, Configuration):
             return analyze(self.model, at)
         try:
@@ -116,6 +132,13 @@ class System:
         differ from the generic ones (see
         :func:`coopkin_sym.analysis.locus.search.compute_locus`).
 
+        With a ``timeout``, a search cut at a check of the bound returns what it
+        found (:attr:`~coopkin_sym.analysis.locus.types.Locus.unexplored` says what
+        was cut); a step that cannot be interrupted is ended at the bound, raising
+        :class:`~coopkin_sym.errors.TimeLimitReached` (see
+        :func:`coopkin_sym.exact.bounded.run_bounded`). ``progress`` shows the steps
+        on standard error after a second, when it is a terminal.
+
         Example
         -------
         >>> from coopkin_sym import load
@@ -124,7 +147,9 @@ class System:
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
         """
         from coopkin_sym.analysis.locus.search import compute_locus
-        return compute_locus(self, at, max_depth, timeout, progress, free, pi_size)
+        return _bounded(lambda: compute_locus(self, at, max_depth, timeout, progress,
+                                              free, pi_size),
+                        timeout, "locus", progress)
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
              title: str | None = None) -> Figure:
@@ -142,12 +167,15 @@ class System:
         return draw_system(self, at, motion=motion, title=title)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
-              progress: bool = False, chunk: int = 16384):
+              progress: bool = False, chunk: int = 16384, timeout: float | None = None):
         """Exact numbers at many points, fast (see :func:`coopkin_sym.analysis.sweep.sweep`).
 
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
-        :class:`concurrent.futures.Executor`.
+        :class:`concurrent.futures.Executor`; ``progress`` shows a bar on standard
+        error after a second; ``timeout`` is a wall-clock bound in seconds (past it,
+        :class:`~coopkin_sym.errors.TimeLimitReached`; with it, an executor must be
+        made inside the bound's process: give none, or see ``coopkin sweep --workers``).
 
         Example
         -------
@@ -157,7 +185,9 @@ class System:
         [3, 2]
         """
         from coopkin_sym.analysis.sweep import sweep
-        return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
+        return _bounded(lambda: sweep(self, points, at=at, executor=executor,
+                                      progress=progress, chunk=chunk),
+                        timeout, "sweep", progress)
 
     def __repr__(self) -> str:
         return (f"System({clip(self.model.name, 100)!r}: {len(self.model.arms)} arms, "
@@ -191,8 +221,23 @@ class System:
         >>> results[0].numbers.Nm, results[1].ok
         (3, False)
         """
-        return analyze_many([(self.model, at) for at in points], json=json, free=free,
-                            executor=executor, progress=progress, chunk=chunk)
+        return _bounded(lambda: analyze_many([(self.model, at) for at in points],
+                                             json=json, free=free, executor=executor,
+                                             progress=progress, chunk=chunk),
+                        None, "analyze", progress)
+
+
+def _bounded(work, timeout: float | None, what: str, progress: bool):
+    """``work()`` under ``timeout`` (see :func:`coopkin_sym.exact.bounded.run_bounded`),
+    its steps shown on a terminal after a second when ``progress``."""
+    from coopkin_sym.exact.bounded import run_bounded
+    if not progress:
+        return run_bounded(work, timeout, owner=f"System.{what}")
+    import sys
+
+    from coopkin_sym.present.progress import progress_display
+    with progress_display(sys.stderr.isatty(), what) as display:
+        return run_bounded(work, timeout, owner=f"System.{what}", progress=display)
 
 
 def load(source: str | os.PathLike | Mapping) -> System:

@@ -13,7 +13,9 @@ and says what it is doing while it runs.
   :class:`~coopkin_sym.errors.TimeLimitReached` names the step that was running
   (``hard`` is then true). The result comes back pickled (flint polynomials pickle,
   see :mod:`coopkin_sym.exact.pickling`); errors come back as themselves.
-* without a bound (or where processes cannot be forked) the work runs here.
+* without a bound (or where processes cannot be forked) the work runs here, unless
+  it is asked to run apart (``separate``: a display then keeps moving while a step
+  holds the interpreter).
 
 The work says what it is doing with :func:`report` (a step and, when known, the share
 done) and hands over partial output with :func:`deliver`; both go to the callbacks the
@@ -134,7 +136,7 @@ def cooperative_seconds(seconds: float) -> float:
 def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = "",
                 progress: ProgressCallback | None = None,
                 output: Callable[[Any], None] | None = None,
-                tick: float = 0.2) -> T:
+                tick: float = 0.2, separate: bool = False) -> T:
     """``work()``, ended at ``seconds`` (None: no bound) of wall-clock time.
 
     Parameters
@@ -150,6 +152,9 @@ def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = ""
         last one (so that a display can show the time passing during a long step).
     output
         Called with each item the work delivers, in order.
+    separate
+        Without a bound too, run the work in a child process (so that ``progress``
+        keeps being called while a step holds the interpreter).
 
     Raises
     ------
@@ -162,21 +167,20 @@ def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = ""
     >>> run_bounded(lambda: sum(range(10)), None)
     45
     """
-    if seconds is None:
-        with reporting(Reporter(progress, output)):
+    if not hasattr(os, "fork") or (seconds is None and not separate):
+        # here (without fork, the bound is only cooperative)
+        with reporting(Reporter(progress, output)), deadline.time_limit(seconds, owner):
             return work()
-    if not hasattr(os, "fork"):     # pragma: no cover - no fork here: cooperative only
-        with reporting(Reporter(progress, output)), \
-                deadline.time_limit(seconds, owner):
-            return work()
-    return _run_in_child(work, float(seconds), owner, progress, output, tick)  # float-ok
+    seconds = None if seconds is None else float(seconds)  # float-ok: a time
+    return _run_in_child(work, seconds, owner, progress, output, tick)
 
 
-def _run_in_child(work, seconds: float, owner: str, progress, output, tick: float):
+def _run_in_child(work, seconds: float | None, owner: str, progress, output,
+                  tick: float):
     import multiprocessing
 
     started = time.monotonic()
-    end = started + seconds
+    end = started + seconds if seconds is not None else float("inf")  # float-ok: time
     context = multiprocessing.get_context("fork")
     receive, send = context.Pipe(duplex=False)
     child = context.Process(target=_child, args=(work, seconds, owner, send),
@@ -241,7 +245,7 @@ def _end(child) -> None:
     child.join()
 
 
-def _child(work, seconds: float, owner: str, send) -> None:
+def _child(work, seconds: float | None, owner: str, send) -> None:
     """The forked side: its own process group (so that it and its workers end
     together), Ctrl-C left to the parent, reports through the pipe."""
     try:
@@ -260,10 +264,10 @@ def _child(work, seconds: float, owner: str, send) -> None:
     def item(value) -> None:
         send.send(("output", value))
 
+    margin = 0.0 if seconds is None else seconds - cooperative_seconds(seconds)
     with reporting(Reporter(step, item)):
         try:
-            with deadline.time_limit(seconds, owner,
-                                     margin=seconds - cooperative_seconds(seconds)):
+            with deadline.time_limit(seconds, owner, margin=margin):
                 result = work()
             message = ("done", result)
         except BaseException as exc:  # noqa: BLE001 - every error goes to the parent
