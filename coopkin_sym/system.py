@@ -221,10 +221,8 @@ class System:
         >>> results[0].numbers.Nm, results[1].ok
         (3, False)
         """
-        return _bounded(lambda: analyze_many([(self.model, at) for at in points],
-                                             json=json, free=free, executor=executor,
-                                             progress=progress, chunk=chunk),
-                        None, "analyze", progress)
+        return analyze_many([(self.model, at) for at in points], json=json, free=free,
+                            executor=executor, progress=progress, chunk=chunk)
 
 
 def _bounded(work, timeout: float | None, what: str, progress: bool):
@@ -265,7 +263,7 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         Any :class:`concurrent.futures.Executor` (a process pool,
         ``distributed.Client(...).get_executor()``); None runs here.
     progress
-        Show a progress bar (on stderr).
+        Show a progress bar (on stderr, when it is a terminal, after a second).
     chunk
         Items per task (see :func:`coopkin_sym.analysis.batch.run_batch`).
 
@@ -285,8 +283,9 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
     from coopkin_sym.analysis.batch import run_batch
 
     options = (generic, None if free is None else tuple(free), json)
-    return run_batch(_analyze_item, items, options=options, executor=executor,
-                     progress=progress, chunk=chunk)
+    return _bounded(lambda: run_batch(_analyze_item, items, options=options,
+                                      executor=executor, progress=progress, chunk=chunk),
+                    None, "analyze", progress)
 
 
 def _analyze_item(model: Model, at, generic: bool, free, json: bool):

@@ -265,3 +265,18 @@ def test_the_api_takes_the_same_bound():
         with pytest.raises(TimeLimitReached, match="time bound of 1 s reached during "):
             call()
         assert time.monotonic() - start < 1.0 * 1.1 + 0.3, name
+
+
+def test_the_analysis_reports_progress_and_never_draws_it():
+    """Only the presentation layer imports rich: the analysis reports its steps."""
+    import ast
+
+    drawing = []
+    for path in sorted((ROOT / "coopkin_sym").rglob("*.py")):
+        layer = path.relative_to(ROOT / "coopkin_sym").parts[0]
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import)
+                     else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
+            if any(n.split(".")[0] == "rich" for n in names) and layer != "present":
+                drawing.append(str(path.relative_to(ROOT)))
+    assert drawing == []

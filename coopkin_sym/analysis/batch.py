@@ -112,7 +112,8 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     executor
         Any :class:`concurrent.futures.Executor`; None runs here, in order.
     progress
-        Show a progress bar (on stderr).
+        Report the items done (see :func:`coopkin_sym.exact.bounded.report`; the
+        caller's display shows them).
     chunk
         Items per task (default: about 32 tasks, at most 64 items each).
 

@@ -124,7 +124,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         Seconds after which no new component is explored (the report says what was
         left out).
     progress
-        Show a progress bar on standard error.
+        Report the steps of the search and the share done (see
+        :func:`coopkin_sym.exact.bounded.report`; the caller's display shows them, as
+        ``System.locus(progress=True)`` and ``coopkin locus`` do).
     free
         The joints to keep free (names); the others not set in ``at`` stay at home
         (q = 0, d = 0). Default: every joint not set in ``at``.
