@@ -162,3 +162,25 @@ def test_ctrl_c_stops_within_a_second_with_one_line(tmp_path, command):
     assert err == "coopkin: interrupted\n"
     assert took < 1.5
     assert list(out.iterdir()) == []             # nothing partial left
+
+
+def test_a_bound_reached_in_the_locked_locus_keeps_the_main_one(monkeypatch):
+    """The locus with the motors held still is searched last, under the same bound;
+    cut there, the locus handed back is the system's own (with what was cut), not the
+    locked one the inner search had registered."""
+    from coopkin_sym.analysis.locus import search
+
+    original = search.compute_locus
+
+    def cut_when_locked(system, *args, **kwargs):
+        if getattr(system, "locked", None):           # the locked model
+            deadline.keep("the locked locus, unfinished")
+            raise TimeLimitReached(60.0, "the locked locus")
+        return original(system, *args, **kwargs)
+
+    monkeypatch.setattr(search, "compute_locus", cut_when_locked)
+    result = original(load("five-bar"), timeout=60.0)
+    assert result.system == "five-bar linkage with passive elbows"
+    assert result.locked is None and result.components
+    assert [u["where"] for u in result.unexplored if u.kind == "time_whole_run"] == [
+        "the locked locus"]

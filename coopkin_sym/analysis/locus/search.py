@@ -200,8 +200,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     if model.passive_joints and not model.locked:
         # where the passive-joint numbers change: the locus of the locked system
         left = None if timeout is None else max(0.0, timeout - (time.monotonic() - started))
-        locus.locked = compute_locus(model.with_actuators_locked(), at, max_depth, left,
-                                     progress, free, pi_size)
+        try:
+            locus.locked = compute_locus(model.with_actuators_locked(), at, max_depth,
+                                         left, progress, free, pi_size)
+        finally:  # cut inside it: what is kept is this locus, not the locked one
+            deadline.keep(locus)
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 
