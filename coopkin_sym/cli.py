@@ -424,17 +424,25 @@ def locus(
     free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
 
     def work():
-        from coopkin_sym.exact.bounded import report
+        from coopkin_sym.exact.bounded import deliver, report
 
         report("loading the model")
         system = load(model)
         pairs = parse_pairs(pair, system) if pair else None
-        return system, pairs, *_locus_work(system, at, max_depth, timeout, free_joints,
-                                           pi_size, certify, certify_timeout, verify)
+        deliver((system, pairs))
+        return _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
+                           certify_timeout, verify)
 
+    loaded: list = []
     try:
-        system, pairs, result, checked, checked_locked, cut = _bounded(
-            work, timeout, "locus", no_progress)
+        try:
+            result, checked, checked_locked, cut = _bounded(work, timeout, "locus",
+                                                            no_progress,
+                                                            output=loaded.append)
+        except TimeLimitReached as exc:  # ended at the bound: the last copy kept
+            result, checked, checked_locked, cut = _ended_locus(exc, loaded), None, \
+                None, exc
+        system, pairs = loaded[0]
         shown = verification_json(checked) if checked else None
         if shown is not None and checked_locked is not None:
             shown["locked"] = verification_json(checked_locked)
@@ -462,6 +470,21 @@ def locus(
         if checked_locked is not None:
             _echo_locked(checked_locked, checked)
         _echo_verification(checked)
+
+
+def _ended_locus(exc: TimeLimitReached, loaded: list):
+    """The locus of a run ended at its bound inside a step that cannot be interrupted:
+    the last copy the search kept (as far as it got), with what was cut; or ``exc``
+    again when there is none (before the generic numbers, or no copy yet)."""
+    from coopkin_sym.analysis.locus.remarks import Remark
+    from coopkin_sym.analysis.locus.types import Locus
+
+    locus = getattr(exc, "kept", None)
+    if not (exc.hard and loaded and isinstance(locus, Locus)):
+        raise exc
+    locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
+                                      where=exc.where))
+    return locus
 
 
 def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,

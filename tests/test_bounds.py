@@ -206,6 +206,38 @@ def test_a_locus_ended_inside_a_flint_call_writes_nothing(tmp_path, monkeypatch)
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_locus_ended_inside_a_flint_call_writes_what_it_had_kept(tmp_path, monkeypatch):
+    """The search keeps its locus as it goes; the last copy reaches the command before
+    the step that cannot be interrupted is ended, and is written with what was cut."""
+    import coopkin_sym.analysis.locus.search as search
+    from coopkin_sym.analysis.locus.types import Component, Locus
+
+    def searching(*args, **kwargs):
+        generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+        locus = Locus("paper case 1, hard/hard", ["t_q1", "t_q2"], "L=1", generic)
+        locus.components.append(Component(["t_q1 - 1", "t_q2 - 1"], dict(generic, Nm=3),
+                                          {"q1": "pi/2", "q2": "pi/2"}, True))
+        deadline.keep(locus)
+        for k in range(12):                 # steps for a little more than a second
+            report(f"step {k}")
+            time.sleep(0.1)
+        return _slow_resultant()
+
+    monkeypatch.setattr(search, "compute_locus", searching)
+    start = time.monotonic()
+    result = CliRunner().invoke(app, ["locus", "paper-case1-hard", "-o",
+                                      str(tmp_path / "r.json"), "--timeout", "2.5"])
+    assert time.monotonic() - start < 2.5 * 1.1 + 0.5
+    assert result.exit_code == TIME_BOUND_EXIT
+    assert result.stderr == ("coopkin: error: time bound of 2.5 s reached during a "
+                             "resultant; the report says what was not explored; wrote "
+                             f"{tmp_path / 'r.json'}\n")
+    data = json.loads((tmp_path / "r.json").read_text())
+    assert [c["equations"] for c in data["components"]] == [["t_q1 - 1", "t_q2 - 1"]]
+    assert data["unexplored"][-1].startswith("time bound of 2.5 s reached during a "
+                                             "resultant")
+
+
 def test_progress_is_shown_on_a_terminal_after_a_second(models):
     """stderr a terminal: the step being computed is shown, then removed; the error
     line stays."""

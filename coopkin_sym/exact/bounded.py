@@ -11,8 +11,11 @@ and says what it is doing while it runs.
   which hold the interpreter and ignore signals) cannot overshoot: at the bound the
   child, with any worker processes it started, is ended, and
   :class:`~coopkin_sym.errors.TimeLimitReached` names the step that was running
-  (``hard`` is then true). The result comes back pickled (flint polynomials pickle,
-  see :mod:`coopkin_sym.exact.pickling`); errors come back as themselves.
+  (``hard`` is then true), and carries in ``kept`` the last copy of the partial
+  result the work registered (``deadline.keep``), sent at most every
+  :data:`SNAPSHOT_SECONDS` at a reported step, or None. The result comes back
+  pickled (flint polynomials pickle, see :mod:`coopkin_sym.exact.pickling`); errors
+  come back as themselves.
 * without a bound (or where processes cannot be forked) the work runs here, unless
   it is asked to run apart (``separate``: a display then keeps moving while a step
   holds the interpreter).
@@ -46,6 +49,7 @@ from __future__ import annotations
 
 import contextvars
 import os
+import pickle
 import signal
 import sys
 import time
@@ -90,6 +94,10 @@ _REPORTER: contextvars.ContextVar[Reporter | None] = contextvars.ContextVar(
 
 #: The step a bounded run is in when nothing was reported yet.
 FIRST_STEP = "the start"
+
+#: A bounded child sends a copy of its kept partial result at a reported step at most
+#: this often (the parent has it if the child must be ended at the bound).
+SNAPSHOT_SECONDS = 1.0
 
 
 def report(step: str, done: float | None = None) -> None:
@@ -160,7 +168,8 @@ def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = ""
     ------
     TimeLimitReached
         When the work ran past the cooperative bound without keeping a result, or
-        when it was ended at the bound (``hard``: true; ``where``: the step).
+        when it was ended at the bound (``hard``: true; ``where``: the step;
+        ``kept``: the last copy of the partial result it registered, or None).
 
     Example
     -------
@@ -189,12 +198,14 @@ def _run_in_child(work, seconds: float | None, owner: str, progress, output,
     sys.stderr.flush()
     child.start()
     send.close()
-    step, done = FIRST_STEP, None
+    step, done, snapshot = FIRST_STEP, None, None
     try:
         while True:
             left = end - time.monotonic()
             if left <= 0:
-                raise TimeLimitReached(seconds, step, hard=True)
+                error = TimeLimitReached(seconds, step, hard=True)
+                error.kept = None if snapshot is None else _unpickled(snapshot)
+                raise error
             if not receive.poll(min(left, tick)):
                 if progress is not None:
                     progress(step, done)
@@ -213,6 +224,8 @@ def _run_in_child(work, seconds: float | None, owner: str, progress, output,
             elif kind == "output":
                 if output is not None:
                     output(payload)
+            elif kind == "kept":
+                snapshot = payload
             elif kind == "done":
                 return payload
             else:  # "error"
@@ -223,6 +236,13 @@ def _run_in_child(work, seconds: float | None, owner: str, progress, output,
     finally:
         _end(child)
         receive.close()
+
+
+def _unpickled(data: bytes):
+    try:
+        return pickle.loads(data)
+    except Exception:  # noqa: BLE001 - a copy that does not come back: none
+        return None
 
 
 class _RemoteTraceback(Exception):
@@ -253,13 +273,21 @@ def _child(work, seconds: float | None, owner: str, send) -> None:
     except OSError:  # pragma: no cover - already a group leader
         pass
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    last = [0.0, None]
+    last = [0.0, None, time.monotonic()]
 
     def step(text: str, done: float | None) -> None:
         now = time.monotonic()
         if now - last[0] >= 0.05 or text != last[1]:   # at most 20 a second per step
             last[0], last[1] = now, text
             send.send(("step", (text, done)))
+        if now - last[2] >= SNAPSHOT_SECONDS:
+            last[2] = now
+            value = deadline.kept()
+            if value is not None:
+                try:
+                    send.send(("kept", pickle.dumps(value)))
+                except Exception:  # noqa: BLE001, S110 - no copy this time, the next one
+                    pass
 
     def item(value) -> None:
         send.send(("output", value))

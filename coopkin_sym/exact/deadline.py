@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 from coopkin_sym.errors import TimeLimitReached
 
-__all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "remaining",
+__all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "kept", "remaining",
            "time_limit"]
 
 
@@ -109,6 +109,16 @@ def remaining() -> float | None:
     """Seconds left under the current bound (``None`` without one)."""
     bound = _CURRENT.get()
     return None if bound is None else bound.end - time.monotonic()
+
+
+def kept() -> object:
+    """What the current bound, or the nearest enclosing one, keeps (None: nothing)."""
+    bound = _CURRENT.get()
+    while bound is not None:
+        if bound.kept is not None:
+            return bound.kept
+        bound = bound.outer
+    return None
 
 
 def keep(value: object) -> None:
