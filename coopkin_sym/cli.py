@@ -17,9 +17,10 @@ they have run for a second (when stderr is a terminal; ``--no-progress``: never)
 Exit status: 0 done; 1 a verification found something uncovered or unsound; 2 bad
 input (one clear error on stderr, no traceback, nothing half-written); 3 the time
 bound was reached: one line ``coopkin: error: time bound of N s reached during
-<step>; <what was cut or written>`` (a locus cut at a check of the bound still writes
-its report, which says what was not explored; a run ended at the bound during a step
-that cannot be interrupted writes nothing); 130 interrupted (Ctrl-C).
+<step>; <what was cut or written>`` (a cut locus still writes its report, which says
+what was not explored, as soon as its generic numbers are known: when it was ended
+inside a step that cannot be interrupted, as far as it was a second before; the other
+commands write nothing); 130 interrupted (Ctrl-C).
 
 Example
 -------
