@@ -36,6 +36,7 @@ import json
 import os
 import signal
 import sys
+import time
 import warnings
 from contextlib import contextmanager
 from pathlib import Path
@@ -92,17 +93,18 @@ def _cut(exc: TimeLimitReached, outcome: str) -> None:
 
 
 def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=None):
-    """``work()`` under the time bound, its steps shown after a second when stderr is
-    a terminal (see :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs
-    in a separate process even without a bound, so that the display keeps moving
-    while a step holds the interpreter)."""
+    """``work()`` under the time bound, counted from the start of the command, its
+    steps shown after a second when stderr is a terminal (see
+    :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs in a separate
+    process even without a bound, so that the display keeps moving while a step
+    holds the interpreter)."""
     from coopkin_sym.exact.bounded import run_bounded
     from coopkin_sym.present.progress import progress_display
 
     shown = not no_progress and sys.stderr.isatty()
     with progress_display(shown, what) as display:   # shown: apart, to keep it moving
         return run_bounded(work, timeout, owner=f"coopkin {what}", progress=display,
-                           output=output, separate=shown)
+                           output=output, separate=shown, started=_STARTED[0])
 
 
 @contextmanager
@@ -679,8 +681,14 @@ def _interrupted(signum, frame) -> None:
     raise KeyboardInterrupt
 
 
+#: When the command started (``time.monotonic()``, set by :func:`main`; None: the
+#: bound of ``--timeout`` starts with the computation).
+_STARTED: list[float | None] = [None]
+
+
 def main() -> None:
     """Console-script entry point."""
+    _STARTED[0] = time.monotonic()
     # the command validates its own files with pydantic: looking through every
     # installed package for pydantic plugins would cost ~20 ms at each start
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")

@@ -144,7 +144,8 @@ def cooperative_seconds(seconds: float) -> float:
 def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = "",
                 progress: ProgressCallback | None = None,
                 output: Callable[[Any], None] | None = None,
-                tick: float = 0.2, separate: bool = False) -> T:
+                tick: float = 0.2, separate: bool = False,
+                started: float | None = None) -> T:
     """``work()``, ended at ``seconds`` (None: no bound) of wall-clock time.
 
     Parameters
@@ -163,6 +164,9 @@ def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = ""
     separate
         Without a bound too, run the work in a child process (so that ``progress``
         keeps being called while a step holds the interpreter).
+    started
+        When the bound started (``time.monotonic()``; default: now), e.g. when the
+        command started, so that the time it took to get here counts.
 
     Raises
     ------
@@ -181,18 +185,18 @@ def run_bounded(work: Callable[[], T], seconds: float | None, *, owner: str = ""
         with reporting(Reporter(progress, output)), deadline.time_limit(seconds, owner):
             return work()
     seconds = None if seconds is None else float(seconds)  # float-ok: a time
-    return _run_in_child(work, seconds, owner, progress, output, tick)
+    started = time.monotonic() if started is None else started
+    return _run_in_child(work, seconds, owner, progress, output, tick, started)
 
 
 def _run_in_child(work, seconds: float | None, owner: str, progress, output,
-                  tick: float):
+                  tick: float, started: float):
     import multiprocessing
 
-    started = time.monotonic()
     end = started + seconds if seconds is not None else float("inf")  # float-ok: time
     context = multiprocessing.get_context("fork")
     receive, send = context.Pipe(duplex=False)
-    child = context.Process(target=_child, args=(work, seconds, owner, send),
+    child = context.Process(target=_child, args=(work, seconds, owner, send, started),
                             daemon=False)
     sys.stdout.flush()
     sys.stderr.flush()
@@ -265,7 +269,7 @@ def _end(child) -> None:
     child.join()
 
 
-def _child(work, seconds: float | None, owner: str, send) -> None:
+def _child(work, seconds: float | None, owner: str, send, started: float) -> None:
     """The forked side: its own process group (so that it and its workers end
     together), Ctrl-C left to the parent, reports through the pipe."""
     try:
@@ -292,7 +296,9 @@ def _child(work, seconds: float | None, owner: str, send) -> None:
     def item(value) -> None:
         send.send(("output", value))
 
-    margin = 0.0 if seconds is None else seconds - cooperative_seconds(seconds)
+    # the cooperative bound ends cooperative_seconds after ``started``
+    margin = 0.0 if seconds is None else (seconds - cooperative_seconds(seconds)
+                                          + time.monotonic() - started)
     with reporting(Reporter(step, item)):
         try:
             with deadline.time_limit(seconds, owner, margin=margin):
