@@ -686,6 +686,12 @@ def _interrupted(signum, frame) -> None:
 _STARTED: list[float | None] = [None]
 
 
+def _terminated(signum, frame) -> None:
+    """SIGTERM or SIGHUP (``timeout 60 coopkin ...``, a closed terminal): unwind, so
+    that the processes the command started are ended, and exit with 128 + signal."""
+    raise SystemExit(128 + signum)
+
+
 def main() -> None:
     """Console-script entry point."""
     _STARTED[0] = time.monotonic()
@@ -694,6 +700,10 @@ def main() -> None:
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, _interrupted)
+    for name in ("SIGTERM", "SIGHUP"):   # unwind: a bounded child is ended on the way
+        number = getattr(signal, name, None)
+        if number is not None and signal.getsignal(number) is signal.SIG_DFL:
+            signal.signal(number, _terminated)
     try:
         app()
     except KeyboardInterrupt:  # pragma: no cover - typer turns it into exit 130

@@ -313,3 +313,27 @@ def test_the_analysis_reports_progress_and_never_draws_it():
             if any(n.split(".")[0] == "rich" for n in names) and layer != "present":
                 drawing.append(str(path.relative_to(ROOT)))
     assert drawing == []
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs /proc")
+@pytest.mark.parametrize("stop", [signal.SIGTERM, signal.SIGKILL])
+def test_the_bounded_process_ends_with_the_command(models, stop):
+    """``timeout 60 coopkin ...`` (SIGTERM) or a killed command (SIGKILL) leaves no
+    computation running on its own."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.Popen([sys.executable, "-m", "coopkin_sym", "analyze", "arms.json",
+                             "--timeout", "100"], cwd=models, env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    children: list[int] = []
+    deadline_at = time.monotonic() + 10
+    while not children and time.monotonic() < deadline_at:
+        time.sleep(0.1)
+        path = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+        children = [int(x) for x in path.read_text().split()] if path.exists() else []
+    assert children, "the command started no bounded process"
+    proc.send_signal(stop)
+    proc.communicate(timeout=10)
+    time.sleep(0.3)
+    assert [c for c in children if _running(c)] == []
+    assert proc.returncode == (128 + signal.SIGTERM if stop == signal.SIGTERM
+                               else -signal.SIGKILL)

@@ -196,8 +196,8 @@ def _run_in_child(work, seconds: float | None, owner: str, progress, output,
     end = started + seconds if seconds is not None else float("inf")  # float-ok: time
     context = multiprocessing.get_context("fork")
     receive, send = context.Pipe(duplex=False)
-    child = context.Process(target=_child, args=(work, seconds, owner, send, started),
-                            daemon=False)
+    child = context.Process(target=_child, daemon=False,
+                            args=(work, seconds, owner, send, started, os.getpid()))
     sys.stdout.flush()
     sys.stderr.flush()
     child.start()
@@ -269,14 +269,31 @@ def _end(child) -> None:
     child.join()
 
 
-def _child(work, seconds: float | None, owner: str, send, started: float) -> None:
+def _end_with_parent(parent: int) -> None:
+    """Have this process killed when its parent ends, however it ends (Linux: the
+    parent-death signal; elsewhere only the parent's own cleanup ends it)."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signal.SIGKILL))          # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - not Linux
+        return
+    if os.getppid() != parent:                    # the parent ended before that
+        os._exit(1)
+
+
+def _child(work, seconds: float | None, owner: str, send, started: float,
+           parent: int) -> None:
     """The forked side: its own process group (so that it and its workers end
-    together), Ctrl-C left to the parent, reports through the pipe."""
+    together), Ctrl-C left to the parent, ended with the parent, reports through the
+    pipe."""
     try:
         os.setpgid(0, 0)
     except OSError:  # pragma: no cover - already a group leader
         pass
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _end_with_parent(parent)
     last = [0.0, None, time.monotonic()]
 
     def step(text: str, done: float | None) -> None:
