@@ -174,8 +174,9 @@ class System:
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
         :class:`concurrent.futures.Executor`; ``progress`` shows a bar on standard
         error after a second; ``timeout`` is a wall-clock bound in seconds (past it,
-        :class:`~coopkin_sym.errors.TimeLimitReached`; with it, an executor must be
-        made inside the bound's process: give none, or see ``coopkin sweep --workers``).
+        :class:`~coopkin_sym.errors.TimeLimitReached`); the bounded sweep runs in a
+        process of its own, which cannot use an executor made outside it: give one
+        or the other (``coopkin sweep --workers N --timeout S`` makes its pool inside).
 
         Example
         -------
@@ -185,6 +186,11 @@ class System:
         [3, 2]
         """
         from coopkin_sym.analysis.sweep import sweep
+        if timeout is not None and executor is not None:
+            from coopkin_sym.errors import SweepError
+            raise SweepError("timeout: a bounded sweep runs in a process of its own and "
+                             "cannot use an executor made outside it (give one or the "
+                             "other)")
         return _bounded(lambda: sweep(self, points, at=at, executor=executor,
                                       progress=progress, chunk=chunk),
                         timeout, "sweep", progress)

@@ -337,3 +337,15 @@ def test_the_bounded_process_ends_with_the_command(models, stop):
     assert [c for c in children if _running(c)] == []
     assert proc.returncode == (128 + signal.SIGTERM if stop == signal.SIGTERM
                                else -signal.SIGKILL)
+
+
+def test_a_bounded_sweep_refuses_an_executor_made_outside_it():
+    from concurrent.futures import ThreadPoolExecutor
+
+    from coopkin_sym.errors import SweepError
+
+    with ThreadPoolExecutor(1) as pool, pytest.raises(SweepError) as caught:
+        load("paper-case1-hard").sweep(["q1=0"], executor=pool, timeout=10)
+    assert str(caught.value) == ("timeout: a bounded sweep runs in a process of its own "
+                                 "and cannot use an executor made outside it (give one or "
+                                 "the other)")
