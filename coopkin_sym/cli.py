@@ -102,7 +102,8 @@ def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=N
     from coopkin_sym.present.progress import progress_display
 
     shown = not no_progress and sys.stderr.isatty()
-    with progress_display(shown, what) as display:   # shown: apart, to keep it moving
+    with progress_display(shown, what, started=_STARTED[0]) as display:
+        # shown: the work runs apart, so that the display keeps moving
         return run_bounded(work, timeout, owner=f"coopkin {what}", progress=display,
                            output=output, separate=shown, started=_STARTED[0])
 
