@@ -234,8 +234,10 @@ class _Builder:
             selected, labels, row_contacts = self.planar_selection(normals)
         else:
             selected, labels, row_contacts = self.selection(normals)
-        QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
-        Q = [_row_times(h, QT, model.object_dim + r, zero) for h in selected]
+        # Q = H [G^T  -D], row by row from the rows of G^T and D that H selects
+        Q = [_row_times(h, GT, model.object_dim, zero)
+             + [x if x.is_zero() else -x for x in _row_times(h, D, r, zero)]
+             for h in selected]
         H = _dense(selected, len(GT), zero)
         return Kinematics(ring, self.symbols, GT, D, H, Q, labels, row_contacts, points,
                           normals, axes, origins)
