@@ -683,19 +683,25 @@ def _interrupted(signum, frame) -> None:
 
 
 #: When the command started (``time.monotonic()``, set by :func:`main`; None: the
-#: bound of ``--timeout`` starts with the computation).
-_STARTED: list[float | None] = [None]
+#: bound of ``--timeout`` starts with the computation), and the command's process id.
+_STARTED: list = [None, None]
 
 
 def _terminated(signum, frame) -> None:
     """SIGTERM or SIGHUP (``timeout 60 coopkin ...``, a closed terminal): unwind, so
-    that the processes the command started are ended, and exit with 128 + signal."""
+    that the processes the command started are ended, and exit with 128 + signal. In
+    a process forked from the command (a sweep worker) the signal does what it does by
+    default: it ends that process at once."""
+    if os.getpid() != _STARTED[1]:
+        signal.signal(signum, signal.SIG_DFL)
+        os.kill(os.getpid(), signum)
+        return
     raise SystemExit(128 + signum)
 
 
 def main() -> None:
     """Console-script entry point."""
-    _STARTED[0] = time.monotonic()
+    _STARTED[:] = [time.monotonic(), os.getpid()]
     # the command validates its own files with pydantic: looking through every
     # installed package for pydantic plugins would cost ~20 ms at each start
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
