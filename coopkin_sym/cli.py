@@ -480,14 +480,11 @@ def _ended_locus(exc: TimeLimitReached, loaded: list):
     """The locus of a run ended at its bound inside a step that cannot be interrupted:
     the last copy the search kept (as far as it got), with what was cut; or ``exc``
     again when there is none (before the generic numbers, or no copy yet)."""
-    from coopkin_sym.analysis.locus.remarks import Remark
-    from coopkin_sym.analysis.locus.types import Locus
+    from coopkin_sym.analysis.locus.types import ended_at_bound
 
-    locus = getattr(exc, "kept", None)
-    if not (exc.hard and loaded and isinstance(locus, Locus)):
+    locus = ended_at_bound(exc) if loaded else None
+    if locus is None:
         raise exc
-    locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
-                                      where=exc.where))
     return locus
 
 

@@ -132,12 +132,13 @@ class System:
         differ from the generic ones (see
         :func:`coopkin_sym.analysis.locus.search.compute_locus`).
 
-        With a ``timeout``, a search cut at a check of the bound returns what it
-        found (:attr:`~coopkin_sym.analysis.locus.types.Locus.unexplored` says what
-        was cut); a step that cannot be interrupted is ended at the bound, raising
-        :class:`~coopkin_sym.errors.TimeLimitReached` (see
-        :func:`coopkin_sym.exact.bounded.run_bounded`). ``progress`` shows the steps
-        on standard error after a second, when it is a terminal.
+        With a ``timeout``, a search cut by the bound returns what it found
+        (:attr:`~coopkin_sym.analysis.locus.types.Locus.unexplored` says what was
+        cut): at a check of the bound, or, when a step that cannot be interrupted is
+        ended at the bound, as far as it was about a second before (see
+        :func:`coopkin_sym.exact.bounded.run_bounded`); before the generic numbers
+        it raises :class:`~coopkin_sym.errors.TimeLimitReached`. ``progress`` shows
+        the steps on standard error after a second, when it is a terminal.
 
         Example
         -------
@@ -147,9 +148,17 @@ class System:
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
         """
         from coopkin_sym.analysis.locus.search import compute_locus
-        return _bounded(lambda: compute_locus(self, at, max_depth, timeout, progress,
-                                              free, pi_size),
-                        timeout, "locus", progress)
+        from coopkin_sym.analysis.locus.types import ended_at_bound
+        from coopkin_sym.errors import TimeLimitReached
+        try:
+            return _bounded(lambda: compute_locus(self, at, max_depth, timeout, progress,
+                                                  free, pi_size),
+                            timeout, "locus", progress)
+        except TimeLimitReached as exc:   # ended inside a step: the last copy kept
+            locus = ended_at_bound(exc)
+            if locus is None:
+                raise
+            return locus
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
              title: str | None = None) -> Figure:

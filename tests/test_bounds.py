@@ -207,24 +207,40 @@ def test_a_locus_ended_inside_a_flint_call_writes_nothing(tmp_path, monkeypatch)
     assert list(tmp_path.iterdir()) == []
 
 
+def _found_one_then_a_resultant(*args, **kwargs):
+    """A search that keeps a locus with one component, reports steps for a little more
+    than a second, then runs into the resultant."""
+    from coopkin_sym.analysis.locus.types import Component, Locus
+
+    generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+    locus = Locus("paper case 1, hard/hard", ["t_q1", "t_q2"], "L=1", generic)
+    locus.components.append(Component(["t_q1 - 1", "t_q2 - 1"], dict(generic, Nm=3),
+                                      {"q1": "pi/2", "q2": "pi/2"}, True))
+    deadline.keep(locus)
+    for k in range(12):
+        report(f"step {k}")
+        time.sleep(0.1)
+    return _slow_resultant()
+
+
+def test_system_locus_ended_inside_a_flint_call_returns_what_it_had_kept(monkeypatch):
+    import coopkin_sym.analysis.locus.search as search
+
+    monkeypatch.setattr(search, "compute_locus", _found_one_then_a_resultant)
+    start = time.monotonic()
+    locus = load("paper-case1-hard").locus(timeout=2.5)
+    assert time.monotonic() - start < 2.5 * 1.1 + 0.3
+    assert [c.equations for c in locus.components] == [["t_q1 - 1", "t_q2 - 1"]]
+    assert [(u.kind, u["seconds"], u["where"]) for u in locus.unexplored] == [
+        ("time_whole_run", 2.5, "a resultant")]
+
+
 def test_a_locus_ended_inside_a_flint_call_writes_what_it_had_kept(tmp_path, monkeypatch):
     """The search keeps its locus as it goes; the last copy reaches the command before
     the step that cannot be interrupted is ended, and is written with what was cut."""
     import coopkin_sym.analysis.locus.search as search
-    from coopkin_sym.analysis.locus.types import Component, Locus
 
-    def searching(*args, **kwargs):
-        generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
-        locus = Locus("paper case 1, hard/hard", ["t_q1", "t_q2"], "L=1", generic)
-        locus.components.append(Component(["t_q1 - 1", "t_q2 - 1"], dict(generic, Nm=3),
-                                          {"q1": "pi/2", "q2": "pi/2"}, True))
-        deadline.keep(locus)
-        for k in range(12):                 # steps for a little more than a second
-            report(f"step {k}")
-            time.sleep(0.1)
-        return _slow_resultant()
-
-    monkeypatch.setattr(search, "compute_locus", searching)
+    monkeypatch.setattr(search, "compute_locus", _found_one_then_a_resultant)
     start = time.monotonic()
     result = CliRunner().invoke(app, ["locus", "paper-case1-hard", "-o",
                                       str(tmp_path / "r.json"), "--timeout", "2.5"])
