@@ -26,6 +26,7 @@ from pathlib import Path
 
 import flint
 import pytest
+from large_systems import many_arms, many_contacts
 from typer.testing import CliRunner
 
 from coopkin_sym import load
@@ -35,9 +36,6 @@ from coopkin_sym.exact import deadline
 from coopkin_sym.exact.bounded import deliver, report, run_bounded
 from coopkin_sym.model.builders import spatial_hand
 from coopkin_sym.present.report import write_report
-
-sys.path.insert(0, str(Path(__file__).parent))
-from large_systems import many_arms, many_contacts  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 BOUND = 2.0

@@ -6,16 +6,12 @@ four times as much)."""
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
+from large_systems import many_arms, many_contacts
 
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.exact.ring import Frac
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import load_model
-
-sys.path.insert(0, str(Path(__file__).parents[1]))
-from large_systems import many_arms, many_contacts  # noqa: E402
 
 
 def _entries_looked_at(model_dict, monkeypatch) -> int:
