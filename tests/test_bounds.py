@@ -363,3 +363,28 @@ def test_a_bounded_sweep_refuses_an_executor_made_outside_it():
     assert str(caught.value) == ("timeout: a bounded sweep runs in a process of its own "
                                  "and cannot use an executor made outside it (give one or "
                                  "the other)")
+
+
+@pytest.mark.parametrize("args", [
+    ["analyze", "paper-case1-hard"],
+    ["analyze", "paper-case1-hard", "--generic", "--json"],
+    ["manipulability", "paper-case1-hard", "--at", "q1=pi/2,q2=pi/2,L=1"],
+    ["sweep", "paper-case1-hard", "--grid", "q1=-pi..pi:5,q2=0..1:3"],
+], ids=["analyze", "analyze-json", "manipulability", "sweep"])
+def test_a_run_within_its_bound_gives_what_an_unbounded_one_gives(args):
+    runner = CliRunner()
+    free = runner.invoke(app, args)
+    bounded = runner.invoke(app, [*args, "--timeout", "60"])
+    assert free.exit_code == bounded.exit_code == 0, bounded.output
+    assert bounded.stdout == free.stdout and bounded.stderr == free.stderr == ""
+
+
+def test_a_verification_within_its_bound_gives_its_verdict(tmp_path):
+    report_path = tmp_path / "case1.json"
+    write_report(load("paper-case1-hard").locus(max_depth=0), report_path)
+    runner = CliRunner()
+    args = ["verify", "paper-case1-hard", str(report_path), "--lines", "2"]
+    free, bounded = runner.invoke(app, args), runner.invoke(app, [*args, "--timeout", "60"])
+    assert free.exit_code == bounded.exit_code == 0, bounded.output
+    assert bounded.stdout.startswith("Verification: passed")
+    assert bounded.stdout.split("\n")[0] == free.stdout.split("\n")[0]
