@@ -3,12 +3,24 @@
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
 ``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
-[--timeout SECONDS] [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
-``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``.
+[--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
+``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``,
+``coopkin manipulability MODEL [--at ...] [--controlled v_x,v_y] [--json]``.
 A part of an output left out (a plot with nothing to show, a motion not available at
-the configuration) is announced on stderr as ``coopkin: note: ...``. Bad input prints
-one clear error to stderr and exits 2; no traceback, nothing half-written. A
-verification that finds something uncovered or unsound exits 1.
+the configuration) is announced on stderr as ``coopkin: note: ...``.
+
+``analyze``, ``locus``, ``sweep``, ``manipulability`` and ``verify`` take
+``--timeout SECONDS``, a wall-clock bound on the whole run, held whatever the step
+(see :mod:`coopkin_sym.exact.bounded`), and show what they are doing on stderr once
+they have run for a second (when stderr is a terminal; ``--no-progress``: never).
+
+Exit status: 0 done; 1 a verification found something uncovered or unsound; 2 bad
+input (one clear error on stderr, no traceback, nothing half-written); 3 the time
+bound was reached: one line ``coopkin: error: time bound of N s reached during
+<step>; <what was cut or written>`` (a cut locus still writes its report, which says
+what was not explored, as soon as its generic numbers are known: when it was ended
+inside a step that cannot be interrupted, as far as it was a second before; the other
+commands write nothing); 130 interrupted (Ctrl-C).
 
 Example
 -------
@@ -24,7 +36,7 @@ import json
 import os
 import signal
 import sys
-import threading
+import time
 import warnings
 from contextlib import contextmanager
 from pathlib import Path
@@ -43,6 +55,10 @@ from coopkin_sym.errors import (
     TimeLimitReached,
 )
 
+#: Exit status of a run cut by ``--timeout`` (2 is bad input, 1 a failed verification,
+#: 130 an interrupt).
+TIME_BOUND_EXIT = 3
+
 # Each command imports what it needs when it runs: the command line starts quickly,
 # and ``coopkin analyze`` does not pay for the locus, the reports or the pictures.
 
@@ -59,6 +75,37 @@ USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, Infeas
 def _fail(message: str) -> None:
     typer.echo(f"coopkin: error: {message}", err=True)
     raise typer.Exit(2)
+
+
+TimeoutOption = Annotated[float | None, typer.Option(
+    "--timeout", min=0, help="Wall-clock bound in seconds for the whole run, held even "
+                             "inside steps that cannot be interrupted; past it the "
+                             "command stops, says what was cut and exits with 3.")]
+NoProgressOption = Annotated[bool, typer.Option(
+    "--no-progress", help="No progress display (none is shown when stderr is not a "
+                          "terminal, nor in the first second).")]
+
+
+def _cut(exc: TimeLimitReached, outcome: str) -> None:
+    """The one line of a run cut by its time bound, then exit 3."""
+    typer.echo(f"coopkin: error: {exc}; {outcome}", err=True)
+    raise typer.Exit(TIME_BOUND_EXIT)
+
+
+def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=None):
+    """``work()`` under the time bound, counted from the start of the command, its
+    steps shown after a second when stderr is a terminal (see
+    :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs in a separate
+    process even without a bound, so that the display keeps moving while a step
+    holds the interpreter)."""
+    from coopkin_sym.exact.bounded import run_bounded
+    from coopkin_sym.present.progress import progress_display
+
+    shown = not no_progress and sys.stderr.isatty()
+    with progress_display(shown, what, started=_STARTED[0]) as display:
+        # shown: the work runs apart, so that the display keeps moving
+        return run_bounded(work, timeout, owner=f"coopkin {what}", progress=display,
+                           output=output, separate=shown, started=_STARTED[0])
 
 
 @contextmanager
@@ -88,48 +135,82 @@ def analyze(
         "--free", help="Comma-separated joints to keep symbolic.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
     latex: Annotated[bool, typer.Option("--latex", help="Print the blocks as LaTeX.")] = False,
+    timeout: TimeoutOption = None,
+    no_progress: NoProgressOption = False,
 ) -> None:
     """Mobility Nm, connectivity Nc, indeterminacy Ni, redundancy Nr (and Ng, Nd, Nh),
     with the block decomposition of the paper, exactly."""
-    from coopkin_sym.present.text import (
-        analysis_json,
-        analysis_latex,
-        analysis_parts,
-        analysis_text,
-    )
-    from coopkin_sym.system import load
+    free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+    printer = _PartPrinter()
 
-    try:
+    def work():
+        from coopkin_sym.exact.bounded import deliver, report
+        from coopkin_sym.present.text import (
+            analysis_json,
+            analysis_latex,
+            analysis_parts,
+            analysis_text,
+        )
+        from coopkin_sym.system import load
+
+        report("loading the model")
         system = load(model)
-        free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+        report("the analysis")
         result = system.analyze(at, generic=generic, free=free_joints)
         if not (as_json or latex or _irrational(result)):
-            _print_parts(analysis_parts(result))
-            return
+            parts = analysis_parts(result)
+            deliver(("names", [name for name, _ in parts]))
+            for name, part in parts:
+                report(f"the {name}" if name in ("numbers", "sentences") else name)
+                deliver(("part", name, part()))
+            return None
+        report("the JSON document" if as_json else "the text")
         if as_json:
-            text = analysis_json(result)
-        elif not _irrational(result):
-            text = analysis_latex(result) if latex else analysis_text(result)
-        else:
-            from coopkin_sym.present.text import irrational_latex, irrational_text
-            text = irrational_latex(result) if latex else irrational_text(result)
+            return analysis_json(result)
+        if not _irrational(result):
+            return analysis_latex(result) if latex else analysis_text(result)
+        from coopkin_sym.present.text import irrational_latex, irrational_text
+        return irrational_latex(result) if latex else irrational_text(result)
+
+    try:
+        text = _bounded(work, timeout, "analyze", no_progress, output=printer)
+    except KeyboardInterrupt:
+        if printer.names is None:
+            raise
+        typer.echo(f"interrupted while computing {printer.next_name()}; not shown: "
+                   f"{', '.join(printer.left())}", err=True)
+        raise typer.Exit(130) from None
+    except TimeLimitReached as exc:
+        left = printer.left()
+        _cut(exc, f"not shown: {', '.join(left)}" if printer.shown else "nothing shown")
     except USER_ERRORS as exc:
         _fail(str(exc))
-    typer.echo(text)
+    if text is not None:
+        typer.echo(text)
 
 
-def _print_parts(parts) -> None:
-    """Print each part of a report as soon as it is computed (the numbers first); an
-    interrupt (Ctrl-C) stops the rest and says what was not computed."""
-    names = [name for name, _ in parts]
-    for k, (name, part) in enumerate(parts):
-        try:
-            lines = part()
-        except KeyboardInterrupt:
-            typer.echo(f"interrupted while computing {name}; not shown: "
-                       f"{', '.join(names[k:])}", err=True)
-            raise typer.Exit(130) from None
+class _PartPrinter:
+    """Prints the parts of ``coopkin analyze`` as they come (the numbers first) and
+    remembers which were shown."""
+
+    def __init__(self):
+        self.names: list[str] | None = None
+        self.shown: list[str] = []
+
+    def __call__(self, item) -> None:
+        if item[0] == "names":
+            self.names = list(item[1])
+            return
+        _, name, lines = item
         typer.echo("\n".join(lines))
+        self.shown.append(name)
+
+    def left(self) -> list[str]:
+        return [n for n in (self.names or []) if n not in self.shown]
+
+    def next_name(self) -> str:
+        left = self.left()
+        return left[0] if left else "the output"
 
 
 @app.command()
@@ -189,23 +270,39 @@ def manipulability_command(
         "--point", help="x,y,z: v is the velocity of this object point (base frame).")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
+    timeout: TimeoutOption = None,
+    no_progress: NoProgressOption = False,
 ) -> None:
     """The kinematic manipulability ellipsoid of chosen object velocities, exactly: E,
     det E, its rank and where it degenerates; at a point also its semi-axes (floats)."""
-    from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
-    from coopkin_sym.system import load
 
-    try:
+    def work() -> str:
+        from coopkin_sym.exact.bounded import report
+        from coopkin_sym.present.manipulability import (
+            manipulability_json,
+            manipulability_text,
+        )
+        from coopkin_sym.system import load
+
+        report("loading the model")
         system = load(model)
         free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+        report("the analysis")
         result = system.analyze(at, generic=generic, free=free_joints)
         if _irrational(result):
             raise ManipulabilityError("--at: the ellipsoid is computed at rational "
                                       "configurations only (tan(q/2) rational)")
         names = [c.strip() for c in controlled.split(",")] if controlled else None
         where = [c.strip() for c in point.split(",")] if point else None
+        report("the ellipsoid")
         m = result.manipulability(names, length=length, point=where)
-        text = manipulability_json(m, result) if as_json else manipulability_text(m, result)
+        report("the text")
+        return manipulability_json(m, result) if as_json else manipulability_text(m, result)
+
+    try:
+        text = _bounded(work, timeout, "manipulability", no_progress)
+    except TimeLimitReached as exc:
+        _cut(exc, "nothing shown")
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)
@@ -228,16 +325,13 @@ def sweep(
         "--json", help="Print JSON instead of CSV when no --output is given.")] = False,
     workers: Annotated[int, typer.Option(
         "--workers", min=1, help="Worker processes for the sweep.")] = 1,
-    no_progress: Annotated[bool, typer.Option(
-        "--no-progress", help="No progress bar (none is shown when stderr is not a "
-                              "terminal).")] = False,
+    no_progress: NoProgressOption = False,
+    timeout: TimeoutOption = None,
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from coopkin_sym.analysis.sweep import grid
     from coopkin_sym.errors import SweepError
     from coopkin_sym.present.files import check_output_path, write_files
-    from coopkin_sym.system import load
 
     fmt = "json" if as_json else "csv"
     try:
@@ -246,21 +340,37 @@ def sweep(
             target, suffix = check_output_path(output, (".csv", ".json"), SweepError,
                                                "table (--output)")
             fmt = suffix.lstrip(".")
+    except (*USER_ERRORS, SweepError) as exc:
+        _fail(str(exc))
+
+    def work():
+        from coopkin_sym.analysis.sweep import grid
+        from coopkin_sym.exact.bounded import report
+        from coopkin_sym.system import load
+
+        report("loading the model")
         system = load(model)
+        report("reading the grid")
         points = grid(system, grid_spec)
-        show = not no_progress and sys.stderr.isatty()
-        result = _sweep(system, points, at, workers, show)
+        result = _sweep(system, points, at, workers)
+        report("the table")
         text = result.json_text() if fmt == "json" else result.to_csv()
+        return text, result.summary(), result.prime
+
+    try:
+        text, counts, prime = _bounded(work, timeout, "sweep", no_progress)
         if target is not None:
             write_files({target: text.encode()}, SweepError)
+    except TimeLimitReached as exc:
+        _cut(exc, "nothing written")
     except (*USER_ERRORS, SweepError) as exc:
         _fail(str(exc))
     if target is None:
         typer.echo(text, nl=False)
         return
-    c = result.summary()
+    c = counts
     typer.echo(f"{c['points']} points: {c['certified_mod_p']} certified modulo "
-               f"{result.prime}, {c['rechecked_exact']} rechecked exactly; "
+               f"{prime}, {c['rechecked_exact']} rechecked exactly; "
                f"{c['snapped_values']} snapped angles; wrote {output}")
 
 
@@ -278,11 +388,11 @@ def locus(
                                    "drops (0: the generic locus only).")] = 2,
     timeout: Annotated[float | None, typer.Option(
         "--timeout", min=0, help="Wall-clock bound in seconds for the whole run (the "
-                                 "generic step included, checked inside long "
-                                 "eliminations); the report says what was cut.")] = None,
-    no_progress: Annotated[bool, typer.Option(
-        "--no-progress", help="No progress bar (none is shown when stderr is not a "
-                              "terminal).")] = False,
+                                 "generic step, --certify and --verify included), held "
+                                 "even inside steps that cannot be interrupted; a run "
+                                 "cut at a check of the bound writes its report, which "
+                                 "says what was cut, and exits with 3.")] = None,
+    no_progress: NoProgressOption = False,
     pair: Annotated[list[str] | None, typer.Option(
         "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
                        "default: the pairs that occur together in a component).")] = None,
@@ -306,7 +416,6 @@ def locus(
 ) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from coopkin_sym.analysis.locus.search import compute_locus
     from coopkin_sym.errors import LocusError, ReportError
     from coopkin_sym.present.report import check_target, parse_pairs, write_report
     from coopkin_sym.present.verification import verification_json
@@ -314,18 +423,87 @@ def locus(
 
     try:
         check_target(output)
+    except ReportError as exc:
+        _fail(str(exc))
+    free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+
+    def work():
+        from coopkin_sym.exact.bounded import deliver, report
+
+        report("loading the model")
         system = load(model)
         pairs = parse_pairs(pair, system) if pair else None
-    except (*USER_ERRORS, ReportError) as exc:
-        _fail(str(exc))
-    show = not no_progress and sys.stderr.isatty()
+        deliver((system, pairs))
+        return _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
+                           certify_timeout, verify)
+
+    loaded: list = []
     try:
-        with _alarm(timeout):
-            free_joints = [f.strip() for f in free.split(",") if f.strip()] if free \
-                else None
-            result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
-                                   progress=show, free=free_joints, pi_size=pi_size)
-        locked = system.model.with_actuators_locked() if result.locked else None
+        try:
+            result, checked, checked_locked, cut = _bounded(work, timeout, "locus",
+                                                            no_progress,
+                                                            output=loaded.append)
+        except TimeLimitReached as exc:  # ended at the bound: the last copy kept
+            result, checked, checked_locked, cut = _ended_locus(exc, loaded), None, \
+                None, exc
+        system, pairs = loaded[0]
+        shown = verification_json(checked) if checked else None
+        if shown is not None and checked_locked is not None:
+            shown["locked"] = verification_json(checked_locked)
+        with _notes():
+            written = write_report(result, output, system, pairs=pairs,
+                                   verification=shown)
+    except TimeLimitReached as exc:
+        _cut(exc, "nothing written")
+    except (*USER_ERRORS, LocusError, ReportError) as exc:
+        _fail(str(exc))
+    real = sum(1 for c in result.components if c.real)
+    n, u = len(result.components), len(result.unexplored)
+    left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
+    files = ", ".join(str(p) for p in written)
+    typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
+               f"{result.completeness()}; wrote " + files)
+    if result.locked is not None:
+        lk = result.locked
+        typer.echo(f"with the motors held still (where the passive-joint numbers change): "
+                   f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
+                   f"; {lk.completeness()}")
+    if cut is not None:
+        _cut(cut, f"the report says what was not explored; wrote {files}")
+    if checked is not None:
+        if checked_locked is not None:
+            _echo_locked(checked_locked, checked)
+        _echo_verification(checked)
+
+
+def _ended_locus(exc: TimeLimitReached, loaded: list):
+    """The locus of a run ended at its bound inside a step that cannot be interrupted:
+    the last copy the search kept (as far as it got), with what was cut; or ``exc``
+    again when there is none (before the generic numbers, or no copy yet)."""
+    from coopkin_sym.analysis.locus.types import ended_at_bound
+
+    locus = ended_at_bound(exc) if loaded else None
+    if locus is None:
+        raise exc
+    return locus
+
+
+def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
+                certify_timeout, verify):
+    """The computation of ``coopkin locus`` (run under its bound): the locus, its
+    certificate and verification when asked, and the
+    :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
+    from coopkin_sym.analysis.locus.search import compute_locus
+    from coopkin_sym.analysis.locus.verify import verify_locus
+
+    result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
+                           progress=True, free=free_joints, pi_size=pi_size)
+    cut = _time_cut(result, timeout)
+    locked = system.model.with_actuators_locked() if result.locked else None
+    checked = checked_locked = None
+    if cut is not None:      # the bound has passed: nothing more to run
+        return result, checked, checked_locked, cut
+    try:
         if certify:
             from coopkin_sym.analysis.locus.certify import certify_locus
             from coopkin_sym.present.certificate import certificate_json
@@ -334,39 +512,30 @@ def locus(
             if result.locked is not None:
                 result.locked.certificate = certificate_json(certify_locus(
                     locked, result.locked, budget=certify_timeout))
-        checked = _verification(system, result) if verify else None
-        checked_locked = (_verification(locked, result.locked)
-                          if verify and result.locked is not None else None)
-        shown = verification_json(checked) if checked else None
-        if shown is not None and checked_locked is not None:
-            shown["locked"] = verification_json(checked_locked)
-        with _notes():
-            written = write_report(result, output, system, pairs=pairs,
-                                   verification=shown)
-    except (*USER_ERRORS, LocusError, ReportError) as exc:
-        _fail(str(exc))
-    real = sum(1 for c in result.components if c.real)
-    n, u = len(result.components), len(result.unexplored)
-    left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
-    typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
-               f"{result.completeness()}; wrote " + ", ".join(str(p) for p in written))
-    if result.locked is not None:
-        lk = result.locked
-        typer.echo(f"with the motors held still (where the passive-joint numbers change): "
-                   f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
-                   f"; {lk.completeness()}")
-    if checked is not None:
-        if checked_locked is not None:
-            _echo_locked(checked_locked, checked)
-        _echo_verification(checked)
+        if verify:
+            checked = verify_locus(system, result)
+            if result.locked is not None:
+                checked_locked = verify_locus(locked, result.locked)
+    except TimeLimitReached as exc:  # the report is written without what was cut
+        return result, None, None, exc
+    return result, checked, checked_locked, None
 
 
-def _verification(system, locus, **options):
-    from coopkin_sym.analysis.locus.verify import VerifyError, verify_locus
-    try:
-        return verify_locus(system, locus, **options)
-    except VerifyError as exc:
-        _fail(str(exc))
+def _time_cut(locus, timeout: float | None):
+    """The :class:`~coopkin_sym.errors.TimeLimitReached` behind a locus (or its locked
+    locus) cut by its time bound, inside a long computation or between the steps of
+    the search; None if it was not cut."""
+    steps = {"time_depth": lambda r: f"the search at depth {r['depth']}",
+             "time_component": lambda r: f"a component at depth {r['depth']}",
+             "time_pi_set": lambda r: "the slices at q = pi"}
+    for part in (locus, locus.locked):
+        for item in (part.unexplored if part is not None else ()):
+            kind = getattr(item, "kind", None)
+            if kind == "time_whole_run":
+                return TimeLimitReached(item["seconds"], item["where"])
+            if kind in steps and timeout is not None:
+                return TimeLimitReached(timeout, steps[kind](item))
+    return None
 
 
 def _echo_locked(locked, checked) -> None:
@@ -398,6 +567,8 @@ def verify_report(
         "--lines", min=0, help="Random rational lines to check.")] = 12,
     seed: Annotated[int, typer.Option("--seed", help="Seed of the lines.")] = 0,
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+    timeout: TimeoutOption = None,
+    no_progress: NoProgressOption = False,
 ) -> None:
     """Check a locus report independently: exact numbers on a rational grid (q = pi
     included) and at every drop point of random rational lines; every point with
@@ -421,11 +592,24 @@ def verify_report(
             raise ReportError(f"{report}: not a locus report ({exc})") from None
     except (*USER_ERRORS, ReportError) as exc:
         _fail(str(exc))
-    checked = _verification(system, locus, max_points=max_points, lines=lines, seed=seed)
-    locked = None
-    if locus.locked is not None:  # where the passive-joint numbers change
-        locked = _verification(system.model.with_actuators_locked(), locus.locked,
-                               max_points=max_points, lines=lines, seed=seed)
+
+    def work():
+        from coopkin_sym.analysis.locus.verify import verify_locus
+
+        checked = verify_locus(system, locus, max_points=max_points, lines=lines,
+                               seed=seed)
+        locked = None
+        if locus.locked is not None:  # where the passive-joint numbers change
+            locked = verify_locus(system.model.with_actuators_locked(), locus.locked,
+                                  max_points=max_points, lines=lines, seed=seed)
+        return checked, locked
+
+    try:
+        checked, locked = _bounded(work, timeout, "verify", no_progress)
+    except TimeLimitReached as exc:
+        _cut(exc, "no verdict")
+    except USER_ERRORS as exc:
+        _fail(str(exc))
     if as_json:
         data = verification_json(checked)
         if locked is not None:
@@ -462,21 +646,23 @@ def worker_count(requested: int, points: int, cpus: int | None = None) -> int:
     return max(1, min(requested, cpus, points))
 
 
-def _sweep(system, points, at, workers: int, show: bool):
-    """The sweep, in ``worker_count`` processes; on Ctrl-C or an error the worker
-    processes are stopped at once (no waiting for their chunks)."""
+def _sweep(system, points, at, workers: int):
+    """The sweep, in ``worker_count`` processes, its progress reported; on Ctrl-C or
+    an error the worker processes are stopped at once (no waiting for their chunks)."""
     import concurrent.futures
     import multiprocessing
+
+    from coopkin_sym.analysis.sweep import sweep
 
     n = len(points)
     count = worker_count(workers, n)
     if count == 1:
-        return system.sweep(points, at=at, progress=show)
+        return sweep(system, points, at=at, progress=True)
 
     chunk = max(1, min(16384, -(-n // (4 * count))))
     pool = concurrent.futures.ProcessPoolExecutor(count)  # looked up at use (tests patch it)
     try:
-        result = system.sweep(points, at=at, executor=pool, progress=show, chunk=chunk)
+        result = sweep(system, points, at=at, executor=pool, progress=True, chunk=chunk)
     except BaseException:
         pool.shutdown(wait=False, cancel_futures=True)
         for child in multiprocessing.active_children():
@@ -484,30 +670,6 @@ def _sweep(system, points, at, workers: int, show: bool):
         raise
     pool.shutdown()
     return result
-
-
-@contextmanager
-def _alarm(timeout: float | None):
-    """A backstop for ``--timeout``: the exact layer checks the clock in its loops; a
-    step outside them (a long SymPy simplification) is interrupted by a timer signal
-    a little after the bound (main thread only), raising the same
-    :class:`~coopkin_sym.errors.TimeLimitReached`."""
-    usable = (timeout is not None and hasattr(signal, "setitimer")
-              and threading.current_thread() is threading.main_thread())
-    if not usable:
-        yield
-        return
-
-    def ring(signum, frame):
-        raise TimeLimitReached(timeout, "a step outside the exact layer's checks")
-
-    previous = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, timeout + max(2.0, 0.1 * timeout))
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 def _interrupted(signum, frame) -> None:
@@ -518,13 +680,35 @@ def _interrupted(signum, frame) -> None:
     raise KeyboardInterrupt
 
 
+#: When the command started (``time.monotonic()``, set by :func:`main`; None: the
+#: bound of ``--timeout`` starts with the computation), and the command's process id.
+_STARTED: list = [None, None]
+
+
+def _terminated(signum, frame) -> None:
+    """SIGTERM or SIGHUP (``timeout 60 coopkin ...``, a closed terminal): unwind, so
+    that the processes the command started are ended, and exit with 128 + signal. In
+    a process forked from the command (a sweep worker) the signal does what it does by
+    default: it ends that process at once."""
+    if os.getpid() != _STARTED[1]:
+        signal.signal(signum, signal.SIG_DFL)
+        os.kill(os.getpid(), signum)
+        return
+    raise SystemExit(128 + signum)
+
+
 def main() -> None:
     """Console-script entry point."""
+    _STARTED[:] = [time.monotonic(), os.getpid()]
     # the command validates its own files with pydantic: looking through every
     # installed package for pydantic plugins would cost ~20 ms at each start
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, _interrupted)
+    for name in ("SIGTERM", "SIGHUP"):   # unwind: a bounded child is ended on the way
+        number = getattr(signal, name, None)
+        if number is not None and signal.getsignal(number) is signal.SIG_DFL:
+            signal.signal(number, _terminated)
     try:
         app()
     except KeyboardInterrupt:  # pragma: no cover - typer turns it into exit 130

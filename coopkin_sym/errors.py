@@ -44,24 +44,49 @@ class CoopkinError(Exception):
     >>> from coopkin_sym import load
     >>> issubclass(ModelError, CoopkinError)
     True
+
+    Every one pickles whole (its class, message and attributes), so that it comes
+    back from a worker process as itself:
+
+    >>> import pickle
+    >>> error = pickle.loads(pickle.dumps(ModelError(["arms: empty"], "m.yaml")))
+    >>> type(error).__name__, str(error), error.problems
+    ('ModelError', 'm.yaml: arms: empty', ['arms: empty'])
     """
+
+    def __reduce__(self):
+        return _rebuilt, (type(self), self.args, dict(self.__dict__))
+
+
+def _rebuilt(cls: type, args: tuple, state: dict) -> CoopkinError:
+    """An error of class ``cls`` with these ``args`` and attributes, without calling
+    its ``__init__`` (whose parameters differ from class to class)."""
+    error = cls.__new__(cls)
+    error.args = args
+    error.__dict__.update(state)
+    return error
 
 
 class TimeLimitReached(CoopkinError):
     """A computation ran past the wall-clock bound it was given.
 
     ``where`` names the step that was running when the bound was noticed (for a
-    report saying what was cut); ``seconds`` is the bound.
+    report saying what was cut); ``seconds`` is the bound; ``hard`` is true when the
+    work was ended at the bound from outside (its process stopped: nothing of it was
+    kept), false when it stopped itself at a check of the bound.
 
     Example
     -------
     >>> str(TimeLimitReached(5.0, "the generic decomposition"))
     'time bound of 5 s reached during the generic decomposition'
+    >>> TimeLimitReached(5.0, "a factorization", hard=True).hard
+    True
     """
 
-    def __init__(self, seconds: float, where: str = ""):
+    def __init__(self, seconds: float, where: str = "", hard: bool = False):
         self.seconds = seconds
         self.where = where
+        self.hard = hard
         shown = f"{seconds:g}"
         super().__init__(f"time bound of {shown} s reached"
                          + (f" during {where}" if where else ""))

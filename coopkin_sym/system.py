@@ -71,8 +71,8 @@ class System:
         return Configuration.parse(self.model, at, free)
 
     def analyze(self, at: str | Mapping | Configuration | None = None, *,
-                generic: bool = False,
-                free: Iterable[str] | None = None) -> Analysis | IrrationalAnalysis:
+                generic: bool = False, free: Iterable[str] | None = None,
+                timeout: float | None = None) -> Analysis | IrrationalAnalysis:
         """Exact mobility and kinematic analysis.
 
         Parameters
@@ -88,13 +88,29 @@ class System:
             Keep every joint variable symbolic (the generic analysis over Q(t, L)).
         free
             Joint names to keep symbolic (the rest at their values).
+        timeout
+            Wall-clock bound in seconds on the analysis (its numbers, computed at once
+            then, and the decomposition behind them), held even inside steps that
+            cannot be interrupted (see :func:`coopkin_sym.exact.bounded.run_bounded`);
+            past it
+            :class:`~coopkin_sym.errors.TimeLimitReached` names the step.
 
         Example
         -------
         >>> from coopkin_sym import load
         >>> load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6").numbers.Ni
         3
+        >>> load("paper-case1-hard").analyze(generic=True, timeout=60).numbers.Nm
+        2
         """
+        if timeout is not None:
+            from coopkin_sym.exact.bounded import run_bounded
+
+            def numbers():
+                result = self.analyze(at, generic=generic, free=free)
+                result.numbers  # noqa: B018 - computed under the bound, kept in the result
+                return result
+            return run_bounded(numbers, timeout, owner="System.analyze")
         if isinstance(at, Configuration):
             return analyze(self.model, at)
         try:
@@ -116,6 +132,14 @@ class System:
         differ from the generic ones (see
         :func:`coopkin_sym.analysis.locus.search.compute_locus`).
 
+        With a ``timeout``, a search cut by the bound returns what it found
+        (:attr:`~coopkin_sym.analysis.locus.types.Locus.unexplored` says what was
+        cut): at a check of the bound, or, when a step that cannot be interrupted is
+        ended at the bound, as far as it was about a second before (see
+        :func:`coopkin_sym.exact.bounded.run_bounded`); before the generic numbers
+        it raises :class:`~coopkin_sym.errors.TimeLimitReached`. ``progress`` shows
+        the steps on standard error after a second, when it is a terminal.
+
         Example
         -------
         >>> from coopkin_sym import load
@@ -124,7 +148,17 @@ class System:
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
         """
         from coopkin_sym.analysis.locus.search import compute_locus
-        return compute_locus(self, at, max_depth, timeout, progress, free, pi_size)
+        from coopkin_sym.analysis.locus.types import ended_at_bound
+        from coopkin_sym.errors import TimeLimitReached
+        try:
+            return _bounded(lambda: compute_locus(self, at, max_depth, timeout, progress,
+                                                  free, pi_size),
+                            timeout, "locus", progress)
+        except TimeLimitReached as exc:   # ended inside a step: the last copy kept
+            locus = ended_at_bound(exc)
+            if locus is None:
+                raise
+            return locus
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
              title: str | None = None) -> Figure:
@@ -142,12 +176,16 @@ class System:
         return draw_system(self, at, motion=motion, title=title)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
-              progress: bool = False, chunk: int = 16384):
+              progress: bool = False, chunk: int = 16384, timeout: float | None = None):
         """Exact numbers at many points, fast (see :func:`coopkin_sym.analysis.sweep.sweep`).
 
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
-        :class:`concurrent.futures.Executor`.
+        :class:`concurrent.futures.Executor`; ``progress`` shows a bar on standard
+        error after a second; ``timeout`` is a wall-clock bound in seconds (past it,
+        :class:`~coopkin_sym.errors.TimeLimitReached`); the bounded sweep runs in a
+        process of its own, which cannot use an executor made outside it: give one
+        or the other (``coopkin sweep --workers N --timeout S`` makes its pool inside).
 
         Example
         -------
@@ -157,7 +195,14 @@ class System:
         [3, 2]
         """
         from coopkin_sym.analysis.sweep import sweep
-        return sweep(self, points, at=at, executor=executor, progress=progress, chunk=chunk)
+        if timeout is not None and executor is not None:
+            from coopkin_sym.errors import SweepError
+            raise SweepError("timeout: a bounded sweep runs in a process of its own and "
+                             "cannot use an executor made outside it (give one or the "
+                             "other)")
+        return _bounded(lambda: sweep(self, points, at=at, executor=executor,
+                                      progress=progress, chunk=chunk),
+                        timeout, "sweep", progress)
 
     def __repr__(self) -> str:
         return (f"System({clip(self.model.name, 100)!r}: {len(self.model.arms)} arms, "
@@ -195,6 +240,19 @@ class System:
                             executor=executor, progress=progress, chunk=chunk)
 
 
+def _bounded(work, timeout: float | None, what: str, progress: bool):
+    """``work()`` under ``timeout`` (see :func:`coopkin_sym.exact.bounded.run_bounded`),
+    its steps shown on a terminal after a second when ``progress``."""
+    from coopkin_sym.exact.bounded import run_bounded
+    if not progress:
+        return run_bounded(work, timeout, owner=f"System.{what}")
+    import sys
+
+    from coopkin_sym.present.progress import progress_display
+    with progress_display(sys.stderr.isatty(), what) as display:
+        return run_bounded(work, timeout, owner=f"System.{what}", progress=display)
+
+
 def load(source: str | os.PathLike | Mapping) -> System:
     """Load a model file (YAML or JSON), a dict, or a shipped example by name."""
     return System(load_model(source))
@@ -220,7 +278,7 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         Any :class:`concurrent.futures.Executor` (a process pool,
         ``distributed.Client(...).get_executor()``); None runs here.
     progress
-        Show a progress bar (on stderr).
+        Show a progress bar (on stderr, when it is a terminal, after a second).
     chunk
         Items per task (see :func:`coopkin_sym.analysis.batch.run_batch`).
 
@@ -240,8 +298,9 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
     from coopkin_sym.analysis.batch import run_batch
 
     options = (generic, None if free is None else tuple(free), json)
-    return run_batch(_analyze_item, items, options=options, executor=executor,
-                     progress=progress, chunk=chunk)
+    return _bounded(lambda: run_batch(_analyze_item, items, options=options,
+                                      executor=executor, progress=progress, chunk=chunk),
+                    None, "analyze", progress)
 
 
 def _analyze_item(model: Model, at, generic: bool, free, json: bool):

@@ -1,6 +1,7 @@
 """Shared test support: the independent reference implementation (``independent``),
-the random systems (``random_systems``) and the hypothesis strategies (``strategies``)
-live next to this file and are importable from every test directory.
+the random systems (``random_systems``), the hypothesis strategies (``strategies``)
+and the large honest systems (``large_systems``) live next to this file and are
+importable from every test directory.
 
 The test directories mirror the package's layers: ``exact/``, ``model/``,
 ``analysis/``, ``present/``; whole-package tests (the CLI, the architecture, the

@@ -112,7 +112,8 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     executor
         Any :class:`concurrent.futures.Executor`; None runs here, in order.
     progress
-        Show a progress bar (on stderr).
+        Report the items done (see :func:`coopkin_sym.exact.bounded.report`; the
+        caller's display shows them).
     chunk
         Items per task (default: about 32 tasks, at most 64 items each).
 
@@ -137,7 +138,7 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     size = chunk if chunk is not None else max(1, min(64, len(work) // 32))
     size = max(1, int(size))
     tasks = [(compute, work[s:s + size], tuple(options)) for s in range(0, len(work), size)]
-    with Progress(progress, len(results), "analyze", "batch") as advance:
+    with Progress(progress, len(results), "analyses", "the batch") as advance:
         advance(len(results) - len(work))
         on_error = _task_failed if executor is not None else None
         with closing(run_tasks(_run_items, tasks, executor, on_error=on_error)) as done:

@@ -231,11 +231,14 @@ class _Builder:
                 3 * n + 3 * i + 2 for i in range(n)]
             GT = [[GT[k][c] for c in PLANAR_COLUMNS] for k in keep]
             D = [D[k] for k in keep]
-            H, labels, row_contacts = self.planar_selection(normals)
+            selected, labels, row_contacts = self.planar_selection(normals)
         else:
-            H, labels, row_contacts = self.selection(normals)
-        QT = [g + [-x for x in d] for g, d in zip(GT, D, strict=True)]
-        Q = [[_dot_col(h, QT, j) for j in range(model.object_dim + r)] for h in H]
+            selected, labels, row_contacts = self.selection(normals)
+        # Q = H [G^T  -D], row by row from the rows of G^T and D that H selects
+        Q = [_row_times(h, GT, model.object_dim, zero)
+             + [x if x.is_zero() else -x for x in _row_times(h, D, r, zero)]
+             for h in selected]
+        H = _dense(selected, len(GT), zero)
         return Kinematics(ring, self.symbols, GT, D, H, Q, labels, row_contacts, points,
                           normals, axes, origins)
 
@@ -260,82 +263,95 @@ class _Builder:
                     out[ang + a][3 + b] = rot[a][b]
         return out
 
-    def selection(self, normals: list[Vec | None]) -> tuple[Mat, list[str], list[int]]:
-        """H: linear-block rows contact by contact, then angular-block rows; with the
-        rows' labels and contacts."""
+    def selection(self, normals: list[Vec | None]
+                  ) -> tuple[list[SparseRow], list[str], list[int]]:
+        """H: linear-block rows contact by contact, then angular-block rows (each row
+        as its few non-zero entries); with the rows' labels and contacts."""
         n = len(self.model.contacts)
-        zero, one = self.ring.zero(), self.ring.one()
+        one = self.ring.one()
         lin_rows, ang_rows, lin_labels, ang_labels = [], [], [], []
         lin_owner: list[int] = []
         ang_owner: list[int] = []
         for i, c in enumerate(self.model.contacts):
             lin, ang = 3 * i, 3 * n + 3 * i
-            unit = [[one if k == lin + a else zero for k in range(6 * n)] for a in range(3)]
-            unit_ang = [[one if k == ang + a else zero for k in range(6 * n)]
-                        for a in range(3)]
             if c.model == "frictionless":
-                lin_rows.append(_normal_row(normals[i], lin, 6 * n, zero))
+                lin_rows.append(_normal_row(normals[i], lin))
                 lin_labels.append(f"{c.name}: v.n")
             else:
-                lin_rows += unit
+                lin_rows += [[(lin + a, one)] for a in range(3)]
                 lin_labels += [f"{c.name}: v_{a}" for a in "xyz"]
             if c.model == "complete":
-                ang_rows += unit_ang
+                ang_rows += [[(ang + a, one)] for a in range(3)]
                 ang_labels += [f"{c.name}: w_{a}" for a in "xyz"]
             elif c.model == "soft":
-                ang_rows.append(_normal_row(normals[i], ang, 6 * n, zero))
+                ang_rows.append(_normal_row(normals[i], ang))
                 ang_labels.append(f"{c.name}: w.n")
             lin_owner += [i] * (len(lin_rows) - len(lin_owner))
             ang_owner += [i] * (len(ang_rows) - len(ang_owner))
         return lin_rows + ang_rows, lin_labels + ang_labels, lin_owner + ang_owner
 
     def planar_selection(self, normals: list[Vec | None]
-                         ) -> tuple[Mat, list[str], list[int]]:
+                         ) -> tuple[list[SparseRow], list[str], list[int]]:
         """H of a planar system over the components ``(v_x, v_y)`` of every contact,
-        then ``w_z`` of every contact; with the rows' labels and contacts."""
+        then ``w_z`` of every contact (each row as its few non-zero entries); with the
+        rows' labels and contacts."""
         n = len(self.model.contacts)
-        zero, one = self.ring.zero(), self.ring.one()
-
-        def unit(k: int) -> list[Frac]:
-            return [one if j == k else zero for j in range(3 * n)]
-
+        one = self.ring.one()
         lin_rows, ang_rows, labels_lin, labels_ang = [], [], [], []
         lin_owner: list[int] = []
         ang_owner: list[int] = []
         for i, c in enumerate(self.model.contacts):
             if c.model == "frictionless":
-                row = [zero] * (3 * n)
-                row[2 * i], row[2 * i + 1] = normals[i][0], normals[i][1]
-                lin_rows.append(row)
+                lin_rows.append([(2 * i + a, normals[i][a]) for a in range(2)
+                                 if not normals[i][a].is_zero()])
                 labels_lin.append(f"{c.name}: v.n")
                 lin_owner.append(i)
             else:
-                lin_rows += [unit(2 * i), unit(2 * i + 1)]
+                lin_rows += [[(2 * i, one)], [(2 * i + 1, one)]]
                 labels_lin += [f"{c.name}: v_x", f"{c.name}: v_y"]
                 lin_owner += [i, i]
             if c.model == "complete":
-                ang_rows.append(unit(2 * n + i))
+                ang_rows.append([(2 * n + i, one)])
                 labels_ang.append(f"{c.name}: w_z")
                 ang_owner.append(i)
         return lin_rows + ang_rows, labels_lin + labels_ang, lin_owner + ang_owner
 
 
-def _normal_row(normal: Vec, start: int, width: int, zero: Frac) -> list[Frac]:
-    row = [zero] * width
-    for a in range(3):
-        row[start + a] = normal[a]
-    return row
+#: A row of H as its non-zero entries: (column, value) pairs.
+SparseRow = list[tuple[int, Frac]]
 
 
-def _dot_col(h: list[Frac], m: Mat, j: int) -> Frac:
+def _normal_row(normal: Vec, start: int) -> SparseRow:
+    return [(start + a, normal[a]) for a in range(3) if not normal[a].is_zero()]
+
+
+def _dense(rows: list[SparseRow], width: int, zero: Frac) -> Mat:
+    out = []
+    for entries in rows:
+        row = [zero] * width
+        for k, x in entries:
+            row[k] = x
+        out.append(row)
+    return out
+
+
+def _row_times(h: SparseRow, m: Mat, width: int, zero: Frac) -> list[Frac]:
+    """The row ``h m`` (``m`` has ``width`` columns), over the few non-zero entries of
+    ``h`` only: a row of H selects one to three rows of ``G^T -D``, so Q costs its size,
+    not its size times the number of contacts."""
     check("the kinematics (Q)")
-    acc = None
-    for k, hk in enumerate(h):
-        if hk.is_zero() or m[k][j].is_zero():
-            continue
-        term = hk * m[k][j]
-        acc = term if acc is None else acc + term
-    return acc if acc is not None else h[0].ring.zero()
+    support = [(hk, m[k]) for k, hk in h]
+    out = []
+    for j in range(width):
+        acc = None
+        for hk, row in support:
+            x = row[j]
+            if x.is_zero():
+                continue
+            term = hk * x
+            acc = term if acc is None else acc + term
+        out.append(acc if acc is not None else zero)
+    return out
 
 
 def build(model: Model, config: Configuration) -> Kinematics:

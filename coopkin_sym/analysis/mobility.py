@@ -56,6 +56,7 @@ from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import BlockTooLarge, InfeasibleMotion
 from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.bounded import report, run_bounded
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import exact_expr
@@ -129,6 +130,7 @@ class Analysis(Displayable):
     @cached_property
     def kinematics(self) -> kinematics.Kinematics:
         """``G``, ``D``, ``H`` and ``Q`` over the ring of the symbolic variables."""
+        report("the kinematics (G, D, H, Q)")
         return kinematics.build(self.model, self.configuration)
 
     @cached_property
@@ -146,7 +148,9 @@ class Analysis(Displayable):
 
     @cached_property
     def _decomposition(self) -> Decomposition:
-        return decompose(self._q_rows, self.model, self.kinematics.row_contacts,
+        q_rows = self._q_rows
+        report("the ranks and the decomposition of the nullspace")
+        return decompose(q_rows, self.model, self.kinematics.row_contacts,
                          self.ring.zctx)
 
     @property
@@ -512,11 +516,13 @@ class Analysis(Displayable):
         return sp.ImmutableMatrix(out.applyfunc(sp.factor))
 
     def manipulability(self, controlled: Sequence[str] | None = None, length=1,
-                       point: Sequence | None = None):
+                       point: Sequence | None = None, *, timeout: float | None = None):
         """The manipulability ellipsoid of the driven object motions (see
         :mod:`coopkin_sym.analysis.manipulability`): of the components ``controlled``
         (default: the whole twist), angular velocities scaled by ``length``, ``v`` of
-        the object point ``point`` when given.
+        the object point ``point`` when given; ``timeout``: a wall-clock bound in
+        seconds (see :func:`coopkin_sym.exact.bounded.run_bounded`; past it,
+        :class:`~coopkin_sym.errors.TimeLimitReached`).
 
         Example
         -------
@@ -527,7 +533,8 @@ class Analysis(Displayable):
         [1/2, 0],
         [  0, 0]])
         """
-        return manipulability(self, controlled, length, point)
+        return run_bounded(lambda: manipulability(self, controlled, length, point),
+                           timeout, owner="manipulability")
 
     def blocks(self) -> dict[str, sp.Matrix]:
         return {"C11": self.C11, "C12": self.C12, "C22": self.C22, "C23": self.C23}

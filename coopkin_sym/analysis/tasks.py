@@ -26,6 +26,8 @@ from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import Executor, as_completed
 from typing import Any
 
+from coopkin_sym.exact.bounded import report
+
 
 def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor | None, *,
               on_error: Callable[[BaseException], Any] | None = None
@@ -69,40 +71,38 @@ def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor
 
 
 class Progress:
-    """A rich progress bar on stderr (or nothing): ``with Progress(show, total,
-    "sweep", name) as advance: advance(k)``.
+    """The progress of a run of tasks, reported (when ``show``) through
+    :func:`coopkin_sym.exact.bounded.report`: how many of the ``total`` are done,
+    and the share: ``with Progress(show, total, "sweep", name) as advance:
+    advance(k)``. The presentation layer's display shows it.
 
     Example
     -------
-    >>> with Progress(False, 10, "sweep", "case 1") as advance:
-    ...     advance(10)
+    >>> from coopkin_sym.exact.bounded import Reporter, reporting
+    >>> seen = []
+    >>> with reporting(Reporter(lambda step, done: seen.append((step, done)))):
+    ...     with Progress(True, 10, "sweep", "case 1") as advance:
+    ...         advance(4)
+    >>> seen
+    [('the sweep of case 1, 0 of 10 done', 0.0), ('the sweep of case 1, 4 of 10 done', 0.4)]
     """
 
     def __init__(self, show: bool, total: int, what: str, name: str):
         self.show, self.total, self.what, self.name = show, total, what, name
-        self.bar = None
+        self.done = 0
 
     def __enter__(self) -> Callable[[int], None]:
         if not self.show:
             return lambda k: None
-        from rich.console import Console
-        from rich.markup import escape
-        from rich.progress import (
-            BarColumn,
-            MofNCompleteColumn,
-            TextColumn,
-            TimeRemainingColumn,
-        )
-        from rich.progress import Progress as RichProgress
+        report(self._step(), 0.0)
 
-        self.bar = RichProgress(TextColumn(f"{escape(self.what)} {{task.description}}"),
-                                BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
-                                console=Console(stderr=True), transient=True)
-        self.bar.__enter__()
-        task = self.bar.add_task(escape(self.name), total=self.total)
-        return lambda k: self.bar.advance(task, k)
+        def advance(k: int) -> None:
+            self.done += k
+            report(self._step(), self.done / max(self.total, 1))
+        return advance
+
+    def _step(self) -> str:
+        return f"the {self.what} of {self.name}, {self.done:,} of {self.total:,} done"
 
     def __exit__(self, *exc) -> bool:
-        if self.bar is not None:
-            self.bar.__exit__(*exc)
         return False

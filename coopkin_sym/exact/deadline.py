@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 from coopkin_sym.errors import TimeLimitReached
 
-__all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "remaining",
+__all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "kept", "remaining",
            "time_limit"]
 
 
@@ -62,17 +62,19 @@ _CURRENT: contextvars.ContextVar[Bound | None] = contextvars.ContextVar(
 
 
 @contextmanager
-def time_limit(seconds: float | None, owner: str = "") -> Iterator[Bound | None]:
+def time_limit(seconds: float | None, owner: str = "",
+               margin: float = 0.0) -> Iterator[Bound | None]:
     """Run the body under a bound of ``seconds`` (``None``: no new bound), set by
     ``owner`` (see :func:`active`). Inside an outer bound the tighter of the two
-    applies."""
+    applies. With a ``margin`` the bound ends that many seconds early (time left to
+    hand back a partial result), its messages still naming ``seconds``."""
     if seconds is None:
         yield _CURRENT.get()
         return
     now = time.monotonic()
     outer = _CURRENT.get()
-    bound = Bound(now + max(float(seconds), 0.0), float(seconds), now,  # float-ok: time
-                  owner=owner, outer=outer)
+    seconds = float(seconds)  # float-ok: a time
+    bound = Bound(now + max(seconds - margin, 0.0), seconds, now, owner=owner, outer=outer)
     if outer is not None and outer.end < bound.end:
         bound.end, bound.seconds = outer.end, outer.seconds
     token = _CURRENT.set(bound)
@@ -107,6 +109,16 @@ def remaining() -> float | None:
     """Seconds left under the current bound (``None`` without one)."""
     bound = _CURRENT.get()
     return None if bound is None else bound.end - time.monotonic()
+
+
+def kept() -> object:
+    """What the current bound, or the nearest enclosing one, keeps (None: nothing)."""
+    bound = _CURRENT.get()
+    while bound is not None:
+        if bound.kept is not None:
+            return bound.kept
+        bound = bound.outer
+    return None
 
 
 def keep(value: object) -> None:

@@ -230,7 +230,7 @@ def joint_motion_words(qdot, names: Sequence[str]) -> str:
         return f"joints {moving[0][0]} and {moving[1][0]} at equal speed"
     if len(moving) == 2 and field.is_zero(moving[0][1] + moving[1][1]):
         return f"joints {moving[0][0]} and {moving[1][0]} at opposite speeds"
-    if _too_big(q):
+    if _too_big([e for e, xe in zip(q, x, strict=True) if not field.is_zero(xe)]):
         return f"joints {', '.join(n for n, _ in moving)} together"
     parts = ", ".join(f"{n}: {field.text(e)}" for n, e in moving)
     if len(parts) > _MAX_VALUE:

@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.search import compute_locus
-from coopkin_sym.cli import _alarm, app
+from coopkin_sym.cli import app
 from coopkin_sym.errors import CoopkinError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import elimination as el
@@ -99,22 +99,27 @@ def test_cli_locus_timeout_exits_with_one_line(tmp_path):
     path.write_text(json.dumps(spatial_hand(24, 8)))
     result = runner.invoke(app, ["locus", str(path), "-o", str(tmp_path / "r.md"),
                                  "--timeout", "0.5", "--no-progress"])
-    assert result.exit_code == 2
-    assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached")
+    assert result.exit_code == 3                  # cut by the bound, not bad input
+    assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached during ")
+    assert result.stderr.endswith("; nothing written\n")
     assert result.stderr.count("\n") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hand.json"]
 
 
-def test_the_alarm_backstop_interrupts_code_outside_the_checks():
+def test_code_outside_the_checks_is_ended_at_the_bound():
+    from coopkin_sym.exact.bounded import report, run_bounded
+
+    def endless():
+        report("a loop without checks")
+        while True:          # pure Python: no check() here
+            time.sleep(0.01)
+
     start = time.monotonic()
-    with pytest.raises(TimeLimitReached, match="outside the exact layer"):
-        with _alarm(0.1):
-            while True:          # pure Python: no check() here
-                time.sleep(0.01)
-    assert 2.0 <= time.monotonic() - start < 4.0
-    with _alarm(5.0):
-        pass                      # a quick body: the alarm is cancelled
-    time.sleep(0.01)
+    with pytest.raises(TimeLimitReached) as caught:
+        run_bounded(endless, 0.5)
+    assert time.monotonic() - start < 0.5 * 1.1 + 0.3
+    assert str(caught.value) == "time bound of 0.5 s reached during a loop without checks"
+    assert caught.value.hard
 
 
 # ------------------------------------------------------------------ Ctrl-C
@@ -157,3 +162,25 @@ def test_ctrl_c_stops_within_a_second_with_one_line(tmp_path, command):
     assert err == "coopkin: interrupted\n"
     assert took < 1.5
     assert list(out.iterdir()) == []             # nothing partial left
+
+
+def test_a_bound_reached_in_the_locked_locus_keeps_the_main_one(monkeypatch):
+    """The locus with the motors held still is searched last, under the same bound;
+    cut there, the locus handed back is the system's own (with what was cut), not the
+    locked one the inner search had registered."""
+    from coopkin_sym.analysis.locus import search
+
+    original = search.compute_locus
+
+    def cut_when_locked(system, *args, **kwargs):
+        if getattr(system, "locked", None):           # the locked model
+            deadline.keep("the locked locus, unfinished")
+            raise TimeLimitReached(60.0, "the locked locus")
+        return original(system, *args, **kwargs)
+
+    monkeypatch.setattr(search, "compute_locus", cut_when_locked)
+    result = original(load("five-bar"), timeout=60.0)
+    assert result.system == "five-bar linkage with passive elbows"
+    assert result.locked is None and result.components
+    assert [u["where"] for u in result.unexplored if u.kind == "time_whole_run"] == [
+        "the locked locus"]

@@ -27,6 +27,7 @@ from typing import Any
 
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.exact.bounded import report
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
@@ -34,16 +35,15 @@ __all__ = ["Place", "Progress", "SearchContext"]
 
 
 class Progress:
-    """Where the search stands, as a share of the work, and a rich progress bar on
-    standard error when ``enabled``.
+    """Where the search stands, as a share of the work, reported (when ``enabled``)
+    through :func:`coopkin_sym.exact.bounded.report` for the caller's display.
 
     The work is a tree: :meth:`parts` splits the current part into ``n`` equal parts
     (the factors at one depth, the slices at q = pi), :meth:`step` moves to the next
     one, and a part split further (a component searched inside) shares its own span
     among its parts. ``done`` (an exact fraction) is the start of the current part:
     it only grows, reaches 1 only when the search ends, and moves while long steps
-    run deep in the tree. ``text`` is the current step. The bar shows both, with the
-    time elapsed.
+    run deep in the tree. ``text`` is the current step. Each change is reported.
 
     Example
     -------
@@ -63,13 +63,11 @@ class Progress:
     Fraction(1, 1)
     """
 
-    #: Units of the bar (the share done is shown in whole units of it).
+    #: Units of the share reported (it is reported in whole units of it).
     UNITS = 10_000
 
     def __init__(self, enabled: bool):
         self.enabled = enabled
-        self._progress = None
-        self._task = None
         self.done = Fraction(0)
         self.text = "locus"
         # per level: [start, width, bounds of its parts (0 .. total weight), index
@@ -77,32 +75,11 @@ class Progress:
         self._levels: list[list] = [[Fraction(0), Fraction(1), [0, 1], 0, self.text]]
 
     def __enter__(self):
-        if self.enabled:
-            from rich.progress import (  # optional, at use
-                BarColumn,
-                SpinnerColumn,
-                TaskProgressColumn,
-                TextColumn,
-                TimeElapsedColumn,
-            )
-            from rich.progress import Progress as RichProgress
-            from rich.table import Column
-
-            # a description of fixed width, so that the bar keeps its place
-            text = TextColumn("{task.description}",
-                              table_column=Column(width=44, no_wrap=True, overflow="ellipsis"))
-            self._progress = RichProgress(SpinnerColumn(), text,
-                                          BarColumn(), TaskProgressColumn(),
-                                          TimeElapsedColumn(), transient=True)
-            self._progress.__enter__()
-            self._task = self._progress.add_task(self.text, total=self.UNITS)
         return self
 
     def __exit__(self, *exc):
         self.done = Fraction(1)
-        if self._progress is not None:
-            self._show()
-            self._progress.__exit__(*exc)
+        self._show()
 
     def _part(self) -> tuple[Fraction, Fraction]:
         """Start and width of the current part."""
@@ -143,9 +120,8 @@ class Progress:
         self._show()
 
     def _show(self) -> None:
-        if self._progress is not None:
-            units = int(self.done * self.UNITS)   # floor: full only when done is 1
-            self._progress.update(self._task, completed=units, description=self.text)
+        if self.enabled:   # the share in whole units: full only when done is 1
+            report(self.text, int(self.done * self.UNITS) / self.UNITS)
 
 
 @dataclass

@@ -124,7 +124,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         Seconds after which no new component is explored (the report says what was
         left out).
     progress
-        Show a progress bar on standard error.
+        Report the steps of the search and the share done (see
+        :func:`coopkin_sym.exact.bounded.report`; the caller's display shows them, as
+        ``System.locus(progress=True)`` and ``coopkin locus`` do).
     free
         The joints to keep free (names); the others not set in ``at`` stay at home
         (q = 0, d = 0). Default: every joint not set in ``at``.
@@ -198,8 +200,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     if model.passive_joints and not model.locked:
         # where the passive-joint numbers change: the locus of the locked system
         left = None if timeout is None else max(0.0, timeout - (time.monotonic() - started))
-        locus.locked = compute_locus(model.with_actuators_locked(), at, max_depth, left,
-                                     progress, free, pi_size)
+        try:
+            locus.locked = compute_locus(model.with_actuators_locked(), at, max_depth,
+                                         left, progress, free, pi_size)
+        finally:  # cut inside it: what is kept is this locus, not the locked one
+            deadline.keep(locus)
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 

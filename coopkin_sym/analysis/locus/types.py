@@ -384,3 +384,25 @@ def cut_short(bound, exc: TimeLimitReached) -> Locus:
                                       where=exc.where))
     locus.seconds = round(time.monotonic() - bound.started, 3)
     return locus
+
+
+def ended_at_bound(exc: TimeLimitReached) -> Locus | None:
+    """The locus of a search ended at its bound inside a step that cannot be
+    interrupted (``exc.hard``; see :func:`coopkin_sym.exact.bounded.run_bounded`): the
+    last copy of it the search kept, with the cut said in :attr:`Locus.unexplored`;
+    None when there is none (the bound came before the generic numbers).
+
+    Example
+    -------
+    >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
+    >>> exc = TimeLimitReached(5.0, "a resultant", hard=True)
+    >>> exc.kept = Locus("case 1", ["t_q1", "t_q2"], "L=1", generic)
+    >>> [u.kind for u in ended_at_bound(exc).unexplored]
+    ['time_whole_run']
+    """
+    locus = getattr(exc, "kept", None)
+    if not (exc.hard and isinstance(locus, Locus)):
+        return None
+    locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
+                                      where=exc.where))
+    return locus

@@ -72,6 +72,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks
 from coopkin_sym.analysis.sweep import Value, compile_system
 from coopkin_sym.errors import VerifyError
 from coopkin_sym.exact.angles import cotangent_name, tangent_name
+from coopkin_sym.exact.bounded import report, run_bounded
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import POLYNOMIALS, PolyMatrix
 from coopkin_sym.exact.parse import (
@@ -667,7 +668,8 @@ class _Checker:
 # --- the checks -------------------------------------------------------------------------
 def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
                  values: Mapping[str, Sequence] | None = None, max_points: int = 50_000,
-                 lines: int = 12, seed: int = 0) -> Verification:
+                 lines: int = 12, seed: int = 0,
+                 timeout: float | None = None) -> Verification:
     """Check ``locus`` against ``system`` exactly, independently of the search.
 
     Parameters
@@ -690,6 +692,10 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
         Random rational lines to check.
     seed
         Seed of the lines (the grid is exhaustive).
+    timeout
+        Wall-clock bound in seconds (see
+        :func:`coopkin_sym.exact.bounded.run_bounded`); past it,
+        :class:`~coopkin_sym.errors.TimeLimitReached` names the step.
 
     Returns
     -------
@@ -706,6 +712,10 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     >>> v.ok, v.grid_points, v.lines
     (False, 100, 2)
     """
+    if timeout is not None:
+        return run_bounded(lambda: verify_locus(system, locus, at=at, values=values,
+                                                max_points=max_points, lines=lines,
+                                                seed=seed), timeout, owner="verify")
     started = time.monotonic()
     model: Model = model_of(system).in_base_frame()  # numbers only
     if max_points < 1:
@@ -730,10 +740,13 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     for i, claim in enumerate(checker.claims):
         if claim == checker.generic:
             state.issue(i, "generic-numbers", None, claim)
+    report("the witnesses")
     _check_witnesses(checker, state)
+    report("the grid", 0.0)
     _check_grid(checker, state, used)
     rng = random.Random(seed)
     for k in range(lines):
+        report(f"the random line {k + 1} of {lines}", (k + 1) / (lines + 1))
         _check_line(checker, state, used, rng, k)
     result.lines = lines
     result.witnesses_checked = len(state.witnessed)

@@ -97,7 +97,8 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
         executor such as ``distributed.Client(...).get_executor()``): chunks of
         points are mapped over it as plain data; the result is the serial one.
     progress
-        Show a progress bar (on stderr).
+        Report the points done (see :func:`coopkin_sym.exact.bounded.report`; the
+        caller's display shows them, as ``System.sweep(progress=True)`` does).
     chunk
         Points per task.
     prime
