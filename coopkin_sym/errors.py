@@ -131,6 +131,17 @@ class MissingDependency(ImportError, CoopkinError):
     """
 
 
+class WorkerFailed(RuntimeError, CoopkinError):
+    """The process a bounded computation ran in ended without an answer (killed from
+    outside, or out of memory); the message names the computation and the exit code.
+
+    Example
+    -------
+    >>> str(WorkerFailed("the worker process of a locus stopped without an answer"))
+    'the worker process of a locus stopped without an answer'
+    """
+
+
 class NumberError(ValueError, CoopkinError):
     """A number, angle or expression that is not exact or cannot be read.
 

@@ -153,6 +153,7 @@ PROTOCOL_RAISES = {
         "caught by write_files, which raises the caller's package error",
     ("coopkin_sym.cli", "KeyboardInterrupt", "_interrupted"): "Ctrl-C unwinds the command",
     ("coopkin_sym.cli", "Exit", "*"): "the command's exit status (typer)",
+    ("coopkin_sym.cli", "SystemExit", "_terminated"): "SIGTERM/SIGHUP: exit 128 + signal",
 }
 #: An internal invariant: raised only by a bug, never by input.
 INVARIANT = "AssertionError"

@@ -31,7 +31,7 @@ from typer.testing import CliRunner
 
 from coopkin_sym import load
 from coopkin_sym.cli import TIME_BOUND_EXIT, app
-from coopkin_sym.errors import ModelError, TimeLimitReached
+from coopkin_sym.errors import ModelError, TimeLimitReached, WorkerFailed
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.bounded import deliver, report, run_bounded
 from coopkin_sym.model.builders import spatial_hand
@@ -388,3 +388,12 @@ def test_a_verification_within_its_bound_gives_its_verdict(tmp_path):
     assert free.exit_code == bounded.exit_code == 0, bounded.output
     assert bounded.stdout.startswith("Verification: passed")
     assert bounded.stdout.split("\n")[0] == free.stdout.split("\n")[0]
+
+
+def test_a_worker_that_dies_without_an_answer_is_a_package_error():
+    from coopkin_sym.exact.bounded import run_bounded
+
+    with pytest.raises(WorkerFailed) as info:
+        run_bounded(lambda: os._exit(7), 30, owner="a test")
+    assert str(info.value) == ("the worker process of a test stopped without an answer "
+                               "(exit code 7)")

@@ -58,7 +58,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any, TypeVar
 
-from coopkin_sym.errors import TimeLimitReached
+from coopkin_sym.errors import TimeLimitReached, WorkerFailed
 from coopkin_sym.exact import deadline
 
 __all__ = ["Reporter", "TimeLimitReached", "deliver", "report", "reporting",
@@ -218,7 +218,7 @@ def _run_in_child(work, seconds: float | None, owner: str, progress, output,
                 kind, payload = receive.recv()
             except EOFError:
                 child.join(1.0)
-                raise RuntimeError(f"the worker process of {owner or 'a bounded run'} "
+                raise WorkerFailed(f"the worker process of {owner or 'a bounded run'} "
                                    f"stopped without an answer (exit code "
                                    f"{child.exitcode})") from None
             if kind == "step":
