@@ -588,8 +588,11 @@ def verify_report(
             raise ReportError(f"{report}: {exc}") from None
         try:
             locus = locus_from_json(text)
-        except ValueError as exc:
-            raise ReportError(f"{report}: not a locus report ({exc})") from None
+        except ValueError as exc:   # one line per problem, each naming the file once
+            lead = "not a locus report"
+            lines = [line if line.startswith(lead) else f"{lead}: {line}"
+                     for line in (str(exc).splitlines() or [lead])]
+            raise ReportError("\n".join(f"{report}: {line}" for line in lines)) from None
     except (*USER_ERRORS, ReportError) as exc:
         _fail(str(exc))
 

@@ -539,9 +539,8 @@ def test_verify_command_on_mutated_reports(tree):
     check_verify(json.dumps(tree, default=str))
 
 
-@pytest.mark.xfail(strict=True, reason="cli verify wraps the report's problems in "
-                   "'FILE: not a locus report (not a locus report: ...)', the parenthesis "
-                   "open over several lines")
+# cli verify wrapped the report's problems in 'FILE: not a locus report (not a locus
+# report: ...)', the parenthesis open over several lines
 def test_verify_names_the_file_and_the_entry_once_per_problem():
     tree = copy.deepcopy(REAL_REPORT)
     tree["components"][0]["equations"][0] = "1/t_q1"
