@@ -52,6 +52,7 @@ from coopkin_sym.errors import (
     ModelError,
     NumberError,
     OutputSkipped,
+    SkippedForTime,
     TimeLimitReached,
 )
 
@@ -112,10 +113,13 @@ def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=N
 def _notes():
     """Print every part of an output left out (an
     :class:`~coopkin_sym.errors.OutputSkipped` warning) on stderr, one
-    ``coopkin: note: ...`` line each, once the block has run; other warnings pass on."""
+    ``coopkin: note: ...`` line each, once the block has run; other warnings pass on.
+    Yields a list that then holds the notes' kinds (the warning classes)."""
+    kinds: list[type] = []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", OutputSkipped)
-        yield
+        yield kinds
+    kinds.extend(w.category for w in caught)
     for w in caught:
         if issubclass(w.category, OutputSkipped):
             typer.echo(f"coopkin: note: {w.message}", err=True)
@@ -438,23 +442,32 @@ def locus(
                            certify_timeout, verify)
 
     loaded: list = []
+    started = _STARTED[0] if _STARTED[0] is not None else time.monotonic()
+    # the search has a share of the bound, the report the rest: its text first, then
+    # its pictures while time is left (those left out are said)
+    search = None if timeout is None else timeout * SEARCH_SHARE
     try:
         try:
-            result, checked, checked_locked, cut = _bounded(work, timeout, "locus",
+            result, checked, checked_locked, cut = _bounded(work, search, "locus",
                                                             no_progress,
                                                             output=loaded.append)
         except TimeLimitReached as exc:  # ended at the bound: the last copy kept
-            result, checked, checked_locked, cut = _ended_locus(exc, loaded), None, \
-                None, exc
+            cut = _in_command_bound(exc, timeout)
+            result, checked, checked_locked = _ended_locus(cut, loaded), None, None
         system, pairs = loaded[0]
         shown = verification_json(checked) if checked else None
         if shown is not None and checked_locked is not None:
             shown["locked"] = verification_json(checked_locked)
-        with _notes():
+        until = None if timeout is None else started + timeout
+        with _notes() as notes:
             written = write_report(result, output, system, pairs=pairs,
-                                   verification=shown)
+                                   verification=shown, pictures_until=until)
+        if cut is None and SkippedForTime in notes:
+            cut = TimeLimitReached(timeout, "the pictures of the report")
+        elif cut is not None:
+            cut = _in_command_bound(cut, timeout)
     except TimeLimitReached as exc:
-        _cut(exc, "nothing written")
+        _cut(_in_command_bound(exc, timeout), "nothing written")
     except (*USER_ERRORS, LocusError, ReportError) as exc:
         _fail(str(exc))
     real = sum(1 for c in result.components if c.real)
@@ -469,11 +482,27 @@ def locus(
                    f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
                    f"; {lk.completeness()}")
     if cut is not None:
-        _cut(cut, f"the report says what was not explored; wrote {files}")
+        pictures = len(written) - 1
+        also = f" and {pictures} picture{'' if pictures == 1 else 's'}" if pictures else ""
+        _cut(cut, f"the report says what was not explored; wrote {written[0]}{also}")
     if checked is not None:
         if checked_locked is not None:
             _echo_locked(checked_locked, checked)
         _echo_verification(checked)
+
+
+#: The share of ``coopkin locus --timeout`` given to the search (and its certificate and
+#: verification); the report has the rest.
+SEARCH_SHARE = 0.8
+
+
+def _in_command_bound(exc: TimeLimitReached, timeout: float | None) -> TimeLimitReached:
+    """``exc`` told with the command's bound (the search ran under a share of it)."""
+    if timeout is None or exc.seconds == timeout:
+        return exc
+    told = TimeLimitReached(timeout, exc.where, hard=exc.hard)
+    told.kept = getattr(exc, "kept", None)
+    return told
 
 
 def _ended_locus(exc: TimeLimitReached, loaded: list):

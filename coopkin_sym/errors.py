@@ -462,3 +462,15 @@ class OutputSkipped(UserWarning):
     >>> caught[0].category.__name__, str(caught[0].message)
     ('OutputSkipped', 'no plot: nothing to show')
     """
+
+
+class SkippedForTime(OutputSkipped):
+    """A part of an output left out because the time bound was reached (the pictures
+    of a locus report not drawn in the time left); ``coopkin`` prints it as a note and
+    the run counts as cut by its bound.
+
+    Example
+    -------
+    >>> issubclass(SkippedForTime, OutputSkipped)
+    True
+    """

@@ -22,6 +22,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import cached_property
 
 import sympy as sp
 
@@ -123,16 +124,26 @@ class NamedPolynomial:
     def to_sympy(self, symbols: Mapping[str, sp.Symbol] | None = None) -> sp.Expr:
         """The polynomial as a SymPy expression (symbols by name, created when not
         given)."""
+        if not symbols or not any(v in symbols for v in self.variables):
+            return self._expression
+        return self._build_sympy(symbols)
+
+    def _build_sympy(self, symbols: Mapping[str, sp.Symbol] | None) -> sp.Expr:
         syms = [symbols[v] if symbols and v in symbols else sp.Symbol(v)
                 for v in self.variables]
         return sp.Add(*[to_sympy(c) * sp.Mul(*[s**e for s, e in zip(syms, exps,
                                                                     strict=True)])
                         for exps, c in self.terms])
 
-    @property
+    @cached_property
+    def _expression(self) -> sp.Expr:
+        """The SymPy expression with plain symbols, built once (it is immutable)."""
+        return self._build_sympy(None)
+
+    @cached_property
     def text(self) -> str:
-        """The polynomial as text (SymPy's printing)."""
-        return sp.sstr(self.to_sympy())
+        """The polynomial as text (SymPy's printing), printed once."""
+        return sp.sstr(self._expression)
 
     def is_zero(self) -> bool:
         return not self.terms

@@ -140,7 +140,11 @@ def _equations(c: Component, names: tuple[str, ...]) -> list[sp.Expr]:
 
 
 def _free(c: Component, names: tuple[str, ...]) -> set[str]:
-    return {str(s) for e in _equations(c, names) for s in e.free_symbols}
+    """The variables the component's equations use."""
+    try:
+        return {v for p in c.equation_polynomials(names) for v in p.variables}
+    except NumberError as exc:
+        raise PlotError(str(exc)) from None
 
 
 def _joints_in(c: Component, kinds: _Kinds, names: tuple[str, ...]) -> dict[str, str]:

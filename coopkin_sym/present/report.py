@@ -31,6 +31,7 @@ import io
 import json
 import os
 import re
+import time
 import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -43,7 +44,7 @@ from coopkin_sym.analysis.classes import CLASS_NUMBERS, grasp_classes
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
-from coopkin_sym.errors import DrawError, OutputSkipped, ReportError
+from coopkin_sym.errors import DrawError, OutputSkipped, ReportError, SkippedForTime
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
@@ -1201,7 +1202,8 @@ def _system_caption(locus: Locus, k: int, comp: Component, at: Mapping[str, str]
             f"there ({counts}).")
 
 
-def _system_pictures(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, ...], bytes]:
+def _system_pictures(locus: Locus, system: Any, dpi: int,
+                     clock: _PictureClock | None = None) -> dict[tuple[str, ...], bytes]:
     """The system drawn at the witness of every real component (the first
     :data:`MAX_SYSTEM_PICTURES`), each with a motion gained there (see
     :func:`~coopkin_sym.present.draw.gained_motion`); a note
@@ -1216,7 +1218,11 @@ def _system_pictures(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, ...
         _skipped(f"pictures of the system at {len(chosen) - MAX_SYSTEM_PICTURES} more "
                  f"components left out (at most {MAX_SYSTEM_PICTURES})")
     out: dict[tuple[str, ...], bytes] = {}
-    for k in chosen[:MAX_SYSTEM_PICTURES]:
+    for drawn, k in enumerate(chosen[:MAX_SYSTEM_PICTURES]):
+        if clock is not None and not clock.time_for_one_more():
+            _skipped(f"pictures of the system at {len(chosen[:MAX_SYSTEM_PICTURES]) - drawn} "
+                     f"more components left out: the time bound was reached", SkippedForTime)
+            break
         comp = locus.components[k]
         at, exact = _witness_point(comp)
         motion = gained_motion(comp.numbers, locus.generic)
@@ -1243,9 +1249,27 @@ def _system_pictures(locus: Locus, system: Any, dpi: int) -> dict[tuple[str, ...
     return out
 
 
-def _skipped(text: str) -> None:
+class _PictureClock:
+    """Whether there is time for one more picture before ``until`` (a
+    ``time.monotonic()`` value; None: always): the next one is taken to last as long
+    as the longest drawn so far, so that the last one ends before the bound."""
+
+    def __init__(self, until: float | None):
+        self.until = until
+        self.longest = 0.0
+        self.started: float | None = None
+
+    def time_for_one_more(self) -> bool:
+        now = time.monotonic()
+        if self.started is not None:
+            self.longest = max(self.longest, now - self.started)
+        self.started = now
+        return self.until is None or now + self.longest < self.until
+
+
+def _skipped(text: str, kind: type[OutputSkipped] = OutputSkipped) -> None:
     """Say that a part of the report is left out (shown by ``coopkin`` on stderr)."""
-    warnings.warn(text, OutputSkipped, stacklevel=3)
+    warnings.warn(text, kind, stacklevel=3)
 
 
 def _no_pairs(locus: Locus) -> str:
@@ -1263,13 +1287,21 @@ def _png_name(stem: str, pair: tuple[str, str]) -> str:
 
 
 def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
-           dpi: int) -> tuple[dict[tuple[str, str], bytes], str | None]:
+           dpi: int, until: float | None = None
+           ) -> tuple[dict[tuple[str, str], bytes], str | None]:
     try:
         chosen = pairs if pairs is not None else default_pairs(locus, system)
         if not chosen:
             _skipped(f"no plot of the components: {_no_pairs(locus)}")
-        pngs = {p: plot_png(locus, system, p, dpi=dpi) for p in chosen}
-        pngs.update(_system_pictures(locus, system, dpi))
+        pngs = {}
+        clock = _PictureClock(until)
+        for k, p in enumerate(chosen):
+            if not clock.time_for_one_more():
+                _skipped(f"plots of {len(chosen) - k} more pairs of joints left out: the "
+                         f"time bound was reached", SkippedForTime)
+                break
+            pngs[p] = plot_png(locus, system, p, dpi=dpi)
+        pngs.update(_system_pictures(locus, system, dpi, clock))
         return pngs, None
     except PlotError as exc:
         if "matplotlib" in str(exc) and pairs is None:  # pragma: no cover
@@ -1280,7 +1312,8 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
 
 def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
                  pairs: Sequence[str | Sequence[str]] | None = None,
-                 dpi: int = 110, verification: Mapping | None = None) -> list[Path]:
+                 dpi: int = 110, verification: Mapping | None = None,
+                 pictures_until: float | None = None) -> list[Path]:
     """Write the report in the format of ``path``'s suffix (``.md``, ``.html``,
     ``.tex``, ``.json``), with a PNG per joint pair next to it
     (``<stem>_<qi>_<qj>.png``; none for JSON). Everything is rendered first and
@@ -1306,6 +1339,9 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     verification
         A verification (:meth:`~coopkin_sym.analysis.locus.verify.Verification.to_json`) to
         add to a JSON report.
+    pictures_until
+        A ``time.monotonic()`` value after which no more plot or picture is drawn (the
+        ones left out are said); None: all of them.
 
     Example
     -------
@@ -1322,7 +1358,7 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     if fmt == "json":
         files[target] = render_json(locus, verification).encode()
     else:
-        pngs, problem = _plots(locus, system, chosen, dpi)
+        pngs, problem = _plots(locus, system, chosen, dpi, pictures_until)
         if problem:
             locus = Locus(**{**locus.__dict__, "notes": [*locus.notes, problem]})
         names = {p: _png_name(target.stem, p) for p in pngs}
