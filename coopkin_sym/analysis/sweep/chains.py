@@ -32,6 +32,7 @@ Example
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -161,8 +162,8 @@ class Field:
     def const(self, terms: Terms) -> Any:  # pragma: no cover - abstract
         raise NotImplementedError
 
-    def red(self, x: Any) -> Any:
-        return x
+    #: Applied to every entry computed (the identity, or reduction modulo a prime).
+    red = staticmethod(operator.pos)
 
     def revolute(self, a: int, b: int) -> tuple[Any, Any]:
         """``(cos q, sin q)`` for ``tan(q/2) = a/b``."""
@@ -186,9 +187,7 @@ class ModularField(Field):
     def __init__(self, p: int, params: Sequence[int] = ()):
         self.p = p
         self.params = list(params)
-
-    def red(self, x: int) -> int:
-        return x % self.p
+        self.red = p.__rmod__              # x -> x % p
 
     def ratio(self, a: int, b: int) -> int:
         if b % self.p == 0:
@@ -339,15 +338,14 @@ class ChainQ:
                     rp = _vec(rot, point, red)
                     origins[col] = [red(rp[i] + trans[i]) for i in range(3)]
                 if spec["kind"] == "revolute":
+                    # x -> R (Rj (x - o) + o) + t = (R Rj) x + (current o) - (R Rj) o
                     c, s = value
                     v = one - c
                     turn = [[red((one if i == j else zero) + s * k[i][j] + v * k2[i][j])
                              for j in range(3)] for i in range(3)]
-                    tp = _vec(turn, point, red)
-                    step = [red(point[i] - tp[i]) for i in range(3)]
-                    trans = [red(x + y) for x, y in zip(_vec(rot, step, red), trans,
-                                                        strict=True)]
                     rot = _mat(rot, turn, red)
+                    moved = _vec(rot, point, red)
+                    trans = [red(o - x) for o, x in zip(origins[col], moved, strict=True)]
                 else:
                     trans = [red(trans[i] + value * axes[col][i]) for i in range(3)]
                 arm_poses.append((rot, trans))

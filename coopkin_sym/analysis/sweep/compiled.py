@@ -561,6 +561,15 @@ def _joints_of(model: Model) -> tuple[tuple[str, ...], tuple[str, ...]]:
     return hit[1], hit[2]
 
 
+def _ratio(x) -> tuple[int, int]:
+    """Numerator and denominator of an exact rational (SymPy or ``int``)."""
+    if isinstance(x, int):
+        return x, 1
+    if not getattr(x, "is_Rational", False):
+        x = sp.Rational(x)
+    return int(x.p), int(x.q)
+
+
 def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, int, int]] | None:
     """``m`` and the exact ranks of ``Q``, ``H G^T`` and ``H D`` at a configuration
     that gives every joint a value, on the compiled path: ``Q`` compiled once (all
@@ -588,8 +597,7 @@ def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, in
             if value is None:                         # home
                 pairs.append((0, 1))
                 continue
-            c, s = (sp.Rational(x) for x in value)
-            cp, cq, sp_, sq = int(c.p), int(c.q), int(s.p), int(s.q)
+            (cp, cq), (sp_, sq) = (_ratio(x) for x in value)
             if cp == -cq:                             # q = pi
                 pairs.append((1, 0))
             else:                                     # tan(q/2) = s / (1 + c)
