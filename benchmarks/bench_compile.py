@@ -159,7 +159,7 @@ def bench_second_call(quick: bool, log=print) -> list[dict]:
 
 def bench_points(quick: bool, log=print) -> list[dict]:
     joints, count = (5, 100) if quick else (7, 1000)
-    cap = 300.0 if quick else 1800.0
+    cap = 300.0 if quick else 600.0
     log(f"  {count} configurations of a {joints}R arm: ours ...")
     ours = run_stages(stages_ours, (joints, count), ["points"], cap)["points"]
     log(f"  {count} configurations of a {joints}R arm: float pipeline (cap {cap:g} s) ...")

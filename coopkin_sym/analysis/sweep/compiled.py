@@ -38,6 +38,7 @@ from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import time_limit
 from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
 )
@@ -319,12 +320,13 @@ class Compiled:
         evaluation cannot give, the sweep's batch polynomials and generic ranks that
         the sizes do not certify)."""
         kin = kinematics.build(self.model, self.base)
-        return kin, [kin.ring.clear_row(row) for row in kin.Q]
+        return kin, ClearedRows(kin.ring, kin.Q)      # each row cleared when used
 
     def _expansion(self) -> dict:
         """The homogenized integer polynomials of ``Q`` evaluated modulo a prime at a
         whole batch of points by :func:`~coopkin_sym.analysis.sweep.run.sweep`."""
-        kin, rows = self._symbolic
+        kin, cleared = self._symbolic
+        rows = list(cleared)
         ring, joints, n, dim, prime = kin.ring, self.joints, self.n, self.dim, self.prime
         var_of = {}
         for j, kind in zip(joints, self.kinds, strict=True):
