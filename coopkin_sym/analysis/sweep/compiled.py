@@ -44,8 +44,11 @@ from coopkin_sym.model.configuration import (
 )
 from coopkin_sym.model.model import Model, model_of
 
-
 # --- compilation ----------------------------------------------------------------------
+#: The prime of the point analysis' modular ranks (``2**61 - 1``).
+POINT_PRIME = 2**61 - 1
+
+
 class _Exact:
     """Exact ranks of ``Q`` at points, in one process, from :mod:`.chains` (the product
     of exponentials evaluated at each point; nothing is expanded).
@@ -64,6 +67,7 @@ class _Exact:
         self.chain = chains.ChainQ(plan["chain"])
         names = plan["chain"]["params"]
         self.modular = chains.ModularField(POINT_PRIME, plan["point_params"])
+        self._other: chains.ModularField | None = None
         self.field = chains.PolynomialField(names) if names else chains.RationalField()
         self.ctx = (flint.fmpz_mpoly_ctx.get(tuple(names), "degrevlex") if names
                     else None)
@@ -76,24 +80,31 @@ class _Exact:
         them has exactly those ranks (a rank modulo p is at most the rank over Q, which
         is at most the generic rank); the others are ranked exactly.
         """
+        return self.certified_ranks(pairs, generic)[0]
+
+    def certified_ranks(self, pairs: Sequence[tuple[int, int]],
+                        generic: tuple[int, int, int] | None = None,
+                        prime: int = 0) -> tuple[tuple[int, int, int], bool]:
+        """:meth:`ranks` and whether the point was ranked exactly (not certified by
+        its ranks modulo ``prime``, by default :data:`POINT_PRIME`)."""
         if self.m == 0:
-            return 0, 0, 0
+            return (0, 0, 0), False
         if generic is not None:
+            field = self.modular if prime in (0, POINT_PRIME) else self._field_modulo(prime)
             try:
-                rows = self.chain.rows(self.modular, pairs)
+                rows = self.chain.rows(field, pairs)
             except chains.Unlucky:
                 rows = None
-            if rows is not None and self._generic_modulo(rows, generic):
-                return generic
+            if rows is not None and self._generic_modulo(rows, generic, field.p):
+                return generic, False
+        return self._exact_ranks(pairs), True
+
+    def _exact_ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
         rows = self.chain.rows(self.field, pairs)
         if self.ctx is not None:
             cleared = [_cleared_polynomials(row, self.ctx) for row in rows]
             return ranks_of_q(PolyMatrix(cleared, self.n, context=self.ctx), dim=self.dim)
         return self._split_ranks(chains.integer_rows(rows), flint.fmpz_mat)
-
-    def modular_ranks(self, rows: list[list[int]]) -> tuple[int, int, int]:
-        """The three ranks of rows of residues modulo :data:`POINT_PRIME`."""
-        return self._split_ranks(rows, lambda block: flint.nmod_mat(block, POINT_PRIME))
 
     def _split_ranks(self, rows, matrix) -> tuple[int, int, int]:
         dim = self.dim
@@ -104,11 +115,16 @@ class _Exact:
                  for block, c0, c1 in self.arm_blocks)
         return rq, rg, rd
 
-    def _generic_modulo(self, rows: list[list[int]], generic: tuple[int, int, int]
-                        ) -> bool:
-        """Whether the ranks of ``Q`` modulo :data:`POINT_PRIME` (``rows``) are the
-        generic ones."""
-        p, dim = POINT_PRIME, self.dim
+    def _field_modulo(self, prime: int) -> chains.ModularField:
+        if self._other is None or self._other.p != prime:
+            self._other = chains.ModularField(prime, [v % prime for v in
+                                                      self.modular.params])
+        return self._other
+
+    def _generic_modulo(self, rows: list[list[int]], generic: tuple[int, int, int],
+                        p: int = POINT_PRIME) -> bool:
+        """Whether the ranks of ``Q`` modulo ``p`` (``rows``) are the generic ones."""
+        dim = self.dim
         if flint.nmod_mat(rows, p).rank() != generic[0]:
             return False
         if flint.nmod_mat([row[:dim] for row in rows], p).rank() != generic[1]:
@@ -126,9 +142,6 @@ def _cleared_polynomials(row: Sequence, ctx) -> list:
     return [ctx.from_dict({e: int(c.p) * (scale // int(c.q)) for e, c in d.items()})
             for d in dicts]
 
-
-#: The prime of the point analysis' modular ranks (``2**61 - 1``).
-POINT_PRIME = 2**61 - 1
 
 _EXACT_CACHE: OrderedDict[str, _Exact] = OrderedDict()
 
@@ -445,9 +458,29 @@ class Compiled:
         included)."""
         if "generic" not in self._plan:
             self._plan["generic"] = self.generic_ranks
-        if "exps" not in self._plan:
-            self._plan.update(self._expansion())
+        if "pointwise" not in self._plan:
+            self._plan["pointwise"] = self.chain_joints > EXPANDED_JOINTS
+            if not self._plan["pointwise"]:
+                self._plan.update(self._expansion())
         return self._plan
+
+    @property
+    def chain_joints(self) -> int:
+        """The most swept joints on the path from a base to a contact (the expansion
+        of ``Q`` grows exponentially with it).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> compile_system(load("paper-case2-hard"), ["q1", "q2", "q5"]).chain_joints
+        2
+        """
+        swept, model, most = set(self.joints), self.model, 0
+        for c in model.contacts:
+            if c.arm is not None:
+                path = model.arms[c.arm].joints[:c.link]
+                most = max(most, sum(j.name in swept for j in path))
+        return most
 
     def _default(self, full: Configuration, joint: str) -> Value:
         if joint in full.revolute:
@@ -543,6 +576,10 @@ def compile_system(system: Model | Any, joints: Sequence[str],
     return compiled
 
 
+#: A sweep evaluates the expanded polynomials of ``Q`` in batches when at most this many
+#: swept joints lie on one chain (their expansion grows about fivefold per joint), and
+#: otherwise point by point from the product of exponentials.
+EXPANDED_JOINTS = 4
 #: Random points whose ranks modulo a prime are compared with the size bounds.
 SAMPLES = 2
 #: Seconds the point analysis spends, once per compiled system, certifying the generic
