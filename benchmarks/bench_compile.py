@@ -5,7 +5,8 @@
     first ``System.analyze(at).numbers`` of a freshly loaded system, of the second (it
     compiles ``Q``) and of the third; the growth exponent of the second against N is
     fitted (least squares of log time against log N).
-(2) ``1,000 configurations``: ``analyze(at).numbers`` of a 7-joint arm at 1,000 random
+(2) ``1,000 configurations``: ``analyze(at).numbers`` of a 7-joint arm (and a 5-joint
+    one, whose float build finishes within the cap) at 1,000 random
     exact configurations (``2*atan(p/q)``, some 0 and +-pi/2), the first call and the
     compilation included, against the float pipeline of ``bench_speed`` (the
     lambdified numpy ``Q`` of the kinematics and three ``numpy.linalg.matrix_rank``)
@@ -158,8 +159,12 @@ def bench_second_call(quick: bool, log=print) -> list[dict]:
 
 
 def bench_points(quick: bool, log=print) -> list[dict]:
-    joints, count = (5, 100) if quick else (7, 1000)
-    cap = 300.0 if quick else 600.0
+    cases = [(5, 100)] if quick else [(5, 1000), (7, 1000)]
+    return [row for joints, count in cases
+            for row in bench_points_of(joints, count, 300.0 if quick else 600.0, log)]
+
+
+def bench_points_of(joints: int, count: int, cap: float, log=print) -> list[dict]:
     log(f"  {count} configurations of a {joints}R arm: ours ...")
     ours = run_stages(stages_ours, (joints, count), ["points"], cap)["points"]
     log(f"  {count} configurations of a {joints}R arm: float pipeline (cap {cap:g} s) ...")
