@@ -194,6 +194,10 @@ class ModularField(Field):
             raise Unlucky(f"a denominator vanishes modulo {self.p}")
         return a * pow(b, -1, self.p) % self.p
 
+    def revolute(self, a: int, b: int) -> tuple[int, int]:
+        inverse = self.ratio(1, a * a + b * b)          # one inverse for both
+        return (b * b - a * a) * inverse % self.p, 2 * a * b * inverse % self.p
+
     def const(self, terms: Terms) -> int:
         p, out = self.p, 0
         for exps, num, den in terms:
