@@ -211,28 +211,52 @@ def test_compiled_numbers_with_symbolic_parameters_are_those_over_q_of_l(name):
         assert compiled.numbers(text) == _first_numbers(name, text), text
 
 
-@pytest.mark.parametrize("name", ["paper-case1-hard", "paper-case2-hard", "paper-case2-complete",
-                                  "five-bar"])
-def test_sampled_generic_ranks_agree_with_the_symbolic_ones(name):
-    """Where the sizes certify them, the generic ranks from modular ranks at random
-    points are those of the elimination over ``Q(t, L)``."""
+@pytest.mark.parametrize("name, certified", [("paper-case1-hard", True),
+                                             ("paper-case2-hard", True),
+                                             ("paper-case2-complete", False),
+                                             ("paper-case1-soft", False),
+                                             ("urdf-two-fingers", True), ("five-bar", True)])
+def test_sampled_generic_ranks_agree_with_the_symbolic_ones(name, certified):
+    """Where the bounds certify them, the generic ranks from modular ranks at random
+    points are those of the elimination over ``Q(t, L)``; a hyperstatic grasp (rank of
+    ``Q`` below its rows) is left to the elimination."""
     model = load_model(name)
-    compiled = compile_system(model, model.joint_names, "L=1")
+    at = ",".join(f"{p.name}=1" for p in model.parameters) or None
+    compiled = compile_system(model, model.joint_names, at)
     kin, rows = compiled._symbolic
     numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx, seed=0,
                                     certify_seconds=None)
     assert cert.exact
     symbolic = ranks_from_numbers(numbers, len(model.joints), dim=model.object_dim)
-    sampled = compiled._sampled_generic()
-    assert sampled in (None, symbolic)
+    assert compiled._sampled_generic() == (symbolic if certified else None)
     assert compiled.generic_ranks == symbolic
 
 
-def test_the_sizes_certify_a_long_arm_but_not_a_hyperstatic_grasp():
+def test_the_sizes_certify_a_long_arm():
     assert compile_system(load_model(long_arm(7, 5)), [f"q{k}" for k in range(1, 8)]
                           )._sampled_generic() == (3, 3, 3)
-    model = load_model("paper-case2-hard")      # rank Q < rows: the sizes do not decide
-    assert compile_system(model, model.joint_names, "L=1")._sampled_generic() is None
+
+
+@pytest.mark.parametrize("models, planar, bound", [
+    (["hard"], False, 3), (["hard", "hard"], False, 5), (["hard"] * 3, False, 6),
+    (["soft", "soft"], False, 6), (["frictionless"] * 5, False, 5),
+    (["frictionless"] * 7, False, 6), (["complete"], False, 6), (["soft"], False, 4),
+    (["hard"], True, 2), (["hard", "hard"], True, 3), (["frictionless"] * 2, True, 2),
+    (["complete"], True, 3)])
+def test_the_grasp_bound_is_the_rank_with_independent_points_and_normals(models, planar,
+                                                                         bound):
+    raw = long_arm(2, 7)
+    if planar:
+        raw["planar"] = True
+        for joint in raw["arms"][0]["joints"]:
+            joint["axis"], joint["point"][2] = [0, 0, 1], 0
+    contact = raw["contacts"][0]
+    raw["contacts"] = [{**contact, "name": f"c{i}", "model": kind,
+                        "normal": [1, 0, 0] if planar else contact["normal"],
+                        "point": [str(i), "1", "0" if planar else "2"]}
+                       for i, kind in enumerate(models)]
+    model = load_model(raw)
+    assert compile_system(model, model.joint_names)._grasp_bound() == bound
 
 
 def test_a_denominator_divisible_by_the_prime_falls_back_to_exact_ranks():

@@ -368,10 +368,11 @@ class Compiled:
             "joint_cols": [c for c in used if c >= dim],
         }
 
-    def _size_bounds(self) -> tuple[int, int, list[int]]:
+    def _size_bounds(self, g_bound: int | None = None) -> tuple[int, int, list[int]]:
         """Upper bounds of the generic ranks of ``Q`` and ``H G^T`` and of each arm
         block of ``H D`` from the sizes (a block's columns: its arm's joints that move
-        one of its contacts and are not held still)."""
+        one of its contacts and are not held still), given a bound ``g_bound`` of
+        ``rank H G^T`` if one is known."""
         model, dim, m = self.model, self.dim, self.m
         owners = [model.contacts[c].arm for c in chains.row_contacts(model)]
         arm_bounds = []
@@ -382,13 +383,45 @@ class Compiled:
                 moving = sum(j.name not in model.locked for j in arm.joints[:depth])
                 arm_bounds.append(min(rows, moving))
         d_bound = sum(arm_bounds)
-        g_bound = min(m, dim)
+        g_bound = min(m, dim) if g_bound is None else min(m, dim, g_bound)
         return min(m, self.n, d_bound + g_bound, d_bound + dim), g_bound, arm_bounds
+
+    def _grasp_bound(self) -> int:
+        """The rank of ``H G^T`` with every contact point and normal an independent
+        indeterminate: a bound of its generic rank (putting the points and normals of
+        the kinematics in their place is a ring homomorphism, which keeps or lowers a
+        rank). Two hard contacts, for one, give 5: the object can always turn about the
+        line through them."""
+        model = self.model
+        names = tuple(f"x{i}_{a}" for i in range(len(model.contacts)) for a in range(6))
+        ctx = flint.fmpz_mpoly_ctx.get(names, "degrevlex")
+        gens, zero, one = ctx.gens(), ctx.constant(0), ctx.constant(1)
+        lin_rows, ang_rows = [], []
+        for i, c in enumerate(model.contacts):
+            (x, y, z), n = gens[6 * i:6 * i + 3], gens[6 * i + 3:6 * i + 6]
+            lin = [[one, zero, zero, zero, z, -y], [zero, one, zero, -z, zero, x],
+                   [zero, zero, one, y, -x, zero]]
+            ang = [[zero] * 3 + [one if a == b else zero for b in range(3)]
+                   for a in range(3)]
+            if model.planar:
+                lin = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in lin[:2]]
+                ang = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in ang[2:]]
+            along = [sum((a * b for a, b in zip(n[:len(lin)], col, strict=True)), zero)
+                     for col in zip(*lin, strict=True)]
+            lin_rows += [along] if c.model == "frictionless" else lin
+            if c.model == "complete":
+                ang_rows += ang
+            elif c.model == "soft" and not model.planar:
+                ang_rows.append([sum((a * b for a, b in zip(n, col, strict=True)), zero)
+                                 for col in zip(*ang, strict=True)])
+        rows = lin_rows + ang_rows
+        return PolyMatrix(rows, self.dim, context=ctx).rank() if rows else 0
 
     def _sampled_generic(self) -> tuple[int, int, int] | None:
         """The generic ranks when ranks modulo :data:`POINT_PRIME` at random points
         (lower bounds: a rank modulo p is at most the rank over Q at the point, at most
-        the generic rank) reach the bounds of :meth:`_size_bounds`; else ``None``."""
+        the generic rank) reach the bounds of :meth:`_size_bounds` (with that of
+        :meth:`_grasp_bound` where the sizes leave ``rank H G^T`` open); else ``None``."""
         if self.m == 0:
             return 0, 0, 0
         q_bound, g_bound, arm_bounds = self._size_bounds()
@@ -409,6 +442,8 @@ class Compiled:
             for k, (block, c0, c1) in enumerate(self._plan["arm_blocks"]):
                 ra = flint.nmod_mat([rows[i][c0:c1] for i in block], POINT_PRIME).rank()
                 best[2][k] = max(best[2][k], ra)
+            if best[1] < g_bound and best[2] == arm_bounds:
+                q_bound, g_bound, _ = self._size_bounds(self._grasp_bound())
             if best[0] == q_bound and best[1] == g_bound and best[2] == arm_bounds:
                 return q_bound, g_bound, sum(arm_bounds)
         return None
