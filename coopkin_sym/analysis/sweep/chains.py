@@ -310,14 +310,16 @@ class ChainQ:
         contacts = [([const(x) for x in pt], None if nm is None else [const(x) for x in nm])
                     for _, _, pt, nm, _ in self.data["contacts"]]
         bound = (joints, contacts)
-        self._constants = {key: (field, bound)}
+        self._constants[key] = (field, bound)      # the field is kept: its id stays its own
+        if len(self._constants) > 4:
+            del self._constants[next(iter(self._constants))]
         return bound
 
     def rows(self, field: Field, values: Sequence[tuple[int, int]]) -> list[list[Any]]:
-        """The rows of ``Q`` (each a nonzero multiple of the true row) with the swept
-        joints at ``values``: ``(a, b)`` with ``tan(q/2) = a/b`` for a revolute joint,
-        ``d = a/b`` for a prismatic one. Raises :class:`Unlucky` when a denominator
-        vanishes in ``field``."""
+        """The rows of ``Q`` (entries in ``field``) with the swept joints at
+        ``values``: ``(a, b)`` with ``tan(q/2) = a/b`` for a revolute joint, ``d = a/b``
+        for a prismatic one. Raises :class:`Unlucky` when a denominator vanishes in
+        ``field``."""
         data = self.data
         red, one, zero = field.red, field.one, field.zero
         joints, contacts = self._bound(field)
