@@ -13,6 +13,7 @@ import pytest
 import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from random_systems import random_system
 from strategies import random_configurations, random_systems
 
 import coopkin_sym
@@ -154,6 +155,14 @@ def test_rows_equal_the_kinematics_on_random_systems(data, with_parameter):
     _check_rows(model, pairs, parameters)
     if with_parameter:
         _check_symbolic_rows(model, pairs)
+
+
+@pytest.mark.parametrize("seed", range(16))
+def test_rows_equal_the_kinematics_on_the_random_two_arm_systems(seed):
+    model = load_model(random_system(seed))
+    rng = random.Random(seed)
+    for _ in range(3):
+        _check_rows(model, [_pair(rng, j.type) for j in model.joints], {})
 
 
 @pytest.mark.parametrize("contact, prismatic", [("hard", ()), ("soft", (2,)),
