@@ -194,7 +194,8 @@ def bench_points_of(joints: int, count: int, cap: float, log=print) -> list[dict
     rows = [{"benchmark": "points", "case": case + ", compile included",
              "ours_s": ours["seconds"], "baseline": "lambdified numpy Q + matrix_rank x3, "
              "build included", "baseline_s": total, "ratio": ratio,
-             "note": note + ("; the ratio is a lower bound (capped)" if lower else "")}]
+             "note": note + ("; the ratio is a lower bound (capped)" if ratio and lower
+                             else "")}]
     if points.get("status") == "ok":
         rows.append({"benchmark": "points", "case": case + ", per point (median)",
                      "ours_s": ours["median"], "baseline": "the same float pipeline, warm",
