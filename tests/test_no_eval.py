@@ -2,8 +2,8 @@
 
 The source scan finds every call that could evaluate text (``sympify``,
 ``parse_expr``, ``eval``, ``exec``, ``S(str...)``) anywhere in the package; the only
-accepted ones carry ``# parse-ok`` (the sweep's compiled polynomials, generated from
-the package's own integers). The marker tests hand payloads that would create a file
+accepted ones would carry ``# parse-ok``, and none does (the package generates no
+code). The marker tests hand payloads that would create a file
 if evaluated to every entry that takes text, and check the file never appears.
 """
 
@@ -82,12 +82,11 @@ def test_no_text_is_evaluated_anywhere_in_the_package():
     assert not found, "\n".join(found)
 
 
-def test_the_only_marked_evaluation_is_the_sweep_code_generator():
+def test_no_evaluation_is_marked_as_accepted():
     marked = [(p.relative_to(PACKAGE).as_posix(), name) for p in PACKAGE.rglob("*.py")
               for number, name in calls(p.read_text())
               if "# parse-ok" in p.read_text().splitlines()[number - 1]]
-    assert sorted(marked) == [("analysis/sweep/compiled.py", "compile"),
-                              ("analysis/sweep/compiled.py", "exec")]
+    assert marked == []
 
 
 # ----------------------------------------------------------------- payloads

@@ -7,7 +7,10 @@ polynomials and *homogenized*: a swept revolute joint enters through
 polynomial in the integers ``(a, b)`` that is a nonzero multiple of the row of ``Q``
 at every point, ``q = pi`` included (``(a, b) = (1, 0)``). Evaluating those integer
 polynomials gives a matrix with the ranks of ``Q``, ``H G^T`` and ``H D`` at the
-point, hence all seven numbers.
+point, hence all seven numbers. That expansion grows about fivefold per swept joint
+of a chain: with more than four on one chain, and for the exact rechecks, ``Q`` is
+instead evaluated at each point from the home data by the product of exponentials
+(:mod:`coopkin_sym.analysis.sweep.chains`).
 
 :func:`sweep` evaluates a whole batch modulo the prime ``p = 2**31 - 1`` and
 eliminates it with numpy (:mod:`coopkin_sym.exact.modular`). A rank modulo ``p``

@@ -1,7 +1,11 @@
 """``Q`` compiled for exact evaluation at many points (see :mod:`coopkin_sym.analysis.sweep`).
 
-Each row is cleared to integer polynomials and homogenized in the swept variables;
-the generic ranks are computed once, exactly, over ``Q(t, L)``.
+A point is evaluated from the system's home data by the product of exponentials
+(:mod:`coopkin_sym.analysis.sweep.chains`): nothing is expanded, and compiling costs
+no more than reading the model. The generic ranks come from ranks modulo a prime at
+random points when these reach the bounds the sizes give; otherwise from the rows of
+``Q`` with the swept joints symbolic (over ``Q(t, L)``), which a sweep's batch
+evaluation (rows cleared to integer polynomials and homogenized) also uses.
 """
 
 from __future__ import annotations
@@ -26,41 +30,47 @@ from coopkin_sym.analysis.numbers import (
     ranks_from_numbers,
     ranks_of_q,
 )
+from coopkin_sym.analysis.sweep import chains
 from coopkin_sym.analysis.sweep.grid import _split_point
 from coopkin_sym.analysis.sweep.values import Value
-from coopkin_sym.errors import ArgumentError, SweepError
+from coopkin_sym.errors import ArgumentError, SweepError, TimeLimitReached
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.deadline import time_limit
 from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
 )
 from coopkin_sym.model.model import Model, model_of
 
-
 # --- compilation ----------------------------------------------------------------------
-class _Exact:
-    """Exact evaluation of the homogenized integer polynomials, in one process.
+#: The prime of the point analysis' modular ranks (``2**61 - 1``).
+POINT_PRIME = 2**61 - 1
 
-    With every parameter set, the polynomials become one straight-line program on
-    Python integers (each monomial once, from a smaller one times one variable; then
-    each entry as an integer combination of monomials), generated from the exponents
-    and integer coefficients alone, and the ranks come from flint's ``fmpz_mat``.
-    With parameters left symbolic, the entries are partially evaluated with flint and
-    ranked over ``Q(L)`` by :mod:`coopkin_sym.exact.elimination`.
+
+class _Exact:
+    """Exact ranks of ``Q`` at points, in one process, from :mod:`.chains` (the product
+    of exponentials evaluated at each point; nothing is expanded).
+
+    A point is first evaluated modulo :data:`POINT_PRIME` (symbolic parameters at fixed
+    random residues) when the generic ranks are known; otherwise, or where those ranks
+    are not reached, exactly: over the integers (flint's ``fmpz_mat``, each row scaled
+    to integers) with every parameter set, over ``Q(L)`` (:mod:`coopkin_sym.exact.
+    elimination`) with parameters left symbolic.
     """
 
     def __init__(self, plan: dict):
         self.m, self.n, self.dim = plan["m"], plan["n"], plan["dim"]
         self.kinds = plan["kinds"]
-        self.njv = plan["njv"]
-        self.params = plan["nvars"] - plan["njv"]
-        self.arm_blocks = plan.get("arm_blocks")
-        if self.params:
-            self.ctx = flint.fmpz_mpoly_ctx.get(tuple(plan["names"]), "degrevlex")
-            self.entries = [(k, self.ctx.from_dict(dict(t))) for k, t in plan["terms"]]
-        else:
-            self.program = _straight_line(plan["terms"], plan["nvars"], self.m, self.n)
+        self.arm_blocks = plan["arm_blocks"]
+        self.chain = chains.ChainQ(plan["chain"])
+        names = plan["chain"]["params"]
+        self.modular = chains.ModularField(POINT_PRIME, plan["point_params"])
+        self._other: chains.ModularField | None = None
+        self.field = chains.PolynomialField(names) if names else chains.RationalField()
+        self.ctx = (flint.fmpz_mpoly_ctx.get(tuple(names), "degrevlex") if names
+                    else None)
 
     def ranks(self, pairs: Sequence[tuple[int, int]],
               generic: tuple[int, int, int] | None = None) -> tuple[int, int, int]:
@@ -68,100 +78,69 @@ class _Exact:
 
         With the exact ``generic`` ranks known, a point whose ranks modulo a prime equal
         them has exactly those ranks (a rank modulo p is at most the rank over Q, which
-        is at most the generic rank); the others are ranked over the integers.
+        is at most the generic rank); the others are ranked exactly.
         """
-        m, n = self.m, self.n
-        if m == 0:
-            return 0, 0, 0
-        args = _joint_vector(self.kinds, pairs)
-        if not self.params:
-            flat = self.program(args)
-            dim = self.dim
-            if generic is not None and self._generic_modulo(flat, generic):
-                return generic
-            rows = [flat[i * n:(i + 1) * n] for i in range(m)]
-            rq = flint.fmpz_mat(rows).rank()
-            rg = flint.fmpz_mat([row[:dim] for row in rows]).rank()
-            if self.arm_blocks is None:
-                rd = flint.fmpz_mat([row[dim:] for row in rows]).rank() if n > dim else 0
-            else:                      # H D is block diagonal: one block per arm
-                rd = sum(flint.fmpz_mat([rows[i][c0:c1] for i in block]).rank()
-                         for block, c0, c1 in self.arm_blocks)
-            return rq, rg, rd
-        subs = {i: flint.fmpz(args[i]) for i in range(self.njv)}
-        zero = self.ctx.constant(0)
-        flat = [zero] * (m * n)
-        for k, poly in self.entries:
-            flat[k] = poly.subs(subs) if subs else poly
-        rows = [flat[i * n:(i + 1) * n] for i in range(m)]
-        return ranks_of_q(PolyMatrix(rows, n, context=self.ctx), dim=self.dim)
+        return self.certified_ranks(pairs, generic)[0]
 
+    def certified_ranks(self, pairs: Sequence[tuple[int, int]],
+                        generic: tuple[int, int, int] | None = None,
+                        prime: int = 0) -> tuple[tuple[int, int, int], bool]:
+        """:meth:`ranks` and whether the point was ranked exactly (not certified by
+        its ranks modulo ``prime``, by default :data:`POINT_PRIME`)."""
+        if self.m == 0:
+            return (0, 0, 0), False
+        if generic is not None:
+            field = self.modular if prime in (0, POINT_PRIME) else self._field_modulo(prime)
+            try:
+                rows = self.chain.rows(field, pairs)
+            except chains.Unlucky:
+                rows = None
+            if rows is not None and self._generic_modulo(rows, generic, field.p):
+                return generic, False
+        return self._exact_ranks(pairs), True
 
-    def _generic_modulo(self, flat: list[int], generic: tuple[int, int, int]) -> bool:
-        """Whether the ranks of the integer ``Q`` (flat, row-major) modulo
-        :data:`POINT_PRIME` are the generic ones."""
-        m, n, dim, p = self.m, self.n, self.dim, POINT_PRIME
-        reduced = [x % p for x in flat]
-        if flint.nmod_mat(m, n, reduced, p).rank() != generic[0]:
+    def _exact_ranks(self, pairs: Sequence[tuple[int, int]]) -> tuple[int, int, int]:
+        rows = self.chain.rows(self.field, pairs)
+        if self.ctx is not None:
+            cleared = [_cleared_polynomials(row, self.ctx) for row in rows]
+            return ranks_of_q(PolyMatrix(cleared, self.n, context=self.ctx), dim=self.dim)
+        return self._split_ranks(chains.integer_rows(rows), flint.fmpz_mat)
+
+    def _split_ranks(self, rows, matrix) -> tuple[int, int, int]:
+        dim = self.dim
+        rq = matrix(rows).rank()
+        rg = matrix([row[:dim] for row in rows]).rank()
+        # H D is block diagonal: one block per arm
+        rd = sum(matrix([rows[i][c0:c1] for i in block]).rank()
+                 for block, c0, c1 in self.arm_blocks)
+        return rq, rg, rd
+
+    def _field_modulo(self, prime: int) -> chains.ModularField:
+        if self._other is None or self._other.p != prime:
+            self._other = chains.ModularField(prime, [v % prime for v in
+                                                      self.modular.params])
+        return self._other
+
+    def _generic_modulo(self, rows: list[list[int]], generic: tuple[int, int, int],
+                        p: int = POINT_PRIME) -> bool:
+        """Whether the ranks of ``Q`` modulo ``p`` (``rows``) are the generic ones."""
+        dim = self.dim
+        if flint.nmod_mat(rows, p).rank() != generic[0]:
             return False
-        rows = [reduced[i * n:(i + 1) * n] for i in range(m)]
         if flint.nmod_mat([row[:dim] for row in rows], p).rank() != generic[1]:
             return False
-        if self.arm_blocks is None:
-            rd = flint.nmod_mat([row[dim:] for row in rows], p).rank() if n > dim else 0
-        else:
-            rd = sum(flint.nmod_mat([rows[i][c0:c1] for i in block], p).rank()
-                     for block, c0, c1 in self.arm_blocks)
+        rd = sum(flint.nmod_mat([rows[i][c0:c1] for i in block], p).rank()
+                 for block, c0, c1 in self.arm_blocks)
         return rd == generic[2]
 
 
-#: The prime of the point analysis' modular ranks (``2**61 - 1``).
-POINT_PRIME = 2**61 - 1
-
-
-def _straight_line(terms: list, nvars: int, m: int, n: int):
-    """A Python function ``x -> entries of Q`` (a flat, row-major list of ints)
-    evaluating the integer polynomials ``terms`` at the integer vector ``x``. The
-    generated text holds only integers and local names."""
-    names: dict[tuple[int, ...], str] = {(0,) * nvars: "1"}
-    lines: list[str] = []
-
-    def monomial(e: tuple[int, ...]) -> str:
-        if e in names:
-            return names[e]
-        used = [v for v, x in enumerate(e) if x]
-        parents = [(v, e[:v] + (e[v] - 1,) + e[v + 1:]) for v in used]
-        v, parent = next(((v, q) for v, q in parents if q in names), parents[-1])
-        base = monomial(parent)
-        if base == "1":
-            names[e] = f"x{v}"
-        else:
-            names[e] = f"m{len(lines)}"
-            lines.append(f"    {names[e]} = {base} * x{v}")
-        return names[e]
-
-    for e in sorted({tuple(e) for _, entry in terms for e, _ in entry}, key=sum):
-        monomial(e)
-    cells = ["0"] * (m * n)
-    for k, entry in terms:
-        expr = ""
-        for e, c in entry:
-            mono = monomial(tuple(e))
-            mag = abs(c)
-            term = str(mag) if mono == "1" else (mono if mag == 1 else f"{mag}*{mono}")
-            expr += (" - " if c < 0 else " + ") + term
-        name = f"e{k}"
-        lines.append(f"    {name} = {expr[3:] if expr.startswith(' + ') else '-' + expr[3:]}")
-        cells[k] = name
-    head = ["def _evaluate(x):"]
-    if nvars:
-        head.append("    " + "".join(f"x{i}, " for i in range(nvars)) + "= x")
-    source = "\n".join(head + lines + [f"    return [{', '.join(cells)}]"])
-    namespace: dict = {"__builtins__": {}}
-    # the source is generated here from the package's own exact integer polynomials
-    # (integers and local names only, see above): no external text reaches it
-    exec(compile(source, "<coopkin_sym: compiled Q>", "exec"), namespace)  # parse-ok
-    return namespace["_evaluate"]
+def _cleared_polynomials(row: Sequence, ctx) -> list:
+    """A row of polynomials over Q as integer polynomials (times one positive integer)."""
+    dicts = [x.to_dict() for x in row]
+    dens = [int(c.q) for d in dicts for c in d.values()]
+    scale = math.lcm(*dens) if dens else 1
+    return [ctx.from_dict({e: int(c.p) * (scale // int(c.q)) for e, c in d.items()})
+            for d in dicts]
 
 
 _EXACT_CACHE: OrderedDict[str, _Exact] = OrderedDict()
@@ -332,12 +311,36 @@ class Compiled:
             dict(full.parameters), frozenset(swept))
         self.at_text = self.base.at_text()
         self.defaults = tuple(self._default(full, j) for j in joints)
-        kin = kinematics.build(model, self.base)
-        ring = kin.ring
         self.r = len(model.joints)
-        self.m = len(kin.Q)
         self.dim = dim = model.object_dim
-        n = self.n = dim + self.r
+        self.n = dim + self.r
+        chain = chains.chain_data(model, self.base, joints)
+        self.m = chain["m"]
+        row_contacts = chains.row_contacts(model)
+        key = hashlib.sha1(repr((joints, self.kinds, chain)).encode()).hexdigest()
+        self._plan = {
+            "key": key, "prime": prime, "m": self.m, "n": self.n, "dim": dim,
+            "kinds": list(self.kinds), "chain": chain,
+            "point_params": [random.Random(f"coopkin:{name}").randrange(2, POINT_PRIME)
+                             for name in chain["params"]],
+            "arm_blocks": _arm_blocks(model, row_contacts, dim),
+        }
+
+    @cached_property
+    def _symbolic(self) -> tuple:
+        """``Q`` with the swept joints symbolic, rows cleared to integer polynomials
+        (exponential in the joints of a chain: built only for what the point
+        evaluation cannot give, the sweep's batch polynomials and generic ranks that
+        the sizes do not certify)."""
+        kin = kinematics.build(self.model, self.base)
+        return kin, ClearedRows(kin.ring, kin.Q)      # each row cleared when used
+
+    def _expansion(self) -> dict:
+        """The homogenized integer polynomials of ``Q`` evaluated modulo a prime at a
+        whole batch of points by :func:`~coopkin_sym.analysis.sweep.run.sweep`."""
+        kin, cleared = self._symbolic
+        rows = list(cleared)
+        ring, joints, n, dim, prime = kin.ring, self.joints, self.n, self.dim, self.prime
         var_of = {}
         for j, kind in zip(joints, self.kinds, strict=True):
             var_of[j] = ring.names.index(tangent_name(j) if kind == "revolute" else j)
@@ -349,40 +352,122 @@ class Compiled:
                       else [f"{j}.num", f"{j}.den"])
         njv = len(names)
         names += [ring.names[i] for i in param_vars]
-        rows = [ring.clear_row(row) for row in kin.Q]
         terms = _compile_rows(kin.Q, rows, ring, joints, self.kinds, var_of, param_vars,
                               names, n)
-        # the generic ranks are computed when a sweep first needs them (a point
-        # analysis never does)
-        self._generic_input = (rows, model, kin.row_contacts, ring.zctx)
         flat_terms = [(k, e, c) for k, ts in terms for e, c in ts]
         nvars = len(names)
         exps = np.array([e for _, e, _ in flat_terms], dtype=np.int64).reshape(-1, nvars)
         used = sorted({k % n for k, _ in terms})
-        key = hashlib.sha1(repr((names, terms, self.m, n, dim)).encode()).hexdigest()
-        self._plan = {
-            "key": key, "prime": prime, "m": self.m, "n": n, "dim": dim, "names": names,
-            "kinds": list(self.kinds), "njv": njv, "nvars": nvars, "terms": terms,
-            "exps": exps,
+        return {
+            "names": names, "njv": njv, "nvars": nvars, "exps": exps,
             "coefs": modular.residues([c for _, _, c in flat_terms], prime),
             "entries": np.array([k for k, _, _ in flat_terms], dtype=np.int64),
             "params": [random.Random(f"coopkin:{names[i]}").randrange(2, prime)
                        for i in range(njv, nvars)],
             "object_cols": [c for c in used if c < dim],
             "joint_cols": [c for c in used if c >= dim],
-            "arm_blocks": _arm_blocks(model, kin.row_contacts, dim),
         }
 
+    def _size_bounds(self, g_bound: int | None = None) -> tuple[int, int, list[int]]:
+        """Upper bounds of the generic ranks of ``Q`` and ``H G^T`` and of each arm
+        block of ``H D`` from the sizes (a block's columns: its arm's joints that move
+        one of its contacts and are not held still), given a bound ``g_bound`` of
+        ``rank H G^T`` if one is known."""
+        model, dim, m = self.model, self.dim, self.m
+        owners = [model.contacts[c].arm for c in chains.row_contacts(model)]
+        arm_bounds = []
+        for a, arm in enumerate(model.arms):       # the blocks of _arm_blocks, in order
+            rows = owners.count(a)
+            if rows and arm.joints:
+                depth = max(c.link for c in model.contacts if c.arm == a)
+                moving = sum(j.name not in model.locked for j in arm.joints[:depth])
+                arm_bounds.append(min(rows, moving))
+        d_bound = sum(arm_bounds)
+        g_bound = min(m, dim) if g_bound is None else min(m, dim, g_bound)
+        return min(m, self.n, d_bound + g_bound, d_bound + dim), g_bound, arm_bounds
+
+    def _grasp_bound(self) -> int:
+        """The rank of ``H G^T`` with every contact point and normal an independent
+        indeterminate: a bound of its generic rank (putting the points and normals of
+        the kinematics in their place is a ring homomorphism, which keeps or lowers a
+        rank). Two hard contacts, for one, give 5: the object can always turn about the
+        line through them."""
+        model = self.model
+        names = tuple(f"x{i}_{a}" for i in range(len(model.contacts)) for a in range(6))
+        ctx = flint.fmpz_mpoly_ctx.get(names, "degrevlex")
+        gens, zero, one = ctx.gens(), ctx.constant(0), ctx.constant(1)
+        lin_rows, ang_rows = [], []
+        for i, c in enumerate(model.contacts):
+            (x, y, z), n = gens[6 * i:6 * i + 3], gens[6 * i + 3:6 * i + 6]
+            lin = [[one, zero, zero, zero, z, -y], [zero, one, zero, -z, zero, x],
+                   [zero, zero, one, y, -x, zero]]
+            ang = [[zero] * 3 + [one if a == b else zero for b in range(3)]
+                   for a in range(3)]
+            if model.planar:
+                lin = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in lin[:2]]
+                ang = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in ang[2:]]
+            along = [sum((a * b for a, b in zip(n[:len(lin)], col, strict=True)), zero)
+                     for col in zip(*lin, strict=True)]
+            lin_rows += [along] if c.model == "frictionless" else lin
+            if c.model == "complete":
+                ang_rows += ang
+            elif c.model == "soft" and not model.planar:
+                ang_rows.append([sum((a * b for a, b in zip(n, col, strict=True)), zero)
+                                 for col in zip(*ang, strict=True)])
+        rows = lin_rows + ang_rows
+        return PolyMatrix(rows, self.dim, context=ctx).rank() if rows else 0
+
+    def _sampled_generic(self) -> tuple[int, int, int] | None:
+        """The generic ranks when ranks modulo :data:`POINT_PRIME` at random points
+        (lower bounds: a rank modulo p is at most the rank over Q at the point, at most
+        the generic rank) reach the bounds of :meth:`_size_bounds` (with that of
+        :meth:`_grasp_bound` where the sizes leave ``rank H G^T`` open); else ``None``."""
+        if self.m == 0:
+            return 0, 0, 0
+        q_bound, g_bound, arm_bounds = self._size_bounds()
+        exact = _exact_for(self._plan)
+        rng = random.Random(0)
+        best = [0, 0, [0] * len(arm_bounds)]
+        for _ in range(SAMPLES):
+            field = chains.ModularField(POINT_PRIME, [rng.randrange(2, POINT_PRIME)
+                                                      for _ in self._plan["point_params"]])
+            pairs = [(rng.randrange(POINT_PRIME), 1) for _ in self.joints]
+            try:
+                rows = exact.chain.rows(field, pairs)
+            except chains.Unlucky:    # pragma: no cover - a denominator divisible by p
+                continue
+            rq = flint.nmod_mat(rows, POINT_PRIME).rank()
+            rg = flint.nmod_mat([row[:self.dim] for row in rows], POINT_PRIME).rank()
+            best[0], best[1] = max(best[0], rq), max(best[1], rg)
+            for k, (block, c0, c1) in enumerate(self._plan["arm_blocks"]):
+                ra = flint.nmod_mat([rows[i][c0:c1] for i in block], POINT_PRIME).rank()
+                best[2][k] = max(best[2][k], ra)
+            if best[1] < g_bound and best[2] == arm_bounds:
+                q_bound, g_bound, _ = self._size_bounds(self._grasp_bound())
+            if best[0] == q_bound and best[1] == g_bound and best[2] == arm_bounds:
+                return q_bound, g_bound, sum(arm_bounds)
+        return None
+
     def _generic_within(self, seconds: float | None) -> tuple[int, int, int] | None:
-        rows, model, row_contacts, zctx = self._generic_input
-        numbers, cert = generic_numbers(rows, model, row_contacts, zctx, seed=0,
-                                        certify_seconds=seconds)
+        sampled = self._sampled_generic()
+        if sampled is not None:
+            return sampled
+        try:
+            with time_limit(seconds, "the generic ranks of a compiled system"):
+                kin, rows = self._symbolic
+                numbers, cert = generic_numbers(rows, self.model, kin.row_contacts,
+                                                kin.ring.zctx, seed=0,
+                                                certify_seconds=seconds)
+        except TimeLimitReached:
+            if seconds is None:        # an enclosing bound: not this one's to absorb
+                raise
+            return None
         return ranks_from_numbers(numbers, self.r, dim=self.dim) if cert.exact else None
 
     @cached_property
     def quick_generic_ranks(self) -> tuple[int, int, int] | None:
         """The generic ranks when they are certified within a few seconds, else
-        ``None`` (the point analysis then ranks every point over the integers)."""
+        ``None`` (the point analysis then ranks every point exactly)."""
         if "generic_ranks" in self.__dict__:
             return self.generic_ranks
         return self._generic_within(GENERIC_SECONDS)
@@ -390,9 +475,10 @@ class Compiled:
     @cached_property
     def generic_ranks(self) -> tuple[int, int, int]:
         """The exact ranks of ``Q``, ``H G^T`` and ``H D`` with the swept joints
-        symbolic, found arm by arm (see :mod:`coopkin_sym.analysis.generic`: exact ranks
-        at random points, then elimination over ``Q(t, L)`` of the blocks the size
-        bounds leave open)."""
+        symbolic: ranks modulo a prime at random points where they reach the size
+        bounds, else found arm by arm (see :mod:`coopkin_sym.analysis.generic`: exact
+        ranks at random points, then elimination over ``Q(t, L)`` of the blocks the
+        size bounds leave open)."""
         quick = self.__dict__.get("quick_generic_ranks")
         return quick if quick is not None else self._generic_within(None)
 
@@ -407,7 +493,29 @@ class Compiled:
         included)."""
         if "generic" not in self._plan:
             self._plan["generic"] = self.generic_ranks
+        if "pointwise" not in self._plan:
+            self._plan["pointwise"] = self.chain_joints > EXPANDED_JOINTS
+            if not self._plan["pointwise"]:
+                self._plan.update(self._expansion())
         return self._plan
+
+    @property
+    def chain_joints(self) -> int:
+        """The most swept joints on the path from a base to a contact (the expansion
+        of ``Q`` grows exponentially with it).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> compile_system(load("paper-case2-hard"), ["q1", "q2", "q5"]).chain_joints
+        2
+        """
+        swept, model, most = set(self.joints), self.model, 0
+        for c in model.contacts:
+            if c.arm is not None:
+                path = model.arms[c.arm].joints[:c.link]
+                most = max(most, sum(j.name in swept for j in path))
+        return most
 
     def _default(self, full: Configuration, joint: str) -> Value:
         if joint in full.revolute:
@@ -503,6 +611,12 @@ def compile_system(system: Model | Any, joints: Sequence[str],
     return compiled
 
 
+#: A sweep evaluates the expanded polynomials of ``Q`` in batches when at most this many
+#: swept joints lie on one chain (their expansion grows about fivefold per joint), and
+#: otherwise point by point from the product of exponentials.
+EXPANDED_JOINTS = 4
+#: Random points whose ranks modulo a prime are compared with the size bounds.
+SAMPLES = 2
 #: Seconds the point analysis spends, once per compiled system, certifying the generic
 #: ranks that let most points be ranked modulo a prime.
 GENERIC_SECONDS = 2.0
@@ -519,6 +633,15 @@ def _joints_of(model: Model) -> tuple[tuple[str, ...], tuple[str, ...]]:
         while len(_JOINTS) > 64:
             _JOINTS.popitem(last=False)
     return hit[1], hit[2]
+
+
+def _ratio(x) -> tuple[int, int]:
+    """Numerator and denominator of an exact rational (SymPy or ``int``)."""
+    if isinstance(x, int):
+        return x, 1
+    if not getattr(x, "is_Rational", False):
+        x = sp.Rational(x)
+    return int(x.p), int(x.q)
 
 
 def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, int, int]] | None:
@@ -548,8 +671,7 @@ def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, in
             if value is None:                         # home
                 pairs.append((0, 1))
                 continue
-            c, s = (sp.Rational(x) for x in value)
-            cp, cq, sp_, sq = int(c.p), int(c.q), int(s.p), int(s.q)
+            (cp, cq), (sp_, sq) = (_ratio(x) for x in value)
             if cp == -cq:                             # q = pi
                 pairs.append((1, 0))
             else:                                     # tan(q/2) = s / (1 + c)

@@ -41,6 +41,12 @@ def _run_chunk(plan: dict, pairs: list[list[tuple[int, int]]],
     rechecked = np.zeros(count, dtype=bool)
     if m == 0 or count == 0:
         return ranks, rechecked
+    if plan.get("pointwise"):          # Q from the product of exponentials, point by point
+        exact, generic = _exact_for(plan), tuple(plan["generic"])
+        for i in range(count):
+            point = [pairs[j][index[i, j]] for j in range(len(pairs))]
+            ranks[i], rechecked[i] = exact.certified_ranks(point, generic, p)
+        return ranks, rechecked
     columns = []                       # per joint: residues of its variables per value
     for kind, ps in zip(plan["kinds"], pairs, strict=True):
         vectors = [_joint_vector([kind], [pair]) for pair in ps]
