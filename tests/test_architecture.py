@@ -155,8 +155,8 @@ PROTOCOL_RAISES = {
     ("coopkin_sym.cli", "Exit", "*"): "the command's exit status (typer)",
     ("coopkin_sym.cli", "SystemExit", "_terminated"): "SIGTERM/SIGHUP: exit 128 + signal",
 }
-#: An internal invariant: raised only by a bug, never by input.
-INVARIANT = "AssertionError"
+#: An internal invariant (raised only by a bug, never by input) and an abstract method.
+INVARIANTS = ("AssertionError", "NotImplementedError")
 
 
 def _raises(path: Path):
@@ -211,7 +211,7 @@ def test_every_error_raised_is_a_package_error():
             value = _resolve(module, expr)
             if not (isinstance(value, type) and issubclass(value, BaseException)):
                 continue          # a variable or a function that builds the error
-            if issubclass(value, CoopkinError) or value.__name__ == INVARIANT:
+            if issubclass(value, CoopkinError) or value.__name__ in INVARIANTS:
                 continue
             if value.__name__.startswith("_") and value.__name__ in caught:
                 continue          # control flow inside the module
