@@ -429,7 +429,7 @@ def _numbers(source: str, where: str, what: str, text: str | None) -> tuple:
         raise UrdfError(str(exc)) from None
 
 
-def _exact_float(source: str, where: str, text: str) -> Fraction:
+def _decimal_exactly(source: str, where: str, text: str) -> Fraction:
     """A float of the file, read exactly as the decimal it is (``1.5708`` is
     ``19635/12500``), within the budgets of the one number parser."""
     try:
@@ -448,7 +448,7 @@ def _angle(source: str, where: str, text: str, bound: Fraction, snapped: list
            ) -> ExactAngle:
     """An angle in radians: 0 exactly, else the simplest exact angle within ``bound``
     of the decimal given (:meth:`~coopkin_sym.exact.angles.ExactAngle.snap`)."""
-    value = _exact_float(source, where, text)
+    value = _decimal_exactly(source, where, text)
     angle, error = ExactAngle.snap(value, bound)
     if value != 0:
         snapped.append(Snapped(f"{where}", text, angle.text, error))
@@ -460,7 +460,7 @@ def _axis(source: str, where: str, text: str | None, bound: Fraction, snapped: l
     """An exact unit axis: the given one when it is exactly a unit vector, else the
     unit vector :func:`~coopkin_sym.exact.axes.snap_axis` gives within ``bound``."""
     parts = _tokens(source, where, "axis xyz", text if text is not None else "1 0 0")
-    exact = [_exact_float(source, f"{where} axis xyz", t) for t in parts]
+    exact = [_decimal_exactly(source, f"{where} axis xyz", t) for t in parts]
     if sum(x * x for x in exact) == 1:
         return tuple(sp.Rational(x.numerator, x.denominator) for x in exact)
     if not any(exact):
