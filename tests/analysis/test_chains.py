@@ -87,7 +87,7 @@ def _as_sympy(rows, model, symbols=()) -> sp.Matrix:
         if isinstance(x, flint.fmpq):
             return sp.Rational(int(x.p), int(x.q))
         return sp.Add(*[sp.Rational(int(c.p), int(c.q)) * sp.Mul(
-            *[s ** e for s, e in zip(symbols, exps, strict=True)])
+            *[s ** int(e) for s, e in zip(symbols, exps, strict=True)])
             for exps, c in x.to_dict().items()])
     width = model.object_dim + len(model.joints)
     return sp.Matrix(len(rows), width, [entry(x) for row in rows for x in row])
