@@ -114,9 +114,10 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
                                  "not decided, time bound reached"),
     "time_pi_set": lambda f: f"{_at_pi(f['joints'])}: not searched, time bound reached",
     "time_whole_run": lambda f: (
-        f"{TimeLimitReached(f['seconds'], f['where'])} (wall-clock bound of the whole "
-        "run): the rest of the search was not explored (remaining candidates, deeper "
-        "components, the q = pi chart)"),
+        f"{TimeLimitReached(f['seconds'], f['where'])} (the search's wall-clock bound; "
+        "coopkin locus --timeout gives it four fifths of its bound): the rest of the "
+        "search was not explored (remaining candidates, deeper components, the q = pi "
+        "chart)"),
     "block_not_solved": _block_not_solved,
     "combinations_vanish": lambda f: (
         f"block {f['block']}: {f['tries']} random combinations of its maximal minors "
