@@ -453,10 +453,10 @@ def _float_check_blocks(c: Component, generic: Mapping[str, int]) -> list:
     count = f"{n} test{'' if n == 1 else 's'} at and near the witness, "
     count += f"{len(wrong)} wrong" if wrong else "all agree with the exact numbers"
     out: list = [_P([("strong", "Float rank tests"),
-                     _t(f" (numpy matrix_rank, default tolerance): {count}"
+                     _t(f" (numpy matrix_rank, default tolerance): {count}"  # float-ok: words
                         + (":" if wrong else "."))], only=("latex",)),
                  _P([("strong", "Float rank tests"),
-                     _t(f" (numpy matrix_rank, default tolerance): {count}.")],
+                     _t(f" (numpy matrix_rank, default tolerance): {count}.")],  # float-ok: words
                     only=("markdown", "html")),
                  _Table(header, rows, "lllll", widths, css="checks",
                         only=("markdown", "html"), details=f"the {n} float tests")]
@@ -475,7 +475,7 @@ def _float_summary_blocks(locus: Locus) -> list:
     at_w = sum(1 for c in locus.components for f in c.float_checks if f.distance == 0)
     out.append(_P([
         _t(f"At and near each witness the numbers were also computed with float rank "
-           f"tests (numpy matrix_rank, default tolerance) and compared with the exact "
+           f"tests (numpy matrix_rank, default tolerance) and compared with the exact "  # float-ok
            f"ones: {total} tests ({at_w} at witnesses, {total - at_w} nearby). "),
         ("strong", f"Missed singular configurations: {s['missed_singular']}"),
         _t("; "),
