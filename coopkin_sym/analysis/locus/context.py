@@ -170,6 +170,7 @@ class SearchContext:
     deferred: list = field(default_factory=list)
     polys: dict = field(default_factory=dict)
     owners: dict | None = None
+    steps: Any = None  # the search's recursive steps (search.components.Steps)
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""

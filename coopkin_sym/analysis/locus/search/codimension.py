@@ -1,0 +1,449 @@
+"""Codimension two and points: isolated configurations, the intersections of two
+components, and families of codimension 2 solved for two variables over the field of
+the others (linear or curved in the first), each decided exactly at its point or
+over its field.
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+
+import sympy as sp
+
+from coopkin_sym.analysis.locus.algebra import (
+    linear_equation,
+    linearly_disjoint,
+    normalize,
+    poly_text,
+    solve_small,
+    substitute_values,
+    vars_of,
+)
+from coopkin_sym.analysis.locus.context import Place, SearchContext
+from coopkin_sym.analysis.locus.remarks import Remark, add_once
+from coopkin_sym.analysis.locus.search.components import (
+    _new_component,
+    angle_condition,
+    no_real_points,
+    note,
+    off_charts,
+    variable_to_solve,
+)
+from coopkin_sym.analysis.locus.search.curved import inside_curved
+from coopkin_sym.analysis.locus.witness import (
+    algebraic_condition,
+    attach_algebraic_witness,
+    attach_two_root_witness,
+    attach_witness,
+    complete_point,
+    family_witness,
+    numbers_at_values,
+    to_at,
+)
+from coopkin_sym.analysis.mobility import decompose, numbers_modulo
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.quotient import (
+    Quotient,
+    Tower,
+    coefficients_in,
+    gcd_modulo,
+    smallest_fraction,
+)
+from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy
+
+
+def isolated(ctx: SearchContext, place: Place, rests) -> None:
+    """Common zeros of the remaining minor combinations (codimension 2 or more)."""
+    free = [n for n in ctx.ring_names if n not in place.point]
+    rational_points: list[dict] = []
+    algebraic_points: list[tuple] = []
+    for polys in rests:
+        names_used = sorted({n for p in polys for n in vars_of(ctx, p)},
+                            key=ctx.ring_names.index)
+        if not names_used:
+            continue
+        if len(names_used) > 2:
+            if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
+                continue
+            note(ctx, "lower_dimensional_not_solved", depth=place.depth,
+                 variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
+            continue
+        points, algebraic, unresolved = solve_small(ctx, polys, names_used)
+        for remark in unresolved:
+            add_once(ctx.locus.unexplored, remark)
+        rational_points += points
+        algebraic_points += algebraic
+    created = []
+    for point in rational_points:
+        created.append(_decide_point(ctx, place, point, None, free))
+    for x, g, values, eqs, alpha in algebraic_points:
+        created.append(_decide_point(ctx, place, values, (x, g, eqs, alpha), free))
+    _intersections(ctx, place, [c for c in created if c is not None], free)
+
+
+def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
+    """Intersections of two families found together, in disjoint variables (two
+    fingers stretched at once): the numbers where both hold, exactly (over the compositum
+    of their fields when both are irrational and their fields are linearly disjoint)."""
+    families = [c for c in created if c[0].kind == "subvariety"]
+    for (ci, vi, ai), (cj, vj, aj) in itertools.combinations(families, 2):
+        dims_i = set(vi) | ({ai[0]} if ai else set())
+        dims_j = set(vj) | ({aj[0]} if aj else set())
+        if dims_i & dims_j or ctx.expired():
+            continue
+        if ai and aj and not linearly_disjoint(ctx, ai[1], ai[0], aj[1], aj[0]):
+            ctx.locus.unexplored.append(Remark.of(
+                "fields_not_disjoint", first=ctx.locus.components.index(ci),
+                second=ctx.locus.components.index(cj)))
+            continue
+        if place.depth >= ctx.max_depth:
+            continue
+        moduli = [Quotient(a[1], ctx.ring_names.index(a[0])) for a in (ai, aj) if a]
+        reducer = (moduli[0] if len(moduli) == 1 else Tower(moduli)) if moduli else None
+
+        def here(rows, vi=vi, ai=ai, vj=vj, aj=aj):
+            rows = substitute_values(ctx, rows, vi, ai[0] if ai else None)
+            return substitute_values(ctx, rows, vj, aj[0] if aj else None)
+
+        if any(c.is_zero() or (reducer is not None and reducer.is_zero(c))
+               for c in (here([[c]])[0][0] for c in place.charts)):
+            continue  # outside the enclosing parametrization
+        rows = here(place.rows)
+        if reducer is None:
+            numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+        else:
+            numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, reducer)
+        if numbers.as_dict() in (ci.numbers, cj.numbers):
+            continue
+        eqs = ci.equations + [e for e in cj.equations if e not in ci.equations]
+        kind = "isolated" if len(dims_i | dims_j) == len(free) else "subvariety"
+        comp = _new_component(ctx, place.inside(depth=place.depth + 1,
+                                                parent=ctx.locus.components.index(ci)),
+                              eqs, numbers, kind, {"Q"},
+                              Remark.of("decided_joined_fields", fields=len(moduli)),
+                              condition=f"{ci.condition}; and {cj.condition}",
+                              within=place.point)
+        if comp is None:
+            continue
+        values = {**vi, **vj}
+        if not moduli:
+            full = complete_point(ctx, place.point, values)
+            if full is not None and numbers_at_values(ctx, full) == numbers:
+                attach_witness(ctx, comp, to_at(ctx, full), numbers)
+        elif len(moduli) == 1:
+            (x, g) = (ai or aj)[:2]
+            attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers)
+        elif not place.point:
+            attach_two_root_witness(ctx, comp, (ai[0], ai[1], vi), (aj[0], aj[1], vj),
+                                    numbers)
+
+
+# the largest minor combination (in terms) solved with parameters
+_PARAMETER_SOLVE_TERMS = 400
+
+
+def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[str]) -> bool:
+    """Codimension-2 families in three or four variables, decided exactly.
+
+    Two variables ``x, y`` are solved over the field of the others (the parameters):
+    the resultant in ``y`` is factored over Z; for each factor ``h`` involving ``x``,
+    ``x`` is substituted when ``h`` is linear in it (then ``y`` comes from the gcd of
+    the equations, substituted too or kept as a curve ``k(y, ...) = 0``), and otherwise
+    ``y = -c0/c1`` comes from their gcd over the function field of ``h``, whose ranks
+    are computed modulo ``h``. Returns whether the system was solved.
+    """
+    if any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
+        return False
+    for x, y in itertools.permutations(names, 2):
+        kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+        if any(p.degrees()[ky] == 0 for p in polys):
+            continue
+        res = None
+        for p in polys[1:]:
+            r = polys[0].resultant(p, y)
+            res = r if res is None else res.gcd(r)
+        if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
+            continue
+        _, factors = factor(res)
+        for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+            h = normalize(h)
+            if no_real_points(ctx, h):
+                continue
+            hx = x if h.degrees()[kx] else variable_to_solve(ctx, h, exclude=(y,))
+            if h.degrees()[ctx.ring_names.index(hx)] == 1:
+                _solve_linear_x(ctx, place, polys, h, hx, y)
+            else:
+                _solve_curved_x(ctx, place, polys, h, hx, y)
+        return True
+    return False
+
+
+def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
+    kx, ky_first = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    y_first = y
+    h1, h0 = split_linear(h, kx)
+    moved = [substitute(p, kx, h0, h1, p.degrees()[kx]) for p in polys]
+    common = None
+    for p in moved:
+        if not p.is_zero():
+            common = p if common is None else common.gcd(p)
+    if common is None or common.is_constant():
+        return
+    rows_x = substitute_rows(place.rows, kx, h0, h1)
+    inner = dict(place.point)
+    inner[x] = (h0, h1)
+    _, factors = factor(common)
+    for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+        if k.is_constant():
+            continue
+        # the family's second equation, solved for y, or for another of its variables
+        # when y stays free along it
+        y = y_first if k.degrees()[ky_first] else variable_to_solve(ctx, k)
+        k = normalize(k)
+        if not no_real_points(ctx, k):
+            _linear_x_family(ctx, place, h, (kx, h0, h1), rows_x, inner, k, y)
+
+
+def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inner: dict,
+                     k, y: str) -> None:
+    """One family ``h = 0, k = 0`` of :func:`_solve_linear_x`, ``x`` (index ``at[0]``)
+    being ``-h0/h1`` there (``at = (kx, h0, h1)``) and ``y`` the variable ``k`` is solved
+    for: decided, then searched inside."""
+    kx, h0, h1 = at
+    ky = ctx.ring_names.index(y)
+
+    def at_x(c):
+        return substitute(c, kx, h0, h1, c.degrees()[kx])
+
+    if k.degrees()[ky] == 1:
+        k1, k0 = split_linear(k, ky)
+
+        def at_xy(c, k0=k0, k1=k1, ky=ky):
+            c = at_x(c)
+            return substitute(c, ky, k0, k1, c.degrees()[ky])
+
+        if off_charts([*place.charts, h1], at_xy):
+            return
+        rows = substitute_rows(rows_x, ky, k0, k1)
+        numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+        decided = Remark.of("decided_two_substitutions")
+        if numbers == place.base:
+            sub_point = dict(inner)
+            sub_point[y] = (k0, k1)
+            sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
+                               not c.is_constant()) + ((k1,) if not k1.is_constant()
+                                                       else ())
+            ctx.steps.inside_candidate(ctx, place.inside(
+                rows=rows, equations=place.equations + [poly_text(ctx, h),
+                                                        poly_text(ctx, k)],
+                point=sub_point, charts=sub_charts))
+            return
+    else:
+        quotient = Quotient(k, ky)
+        if off_charts([*place.charts, h1], at_x, quotient):
+            return
+        numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
+        decided = Remark.of("decided_substitution_modulo")
+    eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, k)]
+    if numbers == place.base:
+        ctx.steps.inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
+                                                     charts=()))
+        return
+    chain = None
+    if k.degrees()[ky] == 1:
+        chain = dict(inner)
+        chain[y] = (k0, k1)
+    comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"}, decided,
+                          chain=chain, within=inner,
+                          generic_point=None if chain is not None else (inner, quotient))
+    if comp is None:
+        return
+    family_witness(ctx, comp, k, y, inner, numbers)
+    if k.degrees()[ky] == 1:
+        sub_point = dict(inner)
+        sub_point[y] = (k0, k1)
+        sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
+                           not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
+        ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point,
+                                                    charts=sub_charts))
+    elif place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
+        ctx.steps.go_deeper(ctx, comp, place.inside(rows=None, equations=eqs, point=None),
+                            "no_parametrization")
+    else:
+        inside_curved(ctx, place.inside(
+            rows=rows_x, equations=eqs, point=inner,
+            charts=(*place.charts, h1) if not h1.is_constant() else place.charts),
+            k, ky, comp)
+
+
+def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
+                    swapped: bool = False) -> None:
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    if _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y):
+        note(ctx, "common_root_not_searched",
+             equations=place.equations + [poly_text(ctx, h)], variable=y)
+        return
+    quotient = Quotient(h, kx)
+    common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
+    if len(common) > 2 and not swapped:
+        # several values of y over each point of h = 0 (angles that differ by pi): the
+        # family projects onto the hypersurfaces N = 0 in y and the parameters, N a
+        # factor of the norm res_x(h, g); over each, x is solved from h and g instead
+        g = sum((c * ctx.ring.zctx.gens()[ky] ** i for i, c in enumerate(common)),
+                ctx.ring.zctx.constant(0))
+        _, factors = factor(h.resultant(g, x))
+        for n, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
+            if n.degrees()[ky] == 0:
+                continue  # where the leading coefficients vanish: part of a wider set
+            n = normalize(n)
+            if no_real_points(ctx, n):
+                continue
+            if n.degrees()[ky] == 1:
+                _solve_linear_x(ctx, place, [*polys, h], n, y, x)
+            else:
+                _solve_curved_x(ctx, place, [*polys, h], n, y, x, swapped=True)
+        return
+    if len(common) > 2:
+        note(ctx, "shared_values_not_solved", depth=place.depth,
+             polynomial=poly_text(ctx, h), count=len(common) - 1, variable=y)
+        return
+    if len(common) < 2:
+        return
+    c0, c1 = smallest_fraction(*common, quotient)  # y = -c0/c1, c1 free of x
+    if off_charts([*place.charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
+                  quotient):
+        return
+    rows = substitute_rows(place.rows, ky, c0, c1)
+    numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+    y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
+    eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, y_eq)]
+    if numbers == place.base:
+        ctx.steps.inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
+                                                     charts=()))
+        return
+    inner = dict(place.point)
+    inner[y] = (c0, c1)
+    comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"},
+                          Remark.of("decided_family_modulo"), within=inner,
+                          generic_point=(inner, quotient))
+    if comp is None:
+        return
+    family_witness(ctx, comp, h, x, inner, numbers)
+    if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
+        ctx.steps.go_deeper(ctx, comp, place.inside(rows=None, point=None),
+                            "no_parametrization")
+    else:
+        inside_curved(ctx, place.inside(
+            rows=rows, equations=comp.equations, point=inner,
+            charts=(*place.charts, c1) if not c1.is_constant() else place.charts),
+            h, kx, comp)
+
+
+# parameters of a family set to random integers of at most this size
+_SPECIALIZE_BOUND = 1 << 16
+
+
+def _enclosing_numbers_at_a_point(ctx: SearchContext, place: Place, polys, h, x, y) -> bool:
+    """Whether the family ``h = 0`` (``x`` curved), ``y`` a common root of ``polys``,
+    has the enclosing numbers, shown at one point of it: the other variables set to
+    random integers, ``x`` a root of a factor of ``h`` there, ``y`` from the gcd over
+    ``Q(x)``. Ranks never rise at a special point and never exceed the enclosing ones, so
+    equal ranks there are the family's own. ``False`` means not shown (the family is then
+    decided over its function field). The point lies on the family unless the random
+    values hit a proper subset of it (Schwartz-Zippel)."""
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    values = {n: Fraction(ctx.rng.randint(-_SPECIALIZE_BOUND, _SPECIALIZE_BOUND))
+              for n in ctx.ring_names if n not in (x, y)}
+    (h_here, *polys_here), = substitute_values(ctx, [[h, *polys]], values)
+    if h_here.degrees()[kx] < h.degrees()[kx] or any(
+            p.degrees()[ky] < q.degrees()[ky] for p, q in zip(polys_here, polys, strict=True)):
+        return False
+    _, factors = factor(h_here)
+    curved = [f for f, _e in factors if f.degrees()[kx] > 0]
+    if not curved:
+        return False
+    quotient = Quotient(min(curved, key=lambda f: (f.degrees()[kx], len(f))), kx)
+    common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient)
+    if len(common) != 2:
+        return False
+    rows = substitute_rows(substitute_values(ctx, place.rows, values), ky, *common)
+    return numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient) == place.base
+
+
+def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
+                  free) -> tuple | None:
+    """The numbers on the set where some coordinates are fixed (rationals, or
+    polynomials over Q in a root ``x`` of ``g`` when ``algebraic = (x, g, equations,
+    alpha)``, ``alpha`` naming what ``x`` stands for), every
+    other free variable staying generic, decided exactly."""
+    quotient = None
+    if algebraic is not None:
+        x, g, _, _ = algebraic
+        quotient = Quotient(g, ctx.ring_names.index(x))
+    x = algebraic[0] if algebraic is not None else None
+    for c in place.charts:
+        c_here = substitute_values(ctx, [[c]], values, x)[0][0]
+        if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
+            return None  # outside the enclosing parametrization
+    rows = substitute_values(ctx, place.rows, values, x)
+    if quotient is None:
+        numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    else:
+        numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+    eqs = list(place.equations)
+    if algebraic is not None:
+        eqs += [poly_text(ctx, e) for e in algebraic[2]]
+    else:
+        eqs += [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
+    dims = set(values) | ({x} if x is not None else set())
+    kind = "isolated" if len(dims) == len(free) else "subvariety"
+    if numbers == place.base:
+        if kind == "subvariety":
+            sub_point = dict(place.point)
+            zctx = ctx.ring.zctx
+            if algebraic is None:
+                for n, v in values.items():
+                    sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
+            ctx.steps.inside_candidate(ctx, place.inside(rows=rows if algebraic is None else None,
+                                                         equations=eqs, point=sub_point))
+        return None
+    if algebraic is None:
+        chain = dict(place.point)
+        for n, v in values.items():
+            chain[n] = (ctx.ring.zctx.constant(-v.numerator),
+                        ctx.ring.zctx.constant(v.denominator))
+        comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
+                              Remark.of("decided_at_point" if kind == "isolated" else
+                                        "decided_free_variables"),
+                              chain=chain)
+        if comp is None:
+            return None
+        for offset in range(6):
+            full = complete_point(ctx, place.point, values, offset)
+            if full is not None and numbers_at_values(ctx, full) == numbers:
+                attach_witness(ctx, comp, to_at(ctx, full), numbers)
+                break
+        sub_point = dict(place.point)
+        zctx = ctx.ring.zctx
+        for n, v in values.items():
+            sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
+        ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point))
+        return comp, values, None
+    x, g, eq_polys, alpha = algebraic
+    condition = algebraic_condition(ctx, x, g, values)
+    if place.equations:
+        inside = angle_condition(ctx, place.equations)
+        condition = " or ".join(f"{inside}, {part}" for part in condition.split(" or "))
+    m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
+                                                             sp.Symbol("alpha")))
+    comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
+                          Remark.of("decided_algebraic", variable=alpha, minimal_polynomial=m),
+                          condition=condition, within=place.point)
+    if comp is None:
+        return None
+    attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
+    ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
+                        "irrational_family")
+    return comp, values, (x, g)
