@@ -320,9 +320,41 @@ class ChainQ:
         ``values``: ``(a, b)`` with ``tan(q/2) = a/b`` for a revolute joint, ``d = a/b``
         for a prismatic one. Raises :class:`Unlucky` when a denominator vanishes in
         ``field``."""
+        joints, contacts = self._bound(field)
+
+        def value(col: int, spec: dict, fixed: Any) -> Any:
+            if spec["swept"] is None:
+                return fixed
+            a, b = values[spec["swept"]]
+            return field.revolute(a, b) if spec["kind"] == "revolute" else field.ratio(a, b)
+
+        poses, axes, origins = self.poses(field, value, self.depth)
+        return self._assemble(field, contacts, poses, axes, origins)
+
+    def poses(self, field: Field, value, depth: Sequence[int] | None = None
+              ) -> tuple[list[list], list, list]:
+        """The pose ``(R, t)`` of every link of every arm (``poses[arm][link]``, link 0
+        the base: ``x -> R x + t`` maps its home points to the current ones), and each
+        joint's current axis and point, with each joint at ``value(col, spec, fixed)``
+        (``(cos q, sin q)`` or the displacement, in ``field``; ``fixed`` is its value
+        when not swept) and each arm followed up to ``depth[arm]`` links (default: all).
+
+        Example
+        -------
+        >>> from coopkin_sym.model import load_model
+        >>> model = load_model("paper-case1-hard")
+        >>> chain = ChainQ(chain_data(model, Configuration.parse(model, "L=1"), ()))
+        >>> field = RationalField()
+        >>> poses, _, _ = chain.poses(field, lambda col, spec, fixed: (0, 1))  # q = pi/2
+        >>> [str(x) for x in poses[0][1][1]]
+        ['0', '0', '0']
+        """
         data = self.data
         red, one, zero = field.red, field.one, field.zero
-        joints, contacts = self._bound(field)
+        joints, _ = self._bound(field)
+        if depth is None:
+            depth = [len([j for j in data["joints"] if j["arm"] == arm])
+                     for arm in range(len(data["offsets"]))]
         axes: list = [None] * len(joints)
         origins: list = [None] * len(joints)
         poses: list[list] = []
@@ -330,22 +362,17 @@ class ChainQ:
         for arm, offset in enumerate(data["offsets"]):
             rot, trans = ident, [zero, zero, zero]
             arm_poses = [(rot, trans)]
-            for col in range(offset, offset + self.depth[arm]):
+            for col in range(offset, offset + depth[arm]):
                 spec = data["joints"][col]
                 axis, point, k, k2, fixed = joints[col]
-                if spec["swept"] is not None:
-                    a, b = values[spec["swept"]]
-                    value = (field.revolute(a, b) if spec["kind"] == "revolute"
-                             else field.ratio(a, b))
-                else:
-                    value = fixed
+                current = value(col, spec, fixed)
                 axes[col] = _vec(rot, axis, red)
                 if point is not None:
                     rp = _vec(rot, point, red)
                     origins[col] = [red(rp[i] + trans[i]) for i in range(3)]
                 if spec["kind"] == "revolute":
                     # x -> R (Rj (x - o) + o) + t = (R Rj) x + (current o) - (R Rj) o
-                    c, s = value
+                    c, s = current
                     v = one - c
                     turn = [[red((one if i == j else zero) + s * k[i][j] + v * k2[i][j])
                              for j in range(3)] for i in range(3)]
@@ -353,10 +380,10 @@ class ChainQ:
                     moved = _vec(rot, point, red)
                     trans = [red(o - x) for o, x in zip(origins[col], moved, strict=True)]
                 else:
-                    trans = [red(trans[i] + value * axes[col][i]) for i in range(3)]
+                    trans = [red(trans[i] + current * axes[col][i]) for i in range(3)]
                 arm_poses.append((rot, trans))
             poses.append(arm_poses)
-        return self._assemble(field, contacts, poses, axes, origins)
+        return poses, axes, origins
 
     def _assemble(self, field, contacts, poses, axes, origins) -> list[list[Any]]:
         data = self.data
