@@ -354,6 +354,23 @@ class LocusError(ValueError, CoopkinError):
     """
 
 
+class FiniteMobilityError(ValueError, CoopkinError):
+    """A finite-mobility question this system or configuration cannot be asked: a
+    contact that is not holonomic (``soft``: no spin about the normal is a condition on
+    velocities, not on positions), a parameter without a value, or an irrational
+    configuration.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.finite import finite_mobility
+    >>> finite_mobility(load("paper-case1-soft").model, "q1=0,q2=0")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.FiniteMobilityError: contact 1 is soft: its no-spin condition ...
+    """
+
+
 class CertifyError(ValueError, CoopkinError):
     """A locus that does not belong to the system (other variables or values).
 

@@ -1,0 +1,310 @@
+"""Finite mobility: the local dimension of the closed system's configuration space.
+
+The seven numbers are first-order. With holonomic contacts (hard, complete, and
+frictionless ones read as a point on a flat face of the object) arms and object form
+a linkage whose configurations ``V`` are the zeros of a constraint map ``F``
+(:mod:`.constraints`); its expansion at a configuration, exact to a stated order and
+reduced to the first-order motions (:mod:`.reduce`), says whether they are finite:
+
+* ``rank J`` equal to the number of rows (a submersion), or to the generic rank of
+  ``Q`` with hard and complete contacts only (the rank of ``DF`` is that of ``Q`` at
+  every nearby point, so it is constant): ``V`` is smooth there, of dimension
+  ``n = dim ker J``, by the constant rank theorem;
+* otherwise the reduced equations ``g`` decide: the real zeros of their initial forms
+  hold the real tangent cone, so none but the origin means an isolated configuration
+  (dimension 0: shaky when first-order motions exist); one equation whose initial form
+  has real zeros where its gradient does not vanish gives, by the implicit function
+  theorem after a blow-up, real branches of dimension ``n - 1`` tangent to them (two
+  hyperplanes: a bifurcation; an irreducible quadratic cone: a cone point); binary
+  forms give one branch per simple real root. Anything else is undecided at the order
+  reached, with the bounds that are proved.
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> fm = finite_mobility(load("paper-case1-planar").model, "q1=pi/2,q2=pi/2")
+>>> fm.dimension, fm.first_order, fm.classification, len(fm.branches)
+(1, 2, 'bifurcation', 2)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from coopkin_sym.analysis.finite.constraints import ConstraintMap
+from coopkin_sym.analysis.finite.forms import diagonal_form, quadratic_matrix, real_directions
+from coopkin_sym.analysis.finite.reduce import Reduced, reduce_map
+from coopkin_sym.analysis.finite.series import SeriesField
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model
+
+#: The highest order tried when none is given.
+DEFAULT_ORDER = 4
+
+CLASSES = ("regular", "kinematic_singularity", "bifurcation", "cone", "shaky", "undecided")
+
+
+@dataclass(frozen=True)
+class Branch:
+    """One branch of the closed system's motions through the configuration: its
+    ``dimension``, and its tangent space as exact velocity vectors ``(u, qdot)`` (the
+    columns of ``Q``: ``Q v = 0``), or, for a cone, the quadratic form whose zeros
+    (velocities ``v``) it is (``cone``, a SymPy expression in ``v1, v2, ...``).
+
+    Example
+    -------
+    >>> Branch(1, ((0, 0, 1),)).dimension
+    1
+    """
+
+    dimension: int
+    tangent: tuple[tuple, ...] | None = None
+    cone: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class FiniteMobility:
+    """The local dimension of the configuration space at one configuration.
+
+    Attributes
+    ----------
+    dimension
+        The finite mobility (None when undecided).
+    bounds
+        ``(lower, upper)`` proved (equal when decided).
+    first_order
+        The dimension of the first-order motions (``dim ker Q`` without the joints
+        held still).
+    classification
+        One of :data:`CLASSES`.
+    reason
+        How it was decided (``"submersion"``, ``"constant_rank"``, ``"real_cone_origin"``,
+        ``"cone_regular_points"``, ``"binary_form_roots"``), or why not.
+    branches
+        The motion branches through the point (when decided).
+    orders
+        ``(i, m_i)``: the dimension of the first-order motions that extend to order
+        ``i`` (for the orders decided).
+    order
+        The order of the expansion used.
+    assumptions
+        What the model was read as (``"frictionless_flat_face"``, ``"unit_length"``).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> finite_mobility(load("paper-case1-planar").model, "q1=2*atan(1/2),q2=0").reason
+    'submersion'
+    """
+
+    dimension: int | None
+    bounds: tuple[int, int]
+    first_order: int
+    classification: str
+    reason: str
+    branches: tuple[Branch, ...] = ()
+    orders: tuple[tuple[int, int], ...] = ()
+    order: int = 1
+    assumptions: tuple[str, ...] = ()
+    equations: tuple[str, ...] = field(default=(), compare=False)
+
+
+def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...]]:
+    config = at if isinstance(at, Configuration) else Configuration.parse(model, at)
+    notes: tuple[str, ...] = ()
+    unset = [p for p in model.parameters if p.name not in config.parameters]
+    if len(unset) == 1 and len(model.parameters) == 1:
+        params = dict(config.parameters)
+        params[unset[0].name] = sp.Integer(1)
+        config = Configuration(config.revolute, config.prismatic, params, config.free)
+        notes = ("unit_length",)
+    return config, notes
+
+
+def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
+    """The velocity ``(u, qdot)`` (columns of ``Q``) of the first-order motion with
+    free coordinates ``x``: the pivots follow by ``J z = 0``, and ``v = S z`` with the
+    joints held still at 0."""
+    names = cmap.names
+    jac = cmap.linear()
+    z = {name: sp.Rational(0) for name in names}
+    for name, value in zip(red.free, x, strict=True):
+        z[name] = sp.nsimplify(value) if not isinstance(value, sp.Basic) else value
+    if red.pivots:
+        piv = [names.index(p) for p in red.pivots]
+        rows = list(red.rows)
+        a = sp.Matrix([[sp.Rational(str(jac[i][j])) for j in piv] for i in rows])
+        b = sp.Matrix([sum((sp.Rational(str(jac[i][names.index(f)])) * z[f]
+                            for f in red.free), sp.Rational(0)) for i in rows])
+        y = -a.LUsolve(b)
+        for k, p in enumerate(red.pivots):
+            z[p] = sp.simplify(y[k])
+    scale = cmap.scale
+    velocity = [scale[k] * z[name] for k, name in enumerate(names)]
+    nobj = 3 if cmap.planar else 6
+    out = velocity[:nobj]
+    moving = iter(velocity[nobj:])
+    for k in range(len(cmap.joint_names)):
+        out.append(next(moving) if k in cmap.moving else sp.Integer(0))
+    return tuple(out)
+
+
+def _kernel(cmap: ConstraintMap, red: Reduced, basis: list[list]) -> tuple[tuple, ...]:
+    return tuple(_velocity(cmap, red, x) for x in basis)
+
+
+def _unit(n: int, k: int) -> list:
+    return [sp.Integer(int(i == k)) for i in range(n)]
+
+
+def _hyperplane(form: list) -> list[list]:
+    """A basis of the zeros of the linear form with coefficients ``form``."""
+    n = len(form)
+    k = next(i for i in range(n) if form[i] != 0)
+    basis = []
+    for j in range(n):
+        if j == k:
+            continue
+        v = _unit(n, j)
+        v[k] = -form[j] / form[k]
+        basis.append(v)
+    return basis
+
+
+def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
+    """What the reduced equations prove at a rank drop (see the module's text)."""
+    n = red.n
+    field = SeriesField(red.free, red.order)
+    lows = [field.lowest(g) for g in red.g]
+    forms = [(d, h) for d, h in lows if d <= red.order]
+    vanishing = len(lows) - len(forms)
+    upper = n - 1 if forms else n
+    out = {"bounds": (0, upper), "classification": "undecided", "dimension": None,
+           "reason": f"undecided_at_order_{red.order}", "branches": (),
+           "orders": tuple((i, n) for i in range(1, min([d for d, _ in forms] +
+                                                         [red.order + 1])))}
+    if n == 0:
+        return dict(out, bounds=(0, 0), dimension=0, classification="regular",
+                    reason="no_first_order_motion")
+    isolated = _only_origin([h for _, h in forms], n)
+    if isolated:
+        return dict(out, bounds=(0, 0), dimension=0, classification="shaky",
+                    reason="real_cone_origin")
+    if vanishing or len(forms) != 1:
+        return out
+    d, h = forms[0]
+    if d == 2:
+        ds, lins = diagonal_form(quadratic_matrix(h, n))
+        pos, neg = sum(1 for x in ds if x > 0), sum(1 for x in ds if x < 0)
+        if not (pos and neg):
+            return dict(out, bounds=(0, n - len(ds)))
+        out = dict(out, bounds=(n - 1, n - 1), dimension=n - 1,
+                   reason="cone_regular_points", orders=((1, n), (2, n - 1)))
+        if len(ds) == 2:
+            a, b = (ds[0], ds[1]) if ds[0] > 0 else (ds[1], ds[0])
+            lin_a, lin_b = (lins[0], lins[1]) if ds[0] > 0 else (lins[1], lins[0])
+            root = sp.sqrt(sp.Rational(-b.numerator, b.denominator)
+                           / sp.Rational(a.numerator, a.denominator))
+            planes = []
+            for sign in (1, -1):
+                form = [sp.Rational(x.numerator, x.denominator) * 1 for x in lin_a]
+                other = [sp.Rational(x.numerator, x.denominator) for x in lin_b]
+                planes.append([sp.nsimplify(form[i] - sign * root * other[i] / 1)
+                               for i in range(n)])
+            branches = tuple(Branch(n - 1, _kernel(cmap, red, _hyperplane(p)))
+                             for p in planes)
+            return dict(out, classification="bifurcation", branches=branches)
+        cone = sp.expand(sum(sp.Rational(x.numerator, x.denominator) *
+                             sum(sp.Rational(c.numerator, c.denominator) *
+                                 sp.Symbol(f"x{i + 1}") for i, c in enumerate(lin)) ** 2
+                             for x, lin in zip(ds, lins, strict=True)))
+        return dict(out, classification="cone", branches=(Branch(n - 1, None, cone),))
+    if n == 2:
+        directions = real_directions([h], 2)
+        if any(m > 1 for _, m in directions):
+            return out
+        branches = []
+        for (a, b), _m in directions:
+            a = a.expression() if hasattr(a, "expression") else sp.Rational(str(a))
+            branches.append(Branch(1, _kernel(cmap, red, [[a, sp.Integer(b)]])))
+        kind = "bifurcation" if len(branches) > 1 else "kinematic_singularity"
+        return dict(out, bounds=(1, 1), dimension=1, classification=kind,
+                    reason="binary_form_roots", branches=tuple(branches),
+                    orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
+    return out
+
+
+def _only_origin(forms: list, n: int) -> bool:
+    """Whether the common real zeros of homogeneous forms in ``n`` variables are the
+    origin alone (proved: one variable and a nonzero form; two variables and no common
+    real root; or a definite quadratic form)."""
+    if not forms:
+        return False
+    if n == 1:
+        return True
+    if n == 2:
+        return real_directions(forms, 2) == []
+    for h in forms:
+        if h.total_degree() == 2:
+            ds, _ = diagonal_form(quadratic_matrix(h, n))
+            if len(ds) == n and (all(x > 0 for x in ds) or all(x < 0 for x in ds)):
+                return True
+    return False
+
+
+def finite_mobility(model: Model, at=None, order: int | None = None,
+                    generic_rank: int | None = None,
+                    numbers_change: bool | None = None) -> FiniteMobility:
+    """The finite mobility of ``model`` at the configuration ``at`` (``--at`` syntax or
+    a :class:`~coopkin_sym.model.configuration.Configuration`; every joint at a
+    rational ``tan(q/2)``, ``q = pi`` included, and every parameter set, a single
+    length set to 1 when left free), exact to ``order`` (default: 2, 3, ... up to
+    :data:`DEFAULT_ORDER`, until decided). ``generic_rank`` is the rank of ``Q`` over
+    the joint variables (computed when not given); ``numbers_change`` whether the
+    seven numbers here differ from the generic ones (for the words "regular" and
+    "kinematic singularity").
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> fm = finite_mobility(load("paper-case1-hard").model, "q1=pi/2,q2=pi/2")
+    >>> fm.dimension, fm.first_order, fm.classification
+    (2, 3, 'bifurcation')
+    """
+    config, notes = _configuration(model, at)
+    cmap = ConstraintMap(model, config)
+    if cmap.frictionless:
+        notes = notes + ("frictionless_flat_face",)
+    if generic_rank is None or numbers_change is None:
+        from coopkin_sym.analysis.mobility import Analysis
+
+        here = Analysis(model, config)
+        generic_config = Configuration({}, {}, dict(config.parameters),
+                                       frozenset(j.name for j in model.joints))
+        there = Analysis(model, generic_config)
+        if generic_rank is None:
+            generic_rank = there.m - there.numbers.Nh
+        if numbers_change is None:
+            numbers_change = here.numbers.as_dict() != there.numbers.as_dict()
+    first = reduce_map(cmap, 1)
+    n, rank, rows = first.n, first.rank, first.equations
+    smooth = ("submersion" if rank == rows else "constant_rank"
+              if rank == generic_rank and not cmap.frictionless else None)
+    if smooth is not None:
+        basis = [_unit(n, k) for k in range(n)]
+        return FiniteMobility(n, (n, n), n, "kinematic_singularity" if numbers_change
+                              else "regular", smooth,
+                              (Branch(n, _kernel(cmap, first, basis)),),
+                              tuple((i, n) for i in (1,)), 1, notes)
+    orders = [order] if order is not None else list(range(2, DEFAULT_ORDER + 1))
+    for k in orders:
+        red = reduce_map(cmap, k)
+        found = _decide_singular(cmap, red)
+        if found["dimension"] is not None or k == orders[-1]:
+            return FiniteMobility(found["dimension"], found["bounds"], n,
+                                  found["classification"], found["reason"],
+                                  found["branches"], found["orders"], k, notes,
+                                  tuple(str(g) for g in red.g))
+    raise AssertionError("unreachable")  # pragma: no cover

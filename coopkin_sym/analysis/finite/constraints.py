@@ -1,0 +1,202 @@
+"""The closed system's constraint map near a configuration, as truncated power series.
+
+With ``hard`` contacts (the contact point fixed on both bodies), ``complete`` ones (the
+link welded to the object) and ``frictionless`` ones (the link's point kept on a flat
+face of the object, an assumption stated in the result), arms and object form a
+linkage whose configurations are the zeros of ``F(z)``, written in the object's frame
+so that its Jacobian has, at *every* nearby point, the rank of ``Q`` there:
+
+* hard: ``R(w)^T (c(z) - p) - c0`` (3 rows, 2 planar), ``c(z)`` the contact point of
+  the link, ``c0`` its place at the configuration;
+* complete: also ``vee(skew(R(w)^T R_link(z) R_link0^T))`` (3 rows, 1 planar);
+* frictionless: ``n0 . (R(w)^T (c(z) - p) - c0)``.
+
+The local coordinates ``z`` are the object's displacement ``p`` and Cayley rotation
+vector ``w`` (``R(w) = I + 2 (W + W^2) / (1 + w.w)``), then ``u_k = tan(dq_k/2)`` for
+each revolute joint (``q_k = q0_k + dq_k``: any angle, ``q = pi`` included) and the
+displacement change of each prismatic one; joints held still have none. Their order is
+that of the columns of ``Q``, and the rows that of its rows, so the linear part is
+``J = -Q S``: ``S`` is 2 on the rotation and revolute columns, 1 elsewhere.
+
+Example
+-------
+>>> from coopkin_sym.model import load_model
+>>> from coopkin_sym.model.configuration import Configuration
+>>> model = load_model("paper-case1-hard")
+>>> cmap = ConstraintMap(model, Configuration.parse(model, "q1=pi/2,q2=pi/2,L=1"))
+>>> cmap.names
+('p1', 'p2', 'p3', 'w1', 'w2', 'w3', 'u_q1', 'u_q2')
+>>> [str(x) for x in cmap.linear()[0]]
+['-1', '0', '0', '0', '0', '0', '0', '0']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from coopkin_sym.analysis.finite.series import SeriesField
+from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
+from coopkin_sym.errors import FiniteMobilityError
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model
+
+#: The contact models whose constraints hold on positions (soft is not holonomic).
+HOLONOMIC = ("hard", "complete", "frictionless")
+
+
+def _cross(a, b, f: SeriesField):
+    return [f.red(a[1] * b[2] - a[2] * b[1]), f.red(a[2] * b[0] - a[0] * b[2]),
+            f.red(a[0] * b[1] - a[1] * b[0])]
+
+
+def _apply(m, v, f: SeriesField):
+    return [f.red(sum((m[i][j] * v[j] for j in range(3)), f.zero)) for i in range(3)]
+
+
+def _matmul(a, b, f: SeriesField):
+    return [[f.red(sum((a[i][k] * b[k][j] for k in range(3)), f.zero)) for j in range(3)]
+            for i in range(3)]
+
+
+def cayley(w: Sequence, f: SeriesField) -> list[list]:
+    """``R(w) = I + 2 (W + W^2) / (1 + w.w)``, ``W`` the cross-product matrix of ``w``.
+
+    Example
+    -------
+    >>> f = SeriesField(("a",), 3)
+    >>> (a,) = f.gens
+    >>> [str(x) for x in cayley([f.zero, f.zero, a], f)[0]]
+    ['-2*a^2 + 1', '2*a^3 - 2*a', '0']
+    """
+    z = f.zero
+    big_w = [[z, -w[2], w[1]], [w[2], z, -w[0]], [-w[1], w[0], z]]
+    w2 = _matmul(big_w, big_w, f)
+    scale = f.red(2 * f.inverse(f.one + f.red(w[0] ** 2 + w[1] ** 2 + w[2] ** 2)))
+    return [[f.red((f.one if i == j else z) + scale * (big_w[i][j] + w2[i][j]))
+             for j in range(3)] for i in range(3)]
+
+
+class ConstraintMap:
+    """``F(z)`` of the closed system at ``config`` (every joint and parameter set),
+    evaluated for coordinates given as series (:meth:`evaluate`).
+
+    Raises :class:`~coopkin_sym.errors.FiniteMobilityError` for a soft contact or a
+    parameter left symbolic.
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> model = load_model("paper-case1-planar")
+    >>> cmap = ConstraintMap(model, Configuration.parse(model, "q1=0,q2=0,L=1"))
+    >>> cmap.names, cmap.scale
+    (('p1', 'p2', 'w3', 'u_q1', 'u_q2'), [1, 1, 2, 2, 2])
+    """
+
+    def __init__(self, model: Model, config: Configuration):
+        for i, contact in enumerate(model.contacts):
+            if contact.model not in HOLONOMIC:
+                raise FiniteMobilityError(
+                    f"contact {i + 1} is {contact.model}: its no-spin condition is not "
+                    "holonomic (it bounds velocities, not positions), so the system has "
+                    "no configuration space to expand; finite mobility is defined for "
+                    "hard, complete and frictionless contacts")
+        unset = [p.name for p in model.parameters if p.name not in config.parameters]
+        if unset:
+            raise FiniteMobilityError(f"finite mobility needs a value for {', '.join(unset)}"
+                                      " (give it with at=)")
+        self.model = model
+        self.config = config
+        self.chain = ChainQ(chain_data(model, config, ()))
+        self.planar = model.planar
+        joints = self.chain.data["joints"]
+        self.joint_names = [j.name for arm in model.arms for j in arm.joints]
+        self.moving = [k for k, j in enumerate(joints) if not j["locked"]]
+        obj = ("p1", "p2", "w3") if self.planar else ("p1", "p2", "p3", "w1", "w2", "w3")
+        self.names = obj + tuple(
+            ("u_" if joints[k]["kind"] == "revolute" else "d_") + self.joint_names[k]
+            for k in self.moving)
+        self.frictionless = any(c.model == "frictionless" for c in model.contacts)
+        exact = RationalField()
+        self._home_poses, _, _ = self.chain.poses(exact, lambda col, spec, fixed: fixed)
+
+    @property
+    def scale(self) -> list[int]:
+        """``S``: the linear part is ``-Q S`` (see the module's text)."""
+        obj = [1, 1, 2] if self.planar else [1, 1, 1, 2, 2, 2]
+        joints = self.chain.data["joints"]
+        return obj + [2 if joints[k]["kind"] == "revolute" else 1 for k in self.moving]
+
+    def evaluate(self, f: SeriesField, z: Sequence) -> list:
+        """The rows of ``F`` at the coordinates ``z`` (series in ``f``, in the order of
+        :attr:`names`)."""
+        planar = self.planar
+        zero = f.zero
+        nobj = 3 if planar else 6
+        if planar:
+            p, w = [z[0], z[1], zero], [zero, zero, z[2]]
+        else:
+            p, w = list(z[0:3]), list(z[3:6])
+        rt = cayley([-x for x in w], f)            # R(w)^T = R(-w)
+        values = {k: z[nobj + i] for i, k in enumerate(self.moving)}
+
+        def value(col, spec, fixed):
+            if col not in values:           # held still (fixed is in the field already)
+                return fixed
+            u = values[col]
+            if spec["kind"] == "prismatic":
+                return f.red(fixed + u)
+            c0, s0 = fixed
+            inv = f.inverse(f.one + f.red(u * u))
+            one_minus = f.red(f.one - u * u)
+            return (f.red((c0 * one_minus - 2 * s0 * u) * inv),
+                    f.red((s0 * one_minus + 2 * c0 * u) * inv))
+
+        poses, _, _ = self.chain.poses(f, value)
+        lin_rows, ang_rows = [], []
+        keep = (0, 1) if planar else (0, 1, 2)
+        for (arm, link, _, _, model), (home_pt, home_nm) in zip(
+                self.chain.data["contacts"], self.chain._bound(RationalField())[1],
+                strict=True):
+            if arm is None:
+                c = [f.ctx.constant(x) for x in home_pt]
+                c0 = list(home_pt)
+            else:
+                rot, trans = poses[arm][link]
+                rc = _apply(rot, [f.ctx.constant(x) for x in home_pt], f)
+                c = [f.red(rc[i] + trans[i]) for i in range(3)]
+                rot0, trans0 = self._home_poses[arm][link]
+                c0 = [sum((rot0[i][j] * home_pt[j] for j in range(3)), 0) + trans0[i]
+                      for i in range(3)]
+            local = _apply(rt, [f.red(c[i] - p[i]) for i in range(3)], f)
+            gap = [f.red(local[i] - c0[i]) for i in range(3)]
+            if model == "frictionless":
+                rot0 = (self._home_poses[arm][link][0] if arm is not None else
+                        [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+                n0 = [sum((rot0[i][j] * home_nm[j] for j in range(3)), 0) for i in range(3)]
+                lin_rows.append(f.red(sum((n0[i] * gap[i] for i in keep), zero)))
+            else:
+                lin_rows += [gap[i] for i in keep]
+            if model == "complete":
+                if arm is None:
+                    rel = rt
+                else:
+                    rot0 = self._home_poses[arm][link][0]
+                    rot0_t = [[f.ctx.constant(rot0[j][i]) for j in range(3)]
+                              for i in range(3)]
+                    rel = _matmul(_matmul(rt, poses[arm][link][0], f), rot0_t, f)
+                vee = [f.red((rel[2][1] - rel[1][2]) / 2), f.red((rel[0][2] - rel[2][0]) / 2),
+                       f.red((rel[1][0] - rel[0][1]) / 2)]
+                ang_rows += [vee[2]] if planar else vee
+        return lin_rows + ang_rows
+
+    def linear(self) -> list[list]:
+        """The linear part ``J`` of ``F`` at the configuration (exact rationals)."""
+        f = SeriesField(self.names, 1)
+        rows = self.evaluate(f, f.gens)
+        n = len(self.names)
+        out = []
+        for r in rows:
+            d = r.to_dict()
+            out.append([d.get(tuple(1 if i == k else 0 for i in range(n)), 0)
+                        for k in range(n)])
+        return out

@@ -1,0 +1,84 @@
+"""Finite mobility: the local dimension of the closed system's configuration space."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from coopkin_sym import load
+from coopkin_sym.analysis.finite import finite_mobility
+from coopkin_sym.analysis.finite.constraints import ConstraintMap
+from coopkin_sym.analysis.finite.reduce import reduce_map
+from coopkin_sym.errors import FiniteMobilityError
+from coopkin_sym.model.configuration import Configuration
+
+POINTS = [
+    ("paper-case1-hard", "q1=pi/2,q2=pi/2,L=1"),
+    ("paper-case1-hard", "q1=2*atan(1/3),q2=2*atan(-2/5),L=1"),
+    ("paper-case1-complete-hard", "q1=2*atan(1/3),q2=pi,L=1"),
+    ("paper-case1-planar", "q1=2*atan(1/3),q2=2*atan(-2/5),L=1"),
+    ("paper-case2-complete", "q1=2*atan(1/3),q2=2*atan(-2/5),q3=2*atan(1/7),q4=2,q5=1,"
+                             "q6=2*atan(3),q7=pi,q8=-pi/2,L=1"),
+    ("five-bar", "q1=2*atan(1/3),q2=2*atan(-2/5),q3=2*atan(1/7),q4=2*atan(2),L=1"),
+]
+
+
+@pytest.mark.parametrize(("name", "at"), POINTS)
+def test_the_linear_part_of_the_constraint_map_is_q(name, at):
+    """``J = -Q S`` exactly: the expansion's first order is the velocity analysis."""
+    system = load(name)
+    cmap = ConstraintMap(system.model, Configuration.parse(system.model, at))
+    jac = sp.Matrix([[sp.Rational(str(x)) for x in row] for row in cmap.linear()])
+    assert jac == -system.analyze(at).Q * sp.diag(*cmap.scale)
+
+
+def test_case_1_planar_bifurcates_where_both_links_lie_on_the_contact_line():
+    """At q1 = q2 = pi/2 the planar case 1 (a closed loop through the object) has two
+    first-order motions but one finite one on each of two branches crossing there."""
+    system = load("paper-case1-planar")
+    red = reduce_map(ConstraintMap(system.model, Configuration.parse(
+        system.model, "q1=pi/2,q2=pi/2,L=1")), 2)
+    assert red.free == ("u_q1", "u_q2")
+    assert [str(g) for g in red.g] == ["-4*u_q1*u_q2 + 4*u_q2^2"]
+    fm = finite_mobility(system.model, "q1=pi/2,q2=pi/2")
+    assert (fm.dimension, fm.bounds, fm.first_order) == (1, (1, 1), 2)
+    assert (fm.classification, fm.reason) == ("bifurcation", "cone_regular_points")
+    assert fm.orders == ((1, 2), (2, 1))
+    q = system.analyze("q1=pi/2,q2=pi/2,L=1").Q
+    tangents = {b.tangent for b in fm.branches}
+    assert tangents == {((0, -2, 0, 2, 2),), ((0, 0, 2, 2, 0),)}
+    for b in fm.branches:
+        for v in b.tangent:
+            assert q * sp.Matrix(v) == sp.zeros(q.rows, 1)
+    assert fm.assumptions == ("unit_length",)
+
+
+def test_a_regular_configuration_moves_with_its_first_order_motions():
+    """Away from the locus the finite mobility is the number of first-order motions
+    (constant rank theorem), and its branch is the kernel of Q."""
+    system = load("paper-case1-hard")
+    at = "q1=2*atan(1/3),q2=2*atan(1/5)"
+    fm = finite_mobility(system.model, at)
+    a = system.analyze(at + ",L=1")
+    assert (fm.dimension, fm.classification, fm.reason) == (2, "regular", "submersion")
+    assert fm.first_order == a.numbers.Nm == 2
+    (branch,) = fm.branches
+    span = sp.Matrix.hstack(*[sp.Matrix(v) for v in branch.tangent])
+    assert a.Q * span == sp.zeros(a.Q.rows, 2)
+    assert span.rank() == 2
+
+
+def test_a_rank_drop_whose_expansion_vanishes_is_undecided_with_its_bounds():
+    """Case 1 with a complete contact at q2 = pi/2: the reduced equations vanish to the
+    order reached, so nothing is claimed beyond the bounds proved."""
+    fm = finite_mobility(load("paper-case1-complete-hard").model, "q1=0,q2=pi/2")
+    assert (fm.dimension, fm.bounds, fm.first_order) == (None, (0, 1), 1)
+    assert fm.classification == "undecided" and fm.reason == "undecided_at_order_4"
+
+
+def test_soft_contacts_and_free_lengths_are_refused_with_the_reason():
+    with pytest.raises(FiniteMobilityError, match="contact 1 is soft: its no-spin"):
+        finite_mobility(load("paper-case1-soft").model, "q1=0,q2=0")
+    with pytest.raises(FiniteMobilityError, match="needs a value for L"):
+        ConstraintMap(load("paper-case1-hard").model,
+                      Configuration.parse(load("paper-case1-hard").model, "q1=0"))
