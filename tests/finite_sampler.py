@@ -139,15 +139,18 @@ class Sampler:
         s = mp.svd_r(self.jacobian(x), compute_uv=False)
         return sum(1 for v in s if abs(v) > tol)
 
-    def dimension(self, samples: int = 12) -> int:
-        """The largest ``N - rank`` at projected points (regular ones)."""
-        return max(self.n - self.rank(x) for x in self.points(samples))
+    def dimension(self, samples: int = 12, radius=mp.mpf(10) ** -3) -> int:
+        """The largest ``N - rank`` at the projected points that stay away from the
+        configuration (0 when every projection falls back onto it: it is isolated)."""
+        away = [x for x in self.points(samples, radius)
+                if mp.sqrt(sum(v * v for v in x)) > radius / 100]
+        return max((self.n - self.rank(x) for x in away), default=0)
 
-    def directions(self, samples: int = 12):
-        """Unit vectors from the configuration to projected points."""
+    def directions(self, samples: int = 12, radius=mp.mpf(10) ** -3):
+        """Unit vectors from the configuration to the projected points away from it."""
         out = []
-        for x in self.points(samples):
+        for x in self.points(samples, radius):
             norm = mp.sqrt(sum(v * v for v in x))
-            if norm > 0:
+            if norm > radius / 100:
                 out.append([v / norm for v in x])
         return out

@@ -13,11 +13,11 @@ from coopkin_sym.cli import app
 
 runner = CliRunner()
 
-EXAMPLES = ["dh-three-finger-hand", "dh-two-puma560-box", "five-bar",
+EXAMPLES = ["dh-three-finger-hand", "dh-two-puma560-box", "five-bar", "four-bar",
             "paper-case1-complete-hard", "paper-case1-hard", "paper-case1-planar",
             "paper-case1-soft", "paper-case1-soft-hard", "paper-case2-complete",
             "paper-case2-hard", "planar-two-fingers", "quadruped-standing",
-            "underactuated-finger", "urdf-two-fingers"]
+            "shaky-pinned-bars", "underactuated-finger", "urdf-two-fingers"]
 
 
 def run_ok(*args: str) -> str:

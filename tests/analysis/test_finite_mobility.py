@@ -82,3 +82,28 @@ def test_soft_contacts_and_free_lengths_are_refused_with_the_reason():
     with pytest.raises(FiniteMobilityError, match="needs a value for L"):
         ConstraintMap(load("paper-case1-hard").model,
                       Configuration.parse(load("paper-case1-hard").model, "q1=0"))
+
+
+def test_the_four_bar_bifurcates_when_folded_and_moves_once_elsewhere():
+    system = load("four-bar")
+    home = finite_mobility(system.model, "q1=0,q2=0")
+    assert (home.dimension, home.first_order, home.classification) == (1, 1, "regular")
+    for at in ("q1=-pi/2,q2=-pi/2", "q1=pi/2,q2=pi/2"):
+        fm = finite_mobility(system.model, at)
+        assert (fm.dimension, fm.first_order, fm.classification) == (1, 2, "bifurcation")
+        assert len(fm.branches) == 2 and fm.orders == ((1, 2), (2, 1))
+        q = system.analyze(at).Q
+        assert all(q * sp.Matrix(b.tangent[0]) == sp.zeros(q.rows, 1) for b in fm.branches)
+    folded = finite_mobility(system.model, "q1=-pi/2,q2=-pi/2")
+    assert {b.tangent for b in folded.branches} == {
+        ((0, 2, 0, 2, 2),), ((0, -2, sp.Rational(4, 3), sp.Rational(-2, 3), 2),)}
+
+
+def test_pinned_bars_on_a_line_are_shaky():
+    """One first-order motion (the pin across the line), no finite one."""
+    system = load("shaky-pinned-bars")
+    assert system.analyze("q1=0,q2=0").numbers.Nm == 1
+    fm = finite_mobility(system.model, "q1=0,q2=0")
+    assert (fm.dimension, fm.bounds, fm.first_order) == (0, (0, 0), 1)
+    assert (fm.classification, fm.reason) == ("shaky", "real_cone_origin")
+    assert fm.equations == ("4*u_q2^2",) and fm.branches == ()

@@ -57,6 +57,9 @@ def _check(system, at: dict, samples: int = 10) -> None:
     ("paper-case1-hard", {"q1": "pi/2", "q2": "pi/2"}),
     ("paper-case1-hard", {"q1": "2*atan(1/3)", "q2": "pi"}),
     ("paper-case1-complete-hard", {"q1": "2*atan(1/3)", "q2": "2*atan(1/2)"}),
+    ("four-bar", {"q1": "-pi/2", "q2": "-pi/2"}),
+    ("four-bar", {"q1": "2*atan(1/2)", "q2": "2*atan(1/2)"}),
+    ("shaky-pinned-bars", {"q1": "0", "q2": "0"}),
 ])
 def test_the_sampler_sees_the_same_motions(name, at):
     _check(load(name), at)

@@ -26,6 +26,7 @@ EXAMPLES = [
     "dh-three-finger-hand",
     "dh-two-puma560-box",
     "five-bar",
+    "four-bar",
     "paper-case1-complete-hard",
     "paper-case1-hard",
     "paper-case1-planar",
@@ -35,6 +36,7 @@ EXAMPLES = [
     "paper-case2-hard",
     "planar-two-fingers",
     "quadruped-standing",
+    "shaky-pinned-bars",
     "underactuated-finger",
     "urdf-two-fingers",
 ]
@@ -93,7 +95,7 @@ def test_example_path_and_unknown_example():
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
     with pytest.raises(ArgumentError, match="unknown example 'x'; shipped examples: "
                                          "dh-three-finger-hand, dh-two-puma560-box, "
-                                         "five-bar, paper-case1-complete-hard, "):
+                                         "five-bar, four-bar, paper-case1-complete-hard, "):
         example_path("x")
 
 

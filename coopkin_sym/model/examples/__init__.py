@@ -7,11 +7,13 @@ section and the numbers the paper states. The ``dh-`` examples give their arms a
 Denavit-Hartenberg tables: a three-finger hand and two PUMA 560 arms holding a box;
 ``urdf-two-fingers`` reads its arms from a URDF file shipped beside it;
 ``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground;
-``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``).
+``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``);
+``four-bar`` (folded, it bifurcates) and ``shaky-pinned-bars`` (a first-order motion
+and no finite one) show finite mobility.
 
 Example
 -------
->>> list_examples()[3:5]
+>>> list_examples()[4:6]
 ['paper-case1-complete-hard', 'paper-case1-hard']
 >>> example_path("paper-case1-hard").name
 'paper-case1-hard.yaml'
