@@ -24,6 +24,10 @@ import mpmath as mp
 
 mp.mp.dps = 60
 
+STEP = mp.mpf(10) ** -25       # of the difference quotients
+RADIUS = mp.mpf(10) ** -3     # of the random displacements
+TOLERANCE = mp.mpf(10) ** -12  # of the numerical rank
+
 
 def _rot(axis, angle):
     """Rodrigues: the rotation by ``angle`` about the unit ``axis``."""
@@ -65,7 +69,7 @@ class Sampler:
         self.nobj = 3 if self.planar else 6
         self.n = self.nobj + len(self.names)
         self.home = {}
-        for i, (arm, link, point, model_) in enumerate(self.contacts):
+        for i, (arm, link, point, _) in enumerate(self.contacts):
             self.home[i] = self._link(arm, link, self.q0, point)
 
     def _link(self, arm, link, q, point):
@@ -103,7 +107,7 @@ class Sampler:
                 out += [m[1, 0]] if self.planar else [m[2, 1], m[0, 2], m[1, 0]]
         return out
 
-    def jacobian(self, x, h=mp.mpf(10) ** -25):
+    def jacobian(self, x, h=STEP):
         f0 = self.closure(x)
         cols = []
         for k in range(self.n):
@@ -125,7 +129,7 @@ class Sampler:
             x = [x[k] - dx[k] for k in range(self.n)]
         return x if mp.norm(mp.matrix(self.closure(x))) < mp.mpf(10) ** -30 else None
 
-    def points(self, samples: int = 12, radius=mp.mpf(10) ** -3, seed: int = 1):
+    def points(self, samples: int = 12, radius=RADIUS, seed: int = 1):
         rng = random.Random(seed)
         found = []
         for _ in range(samples):
@@ -135,18 +139,18 @@ class Sampler:
                 found.append(y)
         return found
 
-    def rank(self, x, tol=mp.mpf(10) ** -12) -> int:
+    def rank(self, x, tol=TOLERANCE) -> int:
         s = mp.svd_r(self.jacobian(x), compute_uv=False)
         return sum(1 for v in s if abs(v) > tol)
 
-    def dimension(self, samples: int = 12, radius=mp.mpf(10) ** -3) -> int:
+    def dimension(self, samples: int = 12, radius=RADIUS) -> int:
         """The largest ``N - rank`` at the projected points that stay away from the
         configuration (0 when every projection falls back onto it: it is isolated)."""
         away = [x for x in self.points(samples, radius)
                 if mp.sqrt(sum(v * v for v in x)) > radius / 100]
         return max((self.n - self.rank(x) for x in away), default=0)
 
-    def directions(self, samples: int = 12, radius=mp.mpf(10) ** -3):
+    def directions(self, samples: int = 12, radius=RADIUS):
         """Unit vectors from the configuration to the projected points away from it."""
         out = []
         for x in self.points(samples, radius):
