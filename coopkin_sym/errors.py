@@ -242,6 +242,22 @@ class UrdfError(ValueError, CoopkinError):
     """
 
 
+class MjcfError(ValueError, CoopkinError):
+    """An MJCF (MuJoCo) file that cannot be used for an arm (a ball or free joint on
+    the chain, an ``<include>``, a branching body tree without a tip...). The model
+    loader reports it as one line of a :class:`ModelError`, naming the arm.
+
+    Example
+    -------
+    >>> from coopkin_sym.model.mjcf import read_mjcf_text
+    >>> read_mjcf_text('<mujoco><worldbody><body name="b"><joint type="ball"/></body>'
+    ...                '</worldbody></mujoco>', "m.xml")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.MjcfError: m.xml: body 'b': a ball joint is not supported on ...arm)
+    """
+
+
 class ConfigurationError(ValueError, CoopkinError):
     """A configuration that names an unknown variable or has an inexact value.
 
