@@ -1,0 +1,149 @@
+"""Finite mobility in words, LaTeX and JSON (:mod:`coopkin_sym.analysis.finite`).
+
+Example
+-------
+>>> from coopkin_sym import load
+>>> from coopkin_sym.analysis.finite import finite_mobility
+>>> fm = finite_mobility(load("four-bar").model, "q1=-pi/2,q2=-pi/2")
+>>> print(finite_lines(fm)[0])
+Finite mobility: 1 (first-order motions: 2) - a bifurcation: 2 branches of 1 motion cross here.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from coopkin_sym.analysis.finite import FiniteMobility
+
+_CLASS_WORDS = {
+    "regular": "a regular configuration: the system moves with all its first-order "
+               "motions",
+    "kinematic_singularity": "a kinematic singularity at a smooth point of the "
+                             "configuration space: the instantaneous numbers change, "
+                             "the finite motions do not",
+    "bifurcation": "a bifurcation: {branches} branches of {dim} motion{s} cross here",
+    "cone": "a singular point of the configuration space: its motions form a cone "
+            "(one branch of {dim} motion{s}, not smooth here)",
+    "shaky": "shaky: first-order motions exist, but no finite motion follows them",
+    "undecided": "undecided at order {order}: the expansion proves only "
+                 "{lower} <= finite mobility <= {upper}",
+}
+
+_REASON_WORDS = {
+    "submersion": "the constraints are independent here (their Jacobian has full row "
+                  "rank), so the configuration space is smooth (implicit function "
+                  "theorem)",
+    "constant_rank": "the rank of Q here is its generic rank, so it is constant nearby "
+                     "and the configuration space is smooth (constant rank theorem)",
+    "real_cone_origin": "the lowest-order terms of the reduced constraints have no real "
+                        "zero but the origin, so no real motion leaves the configuration",
+    "cone_regular_points": "the reduced constraint's quadratic term is indefinite, so "
+                           "real branches leave along its zero set (implicit function "
+                           "theorem after a blow-up)",
+    "binary_form_roots": "each simple real root of the reduced constraint's lowest "
+                         "term is the tangent of one smooth branch",
+    "no_first_order_motion": "there is no first-order motion",
+}
+
+_ASSUMPTION_WORDS = {
+    "unit_length": "the one length parameter was set to 1 (scaling changes no dimension)",
+    "frictionless_flat_face": "each frictionless contact is read as the link's point "
+                              "kept on a flat face of the object",
+}
+
+
+def classification_text(fm: FiniteMobility) -> str:
+    """The classification in words."""
+    dim = fm.branches[0].dimension if fm.branches else fm.dimension
+    return _CLASS_WORDS[fm.classification].format(
+        branches=len(fm.branches), dim=dim, s="" if dim == 1 else "s", order=fm.order,
+        lower=fm.bounds[0], upper=fm.bounds[1])
+
+
+def _vector(v) -> str:
+    return "(" + ", ".join(str(sp.nsimplify(x)) for x in v) + ")"
+
+
+def finite_lines(fm: FiniteMobility) -> list[str]:
+    """The lines ``coopkin analyze --finite`` prints.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.finite import finite_mobility
+    >>> fm = finite_mobility(load("shaky-pinned-bars").model, "q1=0,q2=0")
+    >>> print(finite_lines(fm)[0].replace(" - ", chr(10)))
+    Finite mobility: 0 (first-order motions: 1)
+    shaky: first-order motions exist, but no finite motion follows them.
+    """
+    value = "undecided" if fm.dimension is None else str(fm.dimension)
+    lines = [f"Finite mobility: {value} (first-order motions: {fm.first_order}) - "
+             f"{classification_text(fm)}."]
+    if fm.reason in _REASON_WORDS:
+        lines.append(f"  Proof: {_REASON_WORDS[fm.reason]} (expansion to order "
+                     f"{fm.order}).")
+    for k, branch in enumerate(fm.branches, 1):
+        if branch.tangent is not None:
+            span = ", ".join(_vector(v) for v in branch.tangent) or "{0}"
+            lines.append(f"  Branch {k}: {branch.dimension} motion"
+                         f"{'' if branch.dimension == 1 else 's'}, tangent to the span of "
+                         f"{span} in (u, qdot)")
+        else:
+            lines.append(f"  Branch {k}: {branch.dimension} motions, tangent to the cone "
+                         f"{branch.cone} = 0 (in the first-order motions)")
+    if len(fm.orders) > 1:
+        lines.append("  First-order motions that extend to order i: "
+                     + ", ".join(f"order {i}: {m}" for i, m in fm.orders))
+    if fm.equations and fm.dimension is None:
+        if all(e == "0" for e in fm.equations):
+            lines.append(f"  The reduced constraints vanish to order {fm.order}: every "
+                         f"first-order motion extends that far.")
+        else:
+            lines.append(f"  Reduced constraints (to order {fm.order}): "
+                         + "; ".join(f"{e} = 0" for e in fm.equations))
+    lines += [f"  Assumed: {_ASSUMPTION_WORDS[a]}." for a in fm.assumptions]
+    return lines
+
+
+def finite_latex(fm: FiniteMobility) -> str:
+    """A LaTeX paragraph: the finite mobility, its classification and its branches."""
+    value = r"\text{undecided}" if fm.dimension is None else str(fm.dimension)
+    out = [f"Finite mobility ${value}$ (first-order motions: ${fm.first_order}$): "
+           f"{classification_text(fm)}."]
+    for k, branch in enumerate(fm.branches, 1):
+        if branch.tangent:
+            span = ", ".join(sp.latex(sp.Matrix(v).T) for v in branch.tangent)
+            out.append(f"Branch {k}: tangent to $\\operatorname{{span}}\\{{{span}\\}}$.")
+        elif branch.cone is not None:
+            out.append(f"Branch {k}: tangent to the cone ${sp.latex(branch.cone)} = 0$.")
+    return "\n".join(out) + "\n"
+
+
+def finite_json(fm: FiniteMobility) -> dict:
+    """The ``"finite"`` entry of the analyze JSON: plain data, exact values as text.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.finite import finite_mobility
+    >>> data = finite_json(finite_mobility(load("four-bar").model, "q1=0,q2=0"))
+    >>> data["dimension"], data["classification"], data["branches"][0]["dimension"]
+    (1, 'regular', 1)
+    """
+    return {
+        "dimension": fm.dimension,
+        "bounds": list(fm.bounds),
+        "first_order": fm.first_order,
+        "classification": fm.classification,
+        "classification_text": classification_text(fm),
+        "reason": fm.reason,
+        "branches": [{"dimension": b.dimension,
+                      "tangent": None if b.tangent is None else
+                      [[str(x) for x in v] for v in b.tangent],
+                      "cone": None if b.cone is None else str(b.cone)}
+                     for b in fm.branches],
+        "orders": [{"order": i, "dimension": m} for i, m in fm.orders],
+        "order": fm.order,
+        "assumptions": list(fm.assumptions),
+        "reduced_constraints": list(fm.equations),
+    }
