@@ -5,8 +5,9 @@ frame (``c_link(q) = R c0 + p``, and ``R_link(q) R_link(q0)^T = R`` for a welded
 contact), the joints by Rodrigues' formula, the object by the exponential map, all in
 mpmath at 60 digits. Random small displacements of every coordinate are projected
 onto the closure by Gauss-Newton; the projected points show the local dimension (the
-largest ``N - rank`` of the closure's Jacobian at them, numerically, away from the
-point itself) and the directions of the branches (``(point - q0) / |point - q0|``).
+largest dimension of the closure at them, from the cloud of points projected from
+around each, away from the point itself) and the directions of the branches
+(``(point - q0) / |point - q0|``).
 
 Example
 -------
@@ -143,12 +144,30 @@ class Sampler:
         s = mp.svd_r(self.jacobian(x), compute_uv=False)
         return sum(1 for v in s if abs(v) > tol)
 
+    def local_dimension(self, x, seed: int = 2) -> int:
+        """The dimension of the closure at its point ``x``, from a cloud around it:
+        small displacements projected back, and the count of the cloud's singular
+        values above a hundredth of the largest (its tangent space)."""
+        rng = random.Random(seed)
+        size = mp.sqrt(sum(v * v for v in x)) / 1000
+        cloud = []
+        for _ in range(self.n + 3):
+            y = self.project([v + size * mp.mpf(rng.uniform(-1, 1)) for v in x])
+            if y is not None:
+                cloud.append([a - b for a, b in zip(y, x, strict=True)])
+        if not cloud:
+            return 0
+        s = mp.svd_r(mp.matrix(cloud), compute_uv=False)
+        top = max(abs(v) for v in s)
+        return sum(1 for v in s if abs(v) > top / 100) if top > 0 else 0
+
     def dimension(self, samples: int = 12, radius=RADIUS) -> int:
-        """The largest ``N - rank`` at the projected points that stay away from the
-        configuration (0 when every projection falls back onto it: it is isolated)."""
+        """The largest dimension of the closure at the projected points that stay
+        away from the configuration (0 when every projection falls back onto it: it
+        is isolated)."""
         away = [x for x in self.points(samples, radius)
                 if mp.sqrt(sum(v * v for v in x)) > radius / 100]
-        return max((self.n - self.rank(x) for x in away), default=0)
+        return max((self.local_dimension(x) for x in away), default=0)
 
     def directions(self, samples: int = 12, radius=RADIUS):
         """Unit vectors from the configuration to the projected points away from it."""

@@ -107,3 +107,19 @@ def test_pinned_bars_on_a_line_are_shaky():
     assert (fm.dimension, fm.bounds, fm.first_order) == (0, (0, 0), 1)
     assert (fm.classification, fm.reason) == ("shaky", "real_cone_origin")
     assert fm.equations == ("4*u_q2^2",) and fm.branches == ()
+
+
+def test_the_spin_about_the_contact_line_is_split_off_as_a_finite_motion():
+    """Case 1 hard at q1 = pi/2, q2 = -pi/2: of three first-order motions only the
+    object's spin about the line through the two contacts (a group keeping both
+    contacts, joints still) is finite; the expansion decides the rest is rigid."""
+    system = load("paper-case1-hard")
+    at = "q1=pi/2,q2=-pi/2"
+    fm = finite_mobility(system.model, at)
+    assert (fm.dimension, fm.bounds, fm.first_order) == (1, (1, 1), 3)
+    assert (fm.classification, fm.reason) == ("shaky", "real_cone_origin")
+    assert fm.orders == ((1, 3), (2, 1))
+    (spin,) = fm.group_motions
+    q = system.analyze(at + ",L=1").Q
+    assert q * sp.Matrix(spin) == sp.zeros(q.rows, 1)
+    assert spin[3:6] != (0, 0, 0) and spin[6:] == (0, 0)

@@ -91,6 +91,12 @@ class FiniteMobility:
         The order of the expansion used.
     assumptions
         What the model was read as (``"frictionless_flat_face"``, ``"unit_length"``).
+    equations
+        The reduced constraints (texts, to :attr:`order`) when they were needed.
+    group_motions
+        Object rotations that keep every contact with the joints still (a group acting
+        on the configuration space, :func:`stabilizer`): split off before the
+        expansion, counted in :attr:`dimension` and in every branch.
 
     Example
     -------
@@ -109,6 +115,59 @@ class FiniteMobility:
     order: int = 1
     assumptions: tuple[str, ...] = ()
     equations: tuple[str, ...] = field(default=(), compare=False)
+    group_motions: tuple[tuple, ...] = ()
+
+
+def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
+    """The object motions that keep every contact with the joints still, when they
+    form a group acting on the configuration space: with hard contacts only, the
+    rotations about the line through all contact points (collinear ones), or about the
+    one point (all at one place). Returns the slice (linear forms in the coordinates,
+    transversal to its orbits: the rotation coordinates along the group's axes) and the
+    group's velocities ``(u, qdot)``; both empty when there is no such group.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.model.configuration import Configuration
+    >>> m = load("paper-case1-hard").model
+    >>> cmap = ConstraintMap(m, Configuration.parse(m, "q1=0,q2=0,L=1"))
+    >>> stabilizer(cmap)
+    ([[0, 0, 0, 1, 0, 0, 0, 0]], [(0, 0, -1, 1, 0, 0, 0, 0)])
+    """
+    points = cmap.contact_points()
+    if not points or any(m != "hard" for _, m in points):
+        return [], []
+    base = [sp.Rational(str(x)) for x in points[0][0]]
+    spread = [[sp.Rational(str(x)) - b for x, b in zip(pt, base, strict=True)]
+              for pt, _ in points[1:]]
+    span = sp.Matrix(spread).rank() if spread else 0
+    if cmap.planar:
+        axes = [(0, 0, 1)] if span == 0 else []
+    elif span == 0:
+        axes = [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    elif span == 1:
+        d = next(row for row in spread if any(row))
+        axes = [tuple(d)]
+    else:
+        axes = []
+    nobj = 3 if cmap.planar else 6
+    njoints = len(cmap.joint_names)
+    rows, motions = [], []
+    for a in axes:
+        row = [0] * len(cmap.names)
+        if cmap.planar:
+            row[2] = 1
+        else:
+            for k in range(3):
+                row[3 + k] = a[k]
+        rows.append(row)
+        omega = sp.Matrix(a)
+        v = sp.Matrix(base).cross(omega)          # velocity of the origin: c x a
+        twist = [v[0], v[1], omega[2]] if cmap.planar else list(v) + list(omega)
+        motions.append(tuple(twist) + (0,) * njoints)
+    del nobj
+    return rows, motions
 
 
 def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...]]:
@@ -190,8 +249,9 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
                     reason="no_first_order_motion")
     isolated = _only_origin([h for _, h in forms], n)
     if isolated:
+        lowest = min(d for d, _ in forms)
         return dict(out, bounds=(0, 0), dimension=0, classification="shaky",
-                    reason="real_cone_origin")
+                    reason="real_cone_origin", orders=out["orders"] + ((lowest, 0),))
     if vanishing or len(forms) != 1:
         return out
     d, h = forms[0]
@@ -299,12 +359,22 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                               (Branch(n, _kernel(cmap, first, basis)),),
                               tuple((i, n) for i in (1,)), 1, notes)
     orders = [order] if order is not None else list(range(2, DEFAULT_ORDER + 1))
+    rows_g, motions = stabilizer(cmap)
+    work = ConstraintMap(model, config, rows_g) if rows_g else cmap
+    extra = len(rows_g)
     for k in orders:
-        red = reduce_map(cmap, k)
-        found = _decide_singular(cmap, red)
+        red = reduce_map(work, k)
+        found = _decide_singular(work, red)
         if found["dimension"] is not None or k == orders[-1]:
-            return FiniteMobility(found["dimension"], found["bounds"], n,
-                                  found["classification"], found["reason"],
-                                  found["branches"], found["orders"], k, notes,
-                                  tuple(str(g) for g in red.g))
+            lower, upper = found["bounds"]
+            branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else
+                                    b.tangent + tuple(motions), b.cone)
+                             for b in found["branches"])
+            if found["dimension"] == 0 and extra:        # the group's orbit alone
+                branches = (Branch(extra, tuple(motions)),)
+            dim = None if found["dimension"] is None else found["dimension"] + extra
+            return FiniteMobility(dim, (lower + extra, upper + extra), n,
+                                  found["classification"], found["reason"], branches,
+                                  tuple((i, m + extra) for i, m in found["orders"]), k,
+                                  notes, tuple(str(g) for g in red.g), tuple(motions))
     raise AssertionError("unreachable")  # pragma: no cover

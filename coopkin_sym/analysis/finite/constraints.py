@@ -34,6 +34,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+import flint
+import sympy as sp
+
 from coopkin_sym.analysis.finite.series import SeriesField
 from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.errors import FiniteMobilityError
@@ -92,7 +95,8 @@ class ConstraintMap:
     (('p1', 'p2', 'w3', 'u_q1', 'u_q2'), [1, 1, 2, 2, 2])
     """
 
-    def __init__(self, model: Model, config: Configuration):
+    def __init__(self, model: Model, config: Configuration,
+                 slice_rows: Sequence[Sequence] = ()):
         for i, contact in enumerate(model.contacts):
             if contact.model not in HOLONOMIC:
                 raise FiniteMobilityError(
@@ -116,6 +120,10 @@ class ConstraintMap:
             ("u_" if joints[k]["kind"] == "revolute" else "d_") + self.joint_names[k]
             for k in self.moving)
         self.frictionless = any(c.model == "frictionless" for c in model.contacts)
+        #: Linear forms in the coordinates appended as rows (a slice: see
+        #: :func:`stabilizer`).
+        self.slice_rows = [[flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))
+                            for c in row] for row in slice_rows]
         exact = RationalField()
         self._home_poses, _, _ = self.chain.poses(exact, lambda col, spec, fixed: fixed)
 
@@ -187,7 +195,23 @@ class ConstraintMap:
                 vee = [f.red((rel[2][1] - rel[1][2]) / 2), f.red((rel[0][2] - rel[2][0]) / 2),
                        f.red((rel[1][0] - rel[0][1]) / 2)]
                 ang_rows += [vee[2]] if planar else vee
-        return lin_rows + ang_rows
+        extra = [f.red(sum((c * z[k] for k, c in enumerate(row) if c), zero))
+                 for row in self.slice_rows]
+        return lin_rows + ang_rows + extra
+
+    def contact_points(self) -> list[tuple]:
+        """Each contact's point at the configuration (exact rationals), with its model."""
+        out = []
+        for (arm, link, _, _, model), (home_pt, _) in zip(
+                self.chain.data["contacts"], self.chain._bound(RationalField())[1],
+                strict=True):
+            if arm is None:
+                out.append((tuple(home_pt), model))
+                continue
+            rot0, trans0 = self._home_poses[arm][link]
+            out.append((tuple(sum((rot0[i][j] * home_pt[j] for j in range(3)), 0)
+                              + trans0[i] for i in range(3)), model))
+        return out
 
     def linear(self) -> list[list]:
         """The linear part ``J`` of ``F`` at the configuration (exact rationals)."""
