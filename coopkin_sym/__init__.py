@@ -80,8 +80,8 @@ def __dir__() -> list[str]:
 
 
 def _install_display() -> None:
-    """The renderers of the presentation layer, installed on first display."""
-    from coopkin_sym.present import display  # noqa: F401  (registers the renderers)
+    """The renderers and actions of the presentation layer, installed on first use."""
+    from coopkin_sym.present import actions, display  # noqa: F401  (they register)
 
 
 load_before_render(_install_display)
