@@ -40,8 +40,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.mobility import Analysis, Motion
     from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
     from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveNumbers
-    from coopkin_sym.analysis.spans import same_span
     from coopkin_sym.analysis.sweep import SweepResult, grid
+    from coopkin_sym.analysis.views import contact_points, same_span
     from coopkin_sym.model.configuration import Configuration
     from coopkin_sym.model.examples import example_path
     from coopkin_sym.model.examples import list_examples as examples
@@ -78,6 +78,7 @@ _LAZY = {
     "Verification": "coopkin_sym.analysis.locus.verify",
     "analyze_many": "coopkin_sym.system",
     "component_sentences": "coopkin_sym.present.sentences",
+    "contact_points": "coopkin_sym.analysis.views",
     "draw": "coopkin_sym.present.draw",
     "example_path": "coopkin_sym.model.examples",
     "examples": "coopkin_sym.model.examples",
@@ -87,7 +88,7 @@ _LAZY = {
     "named_latex": "coopkin_sym.present.blocks",
     "remark_text": "coopkin_sym.present.remarks",
     "remark_texts": "coopkin_sym.present.remarks",
-    "same_span": "coopkin_sym.analysis.spans",
+    "same_span": "coopkin_sym.analysis.views",
     "sentences": "coopkin_sym.present.sentences",
 }
 
@@ -147,6 +148,7 @@ __all__ = [
     "Verification",
     "analyze_many",
     "component_sentences",
+    "contact_points",
     "draw",
     "example_path",
     "examples",

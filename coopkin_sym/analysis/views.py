@@ -1,4 +1,5 @@
-"""Exact comparisons of the subspaces a result gives as matrix columns.
+"""Exact views of results for scripts and notebooks: whether two blocks span the same
+subspace, the contact points of an analysis.
 
 Example
 -------
@@ -43,4 +44,20 @@ def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
     return ra == rb == exact_rank(sp.Matrix.hstack(a, b))
 
 
-__all__ = ["exact_rank", "same_span"]
+def contact_points(analysis) -> list[tuple[sp.Expr, ...]]:
+    """The contact points of an analysis (base coordinates), exact SymPy values in its
+    variables, one per contact in the model's order.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> contact_points(load("five-bar").analyze("L=1"))
+    [(0, 2, 0), (0, 2, 0)]
+    """
+    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+
+    kin = analysis.kinematics
+    return [tuple(frac_to_sympy(x, kin.symbols) for x in point) for point in kin.points]
+
+
+__all__ = ["contact_points", "exact_rank", "same_span"]
