@@ -144,6 +144,7 @@ def analyze(
     printer = _PartPrinter()
 
     def work():
+        from coopkin_sym import load
         from coopkin_sym.exact.bounded import deliver, report
         from coopkin_sym.present.text import (
             analysis_json,
@@ -151,7 +152,6 @@ def analyze(
             analysis_parts,
             analysis_text,
         )
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
@@ -257,12 +257,12 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     o = options
 
     def work() -> str:
+        from coopkin_sym import load
         from coopkin_sym.exact.bounded import report
         from coopkin_sym.present.manipulability import (
             manipulability_json,
             manipulability_text,
         )
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
@@ -325,9 +325,8 @@ def sweep(
         _fail(str(exc))
 
     def work():
-        from coopkin_sym.analysis.sweep import grid
+        from coopkin_sym import grid, load
         from coopkin_sym.exact.bounded import report
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
@@ -390,9 +389,9 @@ def _locus_report(model: str, o: LocusOptions, started: float):
     and verification when asked, and its report written: ``(locus, verification,
     verification of the locked locus, the TimeLimitReached that cut it or None, the
     files written)``."""
+    from coopkin_sym import load
     from coopkin_sym.present.report import parse_pairs, write_report
     from coopkin_sym.present.verification import verification_json
-    from coopkin_sym.system import load
 
     def work():
         from coopkin_sym.exact.bounded import deliver, report
@@ -557,11 +556,11 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
+    from coopkin_sym import load
     from coopkin_sym.errors import ReportError, TreeError
     from coopkin_sym.model.input_files import read_input_text
     from coopkin_sym.present.report import locus_from_json
     from coopkin_sym.present.verification import verification_json
-    from coopkin_sym.system import load
 
     try:
         system = load(model)
@@ -613,7 +612,7 @@ def _irrational(result) -> bool:
     """Whether ``result`` is an analysis over a number field (an
     :class:`~coopkin_sym.analysis.irrational.IrrationalAnalysis`, whose module is only
     imported when that path is taken), not over Q or Q(t, L)."""
-    from coopkin_sym.analysis.mobility import Analysis
+    from coopkin_sym import Analysis
     return not isinstance(result, Analysis)
 
 
