@@ -33,12 +33,27 @@ from coopkin_sym.errors import (
 if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.batch import BatchResult
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
+    from coopkin_sym.analysis.locus.certify import Certificate
     from coopkin_sym.analysis.locus.types import Component, Locus
+    from coopkin_sym.analysis.locus.verify import Verification
+    from coopkin_sym.analysis.manipulability import Manipulability
     from coopkin_sym.analysis.mobility import Analysis, Motion
-    from coopkin_sym.analysis.numbers import Numbers
-    from coopkin_sym.analysis.sweep import SweepResult
+    from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
+    from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveNumbers
+    from coopkin_sym.analysis.sweep import SweepResult, grid
+    from coopkin_sym.analysis.views import contact_points, same_span
     from coopkin_sym.model.configuration import Configuration
+    from coopkin_sym.model.examples import example_path
+    from coopkin_sym.model.examples import list_examples as examples
     from coopkin_sym.model.model import Model
+    from coopkin_sym.present.blocks import named_latex
+    from coopkin_sym.present.draw import draw_system as draw
+    from coopkin_sym.present.remarks import remark_text, remark_texts
+    from coopkin_sym.present.sentences import (
+        component_sentences,
+        irrational_sentences,
+        sentences,
+    )
     from coopkin_sym.system import System, analyze_many, load
 
 #: Where each public name lives; its module is imported on first access (PEP 562), so
@@ -46,18 +61,39 @@ if TYPE_CHECKING:  # pragma: no cover
 _LAZY = {
     "Analysis": "coopkin_sym.analysis.mobility",
     "BatchResult": "coopkin_sym.analysis.batch",
+    "Certificate": "coopkin_sym.analysis.locus.certify",
     "Component": "coopkin_sym.analysis.locus.types",
     "Configuration": "coopkin_sym.model.configuration",
     "IrrationalAnalysis": "coopkin_sym.analysis.irrational",
     "Locus": "coopkin_sym.analysis.locus.types",
+    "Manipulability": "coopkin_sym.analysis.manipulability",
     "Model": "coopkin_sym.model.model",
     "Motion": "coopkin_sym.analysis.mobility",
+    "NUMBER_NAMES": "coopkin_sym.analysis.numbers",
     "Numbers": "coopkin_sym.analysis.numbers",
+    "PASSIVE_NUMBER_NAMES": "coopkin_sym.analysis.passive",
+    "PassiveNumbers": "coopkin_sym.analysis.passive",
     "SweepResult": "coopkin_sym.analysis.sweep",
     "System": "coopkin_sym.system",
+    "Verification": "coopkin_sym.analysis.locus.verify",
     "analyze_many": "coopkin_sym.system",
+    "component_sentences": "coopkin_sym.present.sentences",
+    "contact_points": "coopkin_sym.analysis.views",
+    "draw": "coopkin_sym.present.draw",
+    "example_path": "coopkin_sym.model.examples",
+    "examples": "coopkin_sym.model.examples",
+    "grid": "coopkin_sym.analysis.sweep",
+    "irrational_sentences": "coopkin_sym.present.sentences",
     "load": "coopkin_sym.system",
+    "named_latex": "coopkin_sym.present.blocks",
+    "remark_text": "coopkin_sym.present.remarks",
+    "remark_texts": "coopkin_sym.present.remarks",
+    "same_span": "coopkin_sym.analysis.views",
+    "sentences": "coopkin_sym.present.sentences",
 }
+
+#: Public names that are another name in their module.
+_RENAMED = {"draw": "draw_system", "examples": "list_examples"}
 
 
 #: The subpackages, also imported on first access (``coopkin_sym.model.examples``).
@@ -70,7 +106,7 @@ def __getattr__(name: str) -> Any:
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'coopkin_sym' has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
+    value = getattr(importlib.import_module(module), _RENAMED.get(name, name))
     globals()[name] = value
     return value
 
@@ -80,8 +116,8 @@ def __dir__() -> list[str]:
 
 
 def _install_display() -> None:
-    """The renderers of the presentation layer, installed on first display."""
-    from coopkin_sym.present import display  # noqa: F401  (registers the renderers)
+    """The renderers and actions of the presentation layer, installed on first use."""
+    from coopkin_sym.present import actions, display  # noqa: F401  (they register)
 
 
 load_before_render(_install_display)
@@ -90,6 +126,7 @@ __all__ = [
     "Analysis",
     "BatchResult",
     "BlockTooLarge",
+    "Certificate",
     "Component",
     "Configuration",
     "ConfigurationError",
@@ -97,14 +134,31 @@ __all__ = [
     "InfeasibleMotion",
     "IrrationalAnalysis",
     "Locus",
+    "Manipulability",
     "ManipulabilityError",
     "Model",
     "ModelError",
     "Motion",
+    "NUMBER_NAMES",
     "Numbers",
+    "PASSIVE_NUMBER_NAMES",
+    "PassiveNumbers",
     "SweepResult",
     "System",
+    "Verification",
     "analyze_many",
+    "component_sentences",
+    "contact_points",
+    "draw",
+    "example_path",
+    "examples",
+    "grid",
+    "irrational_sentences",
     "load",
+    "named_latex",
+    "remark_text",
+    "remark_texts",
+    "same_span",
+    "sentences",
 ]
 __version__ = "0.1.0"

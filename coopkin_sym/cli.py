@@ -44,6 +44,14 @@ from typing import Annotated
 
 import typer
 
+from coopkin_sym.cli_options import (
+    LocusOptions,
+    ManipulabilityOptions,
+    ModelArg,
+    NoProgressOption,
+    TimeoutOption,
+    options_command,
+)
 from coopkin_sym.errors import (
     ConfigurationError,
     CoopkinError,
@@ -66,9 +74,6 @@ TIME_BOUND_EXIT = 3
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
 
-ModelArg = Annotated[str, typer.Argument(
-    help="A model file (YAML/JSON) or a shipped example name (see `coopkin examples`).")]
-
 #: Every error the package raises on purpose (bad input, budgets, time bounds).
 USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, InfeasibleMotion)
 
@@ -76,15 +81,6 @@ USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, Infeas
 def _fail(message: str) -> None:
     typer.echo(f"coopkin: error: {message}", err=True)
     raise typer.Exit(2)
-
-
-TimeoutOption = Annotated[float | None, typer.Option(
-    "--timeout", min=0, help="Wall-clock bound in seconds for the whole run, held even "
-                             "inside steps that cannot be interrupted; past it the "
-                             "command stops, says what was cut and exits with 3.")]
-NoProgressOption = Annotated[bool, typer.Option(
-    "--no-progress", help="No progress display (none is shown when stderr is not a "
-                          "terminal, nor in the first second).")]
 
 
 def _cut(exc: TimeLimitReached, outcome: str) -> None:
@@ -148,6 +144,7 @@ def analyze(
     printer = _PartPrinter()
 
     def work():
+        from coopkin_sym import load
         from coopkin_sym.exact.bounded import deliver, report
         from coopkin_sym.present.text import (
             analysis_json,
@@ -155,7 +152,6 @@ def analyze(
             analysis_parts,
             analysis_text,
         )
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
@@ -254,57 +250,38 @@ def draw(
     typer.echo(f"wrote {path}")
 
 
-@app.command("manipulability")
-def manipulability_command(
-    model: ModelArg,
-    at: Annotated[str | None, typer.Option(
-        "--at", help="Joint values and parameters, as for `coopkin analyze`.")] = None,
-    generic: Annotated[bool, typer.Option(
-        "--generic", help="Keep every joint variable symbolic: E as rational functions "
-                          "and where it degenerates.")] = False,
-    free: Annotated[str | None, typer.Option(
-        "--free", help="Comma-separated joints to keep symbolic.")] = None,
-    controlled: Annotated[str | None, typer.Option(
-        "--controlled", help="Comma-separated object velocities, e.g. v_x,v_y "
-                             "(default: the whole twist).")] = None,
-    length: Annotated[str, typer.Option(
-        "--length", help="The characteristic length angular velocities are scaled by "
-                         "(a positive number or a parameter, e.g. L).")] = "1",
-    point: Annotated[str | None, typer.Option(
-        "--point", help="x,y,z: v is the velocity of this object point (base frame).")
-    ] = None,
-    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
-    timeout: TimeoutOption = None,
-    no_progress: NoProgressOption = False,
-) -> None:
+@options_command(app, "manipulability", ManipulabilityOptions)
+def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     """The kinematic manipulability ellipsoid of chosen object velocities, exactly: E,
     det E, its rank and where it degenerates; at a point also its semi-axes (floats)."""
+    o = options
 
     def work() -> str:
+        from coopkin_sym import load
         from coopkin_sym.exact.bounded import report
         from coopkin_sym.present.manipulability import (
             manipulability_json,
             manipulability_text,
         )
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
-        free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+        free_joints = [f.strip() for f in o.free.split(",") if f.strip()] if o.free else None
         report("the analysis")
-        result = system.analyze(at, generic=generic, free=free_joints)
+        result = system.analyze(o.at, generic=o.generic, free=free_joints)
         if _irrational(result):
             raise ManipulabilityError("--at: the ellipsoid is computed at rational "
                                       "configurations only (tan(q/2) rational)")
-        names = [c.strip() for c in controlled.split(",")] if controlled else None
-        where = [c.strip() for c in point.split(",")] if point else None
+        names = [c.strip() for c in o.controlled.split(",")] if o.controlled else None
+        where = [c.strip() for c in o.point.split(",")] if o.point else None
         report("the ellipsoid")
-        m = result.manipulability(names, length=length, point=where)
+        m = result.manipulability(names, length=o.length, point=where)
         report("the text")
-        return manipulability_json(m, result) if as_json else manipulability_text(m, result)
+        return (manipulability_json(m, result) if o.as_json
+                else manipulability_text(m, result))
 
     try:
-        text = _bounded(work, timeout, "manipulability", no_progress)
+        text = _bounded(work, o.timeout, "manipulability", o.no_progress)
     except TimeLimitReached as exc:
         _cut(exc, "nothing shown")
     except USER_ERRORS as exc:
@@ -348,9 +325,8 @@ def sweep(
         _fail(str(exc))
 
     def work():
-        from coopkin_sym.analysis.sweep import grid
+        from coopkin_sym import grid, load
         from coopkin_sym.exact.bounded import report
-        from coopkin_sym.system import load
 
         report("loading the model")
         system = load(model)
@@ -378,98 +354,83 @@ def sweep(
                f"{c['snapped_values']} snapped angles; wrote {output}")
 
 
-@app.command()
-def locus(
-    model: ModelArg,
-    output: Annotated[str, typer.Option(
-        "--output", "-o", help="The report to write: .md, .html, .tex or .json (plots of "
-                               "the components go next to it as <stem>_<qi>_<qj>.png).")],
-    at: Annotated[str | None, typer.Option(
-        "--at", help="Values fixing some joints or parameters, as for `coopkin analyze`; "
-                     "the other joints stay free.")] = None,
-    max_depth: Annotated[int, typer.Option(
-        "--max-depth", min=0, help="How deep to look inside components for further "
-                                   "drops (0: the generic locus only).")] = 2,
-    timeout: Annotated[float | None, typer.Option(
-        "--timeout", min=0, help="Wall-clock bound in seconds for the whole run (the "
-                                 "generic step, --certify and --verify included), held "
-                                 "even inside steps that cannot be interrupted; a run "
-                                 "cut at a check of the bound writes its report, which "
-                                 "says what was cut, and exits with 3.")] = None,
-    no_progress: NoProgressOption = False,
-    pair: Annotated[list[str] | None, typer.Option(
-        "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
-                       "default: the pairs that occur together in a component).")] = None,
-    free: Annotated[str | None, typer.Option(
-        "--free", help="Comma-separated joints to keep free, as for `coopkin analyze`; "
-                       "the others not set with --at stay at home (q = 0).")] = None,
-    pi_size: Annotated[int | None, typer.Option(
-        "--pi-size", min=0, help="Sets of joints at q = pi are searched inside up to this "
-                                 "many joints at once (default: all for up to four "
-                                 "revolute joints, then fewer).")] = None,
-    verify: Annotated[bool, typer.Option(
-        "--verify", help="Check the locus independently afterwards (see `coopkin verify`); "
-                         "exit 1 when something is uncovered or unsound.")] = False,
-    certify: Annotated[bool, typer.Option(
-        "--certify", help="Prove the locus complete by Groebner bases, chart by chart and "
-                          "depth by depth, or say why it is not proved (the report's "
-                          "summary line).")] = False,
-    certify_timeout: Annotated[float, typer.Option(
-        "--certify-timeout", min=0, help="Wall-clock bound in seconds for the whole "
-                                         "certificate (each test at most 30 s).")] = 300.0,
-) -> None:
+@options_command(app, "locus", LocusOptions)
+def locus(model: str, options: LocusOptions) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
     from coopkin_sym.errors import LocusError, ReportError
-    from coopkin_sym.present.report import check_target, parse_pairs, write_report
-    from coopkin_sym.present.verification import verification_json
-    from coopkin_sym.system import load
+    from coopkin_sym.present.report import check_target
 
     try:
-        check_target(output)
+        check_target(options.output)
     except ReportError as exc:
         _fail(str(exc))
-    free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+    started = _STARTED[0] if _STARTED[0] is not None else time.monotonic()
+    try:
+        result, checked, checked_locked, cut, written = _locus_report(model, options,
+                                                                      started)
+    except TimeLimitReached as exc:
+        _cut(_in_command_bound(exc, options.timeout), "nothing written")
+    except (*USER_ERRORS, LocusError, ReportError) as exc:
+        _fail(str(exc))
+    _echo_locus(result, written)
+    if cut is not None:
+        pictures = len(written) - 1
+        also = f" and {pictures} picture{'' if pictures == 1 else 's'}" if pictures else ""
+        _cut(cut, f"the report says what was not explored; wrote {written[0]}{also}")
+    if checked is not None:
+        if checked_locked is not None:
+            _echo_locked(checked_locked, checked)
+        _echo_verification(checked)
+
+
+def _locus_report(model: str, o: LocusOptions, started: float):
+    """The locus of ``coopkin locus`` (under its share of the bound), its certificate
+    and verification when asked, and its report written: ``(locus, verification,
+    verification of the locked locus, the TimeLimitReached that cut it or None, the
+    files written)``."""
+    from coopkin_sym import load
+    from coopkin_sym.present.report import parse_pairs, write_report
+    from coopkin_sym.present.verification import verification_json
 
     def work():
         from coopkin_sym.exact.bounded import deliver, report
 
         report("loading the model")
         system = load(model)
-        pairs = parse_pairs(pair, system) if pair else None
+        pairs = parse_pairs(o.pair, system) if o.pair else None
         deliver((system, pairs))
-        return _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
-                           certify_timeout, verify)
+        return _locus_work(system, o.at, o.max_depth, o.timeout, o.free_joints,
+                           o.pi_size, o.certify, o.certify_timeout, o.verify)
 
     loaded: list = []
-    started = _STARTED[0] if _STARTED[0] is not None else time.monotonic()
     # the search has a share of the bound, the report the rest: its text first, then
     # its pictures while time is left (those left out are said)
-    search = None if timeout is None else timeout * SEARCH_SHARE
+    search = None if o.timeout is None else o.timeout * SEARCH_SHARE
     try:
-        try:
-            result, checked, checked_locked, cut = _bounded(work, search, "locus",
-                                                            no_progress,
-                                                            output=loaded.append)
-        except TimeLimitReached as exc:  # ended at the bound: the last copy kept
-            cut = _in_command_bound(exc, timeout)
-            result, checked, checked_locked = _ended_locus(cut, loaded), None, None
-        system, pairs = loaded[0]
-        shown = verification_json(checked) if checked else None
-        if shown is not None and checked_locked is not None:
-            shown["locked"] = verification_json(checked_locked)
-        until = None if timeout is None else started + timeout
-        with _notes() as notes:
-            written = write_report(result, output, system, pairs=pairs,
-                                   verification=shown, pictures_until=until)
-        if cut is None and SkippedForTime in notes:
-            cut = TimeLimitReached(timeout, "the pictures of the report")
-        elif cut is not None:
-            cut = _in_command_bound(cut, timeout)
-    except TimeLimitReached as exc:
-        _cut(_in_command_bound(exc, timeout), "nothing written")
-    except (*USER_ERRORS, LocusError, ReportError) as exc:
-        _fail(str(exc))
+        result, checked, checked_locked, cut = _bounded(work, search, "locus",
+                                                        o.no_progress,
+                                                        output=loaded.append)
+    except TimeLimitReached as exc:  # ended at the bound: the last copy kept
+        cut = _in_command_bound(exc, o.timeout)
+        result, checked, checked_locked = _ended_locus(cut, loaded), None, None
+    system, pairs = loaded[0]
+    shown = verification_json(checked) if checked else None
+    if shown is not None and checked_locked is not None:
+        shown["locked"] = verification_json(checked_locked)
+    until = None if o.timeout is None else started + o.timeout
+    with _notes() as notes:
+        written = write_report(result, o.output, system, pairs=pairs,
+                               verification=shown, pictures_until=until)
+    if cut is None and SkippedForTime in notes:
+        cut = TimeLimitReached(o.timeout, "the pictures of the report")
+    elif cut is not None:
+        cut = _in_command_bound(cut, o.timeout)
+    return result, checked, checked_locked, cut, written
+
+
+def _echo_locus(result, written) -> None:
+    """The summary lines of ``coopkin locus``: components, completeness, files."""
     real = sum(1 for c in result.components if c.real)
     n, u = len(result.components), len(result.unexplored)
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
@@ -481,14 +442,6 @@ def locus(
         typer.echo(f"with the motors held still (where the passive-joint numbers change): "
                    f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
                    f"; {lk.completeness()}")
-    if cut is not None:
-        pictures = len(written) - 1
-        also = f" and {pictures} picture{'' if pictures == 1 else 's'}" if pictures else ""
-        _cut(cut, f"the report says what was not explored; wrote {written[0]}{also}")
-    if checked is not None:
-        if checked_locked is not None:
-            _echo_locked(checked_locked, checked)
-        _echo_verification(checked)
 
 
 #: The share of ``coopkin locus --timeout`` given to the search (and its certificate and
@@ -603,11 +556,11 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
+    from coopkin_sym import load
     from coopkin_sym.errors import ReportError, TreeError
     from coopkin_sym.model.input_files import read_input_text
     from coopkin_sym.present.report import locus_from_json
     from coopkin_sym.present.verification import verification_json
-    from coopkin_sym.system import load
 
     try:
         system = load(model)
@@ -659,7 +612,7 @@ def _irrational(result) -> bool:
     """Whether ``result`` is an analysis over a number field (an
     :class:`~coopkin_sym.analysis.irrational.IrrationalAnalysis`, whose module is only
     imported when that path is taken), not over Q or Q(t, L)."""
-    from coopkin_sym.analysis.mobility import Analysis
+    from coopkin_sym import Analysis
     return not isinstance(result, Analysis)
 
 

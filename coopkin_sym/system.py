@@ -33,7 +33,9 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from coopkin_sym.analysis.batch import BatchResult
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
+    from coopkin_sym.analysis.locus.certify import Certificate
     from coopkin_sym.analysis.locus.types import Locus
+    from coopkin_sym.analysis.locus.verify import Verification
 
 
 
@@ -127,12 +129,21 @@ class System:
 
     def locus(self, at: str | Mapping | None = None, *, max_depth: int = 2,
               timeout: float | None = None, progress: bool = False,
-              free: Iterable[str] | None = None, pi_size: int | None = None) -> Locus:
+              free: Iterable[str] | None = None, pi_size: int | None = None,
+              certify: bool = False, verify: bool = False) -> Locus:
         """Where the numbers change: every family of configurations whose numbers
         differ from the generic ones (see
         :func:`coopkin_sym.analysis.locus.search.compute_locus`).
 
-        With a ``timeout``, a search cut by the bound returns what it found
+        With ``certify``, the locus is then proved complete or not
+        (:meth:`Locus.certify <coopkin_sym.analysis.locus.facade.LocusMethods.certify>`:
+        its certificate is kept on it); with ``verify``, checked independently
+        (:meth:`Locus.verify <coopkin_sym.analysis.locus.facade.LocusMethods.verify>`:
+        kept as ``locus.verification``). The locus remembers this system, so both can
+        also be asked for later.
+
+        With a ``timeout`` (for the whole run, certificate and verification included),
+        a search cut by the bound returns what it found
         (:attr:`~coopkin_sym.analysis.locus.types.Locus.unexplored` says what was
         cut): at a check of the bound, or, when a step that cannot be interrupted is
         ended at the bound, as far as it was about a second before (see
@@ -143,22 +154,84 @@ class System:
         Example
         -------
         >>> from coopkin_sym import load
-        >>> locus = load("paper-case1-hard").locus()
+        >>> locus = load("paper-case1-hard").locus(certify=True)
         >>> locus.generic["Nm"], [c.condition for c in locus.components][:2]
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
+        >>> locus.completeness()
+        'complete (certified)'
         """
         from coopkin_sym.analysis.locus.search import compute_locus
         from coopkin_sym.analysis.locus.types import ended_at_bound
         from coopkin_sym.errors import TimeLimitReached
+
+        def work():
+            locus = self._known(compute_locus(self, at, max_depth, timeout, progress,
+                                              free, pi_size))
+            if certify:
+                locus.certify()
+            if verify:
+                locus.verify()
+            return locus
+
         try:
-            return _bounded(lambda: compute_locus(self, at, max_depth, timeout, progress,
-                                                  free, pi_size),
-                            timeout, "locus", progress)
+            return self._known(_bounded(work, timeout, "locus", progress))
         except TimeLimitReached as exc:   # ended inside a step: the last copy kept
             locus = ended_at_bound(exc)
             if locus is None:
                 raise
-            return locus
+            return self._known(locus)
+
+    def _known(self, locus: Locus) -> Locus:
+        """``locus`` (and its locked locus) told which system it is about."""
+        locus._system = self
+        if locus.locked is not None:
+            locus.locked._system = self.with_actuators_locked()
+        return locus
+
+    def certify_locus(self, locus: Locus, *, timeout: float = 30.0,
+                      budget: float | None = 300.0) -> Certificate:
+        """The completeness certificate of ``locus`` (a locus of this system; see
+        :func:`coopkin_sym.analysis.locus.certify.certify_locus`): ``timeout`` seconds
+        for each test, ``budget`` for the whole. :meth:`Locus.certify
+        <coopkin_sym.analysis.locus.facade.LocusMethods.certify>` also keeps it.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> system = load("paper-case1-hard")
+        >>> system.certify_locus(system.locus(), timeout=60).certified
+        True
+        """
+        from coopkin_sym.analysis.locus.certify import certify_locus
+        return certify_locus(self, locus, timeout=timeout, budget=budget)
+
+    def verify_locus(self, locus: Locus, *, max_points: int = 50_000, lines: int = 12,
+                     seed: int = 0, timeout: float | None = None) -> Verification:
+        """An independent check of ``locus`` (see
+        :func:`coopkin_sym.analysis.locus.verify.verify_locus`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> system = load("paper-case1-hard")
+        >>> system.verify_locus(system.locus(), max_points=200, lines=2).ok
+        True
+        """
+        from coopkin_sym.analysis.locus.verify import verify_locus
+        return verify_locus(self, locus, max_points=max_points, lines=lines, seed=seed,
+                            timeout=timeout)
+
+    def with_actuators_locked(self) -> System:
+        """The same system with every motor held still (the system of a locus's
+        ``locked`` part: where the passive-joint numbers change).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> sorted(load("five-bar").with_actuators_locked().model.locked)
+        ['q1', 'q3']
+        """
+        return System(self.model.with_actuators_locked())
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
              title: str | None = None) -> Figure:

@@ -56,20 +56,7 @@ SETUP = code("""
     from IPython.display import Markdown, Math, display
 
     import coopkin_sym
-    from coopkin_sym.model.examples import example_path
-    from coopkin_sym.present.draw import draw_system
-    from coopkin_sym.present.sentences import sentences
-
-
-    def show(name, matrix):
-        \"\"\"A matrix as LaTeX (an empty block as the empty set).\"\"\"
-        body = sp.latex(matrix) if 0 not in matrix.shape else r"\\emptyset"
-        display(Math(f"{name} = {body}"))
-
-
-    def same_span(a, b):
-        \"\"\"Exact test: the columns of a and b span the same space.\"\"\"
-        return a.rows == b.rows and a.rank() == b.rank() == a.row_join(b).rank()
+    from coopkin_sym import draw, example_path, named_latex, same_span, sentences
 
 
     def numbers_table(rows):
@@ -122,8 +109,8 @@ NB01 = [
     ($\\dot c_1, \\dot c_2$), then the angular ones ($\\omega_1, \\omega_2$), as in the paper.
     """),
     code("""
-    show("G", a.G)
-    show("D", a.D)
+    display(Math(named_latex("G", a.G)))
+    display(Math(named_latex("D", a.D)))
     """),
     code("""
     def S(c):
@@ -152,7 +139,7 @@ NB01 = [
     for name, an in analyses.items():
         display(Markdown(f"`{name}`: contacts "
                          + ", ".join(f"{c.name} {c.model}" for c in an.model.contacts)))
-        show("H", an.H)
+        display(Math(named_latex("H", an.H)))
     """),
     code("""
     assert analyses["paper-case1-hard"].H == sp.eye(6).row_join(sp.zeros(6))
@@ -169,10 +156,10 @@ NB01 = [
     $C = \\begin{pmatrix} C_{11} & C_{12} & 0 \\\\ 0 & C_{22} & C_{23} \\end{pmatrix}$.
     """),
     code("""
-    show("Q", a.Q)
-    show("C", a.C)
+    display(Math(named_latex("Q", a.Q)))
+    display(Math(named_latex("C", a.C)))
     for name, block in a.blocks().items():
-        show(name, block)
+        display(Math(named_latex(name, block)))
     assert a.check()           # Q C = 0, exactly
     a.numbers
     """),
@@ -228,11 +215,11 @@ NB01 = [
     """),
     code("""
     m = a.joint_velocities([-L, 0, 0, 0, 0, 0])
-    show(r"\\dot q", m.particular)
+    display(Math(named_latex(r"\\dot q", m.particular)))
     assert m.particular == sp.Matrix([1, 1]) and m.free.shape == (2, 0)
     u = a.object_velocities([1, 1])
-    show(r"\\dot u", u.particular)
-    show(r"\\text{plus any multiple of}", u.free)
+    display(Math(named_latex(r"\\dot u", u.particular)))
+    display(Math(named_latex(r"\\text{plus any multiple of}", u.free)))
     assert u.particular == sp.Matrix([-L, 0, 0, 0, 0, 0]) and same_span(u.free, a.C11)
     try:
         a.joint_velocities([0, 1, 0, 0, 0, 0])
@@ -240,7 +227,7 @@ NB01 = [
         print("translation along y:", exc)
     """),
     code("""
-    draw_system(a, motion=("coordinated", 1))
+    draw(a, motion=("coordinated", 1))
     """),
     md("""
     ## The arms' angles free: the generic analysis
@@ -254,7 +241,7 @@ NB01 = [
     g = hard.analyze(generic=True)
     print("variables:", g.variables)
     for name, block in g.blocks().items():
-        show(name, block.applyfunc(sp.factor))
+        display(Math(named_latex(name, block.applyfunc(sp.factor))))
     assert (g.numbers.Nm, g.numbers.Nc, g.numbers.Ni, g.numbers.Nr) == (2, 2, 1, 0)
     generic = {name: coopkin_sym.load(name).analyze(generic=True).numbers for name in names}
     display(numbers_table([(f"`{name}`, generic", n) for name, n in generic.items()]))
@@ -282,7 +269,7 @@ NB01 = [
     code("""
     s = hard.analyze("q1=-pi/2,q2=-pi/2")
     for name, block in s.blocks().items():
-        show(name, block)
+        display(Math(named_latex(name, block)))
     for line in sentences(s):
         print("-", line)
     assert (s.numbers.Nm, s.numbers.Nc, s.numbers.Ni, s.numbers.Nr) == (3, 3, 1, 0)
@@ -305,7 +292,7 @@ NB01 = [
             for name in names]
     display(numbers_table(rows))
     assert [n.Nm for _, n in rows] == [3, 3, 3, 1]
-    draw_system(s, motion=("coordinated", 2))
+    draw(s, motion=("coordinated", 2))
     """),
     md("""
     ## The same system in the plane
@@ -327,7 +314,7 @@ NB01 = [
     print(example_path("paper-case1-planar").read_text())
     flat = coopkin_sym.load("paper-case1-planar").analyze()
     for name, block in flat.blocks().items():
-        show(name, block)
+        display(Math(named_latex(name, block)))
     for line in sentences(flat):
         print("-", line)
     n = flat.numbers
@@ -348,18 +335,15 @@ NB01 = [
     certified complete, and the system is drawn from above:
     """),
     code("""
-    from coopkin_sym.analysis.locus.certify import certify_locus
-    from coopkin_sym.present.certificate import certificate_summary
-
     planar = coopkin_sym.load("paper-case1-planar")
     flat_locus = planar.locus()
     for c in flat_locus.components:
         print(c.condition, c.numbers)
     assert "q1 = pi/2, q2 = pi/2" in [c.condition for c in flat_locus.components]
-    certificate = certify_locus(planar, flat_locus)
-    print(certificate_summary(certificate))
+    certificate = flat_locus.certify()
+    print(flat_locus.completeness())
     assert certificate.certified_by() is not None and not certificate.failures()
-    draw_system(planar.analyze("q1=pi/2,q2=pi/2"), motion=("coordinated", 2))
+    draw(planar.analyze("q1=pi/2,q2=pi/2"), motion=("coordinated", 2))
     """),
 ]
 
@@ -393,8 +377,8 @@ NB02 = [
     """),
     code("""
     c = complete.analyze()
-    show("C_{12}", c.C12)
-    show("C_{22}", c.C22)
+    display(Math(named_latex("C_{12}", c.C12)))
+    display(Math(named_latex("C_{22}", c.C22)))
     paper_c12 = sp.Matrix([[L, 0, 0], [0, L, 0], [0, 0, L], [0, 0, 0], [0, 0, 0], [0, 0, 0]])
     paper_c22 = sp.Matrix([[0, 1, 0], [1, -1, 0], [-1, 0, 0], [0, 0, L], [L, 0, 0],
                            [0, -1, 0], [0, 1, -1], [0, 0, 1]])
@@ -416,7 +400,7 @@ NB02 = [
     code("""
     h = hard.analyze()
     for name, block in h.blocks().items():
-        show(name, block)
+        display(Math(named_latex(name, block)))
     n = h.numbers
     assert (n.Nm, n.Nc, n.Ni, n.Nr) == (8, 6, 1, 2)
     assert h.check()
@@ -432,7 +416,7 @@ NB02 = [
     c1, c2 = sp.Matrix([L, L, L]), sp.Matrix([3 * L, L, L])
     w = (c2 - c1) / (2 * L)
     spin = c1.cross(w).col_join(w)
-    show(r"(c_1 \\times w, w)", spin)
+    display(Math(named_latex(r"(c_1 \\times w, w)", spin)))
     assert same_span(h.C11, spin)
     """),
     md("""
@@ -446,8 +430,8 @@ NB02 = [
     assert same_span(h.C23, e[:, 2].row_join(e[:, 5]))        # q3 alone, q6 alone
     print(h.model.joint_names)
     m = h.object_velocities([0, 0, 1, 0, 0, 0, 0, 0])          # eq. (12), q3 alone
-    show(r"\\dot u", m.particular)
-    show(r"\\text{plus any multiple of}", m.free)
+    display(Math(named_latex(r"\\dot u", m.particular)))
+    display(Math(named_latex(r"\\text{plus any multiple of}", m.free)))
     assert m.particular == sp.zeros(6, 1) and same_span(m.free, h.C11)
     """),
     md("""
@@ -457,17 +441,17 @@ NB02 = [
     """),
     code("""
     m = h.joint_velocities([0, 0, L, 0, 0, 0])
-    show(r"\\dot q", m.particular)
-    show(r"\\text{plus}", m.free)
+    display(Math(named_latex(r"\\dot q", m.particular)))
+    display(Math(named_latex(r"\\text{plus}", m.free)))
     assert h.Q * sp.Matrix([0, 0, L, 0, 0, 0, *m.particular]) == sp.zeros(h.m, 1)
     for s in sentences(h):
         print("-", s)
     """),
     code("""
-    draw_system(h, motion=("indeterminate", 1))
+    draw(h, motion=("indeterminate", 1))
     """),
     code("""
-    draw_system(h, motion=("redundant", 2))
+    draw(h, motion=("redundant", 2))
     """),
     md("""
     ## All eight joints symbolic: the generic analysis
@@ -507,12 +491,12 @@ NB02 = [
     lies on the axis of q6 and the combination reduces to q6 alone:
     """),
     code("""
-    show("C_{23}", gh.C23.applyfunc(sp.factor))
+    display(Math(named_latex("C_{23}", gh.C23.applyfunc(sp.factor))))
     home = {v: 0 for v in gh.variables if v != L}             # every joint at home
     assert same_span(gh.C23.subs(home), h.C23)
     """),
     code("""
-    draw_system(h, motion=("coordinated", 4))
+    draw(h, motion=("coordinated", 4))
     """),
 ]
 
@@ -524,11 +508,11 @@ NB03 = [
     # Singularity loci: where the numbers change, exactly
 
     The paper computes the mobility numbers at one configuration; notebook 01 found by
-    hand, along one family, where they jump. `coopkin_sym.analysis.locus.search.compute_locus` finds
+    hand, along one family, where they jump. `System.locus` finds
     every family of configurations where the numbers differ from the generic ones
     (the *locus*), decides each family's numbers exactly, gives an exact witness point
     on it (checked by a direct analysis), recurses inside each family for deeper drops,
-    and lists what it did not explore. `coopkin_sym.present.report` writes it up.
+    and lists what it did not explore. `Locus.write` writes it up.
 
     Angles are handled through $t = \\tan(q/2)$, so a component such as
     `t_q1 - 1 = 0` is $q_1 = \\pi/2$. Floats appear only in the plots and in the float
@@ -544,67 +528,33 @@ NB03 = [
     from IPython.display import Image, Markdown, display
 
     import coopkin_sym
-    from coopkin_sym.analysis.irrational import analyze_irrational
-    from coopkin_sym.analysis.locus.search import compute_locus
-    from coopkin_sym.present.draw import draw_system
-    from coopkin_sym.present.locus_plot import plot_components
-    from coopkin_sym.present.remarks import remark_text, remark_texts
-    from coopkin_sym.present.report import write_report
-    from coopkin_sym.present.sentences import component_sentences
+    from coopkin_sym import component_sentences, draw, remark_text, remark_texts
 
-    NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
     matplotlib.rcParams["figure.dpi"] = 80  # pictures of modest size
 
 
     def png(figure):
-        \"\"\"A matplotlib figure (plot_components returns a plain one) as an inline PNG.\"\"\"
+        \"\"\"A matplotlib figure (Locus.plot returns a plain one) as an inline PNG.\"\"\"
         buffer = io.BytesIO()
         figure.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
         return Image(buffer.getvalue())
 
 
-    def at_text(witness):
-        \"\"\"A witness dict in --at syntax.\"\"\"
-        return ",".join(f"{k}={v}" for k, v in witness.items())
-
-
-    def locus_table(locus):
-        \"\"\"The generic numbers, then one row per component (changes in bold).\"\"\"
-        head = ("| # | where | kind | depth | " + " | ".join(NAMES) + " | witness |\\n"
-                + "|---" * 12 + "|\\n")
-        rows = ["| | generic | | | " + " | ".join(str(locus.generic[n]) for n in NAMES)
-                + " | |"]
-        for k, c in enumerate(locus.components):
-            nums = " | ".join(f"**{c.numbers[n]}**" if n in c.changes else str(c.numbers[n])
-                              for n in NAMES)
-            inside = f" (in #{c.parent + 1})" if c.parent is not None else ""
-            rows.append(f"| #{k + 1}{inside} | `{c.condition}` | {c.kind} | {c.depth} | "
-                        f"{nums} | `{witness_of(c)}` |")
-        return Markdown(head + "\\n".join(rows))
-
-
-    def witness_of(c):
-        \"\"\"The witness in --at syntax: rational, else the exact algebraic point.\"\"\"
-        if c.witness:
-            return at_text(c.witness)
-        return at_text(c.algebraic_witness["point"]) if c.algebraic_witness else "none"
-
-
     def recheck(system, locus):
         \"\"\"Each rational witness again, by a direct exact analysis; asserts the numbers
         agree. Irrational witnesses were checked by the engine over Q(alpha).\"\"\"
-        for c in locus.components:
+        for c, row in zip(locus.components, locus.table(), strict=True):
             if c.real_points == "undecided":     # no real witness found: not called real
                 assert not c.real
                 print(f"{c.condition[:58]:58} real points: undecided")
                 continue
             assert c.witness_checked, c.condition
             if c.witness is None:
-                print(f"{witness_of(c):58} irrational: checked over Q(alpha)")
+                print(f"{row['witness']:58} irrational: checked over Q(alpha)")
                 continue
-            direct = system.analyze(at_text(c.witness)).numbers.as_dict()
+            direct = system.analyze(c.witness).numbers.as_dict()
             assert c.witness_checked and direct == c.numbers, c.condition
-            print(f"{at_text(c.witness):58} Nm={direct['Nm']} Nc={direct['Nc']} "
+            print(f"{row['witness']:58} Nm={direct['Nm']} Nc={direct['Nc']} "
                   f"Nr={direct['Nr']}: as reported")
     """),
     md("""
@@ -615,9 +565,9 @@ NB03 = [
     """),
     code("""
     case1 = coopkin_sym.load("paper-case1-hard")
-    locus1 = compute_locus(case1)
+    locus1 = case1.locus()
     print("free variables:", locus1.variables, "| fixed:", locus1.fixed)
-    locus_table(locus1)
+    display(locus1)
     """),
     code("""
     GENERIC1 = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
@@ -646,7 +596,7 @@ NB03 = [
     $(q_1, q_2)$ plane:
     """),
     code("""
-    png(plot_components(locus1, case1, pair=("q1", "q2")))
+    png(locus1.plot(("q1", "q2")))
     """),
     md("""
     Each witness is an exact point; a direct exact analysis there (with nothing from
@@ -656,18 +606,18 @@ NB03 = [
     recheck(case1, locus1)
     for c in locus1.components[:4]:
         symbolic_L = {k: v for k, v in c.witness.items() if k != "L"}
-        assert case1.analyze(at_text(symbolic_L)).numbers.as_dict() == c.numbers
+        assert case1.analyze(symbolic_L).numbers.as_dict() == c.numbers
     """),
     md("""
     ### The report
 
-    `write_report` writes the report (Markdown here; also HTML, LaTeX, JSON) with a
+    `locus.write` writes the report (Markdown here; also HTML, LaTeX, JSON) with a
     PNG per joint pair, everything rendered before anything is written. Its opening
     and its last sections:
     """),
     code("""
     out = Path(tempfile.mkdtemp()) / "case1_locus.md"
-    print([p.name for p in write_report(locus1, out, system=case1)])
+    print([p.name for p in locus1.write(out)])
     report = out.read_text()
     opening, *sections = report.split("\\n## ")
     keep = ("Dropped factors (no real points)", "Not explored")
@@ -704,7 +654,7 @@ NB03 = [
         print("direct analysis over Q:", exc)
     # a separate path (fresh kinematics, a primitive element of the field), the one
     # `coopkin analyze --at q1=-pi/6,q2=pi/6` takes
-    again = analyze_irrational(case1.model, "q1=-pi/6,q2=pi/6")
+    again = case1.analyze("q1=-pi/6,q2=pi/6")
     print("over Q(alpha):", again.numbers.as_dict(), "| alpha =", again.alpha)
     assert again.numbers.as_dict() == coincident.numbers
     print("decided:", remark_text(coincident.decided))
@@ -757,8 +707,8 @@ NB03 = [
             {"name": "c2", "link": "f2/2", "point": ["3*L", "2*L", 0], "normal": [-1, 0, 0],
              "model": "hard"}]}
     fingers = coopkin_sym.load(TWO_FINGERS)
-    locus2 = compute_locus(fingers, max_depth=2)
-    locus_table(locus2)
+    locus2 = fingers.locus(max_depth=2)
+    display(locus2)
     """),
     code("""
     assert locus2.generic == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
@@ -831,8 +781,8 @@ NB03 = [
     the $(a_1, b_1)$ plane separates the four depth-2 points:
     """),
     code("""
-    display(png(plot_components(locus2, fingers, pair=("a2", "b2"))))
-    display(png(plot_components(locus2, fingers, pair=("a1", "b1"))))
+    display(png(locus2.plot(("a2", "b2"))))
+    display(png(locus2.plot(("a1", "b1"))))
     """),
     md("""
     The system at the witness of the component $a_2 = b_2 = 0$, $a_1 = b_1 = -\\pi/2$:
@@ -842,7 +792,7 @@ NB03 = [
     code("""
     witness = by["a2 = 0, b2 = 0, a1 = -pi/2, b1 = -pi/2"].witness
     assert witness == {"a1": "-pi/2", "a2": "0", "b1": "-pi/2", "b2": "0", "L": "1"}
-    draw_system(fingers, at=witness)
+    draw(fingers, at=witness)
     """),
     code("""
     for item in remark_texts(locus2.unexplored):
@@ -866,10 +816,10 @@ NB03 = [
     """),
     code("""
     case2 = coopkin_sym.load("paper-case2-hard")
-    locus3 = compute_locus(case2, max_depth=1)
+    locus3 = case2.locus(max_depth=1)
     print(f"{len(locus3.variables)} variables: {', '.join(locus3.variables)}; "
           f"computed in {locus3.seconds:.2f} s")
-    locus_table(locus3)
+    display(locus3)
     """),
     code("""
     assert locus3.generic == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0, "Nh": 0}
@@ -891,7 +841,7 @@ NB03 = [
     meet = [c for c in t_chart3 if c.depth == 0 and c.changes != one]
     assert meet and all(c.changes == {"Ni": (1, 3), "Ng": (1, 3)} for c in meet)
     print("contact points meeting:", len(meet[0].equations), "equations, e.g. at",
-          witness_of(meet[0]))
+          locus3.table()[locus3.components.index(meet[0])]["witness"])
     both = [c for c in t_chart3 if c.depth == 1]
     two = {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)}
     elbow_meet = {"Nc": (6, 5), "Ni": (1, 3), "Nr": (2, 3), "Ng": (1, 3), "Nd": (0, 1)}
@@ -938,7 +888,7 @@ NB03 = [
     $s_q = \\cot(q/2) = 0$ where the $t$ chart's equations involve that joint).
     """),
     code("""
-    png(plot_components(locus3, case2, pair=("q1", "q2")))
+    png(locus3.plot(("q1", "q2")))
     """),
     code("""
     unexplored = remark_texts(locus3.unexplored)
@@ -1063,7 +1013,6 @@ NB04 = [
     from IPython.display import Markdown, display
 
     import coopkin_sym
-    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
 
     plt.rcParams["figure.dpi"] = 80  # pictures of modest size
 
@@ -1199,8 +1148,8 @@ NB04 = [
         a = system.analyze(exact_configuration(q))
         qdot = a.joint_velocities(u).particular                   # eq. (10), exact
         kept.append(a.Q * sp.Matrix([*u, *qdot]) == sp.zeros(a.m, 1))
-        points = [[float(frac_to_sympy(x, {})) for x in p]           # float-ok
-                  for p in a.kinematics.points]
+        points = [[float(x) for x in p]                             # float-ok
+                  for p in coopkin_sym.contact_points(a)]
         return np.array([float(x) for x in qdot]), points         # float-ok
 
 
@@ -1295,10 +1244,7 @@ NB05 = [
     code("""
     from fractions import Fraction
 
-    from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES
-    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
-
-    LOCUS_NAMES = ("Nm", "Nc", "Ni", "Nr", "Ng", "Nd", "Nh")
+    from coopkin_sym import PASSIVE_NUMBER_NAMES
 
 
     def passive_table(rows):
@@ -1312,10 +1258,10 @@ NB05 = [
 
     def show_passive(p):
         \"\"\"The four subspaces of a passive analysis.\"\"\"
-        show(r"\\text{controlled}", p.controlled)
-        show(r"\\text{uncontrolled}", p.uncontrolled)
-        show(r"\\text{internal passive}", p.internal)
-        show(r"\\text{actuated redundant}", p.actuated_redundant)
+        display(Math(named_latex(r"\\text{controlled}", p.controlled)))
+        display(Math(named_latex(r"\\text{uncontrolled}", p.uncontrolled)))
+        display(Math(named_latex(r"\\text{internal passive}", p.internal)))
+        display(Math(named_latex(r"\\text{actuated redundant}", p.actuated_redundant)))
 
 
     def from_q(a):
@@ -1358,37 +1304,6 @@ NB05 = [
         if free:
             assert same_span(p.uncontrolled, sp.Matrix.hstack(*free))
         return numbers
-
-
-    def at_text(witness):
-        \"\"\"A witness dict in the syntax of `analyze`.\"\"\"
-        return ",".join(f"{k}={v}" for k, v in witness.items())
-
-
-    def witness_of(c):
-        if c.witness:
-            return at_text(c.witness)
-        return at_text(c.algebraic_witness["point"]) if c.algebraic_witness else "none"
-
-
-    def locus_table(locus, locked_joints=0):
-        \"\"\"One row per component; for a locked locus (locked_joints = Na) also
-        Nuo = Nc and Npi = Nr - Na of the locked system.\"\"\"
-        extra = ["Nuo", "Npi"] if locked_joints else []
-        names = list(LOCUS_NAMES) + extra
-        head = ("| where | kind | " + " | ".join(names) + " | witness |\\n"
-                + "|---" * (len(names) + 3) + "|\\n")
-
-        def cells(n):
-            values = dict(n)
-            if locked_joints:
-                values.update(Nuo=n["Nc"], Npi=n["Nr"] - locked_joints)
-            return " | ".join(str(values[k]) for k in names)
-
-        rows = [f"| generic | | {cells(locus.generic)} | |"]
-        rows += [f"| `{c.condition}` | {c.kind} | {cells(c.numbers)} | `{witness_of(c)}` |"
-                 for c in locus.components]
-        return Markdown(head + "\\n".join(rows))
     """),
     md("""
     ## 1. An underactuated finger
@@ -1440,7 +1355,7 @@ NB05 = [
     definitions above. `from_q` does not use the engine's decomposition:
     """),
     code("""
-    show("Q", a.Q)
+    display(Math(named_latex("Q", a.Q)))
     numbers = check_against_q(a)
     print(numbers)
     assert numbers["Nuo"] == 0 and numbers["Npi"] == 0 and numbers["Nco"] == 1
@@ -1488,11 +1403,11 @@ NB05 = [
     The finger at home turning the object (the coordinated motion), and straight:
     """),
     code("""
-    draw_system(finger.analyze("L=1"), motion=("coordinated", 1),
+    draw(finger.analyze("L=1"), motion=("coordinated", 1),
                 title="underactuated finger at home")
     """),
     code("""
-    draw_system(finger.analyze("q2=pi/2,L=1"), motion=("coordinated", 1),
+    draw(finger.analyze("q2=pi/2,L=1"), motion=("coordinated", 1),
                 title="underactuated finger, straight (q2 = pi/2)")
     """),
     md("""
@@ -1506,14 +1421,14 @@ NB05 = [
     """),
     code("""
     floc = finger.locus(free=["q1", "q2"])
-    display(locus_table(floc))
-    display(locus_table(floc.locked, locked_joints=2))
+    display(floc)
+    display(floc.locked)
     assert floc.generic == a.numbers.as_dict()
     assert {"q2 = pi/2", "q2 = -pi/2"} <= {c.condition for c in floc.components}
     assert {c.condition for c in floc.locked.components} == {"q1 = 0, q2 = -pi/2",
                                                              "q1 = 0, q2 = pi/2"}
     for c in floc.locked.components:
-        direct = finger.analyze(at_text(c.witness)).passive.numbers
+        direct = finger.analyze(c.witness).passive.numbers
         assert (direct.Nuo, direct.Npi) == (c.numbers["Nc"], c.numbers["Nr"] - 2) == (1, 0)
     """),
     md("""
@@ -1538,8 +1453,7 @@ NB05 = [
 
     def pins(analysis):
         \"\"\"The two contact points (the pins), exact, at a configuration with L = 1.\"\"\"
-        return [tuple(frac_to_sympy(x, {}) for x in point)
-                for point in analysis.kinematics.points]
+        return coopkin_sym.contact_points(analysis)
 
 
     home = five.analyze("L=1")
@@ -1672,8 +1586,8 @@ NB05 = [
     """),
     code("""
     slice_locus = five.locus(at="q1=0,q3=2*atan(-1/2),L=1", free=["q2", "q4"])
-    display(locus_table(slice_locus))
-    display(locus_table(slice_locus.locked, locked_joints=2))
+    display(slice_locus)
+    display(slice_locus.locked)
     """),
     code("""
     s_point = {"q1": "0", "q3": "2*atan(-1/2)", "q2": "2*atan(-1/2)", "q4": "pi/2",
@@ -1685,7 +1599,7 @@ NB05 = [
     assert len(meet) == 1 and meet[0].numbers == s_an.numbers.as_dict()
     # the locked locus: isolated points with Nuo = 2, S among them
     for c in slice_locus.locked.components:
-        direct = five.analyze(at_text(c.witness)).passive.numbers
+        direct = five.analyze(c.witness).passive.numbers
         assert (direct.Nuo, direct.Npi) == (c.numbers["Nc"], c.numbers["Nr"] - 2)
         assert direct.Nuo == 2
     assert s_point in [c.witness for c in slice_locus.locked.components]
@@ -1709,11 +1623,11 @@ NB05 = [
     """),
     code("""
     m_home = home.manipulability(controlled=["v_x", "v_y"], length=1, point=[0, 2, 0])
-    show("E", m_home.shape)
+    display(Math(named_latex("E", m_home.shape)))
     print("rank:", m_home.rank, "| index:", m_home.index)
     assert m_home.shape == m_home.shape.T and m_home.shape[0, 1] == 0  # mirror symmetry
     assert m_home.rank == 2 and m_home.index > 0
-    draw_system(home, ellipsoid=True, title="five-bar at home")
+    draw(home, ellipsoid=True, title="five-bar at home")
     """),
     md("""
     At S the ellipse is flat: the pin's motion across the line of the distal links is
@@ -1721,11 +1635,11 @@ NB05 = [
     """),
     code("""
     m_s = s_an.manipulability(controlled=["v_x", "v_y"], length=1, point=[*pin, 0])
-    show("E", m_s.shape)
+    display(Math(named_latex("E", m_s.shape)))
     print("rank:", m_s.rank, "| index:", m_s.index)
     assert m_s.shape == m_s.shape.T and m_s.index == 0 and m_s.rank == 1
     assert (m_s.shape * across).is_zero_matrix          # the free direction: no extent
-    draw_system(s_an, ellipsoid=True, title="five-bar at S (distal links in line)")
+    draw(s_an, ellipsoid=True, title="five-bar at S (distal links in line)")
     """),
 ]
 

@@ -98,7 +98,7 @@ RATIONAL_ONLY = frozenset({
     "block_terms", "coordinated_factored", "coordinated_form", "coordinated_terms",
     "decompose_rows", "in_angles", "joint_velocities", "object_velocities",
     "manipulability", "kinematics", "twist_in_base", "classes", "certificate", "check",
-    "where", "ring", "poly", "m"})
+    "where", "ring", "poly", "m", "configuration", "term_budget", "r", "dim"})
 
 
 @dataclass(frozen=True)
@@ -148,7 +148,10 @@ class IrrationalAnalysis(Displayable):
                 f"{' and the motions behind Ni and Nr (.motions)' if self.motions else ''} "
                 f"are computed there; the blocks, matrices and maps need a rational "
                 f"configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
-        raise AttributeError(f"'IrrationalAnalysis' object has no attribute {name!r}")
+        if name.startswith("_"):
+            raise AttributeError(f"'IrrationalAnalysis' object has no attribute {name!r}")
+        raise NotAvailable(f"an analysis has no {clip(name, 40)!r}: at irrational "
+                           f"coordinates it has {', '.join(available_attributes())}")
 
     def __repr__(self) -> str:
         at = ",".join(f"{k}={v}" for k, v in self.at.items())
@@ -190,6 +193,8 @@ class IrrationalAnalysis(Displayable):
             "snapped": snapped_json(model.snapped) if model is not None else [],
             "field": {"alpha": self.alpha, "minimal_polynomial": self.minimal_polynomial,
                       "tangents": self.tangents},
+            # ranks modulo the minimal polynomial: exact at every conjugate point
+            "certificate": {"exact": True, "error_bits": None, "points": 0, "ranks": []},
             **({"passive": self._passive_json()} if self.passive else {})}
 
     def _passive_json(self) -> dict:
@@ -200,6 +205,18 @@ class IrrationalAnalysis(Displayable):
                 "numbers": self.passive.as_dict(),
                 **dict.fromkeys(("controlled", "uncontrolled", "internal",
                                  "actuated_redundant"))}
+
+
+def available_attributes() -> list[str]:
+    """The public attributes an :class:`IrrationalAnalysis` has, sorted.
+
+    Example
+    -------
+    >>> available_attributes()[:4]
+    ['alpha', 'as_json', 'at', 'joints']
+    """
+    names = {*IrrationalAnalysis.__dataclass_fields__, *vars(IrrationalAnalysis)}
+    return sorted(n for n in names if not n.startswith("_"))
 
 
 def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
@@ -333,5 +350,5 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
 
 
 __all__ = ["IrrationalAnalysis", "NotIrrational", "PointMotions", "analyze_irrational",
-           "irrational_values", "point_motions"]
+           "available_attributes", "irrational_values", "point_motions"]
 

@@ -46,7 +46,9 @@ Example
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import json
+import os
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
@@ -93,6 +95,11 @@ class Manipulability(Displayable):
     (('v_x', 'v_y', 'w_z'), 3)
     >>> m
     <Manipulability of v_x, v_y, w_z (length 1): rank 3 of 3, det E = 1/8>
+
+    Written as JSON and read back, it is the same result:
+
+    >>> Manipulability.from_json(json.dumps(m.to_json())) == m
+    True
     """
 
     controlled: tuple[str, ...]
@@ -107,6 +114,125 @@ class Manipulability(Displayable):
         return (f"<Manipulability of {clip(', '.join(self.controlled), 80)} (length "
                 f"{clip(sp.sstr(self.length), 30)}): rank {self.rank} of "
                 f"{len(self.controlled)}, det E = {clip(sp.sstr(self.index), 100)}>")
+
+    def to_json(self) -> dict:
+        """Plain JSON data: every exact entry as text, and the assumptions of the
+        symbols in them (``"positive"`` for a parameter, ``"real"`` for a joint
+        variable); the schema is ``docs/manipulability.schema.json``.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> m = load("paper-case1-soft").analyze(generic=True).manipulability()
+        >>> m.to_json()["symbols"]
+        {'L': 'positive', 't_q1': 'real', 't_q2': 'real'}
+        """
+        exprs = [self.length, self.index, *self.form, *self.shape, *self.degeneracy]
+        names = sorted({s for e in exprs for s in sp.sympify(e).free_symbols}, key=str)
+        return {"controlled": list(self.controlled), "length": sp.sstr(self.length),
+                "form": _rows(self.form), "shape": _rows(self.shape),
+                "index": sp.sstr(self.index), "rank": self.rank,
+                "degeneracy": [sp.sstr(f) for f in self.degeneracy],
+                "symbols": {s.name: _assumption(s) for s in names}}
+
+    @classmethod
+    def from_json(cls, data: Mapping | str) -> Manipulability:
+        """The result of :meth:`to_json` (a tree, or its JSON text) read back: every
+        entry checked, every exact text read by the package's one parser.
+
+        Raises
+        ------
+        ManipulabilityError
+            One line naming the first bad entry (``shape[0][1]: ...``).
+
+        Example
+        -------
+        >>> Manipulability.from_json('{"rank": 1}')
+        Traceback (most recent call last):
+        ...
+        coopkin_sym.errors.ManipulabilityError: not a manipulability result: controlled: missing
+        """
+        from coopkin_sym.analysis.saved import Entries
+        entries = Entries(ManipulabilityError, "not a manipulability result")
+        return _from_tree(entries, entries.tree(data))
+
+    @classmethod
+    def read(cls, path: str | os.PathLike) -> Manipulability:
+        """The result in the JSON file ``path`` written by :meth:`write`."""
+        from coopkin_sym.analysis.saved import Entries
+        entries = Entries(ManipulabilityError, "not a manipulability result")
+        return _from_tree(entries, entries.file(path))
+
+    def write(self, path: str | os.PathLike) -> None:
+        """Write :meth:`to_json` to ``path`` as JSON (read it back with :meth:`read`).
+
+        Example
+        -------
+        >>> import tempfile, pathlib
+        >>> from coopkin_sym import load
+        >>> m = load("paper-case1-soft").analyze().manipulability()
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.json"
+        >>> m.write(path)
+        >>> Manipulability.read(path) == m
+        True
+        """
+        with open(path, "w", encoding="utf-8") as out:
+            json.dump(self.to_json(), out, indent=2)
+            out.write("\n")
+
+
+_KEYS = ("controlled", "length", "form", "shape", "index", "rank", "degeneracy", "symbols")
+_ASSUMPTIONS = {"positive": {"positive": True}, "real": {"real": True}, "none": {}}
+
+
+def _rows(matrix: sp.Matrix) -> list[list[str]]:
+    return [[sp.sstr(x) for x in matrix.row(i)] for i in range(matrix.rows)]
+
+
+def _assumption(symbol: sp.Symbol) -> str:
+    return "positive" if symbol.is_positive else "real" if symbol.is_real else "none"
+
+
+def _from_tree(e, tree: Mapping) -> Manipulability:
+    """A :class:`Manipulability` from its checked JSON tree (see ``from_json``)."""
+    from coopkin_sym.exact.parse import parse_expression
+
+    e.keys(tree, _KEYS, "")
+    kinds = e.field(tree, "symbols", dict, "")
+    symbols = {}
+    for name, kind in kinds.items():
+        if e.value(kind, str, f"symbols.{name}") not in _ASSUMPTIONS:
+            raise e.fail(f"symbols.{name}", f"expected one of {', '.join(_ASSUMPTIONS)}")
+        if not name.isidentifier():
+            raise e.fail("symbols", f"not a name: {name!r}")
+        symbols[name] = sp.Symbol(name, **_ASSUMPTIONS[kind])
+
+    def expr(text: object, where: str) -> sp.Expr:
+        try:
+            return parse_expression(e.value(text, str, where), symbols, where)
+        except NumberError as exc:
+            raise e.fail("", str(exc)) from None
+
+    controlled = tuple(e.texts(tree, "controlled", ""))
+    k = len(controlled)
+    square = []
+    for key in ("form", "shape"):
+        rows = e.field(tree, key, list, "")
+        size = k if key == "shape" else len(rows)
+        if len(rows) != size or any(not isinstance(r, list) or len(r) != size for r in rows):
+            raise e.fail(key, f"expected a square matrix of {size} rows")
+        entries = [[expr(x, f"{key}[{i}][{j}]") for j, x in enumerate(r)]
+                   for i, r in enumerate(rows)]
+        square.append(_in_one_field([sp.Matrix(size, size, sum(entries, []))])[0])
+    form, shape = (sp.ImmutableMatrix(m.to_Matrix()) for m in square)
+    index = sp.factor(expr(tree["index"], "index"))
+    rank = e.field(tree, "rank", int, "")
+    if not 0 <= rank <= k:
+        raise e.fail("rank", f"expected 0 to {k}, got {rank}")
+    degeneracy = tuple(expr(f, f"degeneracy[{i}]")
+                       for i, f in enumerate(e.field(tree, "degeneracy", list, "")))
+    return Manipulability(controlled, expr(tree["length"], "length"), form, shape, index,
+                          rank, degeneracy)
 
 
 def manipulability(analysis, controlled: Sequence[str] | None = None,

@@ -9,6 +9,11 @@ presentation layer (:mod:`coopkin_sym.present.display`) installs. Importing
 With no renderer registered, a result shows as its ``repr`` (the short one each class
 defines, with :func:`clip`).
 
+The same registry holds what a result does with the presentation layer beyond its
+display: writing a report, drawing a plot (:func:`register_action`, :func:`action`;
+e.g. :meth:`Locus.write <coopkin_sym.analysis.locus.facade.LocusMethods.write>`), so
+that this layer calls them without importing the layer above.
+
 Example
 -------
 >>> class Point(Displayable):
@@ -27,13 +32,16 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from coopkin_sym.errors import ArgumentError
+from coopkin_sym.errors import ArgumentError, NotAvailable
 
 #: The formats a renderer can be registered for.
 FORMATS = ("html", "latex", "pretty")
 
 #: Renderers by (class, format); empty until the presentation layer is imported.
 _RENDERERS: dict[tuple[type, str], Callable[[Any], str]] = {}
+
+#: Actions by (class, name): what a result does with the presentation layer.
+_ACTIONS: dict[tuple[type, str], Callable[..., Any]] = {}
 
 #: Loaders still to run before the first lookup (each registers renderers).
 _LOADERS: list[Callable[[], object]] = []
@@ -90,13 +98,63 @@ def render(obj: object, kind: str) -> str | None:
     >>> render(3, "html") is None
     True
     """
-    while _LOADERS:
-        _LOADERS.pop(0)()
+    _load()
     for cls in type(obj).__mro__:
         renderer = _RENDERERS.get((cls, kind))
         if renderer is not None:
             return renderer(obj)
     return None
+
+
+def _load() -> None:
+    while _LOADERS:
+        _LOADERS.pop(0)()
+
+
+def register_action(cls: type, name: str, function: Callable[..., Any]) -> None:
+    """Let instances of ``cls`` (and of its subclasses) do ``name`` (``"write"``,
+    ``"plot"``...) with ``function(obj, ...)``, a function of the presentation layer.
+
+    Example
+    -------
+    >>> class Note:
+    ...     pass
+    >>> register_action(Note, "shout", lambda note, word: word.upper())
+    >>> action(Note(), "shout")("hello")
+    'HELLO'
+    >>> unregister_action(Note, "shout")
+    """
+    _ACTIONS[(cls, name)] = function
+
+
+def unregister_action(cls: type, name: str) -> None:
+    """Forget the action ``name`` of ``cls`` (if any)."""
+    _ACTIONS.pop((cls, name), None)
+
+
+def action(obj: object, name: str) -> Callable[..., Any]:
+    """The action ``name`` registered for ``obj``'s class (or the nearest base class),
+    bound to ``obj``.
+
+    Raises
+    ------
+    NotAvailable
+        Nothing is registered for it.
+
+    Example
+    -------
+    >>> action(3, "write")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.NotAvailable: int.write is not available (nothing of the ...
+    """
+    _load()
+    for cls in type(obj).__mro__:
+        function = _ACTIONS.get((cls, name))
+        if function is not None:
+            return lambda *args, **kwargs: function(obj, *args, **kwargs)
+    raise NotAvailable(f"{type(obj).__name__}.{name} is not available (nothing of the "
+                       "presentation layer is registered for it)")
 
 
 class Displayable:
@@ -146,5 +204,5 @@ def clip(text: object, limit: int) -> str:
     return one if len(one) <= limit else one[:max(limit - 3, 0)] + "..."
 
 
-__all__ = ["FORMATS", "Displayable", "clip", "load_before_render", "register", "render",
-           "unregister"]
+__all__ = ["FORMATS", "Displayable", "action", "clip", "load_before_render", "register",
+           "register_action", "render", "unregister", "unregister_action"]

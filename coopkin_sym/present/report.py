@@ -34,7 +34,7 @@ import re
 import time
 import warnings
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -1360,7 +1360,7 @@ def write_report(locus: Locus, path: str | os.PathLike, system: Any = None, *,
     else:
         pngs, problem = _plots(locus, system, chosen, dpi, pictures_until)
         if problem:
-            locus = Locus(**{**locus.__dict__, "notes": [*locus.notes, problem]})
+            locus = replace(locus, notes=[*locus.notes, problem])
         names = {p: _png_name(target.stem, p) for p in pngs}
         if fmt == "html":
             text = render_html(locus, pngs)

@@ -106,6 +106,25 @@ def test_rational_only_parts_are_a_package_error_naming_what_is_missing():
             "behind Ni and Nr (.motions) are computed there; the blocks, matrices and maps "
             "need a rational configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
         assert isinstance(info.value, AttributeError) and not hasattr(a, name)
-    with pytest.raises(AttributeError) as info:
+    with pytest.raises(NotAvailable) as info:
         _ = a.no_such_part
-    assert not isinstance(info.value, NotAvailable)
+    assert str(info.value) == (
+        "an analysis has no 'no_such_part': at irrational coordinates it has alpha, "
+        "as_json, at, joints, minimal_polynomial, model, motions, numbers, object_dim, "
+        "passive, system, tangents, variables")
+    assert "not available at a configuration" not in str(info.value)
+
+
+def test_every_part_of_a_rational_analysis_is_there_or_not_available():
+    """Each public attribute of a rational analysis (class or instance) is either an
+    attribute of the irrational one or raises NotAvailable naming it."""
+    from coopkin_sym.analysis.mobility import Analysis
+
+    rational = coopkin_sym.load("paper-case1-hard").analyze("q1=pi/2,q2=pi/2")
+    names = {n for n in (*dir(Analysis), *vars(rational)) if not n.startswith("_")}
+    a = coopkin_sym.load("paper-case1-hard").analyze("q1=-pi/6,q2=pi/6")
+    for name in sorted(names):
+        if name in type(a).__dataclass_fields__ or name in vars(type(a)):
+            continue
+        with pytest.raises(NotAvailable, match=f"^{name} is not available"):
+            getattr(a, name)

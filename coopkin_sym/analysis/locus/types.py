@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.locus.facade import LocusMethods
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.numbers import numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
@@ -237,7 +238,7 @@ def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence
 
 
 @dataclass
-class Locus(Displayable):
+class Locus(LocusMethods, Displayable):
     """Where the numbers of a system change, exactly.
 
     Attributes

@@ -7,18 +7,21 @@ from __future__ import annotations
 import io
 import json
 import math
-from dataclasses import dataclass
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
 from fractions import Fraction
 
 import numpy as np
 
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers, numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
+from coopkin_sym.analysis.sweep.saved import sweep_from_file, sweep_from_tree
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import MissingDependency
 
 
-@dataclass
+@dataclass(eq=False)
 class SweepResult(Displayable):
     """The exact numbers at every point of a sweep.
 
@@ -57,6 +60,11 @@ class SweepResult(Displayable):
     <SweepResult paper case 1, hard/hard over q1, q2: 2 points, 1 not generic;
     1 certified modulo p, 1 rechecked exactly;
     generic Nm=2 Nc=2 Ni=1 Nr=0 Ng=1 Nd=4 Nh=0>
+
+    Written as JSON and read back, it is the same result:
+
+    >>> SweepResult.from_json(res.json_text()) == res
+    True
     """
 
     system: str
@@ -73,6 +81,26 @@ class SweepResult(Displayable):
 
     def __len__(self) -> int:
         return int(self.numbers.shape[0])
+
+    def __eq__(self, other: object) -> bool:
+        """The same points (each with the same exact values, requested angles included),
+        numbers and header; the order of the value tables does not matter."""
+        if not isinstance(other, SweepResult):
+            return NotImplemented
+        plain = [f.name for f in fields(self)
+                 if f.name not in ("levels", "index", "numbers", "rechecked", "kinds")]
+        return (all(getattr(self, n) == getattr(other, n) for n in plain)
+                and [self._kind(k) for k in range(len(self.joints))]
+                == [other._kind(k) for k in range(len(other.joints))]
+                and np.array_equal(self.numbers, other.numbers)
+                and np.array_equal(self.rechecked, other.rechecked)
+                and self._point_values() == other._point_values())
+
+    __hash__ = None  # type: ignore[assignment]  # mutable arrays
+
+    def _point_values(self) -> list[tuple[Value, ...]]:
+        return [tuple(self.levels[k][i] for k, i in enumerate(idx))
+                for idx in self.index.tolist()]
 
     def __repr__(self) -> str:
         at = f" at {clip(self.at, 60)}" if self.at else ""
@@ -239,6 +267,55 @@ class SweepResult(Displayable):
     def to_json(self) -> dict:
         """``{"header": {...}, "points": [{"q1": "pi/2", ..., "Nm": 2, ...}, ...]}``."""
         return {"header": self.header(), "points": self.rows()}
+
+    @classmethod
+    def from_json(cls, data: Mapping | str) -> SweepResult:
+        """The result written by :meth:`to_json` (a tree) or :meth:`json_text` (text),
+        read back: every entry checked, every exact value read by the package's parser.
+
+        Raises
+        ------
+        SweepError
+            One line naming the first bad entry (``points[2].q1: ...``).
+
+        Example
+        -------
+        >>> SweepResult.from_json('{"header": {}, "points": []}')  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        coopkin_sym.errors.SweepError: not a sweep result: header.system: missing
+        """
+        return sweep_from_tree(data, cls)
+
+    @classmethod
+    def read(cls, path: str | os.PathLike) -> SweepResult:
+        """The result in a JSON file written by :meth:`write` (or ``coopkin sweep -o
+        FILE.json``), read as :meth:`from_json` does.
+
+        Example
+        -------
+        >>> SweepResult.read("/")
+        Traceback (most recent call last):
+        ...
+        coopkin_sym.errors.SweepError: /: is a directory, not a file
+        """
+        return sweep_from_file(path, cls)
+
+    def write(self, path: str | os.PathLike) -> None:
+        """Write :meth:`json_text` to ``path`` (read it back with :meth:`read`).
+
+        Example
+        -------
+        >>> import tempfile, pathlib
+        >>> from coopkin_sym import load
+        >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2"])
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "sweep.json"
+        >>> res.write(path)
+        >>> SweepResult.read(path) == res
+        True
+        """
+        with open(path, "w", encoding="utf-8") as out:
+            out.write(self.json_text())
 
     def json_text(self) -> str:
         """:meth:`to_json` as text: the header indented, one line per point."""

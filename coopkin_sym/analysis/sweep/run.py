@@ -124,42 +124,7 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
         index = points.index()
         compiled = compile_system(model, joints, at, prime)
     else:
-        parsed = []
-        for pt in points:
-            parsed.append(_split_point(pt))
-            if len(parsed) > limits.MAX_GRID_POINTS:
-                raise SweepError(f"points: more than {limits.MAX_GRID_POINTS:,} points "
-                                 "(the limit of one sweep)")
-        if not parsed:
-            raise SweepError("no points to sweep")
-        names = {n for items in parsed for n, _ in items}
-        joints = tuple(j for j in model.joint_names if j in names)
-        unknown = sorted(names - set(joints))
-        if unknown:
-            params = {p.name for p in model.parameters}
-            bad = unknown[0]
-            what = (f"{bad} is a parameter: set it with at=" if bad in params
-                    else f"unknown joint {brief(bad)} (joints: {', '.join(model.joint_names)})")
-            raise SweepError(f"points: {what}")
-        compiled = compile_system(model, joints, at, prime)
-        table: list[dict] = [{} for _ in joints]
-        lv: list[list[Value]] = [[] for _ in joints]
-        index = np.zeros((len(parsed), len(joints)), dtype=np.int64)
-        for i, items in enumerate(parsed):
-            given = dict(items)
-            for k, j in enumerate(joints):
-                raw = given.get(j)
-                key = ("default",) if raw is None else _hashable(raw)
-                pos = table[k].get(key)
-                if pos is None:
-                    v = compiled.defaults[k] if raw is None else compiled.value(j, raw)
-                    pos = table[k].get((v.num, v.den))
-                    if pos is None:
-                        pos = table[k][(v.num, v.den)] = len(lv[k])
-                        lv[k].append(v)
-                    table[k][key] = pos
-                index[i, k] = pos
-        levels = tuple(tuple(v) for v in lv)
+        joints, levels, index, compiled = _explicit_points(model, points, at, prime)
     pairs = [[(v.num, v.den) for v in vs] for vs in levels]
     total = index.shape[0]
     ranks = np.zeros((total, 3), dtype=np.int64)
@@ -186,6 +151,47 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
     return SweepResult(model.name, tuple(joints), compiled.at_text, compiled.generic,
                        tuple(levels), index, numbers, rechecked, prime, bound,
                        tuple(kinds[j] for j in joints))
+
+
+def _explicit_points(model: Model, points: Iterable[str | Mapping], at, prime: int):
+    """The swept joints, their value tables, the index of every point and the compiled
+    system, for an iterable of explicit points (see :func:`sweep`)."""
+    parsed = []
+    for pt in points:
+        parsed.append(_split_point(pt))
+        if len(parsed) > limits.MAX_GRID_POINTS:
+            raise SweepError(f"points: more than {limits.MAX_GRID_POINTS:,} points "
+                             "(the limit of one sweep)")
+    if not parsed:
+        raise SweepError("no points to sweep")
+    names = {n for items in parsed for n, _ in items}
+    joints = tuple(j for j in model.joint_names if j in names)
+    unknown = sorted(names - set(joints))
+    if unknown:
+        params = {p.name for p in model.parameters}
+        bad = unknown[0]
+        what = (f"{bad} is a parameter: set it with at=" if bad in params
+                else f"unknown joint {brief(bad)} (joints: {', '.join(model.joint_names)})")
+        raise SweepError(f"points: {what}")
+    compiled = compile_system(model, joints, at, prime)
+    table: list[dict] = [{} for _ in joints]
+    lv: list[list[Value]] = [[] for _ in joints]
+    index = np.zeros((len(parsed), len(joints)), dtype=np.int64)
+    for i, items in enumerate(parsed):
+        given = dict(items)
+        for k, j in enumerate(joints):
+            raw = given.get(j)
+            key = ("default",) if raw is None else _hashable(raw)
+            pos = table[k].get(key)
+            if pos is None:
+                v = compiled.defaults[k] if raw is None else compiled.value(j, raw)
+                pos = table[k].get((v.num, v.den))
+                if pos is None:
+                    pos = table[k][(v.num, v.den)] = len(lv[k])
+                    lv[k].append(v)
+                table[k][key] = pos
+            index[i, k] = pos
+    return joints, tuple(tuple(v) for v in lv), index, compiled
 
 
 def _hashable(value):

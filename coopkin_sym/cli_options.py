@@ -1,0 +1,159 @@
+"""The options of the ``coopkin`` commands that take many, as small dataclasses.
+
+A command with many options (``coopkin locus``) is written as ``run(model, options)``
+taking one :class:`LocusOptions`; :func:`options_command` registers it with typer,
+which sees one parameter per field (its ``Annotated`` typer option), exactly as if
+they were written in the command's signature.
+
+Example
+-------
+>>> from typer.testing import CliRunner
+>>> app = typer.Typer()
+>>> @dataclass
+... class Hello:
+...     loud: Annotated[bool, typer.Option("--loud")] = False
+>>> @options_command(app, "hello", Hello)
+... def hello(model: str, options: Hello) -> None:
+...     '''Say hello.'''
+...     typer.echo(model.upper() if options.loud else model)
+>>> CliRunner().invoke(app, ["five-bar", "--loud"]).stdout
+'FIVE-BAR\\n'
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import inspect
+import typing
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Annotated
+
+import typer
+
+ModelArg = Annotated[str, typer.Argument(
+    help="A model file (YAML/JSON) or a shipped example name (see `coopkin examples`).")]
+TimeoutOption = Annotated[float | None, typer.Option(
+    "--timeout", min=0, help="Wall-clock bound in seconds for the whole run, held even "
+                             "inside steps that cannot be interrupted; past it the "
+                             "command stops, says what was cut and exits with 3.")]
+NoProgressOption = Annotated[bool, typer.Option(
+    "--no-progress", help="No progress display (none is shown when stderr is not a "
+                          "terminal, nor in the first second).")]
+
+
+def options_command(app: typer.Typer, name: str, options: type
+                    ) -> Callable[[Callable], Callable]:
+    """Register ``run(model, options)`` as the command ``name`` of ``app``: typer sees
+    the model argument, then one option per field of the dataclass ``options``."""
+    hints = typing.get_type_hints(options, include_extras=True)
+    keyword = inspect.Parameter.KEYWORD_ONLY
+    params = [inspect.Parameter("model", keyword, annotation=ModelArg)]
+    for f in dataclasses.fields(options):
+        default = inspect.Parameter.empty if f.default is dataclasses.MISSING else f.default
+        params.append(inspect.Parameter(f.name, keyword, default=default,
+                                        annotation=hints[f.name]))
+
+    def register(run: Callable) -> Callable:
+        def command(**values) -> None:
+            model = values.pop("model")
+            return run(model, options(**values))
+
+        command.__signature__ = inspect.Signature(params)  # type: ignore[attr-defined]
+        command.__annotations__ = {p.name: p.annotation for p in params}
+        command.__doc__, command.__name__ = run.__doc__, run.__name__
+        app.command(name)(command)
+        return run
+    return register
+
+
+@dataclass
+class LocusOptions:
+    """The options of ``coopkin locus``.
+
+    Example
+    -------
+    >>> LocusOptions("report.md", free="q1, q2").free_joints
+    ['q1', 'q2']
+    """
+
+    output: Annotated[str, typer.Option(
+        "--output", "-o", help="The report to write: .md, .html, .tex or .json (plots of "
+                               "the components go next to it as <stem>_<qi>_<qj>.png).")]
+    at: Annotated[str | None, typer.Option(
+        "--at", help="Values fixing some joints or parameters, as for `coopkin analyze`; "
+                     "the other joints stay free.")] = None
+    max_depth: Annotated[int, typer.Option(
+        "--max-depth", min=0, help="How deep to look inside components for further "
+                                   "drops (0: the generic locus only).")] = 2
+    timeout: Annotated[float | None, typer.Option(
+        "--timeout", min=0, help="Wall-clock bound in seconds for the whole run (the "
+                                 "generic step, --certify and --verify included), held "
+                                 "even inside steps that cannot be interrupted; a run "
+                                 "cut at a check of the bound writes its report, which "
+                                 "says what was cut, and exits with 3.")] = None
+    no_progress: NoProgressOption = False
+    pair: Annotated[list[str] | None, typer.Option(
+        "--pair", help="Two joints to plot the components on, e.g. q1,q2 (repeatable; "
+                       "default: the pairs that occur together in a component).")] = None
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep free, as for `coopkin analyze`; "
+                       "the others not set with --at stay at home (q = 0).")] = None
+    pi_size: Annotated[int | None, typer.Option(
+        "--pi-size", min=0, help="Sets of joints at q = pi are searched inside up to this "
+                                 "many joints at once (default: all for up to four "
+                                 "revolute joints, then fewer).")] = None
+    verify: Annotated[bool, typer.Option(
+        "--verify", help="Check the locus independently afterwards (see `coopkin verify`); "
+                         "exit 1 when something is uncovered or unsound.")] = False
+    certify: Annotated[bool, typer.Option(
+        "--certify", help="Prove the locus complete by Groebner bases, chart by chart and "
+                          "depth by depth, or say why it is not proved (the report's "
+                          "summary line).")] = False
+    certify_timeout: Annotated[float, typer.Option(
+        "--certify-timeout", min=0, help="Wall-clock bound in seconds for the whole "
+                                         "certificate (each test at most 30 s).")] = 300.0
+
+    @property
+    def free_joints(self) -> list[str] | None:
+        """``--free`` as a list of joint names (None when not given)."""
+        return _names(self.free)
+
+
+@dataclass
+class ManipulabilityOptions:
+    """The options of ``coopkin manipulability``.
+
+    Example
+    -------
+    >>> ManipulabilityOptions(controlled="v_x,v_y").length
+    '1'
+    """
+
+    at: Annotated[str | None, typer.Option(
+        "--at", help="Joint values and parameters, as for `coopkin analyze`.")] = None
+    generic: Annotated[bool, typer.Option(
+        "--generic", help="Keep every joint variable symbolic: E as rational functions "
+                          "and where it degenerates.")] = False
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep symbolic.")] = None
+    controlled: Annotated[str | None, typer.Option(
+        "--controlled", help="Comma-separated object velocities, e.g. v_x,v_y "
+                             "(default: the whole twist).")] = None
+    length: Annotated[str, typer.Option(
+        "--length", help="The characteristic length angular velocities are scaled by "
+                         "(a positive number or a parameter, e.g. L).")] = "1"
+    point: Annotated[str | None, typer.Option(
+        "--point", help="x,y,z: v is the velocity of this object point (base frame).")
+    ] = None
+    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False
+    timeout: TimeoutOption = None
+    no_progress: NoProgressOption = False
+
+
+def _names(text: str | None) -> list[str] | None:
+    return [f.strip() for f in text.split(",") if f.strip()] if text else None
+
+
+__all__ = ["LocusOptions", "ManipulabilityOptions", "ModelArg", "NoProgressOption",
+           "TimeoutOption", "options_command"]
