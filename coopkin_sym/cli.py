@@ -45,6 +45,7 @@ from typing import Annotated
 import typer
 
 from coopkin_sym.cli_options import (
+    AnalyzeOptions,
     LocusOptions,
     ManipulabilityOptions,
     ModelArg,
@@ -55,6 +56,7 @@ from coopkin_sym.cli_options import (
 from coopkin_sym.errors import (
     ConfigurationError,
     CoopkinError,
+    FiniteMobilityError,
     InfeasibleMotion,
     ManipulabilityError,
     ModelError,
@@ -123,57 +125,15 @@ def _notes():
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
-@app.command()
-def analyze(
-    model: ModelArg,
-    at: Annotated[str | None, typer.Option(
-        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000; "
-                     "unset joints stay at home (q = 0), unset parameters symbolic.")] = None,
-    generic: Annotated[bool, typer.Option(
-        "--generic", help="Keep every joint variable symbolic (t_q = tan(q/2)).")] = False,
-    free: Annotated[str | None, typer.Option(
-        "--free", help="Comma-separated joints to keep symbolic.")] = None,
-    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
-    latex: Annotated[bool, typer.Option("--latex", help="Print the blocks as LaTeX.")] = False,
-    timeout: TimeoutOption = None,
-    no_progress: NoProgressOption = False,
-) -> None:
+@options_command(app, "analyze", AnalyzeOptions)
+def analyze(model: str, o: AnalyzeOptions) -> None:
     """Mobility Nm, connectivity Nc, indeterminacy Ni, redundancy Nr (and Ng, Nd, Nh),
-    with the block decomposition of the paper, exactly."""
-    free_joints = [f.strip() for f in free.split(",") if f.strip()] if free else None
+    with the block decomposition of the paper, exactly; with --finite, whether the
+    first-order motions are finite ones."""
     printer = _PartPrinter()
-
-    def work():
-        from coopkin_sym import load
-        from coopkin_sym.exact.bounded import deliver, report
-        from coopkin_sym.present.text import (
-            analysis_json,
-            analysis_latex,
-            analysis_parts,
-            analysis_text,
-        )
-
-        report("loading the model")
-        system = load(model)
-        report("the analysis")
-        result = system.analyze(at, generic=generic, free=free_joints)
-        if not (as_json or latex or _irrational(result)):
-            parts = analysis_parts(result)
-            deliver(("names", [name for name, _ in parts]))
-            for name, part in parts:
-                report(f"the {name}" if name in ("numbers", "sentences") else name)
-                deliver(("part", name, part()))
-            return None
-        report("the JSON document" if as_json else "the text")
-        if as_json:
-            return analysis_json(result)
-        if not _irrational(result):
-            return analysis_latex(result) if latex else analysis_text(result)
-        from coopkin_sym.present.text import irrational_latex, irrational_text
-        return irrational_latex(result) if latex else irrational_text(result)
-
     try:
-        text = _bounded(work, timeout, "analyze", no_progress, output=printer)
+        text = _bounded(lambda: _analyze_work(model, o), o.timeout, "analyze",
+                        o.no_progress, output=printer)
     except KeyboardInterrupt:
         if printer.names is None:
             raise
@@ -187,6 +147,54 @@ def analyze(
         _fail(str(exc))
     if text is not None:
         typer.echo(text)
+
+
+def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
+    """The work of ``coopkin analyze`` (in the bounded worker): the parts as they come,
+    or the whole JSON or LaTeX text."""
+    from coopkin_sym import load
+    from coopkin_sym.exact.bounded import deliver, report
+    from coopkin_sym.present.text import (
+        analysis_json,
+        analysis_latex,
+        analysis_parts,
+        analysis_text,
+    )
+
+    report("loading the model")
+    system = load(model)
+    report("the analysis")
+    result = system.analyze(o.at, generic=o.generic, free=o.free_joints)
+    finite = None
+    if o.finite:
+        if o.generic or o.free_joints or _irrational(result):
+            raise FiniteMobilityError("--finite needs every joint at an exact angle with a "
+                                      "rational tan(q/2) (not --generic, --free or an "
+                                      "irrational angle)")
+        report("the finite mobility")
+        finite = system.finite_mobility(result.configuration, order=o.order)
+    if not (o.as_json or o.latex or _irrational(result)):
+        parts = analysis_parts(result)
+        if finite is not None:
+            from coopkin_sym.present.finite import finite_lines
+            parts.append(("finite mobility", lambda: finite_lines(finite)))
+        deliver(("names", [name for name, _ in parts]))
+        for name, part in parts:
+            report(f"the {name}" if name in ("numbers", "sentences") else name)
+            deliver(("part", name, part()))
+        return None
+    report("the JSON document" if o.as_json else "the text")
+    if o.as_json:
+        return analysis_json(result, finite)
+    if not _irrational(result):
+        text = analysis_latex(result) if o.latex else analysis_text(result)
+        if finite is not None:
+            from coopkin_sym.present.finite import finite_latex, finite_lines
+            text += ("\n" + finite_latex(finite)) if o.latex else (
+                "\n" + "\n".join(finite_lines(finite)))
+        return text
+    from coopkin_sym.present.text import irrational_latex, irrational_text
+    return irrational_latex(result) if o.latex else irrational_text(result)
 
 
 class _PartPrinter:

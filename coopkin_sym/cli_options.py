@@ -121,6 +121,41 @@ class LocusOptions:
 
 
 @dataclass
+class AnalyzeOptions:
+    """The options of ``coopkin analyze``.
+
+    Example
+    -------
+    >>> AnalyzeOptions(free="q1, q2").free_joints, AnalyzeOptions().order
+    (['q1', 'q2'], None)
+    """
+
+    at: Annotated[str | None, typer.Option(
+        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000; "
+                     "unset joints stay at home (q = 0), unset parameters symbolic.")] = None
+    generic: Annotated[bool, typer.Option(
+        "--generic", help="Keep every joint variable symbolic (t_q = tan(q/2)).")] = False
+    free: Annotated[str | None, typer.Option(
+        "--free", help="Comma-separated joints to keep symbolic.")] = None
+    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False
+    latex: Annotated[bool, typer.Option("--latex", help="Print the blocks as LaTeX.")] = False
+    finite: Annotated[bool, typer.Option(
+        "--finite", help="Also the finite mobility: the local dimension of the closed "
+                         "system's configuration space, its branches and whether the "
+                         "first-order motions are finite (hard, complete and "
+                         "frictionless contacts; every joint at an exact angle).")] = False
+    order: Annotated[int | None, typer.Option(
+        "--order", min=2, help="With --finite: expand to exactly this order (default: "
+                               "2, 3, 4 until decided).")] = None
+    timeout: TimeoutOption = None
+    no_progress: NoProgressOption = False
+
+    @property
+    def free_joints(self) -> list[str] | None:
+        return _names(self.free)
+
+
+@dataclass
 class ManipulabilityOptions:
     """The options of ``coopkin manipulability``.
 

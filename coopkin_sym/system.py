@@ -28,10 +28,11 @@ from coopkin_sym.errors import ConfigurationError, NotIrrational
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model
 
-if TYPE_CHECKING:  # pragma: no cover
+if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from coopkin_sym.analysis.batch import BatchResult
+    from coopkin_sym.analysis.finite import FiniteMobility
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
     from coopkin_sym.analysis.locus.certify import Certificate
     from coopkin_sym.analysis.locus.types import Locus
@@ -232,6 +233,23 @@ class System:
         ['q1', 'q3']
         """
         return System(self.model.with_actuators_locked())
+
+    def finite_mobility(self, at: str | Mapping | Configuration | None = None, *,
+                        order: int | None = None) -> FiniteMobility:
+        """The finite mobility at ``at``: the local dimension of the closed system's
+        configuration space, its branches and classification, exactly (see
+        :func:`coopkin_sym.analysis.finite.finite_mobility`; every joint at a rational
+        ``tan(q/2)``, hard, complete or frictionless contacts).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> fm = load("four-bar").finite_mobility("q1=-pi/2,q2=-pi/2")
+        >>> fm.dimension, fm.first_order, fm.classification
+        (1, 2, 'bifurcation')
+        """
+        from coopkin_sym.analysis.finite import finite_mobility
+        return finite_mobility(self.model, at, order)
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
              title: str | None = None) -> Figure:

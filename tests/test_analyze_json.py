@@ -112,13 +112,15 @@ def test_what_each_path_gives(outputs):
     assert [outputs[n]["point"] for n in ("home", "generic", "free", "irrational")] == [
         "rational", "symbolic", "symbolic", "irrational"]
     home = outputs["home"]
-    assert home["omitted"] == {} and home["field"] is None
+    assert home["omitted"] == {"finite": "not computed: ask for it with coopkin analyze "
+                                         "--finite"} and home["field"] is None
+    assert home["finite"] is None
     assert home["blocks"]["C11"] == [["0"], ["0"], ["L"], ["-1"], ["0"], ["0"]]
     irr = outputs["irrational"]
     assert irr["system"] == home["system"] and irr["joints"] == ["q1", "q2"]
     assert irr["configuration"] == "q1=-pi/6,q2=pi/6" and irr["variables"] == ["L"]
     assert irr["blocks"] == dict.fromkeys(BLOCKS) and irr["shapes"]["C11"] == [6, 3]
-    assert set(irr["omitted"]) == {*BLOCKS, "coordinated_form"}
+    assert set(irr["omitted"]) == {*BLOCKS, "coordinated_form", "finite"}
     assert irr["field"]["minimal_polynomial"] == "alpha**2 + 4*alpha + 1"
     over = outputs["over-budget"]
     assert over["blocks"]["C22"] is None and "budget" in over["omitted"]["C22"]
@@ -128,3 +130,20 @@ def test_what_each_path_gives(outputs):
     assert passive["actuated"] == ["q1", "q3"] and passive["controlled"] is None
     assert "passive" in outputs["passive-irrational"]["omitted"]
     assert outputs["passive"]["passive"]["controlled"] is not None
+
+
+def test_the_finite_mobility_is_in_the_document_when_asked():
+    """``coopkin analyze --finite --json``: the ``finite`` entry, valid for the schema."""
+    result = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=-pi/2,q2=-pi/2",
+                                 "--finite", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    jsonschema = pytest.importorskip("jsonschema")
+    jsonschema.Draft202012Validator(SCHEMA).validate(data)
+    finite = data["finite"]
+    assert (finite["dimension"], finite["first_order"], finite["classification"]) == (
+        1, 2, "bifurcation")
+    assert [b["tangent"] for b in finite["branches"]] == [[["0", "2", "0", "2", "2"]],
+                                                          [["0", "-2", "4/3", "-2/3", "2"]]]
+    assert finite["orders"] == [{"order": 1, "dimension": 2}, {"order": 2, "dimension": 1}]
+    assert "finite" not in data["omitted"]

@@ -25,6 +25,8 @@ _CLASS_WORDS = {
     "cone": "a singular point of the configuration space: its motions form a cone "
             "(one branch of {dim} motion{s}, not smooth here)",
     "shaky": "shaky: first-order motions exist, but no finite motion follows them",
+    "shaky_partly": "shaky: of the first-order motions only {dim} extend to finite "
+                    "motions, no finite motion follows the others",
     "undecided": "undecided at order {order}: the expansion proves only "
                  "{lower} <= finite mobility <= {upper}",
 }
@@ -55,7 +57,10 @@ _ASSUMPTION_WORDS = {
 def classification_text(fm: FiniteMobility) -> str:
     """The classification in words."""
     dim = fm.branches[0].dimension if fm.branches else fm.dimension
-    return _CLASS_WORDS[fm.classification].format(
+    key = fm.classification
+    if key == "shaky" and fm.dimension:
+        key = "shaky_partly"
+    return _CLASS_WORDS[key].format(
         branches=len(fm.branches), dim=dim, s="" if dim == 1 else "s", order=fm.order,
         lower=fm.bounds[0], upper=fm.bounds[1])
 
@@ -146,4 +151,5 @@ def finite_json(fm: FiniteMobility) -> dict:
         "order": fm.order,
         "assumptions": list(fm.assumptions),
         "reduced_constraints": list(fm.equations),
+        "group_motions": [[str(x) for x in v] for v in fm.group_motions],
     }

@@ -365,7 +365,11 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
 #: follows for a model with passive joints (docs/analyze-json.md).
 JSON_KEYS = ("system", "configuration", "point", "variables", "joints", "twist", "numbers",
              "classes", "blocks", "shapes", "coordinated_form", "object_frame", "snapped",
-             "renamed", "ignored", "field", "omitted", "meaning", "certificate", "factored")
+             "renamed", "ignored", "field", "omitted", "meaning", "certificate", "factored",
+             "finite")
+
+# why the finite mobility is not in an analysis document
+_FINITE_NOT_ASKED = "not computed: ask for it with coopkin analyze --finite"
 
 # the numbers at an irrational point: exact ranks over the number field
 _EXACT_IN_FIELD = {"exact": True, "error_bits": None, "points": 0, "ranks": []}
@@ -377,7 +381,7 @@ _IRRATIONAL_PASSIVE = ("at a configuration with irrational coordinates only the 
 _FORM_OMITTED = "not given when a block is omitted"
 
 
-def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
+def analysis_document(result: Analysis | IrrationalAnalysis, finite=None) -> dict:
     """The data of ``coopkin analyze --json``: the same keys (:data:`JSON_KEYS`, then
     ``passive`` for a model with passive joints) at a rational point, generically and
     at irrational angles; a value not computed is null (or empty) and ``omitted``
@@ -409,6 +413,12 @@ def analysis_document(result: Analysis | IrrationalAnalysis) -> dict:
         meaning = sentences(result)
         data["factored"] = (factored_document(result.coordinated_factored())
                             if "C22" in omitted else None)
+    if finite is None:
+        omitted["finite"] = _FINITE_NOT_ASKED
+        data["finite"] = None
+    else:
+        from coopkin_sym.present.finite import finite_json
+        data["finite"] = finite_json(finite)
     data.update(omitted=omitted, meaning=meaning, **urdf_notes_json(result.model))
     out = {k: data[k] for k in JSON_KEYS}
     if "passive" in data:
@@ -434,8 +444,9 @@ def urdf_notes_json(model) -> dict[str, list[dict]]:
                          "mimics": i.mimics} for i in ignored]}
 
 
-def analysis_json(result: Analysis | IrrationalAnalysis) -> str:
-    """What ``coopkin analyze --json`` prints: :func:`analysis_document` as text.
+def analysis_json(result: Analysis | IrrationalAnalysis, finite=None) -> str:
+    """What ``coopkin analyze --json`` prints: :func:`analysis_document` as text (with
+    the finite mobility ``finite`` when given: ``--finite``).
 
     Example
     -------
@@ -444,4 +455,4 @@ def analysis_json(result: Analysis | IrrationalAnalysis) -> str:
     >>> data["numbers"]["Nm"], data["configuration"], data["field"]["alpha"]
     (3, 'q1=-pi/6,q2=pi/6', '-2 + sqrt(3)')
     """
-    return json.dumps(analysis_document(result), indent=2)
+    return json.dumps(analysis_document(result, finite), indent=2)

@@ -123,3 +123,23 @@ def test_the_spin_about_the_contact_line_is_split_off_as_a_finite_motion():
     q = system.analyze(at + ",L=1").Q
     assert q * sp.Matrix(spin) == sp.zeros(q.rows, 1)
     assert spin[3:6] != (0, 0, 0) and spin[6:] == (0, 0)
+
+
+def test_the_command_says_it_and_refuses_what_it_cannot_expand():
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    runner = CliRunner()
+    out = runner.invoke(app, ["analyze", "shaky-pinned-bars", "--finite"])
+    assert out.exit_code == 0, out.output
+    assert ("Finite mobility: 0 (first-order motions: 1) - shaky: first-order motions "
+            "exist, but no finite motion follows them.") in out.stdout
+    bad = runner.invoke(app, ["analyze", "paper-case1-soft", "--finite"])
+    assert bad.exit_code == 2
+    assert bad.stderr.startswith("coopkin: error: contact 1 is soft: its no-spin")
+    symbolic = runner.invoke(app, ["analyze", "four-bar", "--generic", "--finite"])
+    assert symbolic.exit_code == 2 and "--finite needs every joint" in symbolic.stderr
+    latex = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=pi/2,q2=pi/2",
+                                "--finite", "--latex"])
+    assert "Finite mobility $1$ (first-order motions: $2$): a bifurcation" in latex.stdout

@@ -86,5 +86,5 @@ class SeriesField(Field):
         terms = x.to_dict()
         if not terms:
             return self.order + 1, self.zero
-        d = min(sum(m) for m in terms)
+        d = int(min(sum(int(e) for e in m) for m in terms))
         return d, self.ctx.from_dict({m: c for m, c in terms.items() if sum(m) == d})
