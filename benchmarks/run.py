@@ -28,7 +28,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 MODULES = ("bench_sweep", "bench_generic", "bench_locus", "bench_certify", "bench_scaleout",
-           "bench_speed", "bench_compile")
+           "bench_speed", "bench_compile", "bench_finite")
 COLUMNS = ("benchmark", "case", "ours_s", "baseline", "baseline_s", "ratio", "note")
 
 
