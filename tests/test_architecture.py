@@ -245,7 +245,6 @@ OVER_SIZE = {
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
     "coopkin_sym/present/report.py",
-    "coopkin_sym/analysis/generic.py:generic_numbers",
     "coopkin_sym/exact/groebner.py:covers",
     "coopkin_sym/model/model.py:_build",
     "coopkin_sym/model/model.py:_contact",

@@ -58,7 +58,7 @@ from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.bounded import report, run_bounded
 from coopkin_sym.exact.deadline import check
-from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.matrix import PolyMatrix, rank_triple
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.ring import ClearedRows
@@ -841,23 +841,12 @@ def numbers_modulo(q_rows, model: Model, row_contacts: list[int], quotient) -> N
     rows, then the object rows left over from every arm are ranked together.
     """
     dim = model.object_dim
-    gt = [row[:dim] for row in q_rows]
-    rank_gt = PolyMatrix(gt, dim, quotient).rank()
     owners = [model.contacts[c].arm for c in row_contacts]
-    leftover = [gt[i] for i, a in enumerate(owners) if a is None]
-    rank_dt = 0
-    for a, arm in enumerate(model.arms):
-        off = dim + model.joint_offset(a)
-        n = len(arm.joints)
-        rows = [q_rows[i][off:off + n] + gt[i] for i, o in enumerate(owners) if o == a]
-        if not rows:
-            continue
-        pivots, left = PolyMatrix(rows, n + dim, quotient).eliminate(range(n))
-        rank_dt += pivots
-        leftover += [r[n:] for r in left]
-    rank_q = rank_dt + PolyMatrix(leftover, dim, quotient).rank()
-    return numbers_from_ranks(len(q_rows), len(model.joints), rank_q, rank_gt, rank_dt,
-                              dim=dim)
+    arms = [([i for i, o in enumerate(owners) if o == a], dim + model.joint_offset(a),
+             dim + model.joint_offset(a) + len(arm.joints))
+            for a, arm in enumerate(model.arms)]
+    ranks = rank_triple(q_rows, dim + len(model.joints), dim, quotient, arms, by_arms=True)
+    return numbers_from_ranks(len(q_rows), len(model.joints), *ranks.triple, dim=dim)
 
 
 def analyze(model: Model, config: Configuration) -> Analysis:

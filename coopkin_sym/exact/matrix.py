@@ -54,7 +54,7 @@ Row = list[Poly]
 
 __all__ = ["POLYNOMIALS", "RATIONALS", "ArmBlock", "Domain", "PolyMatrix", "Polynomials",
            "PrimeField", "Ranks", "Rationals", "arm_elimination", "batch_rank_profile",
-           "batch_ranks", "rank", "rank_triple"]
+           "batch_ranks", "eliminate_arm", "rank", "rank_triple"]
 
 
 class Domain(Protocol):
@@ -514,12 +514,29 @@ def arm_elimination(rows, dim: int, arms: Sequence[ArmBlock], domain: object = P
     in_arm = {i for block, _, _ in arms for i in block}
     leftover = [rows[i][:dim] for i in range(len(rows)) if i not in in_arm]
     pivots = []
-    for block, c0, c1 in arms:
-        matrix = [rows[i][c0:c1] + rows[i][:dim] for i in block]
-        if not matrix:
-            pivots.append(0)
-            continue
-        found, left = PolyMatrix(matrix, c1 - c0 + dim, domain).eliminate(range(c1 - c0))
+    for arm in arms:
+        found, left = eliminate_arm(rows, dim, arm, domain)
         pivots.append(found)
-        leftover += [r[c1 - c0:] for r in left]
+        leftover += left
     return pivots, leftover
+
+
+def eliminate_arm(rows, dim: int, arm: ArmBlock, domain: object = POLYNOMIALS
+                  ) -> tuple[int, list[Row]]:
+    """One arm of :func:`arm_elimination`: the rank of the arm's block of ``H D`` and
+    the object parts of its rows left over once its joint columns are eliminated.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> eliminate_arm([[x, ctx.constant(1)]], 1, ([0], 1, 2))
+    (1, [])
+    """
+    block, c0, c1 = arm
+    matrix = [rows[i][c0:c1] + rows[i][:dim] for i in block]
+    if not matrix:
+        return 0, []
+    found, left = PolyMatrix(matrix, c1 - c0 + dim, domain).eliminate(range(c1 - c0))
+    return found, [r[c1 - c0:] for r in left]
