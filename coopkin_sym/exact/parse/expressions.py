@@ -15,7 +15,8 @@ import sympy as sp
 from coopkin_sym import limits
 from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.parse.messages import _show
-from coopkin_sym.exact.parse.reader import _RF, _height, _Reader, _Sym
+from coopkin_sym.exact.parse.reader import _height, _Reader, _Sym
+from coopkin_sym.exact.ratfunc import RatFunc
 
 #: Functions allowed in text, besides the declared names and ``pi``.
 FUNCTIONS = ("atan", "sqrt", "Rational", "Integer")
@@ -191,7 +192,7 @@ class _Parser:
         if self.peek() != ")":
             raise self.syntax()
         self.take()
-        if not isinstance(poly, _RF) or not poly.den.is_constant() or \
+        if not isinstance(poly, RatFunc) or not poly.den.is_constant() or \
                 poly.num.is_constant():
             raise outer.fail("cannot be parsed (CRootOf takes a polynomial with rational "
                              "coefficients)")
@@ -203,7 +204,7 @@ class _Parser:
             raise outer.too_large("a root of a polynomial with very large coefficients")
         expr = inner.to_sympy(poly)
         real = sp.Poly(expr, inner.symbols[inner.names[0]]).count_roots()
-        if not isinstance(index, _RF) or not index.is_constant() or \
+        if not isinstance(index, RatFunc) or not index.is_constant() or \
                 index.rational().denominator != 1 or \
                 not 0 <= int(index.rational()) < real:
             raise outer.fail(f"cannot be parsed (CRootOf here names a real root: its index "
@@ -300,7 +301,7 @@ def _symbols(symbols: Mapping[str, sp.Symbol] | Iterable[str]) -> dict[str, sp.S
 
 
 def _read(text: str, symbols: Mapping[str, sp.Symbol], where: str, *,
-          max_length: int, kind: str) -> tuple[_RF | _Sym, _Reader]:
+          max_length: int, kind: str) -> tuple[RatFunc | _Sym, _Reader]:
     """Read ``text`` into a value (see :func:`parse_expression`)."""
     reader = _Reader(symbols, where, _show(text), kind)
     stripped = text.strip()

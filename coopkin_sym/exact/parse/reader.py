@@ -19,28 +19,16 @@ import sympy as sp
 from coopkin_sym import limits
 from coopkin_sym.errors import NumberError, UndeclaredSymbol
 from coopkin_sym.exact.parse.messages import _declared, _digits, _int_text
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 # ------------------------------------------------------------------------ values
 #
 # While text is read, a value is either a rational function with rational
-# coefficients in the declared names (``_RF``: integer polynomials ``num / den`` of one
-# flint context, in lowest terms, ``den`` with a positive leading coefficient), or an
+# coefficients in the declared names (a :class:`~coopkin_sym.exact.ratfunc.RatFunc`:
+# integer polynomials ``num / den`` of one flint context, in lowest terms, ``den`` with
+# a positive leading coefficient), or an
 # expression holding an irrational constant (``_Sym``: SymPy, small).
-
-
-@dataclass(frozen=True)
-class _RF:
-    num: flint.fmpz_mpoly
-    den: flint.fmpz_mpoly
-
-    def is_constant(self) -> bool:
-        return self.num.is_constant() and self.den.is_constant()
-
-    def rational(self) -> Fraction:
-        """The value of a constant."""
-        return Fraction(int(self.num.leading_coefficient()) if not self.num.is_zero()
-                        else 0, int(self.den.leading_coefficient()))
 
 
 @dataclass(frozen=True)
@@ -77,15 +65,15 @@ class _Reader:
         return self.fail(f"is too large: {what}")
 
     # --- building -----------------------------------------------------------------
-    def constant(self, value: Fraction) -> _RF:
+    def constant(self, value: Fraction) -> RatFunc:
         self._check_int(value.numerator)
         self._check_int(value.denominator)
-        return _RF(self.ctx.constant(value.numerator), self.ctx.constant(value.denominator))
+        return RatFunc(self.ctx.constant(value.numerator), self.ctx.constant(value.denominator))
 
-    def symbol(self, name: str) -> _RF:
+    def symbol(self, name: str) -> RatFunc:
         if name not in self.symbols:
             raise self.undeclared(name)
-        return _RF(self.ctx.gens()[self.names.index(name)], self.one)
+        return RatFunc(self.ctx.gens()[self.names.index(name)], self.one)
 
     def _check_int(self, value: int) -> None:
         if abs(value) >= limits.integer_bound():
@@ -116,11 +104,11 @@ class _Reader:
             raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
         return a * b
 
-    def _reduced(self, num: flint.fmpz_mpoly, den: flint.fmpz_mpoly) -> _RF:
+    def _reduced(self, num: flint.fmpz_mpoly, den: flint.fmpz_mpoly) -> RatFunc:
         if den.is_zero():
             raise self.fail("is not a finite number (division by zero)")
         if num.is_zero():
-            return _RF(num, self.one)
+            return RatFunc(num, self.one)
         if not den.is_one():
             g = num.gcd(den)
             if not g.is_one():
@@ -129,15 +117,15 @@ class _Reader:
                 num, den = -num, -den
         self._check_poly(num)
         self._check_poly(den)
-        return _RF(num, den)
+        return RatFunc(num, den)
 
-    def add(self, a: _RF, b: _RF) -> _RF:
+    def add(self, a: RatFunc, b: RatFunc) -> RatFunc:
         if a.den == b.den:
             return self._reduced(a.num + b.num, a.den)
         return self._reduced(self._product(a.num, b.den) + self._product(b.num, a.den),
                              self._product(a.den, b.den))
 
-    def mul(self, a: _RF, b: _RF) -> _RF:
+    def mul(self, a: RatFunc, b: RatFunc) -> RatFunc:
         an, ad, bn, bd = a.num, a.den, b.num, b.den
         if not ad.is_one() and not bn.is_zero():
             g = bn.gcd(ad)
@@ -147,12 +135,12 @@ class _Reader:
             an, bd = an / g, bd / g
         return self._reduced(self._product(an, bn), self._product(ad, bd))
 
-    def inverse(self, a: _RF) -> _RF:
+    def inverse(self, a: RatFunc) -> RatFunc:
         if a.num.is_zero():
             raise self.fail("is not a finite number (division by zero)")
         return self._reduced(a.den, a.num)
 
-    def power(self, a: _RF, n: int) -> _RF:
+    def power(self, a: RatFunc, n: int) -> RatFunc:
         if n < 0:
             return self.power(self.inverse(a), -n)
         if a.is_constant():
@@ -166,7 +154,7 @@ class _Reader:
             if (_height(a.num) - 1) * n > limits.max_bits():
                 raise self.too_large(f"a number of more than {limits.MAX_DIGITS} digits")
             return self._reduced(a.num ** n, self.one)
-        result = _RF(self.one, self.one)
+        result = RatFunc(self.one, self.one)
         base = a
         while n:
             if n & 1:
@@ -177,12 +165,12 @@ class _Reader:
         return result
 
     # --- SymPy side ---------------------------------------------------------------
-    def to_sympy(self, a: _RF) -> sp.Expr:
+    def to_sympy(self, a: RatFunc) -> sp.Expr:
         return _poly_expr(a.num, self.names, self.symbols) / _poly_expr(
             a.den, self.names, self.symbols)
 
-    def sym(self, expr: sp.Expr) -> _RF | _Sym:
-        """An expression built by SymPy: back to ``_RF`` when it holds no irrational
+    def sym(self, expr: sp.Expr) -> RatFunc | _Sym:
+        """An expression built by SymPy: back to ``RatFunc`` when it holds no irrational
         constant, else checked for size."""
         if not isinstance(expr, sp.Expr):
             raise self.fail("is not a number")
@@ -200,16 +188,16 @@ class _Reader:
         rf = self.tree(expr, strict=False)
         return rf if rf is not None else _Sym(expr)
 
-    def as_sympy(self, v: _RF | _Sym) -> sp.Expr:
+    def as_sympy(self, v: RatFunc | _Sym) -> sp.Expr:
         if isinstance(v, _Sym):
             return v.expr
         if len(v.num) + len(v.den) > limits.MAX_CONSTANT_NODES // 4:
             raise self.too_large("a long polynomial combined with pi, atan or sqrt")
         return self.to_sympy(v)
 
-    def tree(self, expr: sp.Basic, strict: bool = True) -> _RF | None:
+    def tree(self, expr: sp.Basic, strict: bool = True) -> RatFunc | None:
         """A SymPy expression made of rationals, declared symbols (matched by name),
-        sums, products and integer powers, as ``_RF`` with every budget applied;
+        sums, products and integer powers, as ``RatFunc`` with every budget applied;
         ``None`` (or, with ``strict``, an error) for anything else."""
         if isinstance(expr, sp.Rational):
             return self.constant(to_fraction(expr))
@@ -247,8 +235,8 @@ class _Reader:
         return parts[0]
 
     # --- mixed arithmetic ----------------------------------------------------------
-    def v_add(self, values: list) -> _RF | _Sym:
-        exact = [v for v in values if isinstance(v, _RF)]
+    def v_add(self, values: list) -> RatFunc | _Sym:
+        exact = [v for v in values if isinstance(v, RatFunc)]
         other = [v for v in values if isinstance(v, _Sym)]
         total = self.balanced(exact, self.add) if exact else None
         if not other:
@@ -258,22 +246,22 @@ class _Reader:
         return self.sym(sp.Add(*parts))
 
     def v_neg(self, v):
-        return _RF(-v.num, v.den) if isinstance(v, _RF) else self.sym(-v.expr)
+        return RatFunc(-v.num, v.den) if isinstance(v, RatFunc) else self.sym(-v.expr)
 
     def v_mul(self, a, b):
-        if isinstance(a, _RF) and isinstance(b, _RF):
+        if isinstance(a, RatFunc) and isinstance(b, RatFunc):
             return self.mul(a, b)
         return self.sym(self.as_sympy(a) * self.as_sympy(b))
 
     def v_div(self, a, b):
-        if isinstance(b, _RF):
+        if isinstance(b, RatFunc):
             return self.v_mul(a, self.inverse(b))
         if b.expr.is_zero:
             raise self.fail("is not a finite number (division by zero)")
         return self.sym(self.as_sympy(a) / b.expr)
 
     def v_pow(self, a, n: int):
-        if isinstance(a, _RF):
+        if isinstance(a, RatFunc):
             return self.power(a, n)
         bits = max((max(abs(int(r.p)).bit_length(), int(r.q).bit_length())
                     for r in a.expr.atoms(sp.Rational)), default=1)
@@ -284,17 +272,17 @@ class _Reader:
         return self.sym(a.expr ** n)
 
     # --- functions ------------------------------------------------------------------
-    def call(self, name: str, args: list) -> _RF | _Sym:
+    def call(self, name: str, args: list) -> RatFunc | _Sym:
         if name in ("Integer", "Rational"):
             return self._rational_call(name, args)
         if len(args) != 1:
             raise self.fail(f"cannot be parsed ({name} takes one argument)")
         (x,) = args
-        if isinstance(x, _RF) and not x.is_constant():
+        if isinstance(x, RatFunc) and not x.is_constant():
             raise self.fail(f"cannot take {name} of an expression in the {self.kind} "
                             f"(only of numbers)")
         if name == "sqrt":
-            if isinstance(x, _RF):
+            if isinstance(x, RatFunc):
                 r = x.rational()
                 if r >= 0:
                     p, q = math.isqrt(r.numerator), math.isqrt(r.denominator)
@@ -307,14 +295,14 @@ class _Reader:
             return self.sym(sp.sqrt(x.expr))
         return self.sym(sp.atan(self.as_sympy(x)))
 
-    def _rational_call(self, name: str, args: list) -> _RF:
+    def _rational_call(self, name: str, args: list) -> RatFunc:
         allowed = (1,) if name == "Integer" else (1, 2)
         if len(args) not in allowed:
             count = "one number" if name == "Integer" else "one or two numbers"
             raise self.fail(f"cannot be parsed ({name} takes {count})")
         values = []
         for x in args:
-            if not isinstance(x, _RF) or not x.is_constant():
+            if not isinstance(x, RatFunc) or not x.is_constant():
                 raise self.fail(f"cannot be parsed ({name} takes rational numbers)")
             values.append(x.rational())
         if name == "Integer":
