@@ -240,7 +240,6 @@ OVER_SIZE = {
     "coopkin_sym/analysis/locus/search.py",
     "coopkin_sym/analysis/locus/verify.py",
     "coopkin_sym/analysis/locus/certify.py",
-    "coopkin_sym/analysis/mobility.py",
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
     "coopkin_sym/present/report.py",
