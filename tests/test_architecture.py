@@ -243,7 +243,6 @@ OVER_SIZE = {
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
     "coopkin_sym/present/report.py",
-    "coopkin_sym/exact/groebner.py:covers",
     "coopkin_sym/model/model.py:_build",
     "coopkin_sym/model/model.py:_contact",
     "coopkin_sym/present/locus_plot.py:plot_components",
