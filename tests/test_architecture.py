@@ -239,13 +239,9 @@ MAX_PUBLIC_PARAMETERS = 8
 OVER_SIZE = {
     "coopkin_sym/analysis/locus/verify.py",
     "coopkin_sym/analysis/locus/certify.py",
-    "coopkin_sym/analysis/mobility.py",
-    "coopkin_sym/exact/parse.py",
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
     "coopkin_sym/present/report.py",
-    "coopkin_sym/analysis/generic.py:generic_numbers",
-    "coopkin_sym/exact/groebner.py:covers",
     "coopkin_sym/model/model.py:_build",
     "coopkin_sym/model/model.py:_contact",
     "coopkin_sym/present/locus_plot.py:plot_components",

@@ -8,7 +8,7 @@ and can have millions of terms; factored, it is a few small matrices. The distin
 irreducible factors of the denominators of every ``K_a`` are named once (``d1``,
 ``d2``, ...).
 
-Exactly: ``K_a`` is the linear map of :meth:`~coopkin_sym.analysis.mobility._ArmMap.joints_for`
+Exactly: ``K_a`` is the linear map of :meth:`~coopkin_sym.analysis.decomposition._ArmMap.joints_for`
 (the pivot joints of ``[Dt_a | Gt_a]`` solved with the free joints at rest, then
 reduced against the redundant motions), applied to the unit twists; its columns are
 those joint velocities. ``[C12; K C12]`` spans the same subspace as ``[C12; C22]``.

@@ -38,15 +38,21 @@ from __future__ import annotations
 
 import random
 from collections.abc import Sequence
+from contextlib import nullcontext
 from dataclasses import dataclass, field
 from fractions import Fraction
-
-import flint
 
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
 from coopkin_sym.errors import TimeLimitReached
 from coopkin_sym.exact.deadline import check, time_limit
-from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.matrix import (
+    POLYNOMIALS,
+    RATIONALS,
+    ArmBlock,
+    eliminate_arm,
+    rank,
+    rank_triple,
+)
 from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.model import Model
 
@@ -135,12 +141,6 @@ def _value_matrix(q_rows, point: Sequence[int]) -> list[list[int]]:
     return [[0 if p.is_zero() else int(p(*point)) for p in row] for row in q_rows]
 
 
-def _rank(values: list[list[int]], rows: Sequence[int], cols: Sequence[int]) -> int:
-    if not rows or not cols:
-        return 0
-    return flint.fmpz_mat([[values[i][c] for c in cols] for i in rows]).rank()
-
-
 def _row_degree(row) -> int:
     return max((int(p.total_degree()) for p in row if not p.is_zero()), default=0)
 
@@ -152,11 +152,120 @@ def _minor_degree(q_rows, rows: Sequence[int], cols: Sequence[int], rank: int) -
 
 
 # --- the numbers ------------------------------------------------------------------------
+def _arm_blocks(model: Model, row_contacts: Sequence[int], dim: int) -> list[ArmBlock]:
+    """One block of ``H D`` per arm (possibly without rows), in ``Q``'s columns."""
+    owners = [model.contacts[c].arm for c in row_contacts]
+    blocks = []
+    for a, arm in enumerate(model.arms):
+        col0 = dim + model.joint_offset(a)
+        blocks.append(([i for i, o in enumerate(owners) if o == a], col0,
+                       col0 + len(arm.joints)))
+    return blocks
+
+
+def _size(block: ArmBlock) -> int:
+    rows, c0, c1 = block
+    return min(len(rows), c1 - c0)
+
+
 @dataclass
 class _Sampled:
-    q: int = 0
-    gt: int = 0
-    arms: list[int] = field(default_factory=list)
+    """The best ranks found so far, and how each is known (None: sampled only)."""
+
+    q: int
+    gt: int
+    arms: list[int]
+    q_how: str | None = None
+    gt_how: str | None = None
+    arm_how: list[str | None] = field(default_factory=list)
+
+
+def _sample(q_rows, n: int, dim: int, arms: list[ArmBlock], nvars: int, count: int,
+            seed: int | None) -> _Sampled:
+    """The largest ranks at ``count`` random integer points (lower bounds)."""
+    rng = random.Random(seed) if seed is not None else random.SystemRandom()
+    bound = 2 ** SAMPLE_BITS
+    best = _Sampled(-1, -1, [-1] * len(arms))
+    for _ in range(count):
+        check("the ranks at random points")
+        point = [rng.randint(-bound, bound) for _ in range(nvars)]
+        values = (q_rows.values_at(point) if isinstance(q_rows, ClearedRows)
+                  else _value_matrix(q_rows, point))
+        ranks = rank_triple(values, n, dim, RATIONALS, arms)
+        best.q, best.gt = max(best.q, ranks.q), max(best.gt, ranks.gt)
+        best.arms = [max(b, ra) for b, ra in zip(best.arms, ranks.arms, strict=True)]
+    return best
+
+
+class _Certify:
+    """The exact ranks over the fraction field the size bounds leave open, by
+    fraction-free elimination (partial progress is kept in :attr:`best`)."""
+
+    def __init__(self, q_rows, best: _Sampled, arms: list[ArmBlock], m: int, n: int,
+                 dim: int, zctx):
+        self.q_rows, self.best, self.arms = q_rows, best, arms
+        self.m, self.n, self.dim, self.zctx = m, n, dim, zctx
+        best.arm_how = [("size" if ra == _size(a) else None)
+                        for a, ra in zip(arms, best.arms, strict=True)]
+        best.gt_how = "size" if best.gt == min(m, dim) else None
+
+    def q_bound(self) -> int:
+        best = self.best
+        d_bound = sum(ra if done else _size(a) for a, ra, done
+                      in zip(self.arms, best.arms, best.arm_how, strict=True))
+        g_bound = best.gt if best.gt_how else min(self.m, self.dim)
+        return min(self.m, self.n, d_bound + g_bound, d_bound + self.dim)
+
+    def settled(self) -> bool:
+        best = self.best
+        return (self.q_bound() == best.q and best.gt_how is not None
+                and None not in best.arm_how)
+
+    def run(self) -> None:
+        best, q_rows, dim, zctx = self.best, self.q_rows, self.dim, self.zctx
+        if best.gt_how is None:
+            best.gt = rank([q_rows[i][:dim] for i in range(self.m)], dim, POLYNOMIALS, zctx)
+            best.gt_how = "elimination"
+        if self.q_bound() == best.q:
+            if None not in best.arm_how:
+                return
+            # rank Q is known from the sizes: only the open arm blocks are ranked
+            for k, (rows, c0, c1) in enumerate(self.arms):
+                if best.arm_how[k] is None:
+                    cols = range(c0, c1)
+                    block = (q_rows.block(rows, cols) if isinstance(q_rows, ClearedRows)
+                             else [[q_rows[i][c] for c in cols] for i in rows])
+                    best.arms[k] = rank(block, c1 - c0, POLYNOMIALS, zctx)
+                    best.arm_how[k] = "elimination"
+            if self.q_bound() == best.q:
+                return
+        # arm by arm: each arm's joint columns eliminated from its own rows, then the
+        # object rows left over from every arm ranked together (rank Q)
+        in_arm = {i for rows, _, _ in self.arms for i in rows}
+        leftover = [q_rows[i][:dim] for i in range(self.m) if i not in in_arm]
+        for k, arm in enumerate(self.arms):
+            if arm[0]:
+                best.arms[k], left = eliminate_arm(q_rows, dim, arm)
+                best.arm_how[k] = "elimination"
+                leftover += left
+        if self.q_bound() == best.q:
+            return
+        best.q = sum(best.arms) + rank(leftover, dim, POLYNOMIALS, zctx)
+        best.q_how = "elimination"
+
+
+def _error_bits(q_rows, checks, count: int) -> int | None:
+    """``floor(log2(1 / error))`` of the ranks known by sampling only, exactly (None:
+    no such rank)."""
+    error = Fraction(0)
+    size = 2 * 2 ** SAMPLE_BITS + 1
+    for rows, cols, known in checks:
+        if known is None:
+            top = min(len(rows), len(cols))
+            degree = max(_minor_degree(q_rows, rows, cols, top), 1)
+            error += Fraction(degree, size) ** count
+    return None if error == 0 else max(0, (error.denominator // error.numerator
+                                           ).bit_length() - 1)
 
 
 def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
@@ -194,120 +303,35 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     >>> numbers.as_dict()["Nm"], cert.exact
     (8, True)
     """
-    m = len(q_rows)
-    dim = model.object_dim
-    r = len(model.joints)
-    n = dim + r
-    owners = [model.contacts[c].arm for c in row_contacts]
-    arm_blocks = []
-    for a, arm in enumerate(model.arms):
-        col0 = dim + model.joint_offset(a)
-        arm_blocks.append(([i for i, o in enumerate(owners) if o == a],
-                           list(range(col0, col0 + len(arm.joints)))))
-    all_rows, gt_cols, all_cols = list(range(m)), list(range(dim)), list(range(n))
+    m, dim, r = len(q_rows), model.object_dim, len(model.joints)
+    arms = _arm_blocks(model, row_contacts, dim)
     nvars = zctx.nvars()
-    rng = random.Random(seed) if seed is not None else random.SystemRandom()
-    bound = 2 ** SAMPLE_BITS
     count = points if nvars else 1
-    best = _Sampled(arms=[-1] * len(arm_blocks))
-    best.q = best.gt = -1
-    for _ in range(count):
-        check("the ranks at random points")
-        point = [rng.randint(-bound, bound) for _ in range(nvars)]
-        values = (q_rows.values_at(point) if isinstance(q_rows, ClearedRows)
-                  else _value_matrix(q_rows, point))
-        rq = _rank(values, all_rows, all_cols)
-        if rq > best.q:
-            best.q = rq
-        rg = _rank(values, all_rows, gt_cols)
-        if rg > best.gt:
-            best.gt = rg
-        for k, (rows, cols) in enumerate(arm_blocks):
-            ra = _rank(values, rows, cols)
-            if ra > best.arms[k]:
-                best.arms[k] = ra
-    rd = sum(best.arms)
+    best = _sample(q_rows, dim + r, dim, arms, nvars, count, seed)
     if not nvars:
+        rd = sum(best.arms)
         ranks = [RankBound("Q", best.q, "point"), RankBound("Gt", best.gt, "point"),
                  RankBound("Dt", rd, "point")]
         return (numbers_from_ranks(m, r, best.q, best.gt, rd, dim=dim),
                 NumbersCertificate.from_ranks(ranks, 0))
-    arm_how = [("size" if ra == min(len(rows), len(cols)) else None)
-               for (rows, cols), ra in zip(arm_blocks, best.arms, strict=True)]
-    how = {"Gt": "size" if best.gt == min(m, dim) else None, "Q": None}
-
-    def q_bound() -> int:
-        d_bound = sum(ra if done else min(len(rows), len(cols)) for (rows, cols), ra, done
-                      in zip(arm_blocks, best.arms, arm_how, strict=True))
-        g_bound = best.gt if how["Gt"] else min(m, dim)
-        return min(m, n, d_bound + g_bound, d_bound + dim)
-
-    def certify() -> None:
-        """Exact ranks over the fraction field, by fraction-free elimination, of the
-        blocks the bounds leave open (partial progress is kept)."""
-        if how["Gt"] is None:
-            best.gt = PolyMatrix([q_rows[i][:dim] for i in all_rows], dim,
-                                 context=zctx).rank()
-            how["Gt"] = "elimination"
-        if q_bound() == best.q and None not in arm_how:
-            return
-        if q_bound() == best.q:
-            # rank Q is known from the sizes: only the open arm blocks are ranked
-            for k, (rows, cols) in enumerate(arm_blocks):
-                if arm_how[k] is None:
-                    block = (q_rows.block(rows, cols) if isinstance(q_rows, ClearedRows)
-                             else [[q_rows[i][c] for c in cols] for i in rows])
-                    best.arms[k] = PolyMatrix(block, len(cols), context=zctx).rank()
-                    arm_how[k] = "elimination"
-            if q_bound() == best.q:
-                return
-        # arm by arm: each arm's joint columns eliminated from its own rows, then the
-        # object rows left over from every arm ranked together (rank Q)
-        leftover = [q_rows[i][:dim] for i, o in enumerate(owners) if o is None]
-        for k, (rows, cols) in enumerate(arm_blocks):
-            block = [[q_rows[i][c] for c in cols] + q_rows[i][:dim] for i in rows]
-            if not block:
-                continue
-            pivots, left = PolyMatrix(block, len(cols) + dim, context=zctx).eliminate(
-                range(len(cols)))
-            best.arms[k], arm_how[k] = pivots, "elimination"
-            leftover += [row[len(cols):] for row in left]
-        if q_bound() == best.q:
-            return
-        best.q = sum(best.arms) + PolyMatrix(leftover, dim, context=zctx).rank()
-        how["Q"] = "elimination"
-
-    if q_bound() != best.q or how["Gt"] is None or None in arm_how:
+    certify = _Certify(q_rows, best, arms, m, dim + r, dim, zctx)
+    if not certify.settled():
+        bound = nullcontext() if certify_seconds is None else time_limit(certify_seconds)
         try:
-            if certify_seconds is None:
-                certify()
-            else:
-                with time_limit(certify_seconds):
-                    certify()
+            with bound:
+                certify.run()
         except TimeLimitReached:
             pass
-    if how["Q"] is None and q_bound() == best.q:
-        how["Q"] = "size"
-    q_how, gt_how = how["Q"], how["Gt"]
-    rd = sum(best.arms)
-    ranks = [RankBound("Q", best.q, q_how or "sampled"),
-             RankBound("Gt", best.gt, gt_how or "sampled")]
+    if best.q_how is None and certify.q_bound() == best.q:
+        best.q_how = "size"
+    ranks = [RankBound("Q", best.q, best.q_how or "sampled"),
+             RankBound("Gt", best.gt, best.gt_how or "sampled")]
     ranks += [RankBound(f"Dt[{arm.name}]", ra, known or "sampled") for arm, ra, known
-              in zip(model.arms, best.arms, arm_how, strict=True)]
-    error = Fraction(0)
-    size = 2 * bound + 1
-    checks = [("Q", all_rows, all_cols, best.q, q_how), ("Gt", all_rows, gt_cols, best.gt,
-                                                        gt_how)]
-    checks += [("Dt", rows, cols, ra, known) for (rows, cols), ra, known
-               in zip(arm_blocks, best.arms, arm_how, strict=True)]
-    for _, rows, cols, _rank_found, known in checks:
-        if known is None:
-            top = min(len(rows), len(cols))
-            degree = max(_minor_degree(q_rows, rows, cols, top), 1)
-            error += Fraction(degree, size) ** count
-    # floor(log2(1 / error)), exactly
-    bits = None if error == 0 else max(0, (error.denominator // error.numerator
-                                           ).bit_length() - 1)
-    numbers = numbers_from_ranks(m, r, best.q, best.gt, rd, dim=dim)
+              in zip(model.arms, best.arms, best.arm_how, strict=True)]
+    all_rows, all_cols = range(m), range(dim + r)
+    checks = [(all_rows, all_cols, best.q_how), (all_rows, range(dim), best.gt_how)]
+    checks += [(rows, range(c0, c1), known) for (rows, c0, c1), known
+               in zip(arms, best.arm_how, strict=True)]
+    bits = _error_bits(q_rows, checks, count)
+    numbers = numbers_from_ranks(m, r, best.q, best.gt, sum(best.arms), dim=dim)
     return numbers, NumbersCertificate.from_ranks(ranks, count, bits)
-

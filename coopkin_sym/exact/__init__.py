@@ -9,7 +9,8 @@ and expressions; :mod:`~coopkin_sym.exact.angles` the exact angle;
 :mod:`~coopkin_sym.exact.polynomial` polynomials over named variables;
 :mod:`~coopkin_sym.exact.rationals` the conversions between rational types;
 :mod:`~coopkin_sym.exact.realroot` and :mod:`~coopkin_sym.exact.numberfield` real
-algebraic numbers; :mod:`~coopkin_sym.exact.groebner` ideal tests;
+algebraic numbers; :mod:`~coopkin_sym.exact.groebner` ideal tests (on
+:mod:`~coopkin_sym.exact.binaries`, the external Singular and msolve);
 :mod:`~coopkin_sym.exact.sympy_bridge` the way to and from SymPy;
 :mod:`~coopkin_sym.exact.entry_field` one exact field for a few SymPy entries. This layer imports
 only the package's errors and limits.

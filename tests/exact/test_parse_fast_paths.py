@@ -11,13 +11,14 @@ from hypothesis import strategies as st
 
 import coopkin_sym.exact.parse as parse
 from coopkin_sym.errors import NumberError
+from coopkin_sym.exact.parse import angle_reader, values
 
 
 def _general(monkeypatch, function, *args):
     """``function(*args)`` with both fast paths switched off: the value or the error."""
     with monkeypatch.context() as patch:
-        patch.setattr(parse, "_simple_angle", lambda value: None)
-        patch.setattr(parse, "_simple_rational", lambda value: None)
+        patch.setattr(angle_reader, "_simple_angle", lambda value: None)
+        patch.setattr(values, "_simple_rational", lambda value: None)
         try:
             return function(*args)
         except NumberError as exc:
@@ -44,7 +45,7 @@ def test_fast_angle_agrees_with_the_general_parser(monkeypatch, text):
     except NumberError as exc:
         fast = ("error", str(exc))
     assert fast == general
-    if parse._simple_angle(text) is not None:
+    if angle_reader._simple_angle(text) is not None:
         assert general[0] != "error"
 
 
@@ -77,8 +78,8 @@ def test_fast_angle_of_sympy_objects(monkeypatch, value):
 @given(st.text(alphabet="0123456789-+/*() .aitnpe", max_size=16))
 def test_fast_paths_on_random_text(text):
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(parse, "_simple_angle", lambda value: None)
-        patch.setattr(parse, "_simple_rational", lambda value: None)
+        patch.setattr(angle_reader, "_simple_angle", lambda value: None)
+        patch.setattr(values, "_simple_rational", lambda value: None)
         expected = {}
         for name, call in (("angle", lambda: parse.parse_angle(text, "q")),
                            ("number", lambda: parse.parse_number(text, {}, "q"))):

@@ -37,7 +37,7 @@ from coopkin_sym.errors import ArgumentError, SweepError, TimeLimitReached
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import time_limit
-from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.matrix import RATIONALS, PolyMatrix, PrimeField, rank_triple
 from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
@@ -104,16 +104,9 @@ class _Exact:
         if self.ctx is not None:
             cleared = [_cleared_polynomials(row, self.ctx) for row in rows]
             return ranks_of_q(PolyMatrix(cleared, self.n, context=self.ctx), dim=self.dim)
-        return self._split_ranks(chains.integer_rows(rows), flint.fmpz_mat)
-
-    def _split_ranks(self, rows, matrix) -> tuple[int, int, int]:
-        dim = self.dim
-        rq = matrix(rows).rank()
-        rg = matrix([row[:dim] for row in rows]).rank()
         # H D is block diagonal: one block per arm
-        rd = sum(matrix([rows[i][c0:c1] for i in block]).rank()
-                 for block, c0, c1 in self.arm_blocks)
-        return rq, rg, rd
+        return rank_triple(chains.integer_rows(rows), self.n, self.dim, RATIONALS,
+                           self.arm_blocks).triple
 
     def _field_modulo(self, prime: int) -> chains.ModularField:
         if self._other is None or self._other.p != prime:
@@ -124,14 +117,8 @@ class _Exact:
     def _generic_modulo(self, rows: list[list[int]], generic: tuple[int, int, int],
                         p: int = POINT_PRIME) -> bool:
         """Whether the ranks of ``Q`` modulo ``p`` (``rows``) are the generic ones."""
-        dim = self.dim
-        if flint.nmod_mat(rows, p).rank() != generic[0]:
-            return False
-        if flint.nmod_mat([row[:dim] for row in rows], p).rank() != generic[1]:
-            return False
-        rd = sum(flint.nmod_mat([rows[i][c0:c1] for i in block], p).rank()
-                 for block, c0, c1 in self.arm_blocks)
-        return rd == generic[2]
+        return rank_triple(rows, self.n, self.dim, PrimeField(p),
+                           self.arm_blocks).triple == tuple(generic)
 
 
 def _cleared_polynomials(row: Sequence, ctx) -> list:
@@ -436,12 +423,10 @@ class Compiled:
                 rows = exact.chain.rows(field, pairs)
             except chains.Unlucky:    # pragma: no cover - a denominator divisible by p
                 continue
-            rq = flint.nmod_mat(rows, POINT_PRIME).rank()
-            rg = flint.nmod_mat([row[:self.dim] for row in rows], POINT_PRIME).rank()
-            best[0], best[1] = max(best[0], rq), max(best[1], rg)
-            for k, (block, c0, c1) in enumerate(self._plan["arm_blocks"]):
-                ra = flint.nmod_mat([rows[i][c0:c1] for i in block], POINT_PRIME).rank()
-                best[2][k] = max(best[2][k], ra)
+            ranks = rank_triple(rows, self.n, self.dim, PrimeField(POINT_PRIME),
+                                self._plan["arm_blocks"])
+            best[0], best[1] = max(best[0], ranks.q), max(best[1], ranks.gt)
+            best[2] = [max(b, ra) for b, ra in zip(best[2], ranks.arms, strict=True)]
             if best[1] < g_bound and best[2] == arm_bounds:
                 q_bound, g_bound, _ = self._size_bounds(self._grasp_bound())
             if best[0] == q_bound and best[1] == g_bound and best[2] == arm_bounds:
