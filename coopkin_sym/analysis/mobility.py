@@ -536,6 +536,22 @@ class Analysis(Displayable):
         return run_bounded(lambda: manipulability(self, controlled, length, point),
                            timeout, owner="manipulability")
 
+    def finite_mobility(self, order: int | None = None):
+        """The finite mobility here: the local dimension of the closed system's
+        configuration space, its branches and whether the first-order motions are
+        finite ones (see :func:`coopkin_sym.analysis.finite.finite_mobility`; every
+        joint at a rational ``tan(q/2)``; hard, complete and frictionless contacts).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> fm = load("four-bar").analyze("q1=-pi/2,q2=-pi/2").finite_mobility()
+        >>> fm.dimension, fm.first_order, fm.classification
+        (1, 2, 'bifurcation')
+        """
+        from coopkin_sym.analysis.finite import finite_mobility
+        return finite_mobility(self.model, self.configuration, order)
+
     def blocks(self) -> dict[str, sp.Matrix]:
         return {"C11": self.C11, "C12": self.C12, "C22": self.C22, "C23": self.C23}
 

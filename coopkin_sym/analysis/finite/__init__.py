@@ -170,6 +170,27 @@ def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
     return rows, motions
 
 
+def _generic_rank(model: Model, config: Configuration) -> tuple[int | None, bool]:
+    """The rank of ``Q`` over the joint variables (None unless it is certified: an
+    uncertified one could be too low, and a smooth point would not be proved), and
+    whether the seven numbers at ``config`` differ from the generic ones."""
+    from coopkin_sym.analysis import kinematics
+    from coopkin_sym.analysis.decomposition import decompose
+    from coopkin_sym.analysis.generic import generic_numbers
+
+    kin = kinematics.build(model, config)
+    here = decompose([kin.ring.clear_row(r) for r in kin.Q], model, kin.row_contacts,
+                     kin.ring.zctx).numbers
+    everywhere = Configuration({}, {}, dict(config.parameters),
+                               frozenset(j.name for j in model.joints))
+    gkin = kinematics.build(model, everywhere)
+    numbers, certificate = generic_numbers([gkin.ring.clear_row(r) for r in gkin.Q], model,
+                                           gkin.row_contacts, gkin.ring.zctx)
+    rows = len(kin.row_contacts)
+    rank = rows - numbers.Nh if certificate.exact else None
+    return rank, here.as_dict() != numbers.as_dict()
+
+
 def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...]]:
     config = at if isinstance(at, Configuration) else Configuration.parse(model, at)
     notes: tuple[str, ...] = ()
@@ -338,16 +359,9 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
     if cmap.frictionless:
         notes = notes + ("frictionless_flat_face",)
     if generic_rank is None or numbers_change is None:
-        from coopkin_sym.analysis.mobility import Analysis
-
-        here = Analysis(model, config)
-        generic_config = Configuration({}, {}, dict(config.parameters),
-                                       frozenset(j.name for j in model.joints))
-        there = Analysis(model, generic_config)
-        if generic_rank is None:
-            generic_rank = there.m - there.numbers.Nh
-        if numbers_change is None:
-            numbers_change = here.numbers.as_dict() != there.numbers.as_dict()
+        known_rank, changed = _generic_rank(model, config)
+        generic_rank = known_rank if generic_rank is None else generic_rank
+        numbers_change = changed if numbers_change is None else numbers_change
     first = reduce_map(cmap, 1)
     n, rank, rows = first.n, first.rank, first.equations
     smooth = ("submersion" if rank == rows else "constant_rank"
