@@ -244,12 +244,10 @@ OVER_SIZE = {
     "coopkin_sym/exact/parse.py",
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
-    "coopkin_sym/present/report.py",
     "coopkin_sym/analysis/generic.py:generic_numbers",
     "coopkin_sym/exact/groebner.py:covers",
     "coopkin_sym/model/model.py:_build",
     "coopkin_sym/model/model.py:_contact",
-    "coopkin_sym/present/locus_plot.py:plot_components",
     "coopkin_sym/cli.py:locus",
     "coopkin_sym/cli.py:manipulability_command",
     "coopkin_sym/analysis/sweep/run.py:sweep",
@@ -257,7 +255,6 @@ OVER_SIZE = {
     "coopkin_sym/analysis/locus/search.py:_solve_linear_x",
     "coopkin_sym/analysis/locus/verify.py:__init__",
     "coopkin_sym/analysis/locus/verify.py:verify_locus",
-    "coopkin_sym/present/report.py:_blocks",
 }
 
 
