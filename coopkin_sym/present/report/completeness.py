@@ -35,15 +35,15 @@ def _certificate_blocks(locus: Locus) -> list:
     cert = locus.certificate
     if cert is None:
         out.append(Paragraph([_t(locus.completeness()[:1].upper() + locus.completeness()[1:]
-                          + ": no proof was made that the components above hold every "
-                            "configuration where the numbers change.")]))
+                                 + ": no proof was made that the components above hold every "
+                                   "configuration where the numbers change.")]))
         return out
     tests = cert.get("tests", 0)
     out.append(Paragraph([("strong", locus.completeness()),
-                   _t(f" ({tests} exact test{'' if tests == 1 else 's'} in "
-                      f"{len(cert.get('charts', {}))} chart"
-                      f"{'' if len(cert.get('charts', {})) == 1 else 's'}, "
-                      f"{cert.get('seconds', 0):.1f} s).")], css="summary"))  # float-ok
+                          _t(f" ({tests} exact test{'' if tests == 1 else 's'} in "
+                             f"{len(cert.get('charts', {}))} chart"
+                             f"{'' if len(cert.get('charts', {})) == 1 else 's'}, "
+                             f"{cert.get('seconds', 0):.1f} s).")], css="summary"))  # float-ok
     lines = []
     for depth, entry in cert.get("depths", {}).items():
         n, failed = entry.get("tests", 0), entry.get("failed", 0)
@@ -65,8 +65,8 @@ def _certificate_blocks(locus: Locus) -> list:
                  for c in failed[:SHOWN_FAILURES]]
         more = len(failed) - SHOWN_FAILURES
         out.append(Paragraph([_t(f"Tests not certified ({len(failed)}"
-                          + (f"; the first {SHOWN_FAILURES} here, all in the JSON"
-                             if more > 0 else "") + "):")]))
+                                 + (f"; the first {SHOWN_FAILURES} here, all in the JSON"
+                                    if more > 0 else "") + "):")]))
         out.append(Bullets(shown))
     if cert.get("notes"):
         out.extend(_list_or(cert["notes"], ""))

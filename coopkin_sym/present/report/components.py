@@ -97,8 +97,8 @@ def _components_table(locus: Locus) -> Table:
                      _float_cell(c, locus.generic)])
     header = ["#", "where", "kind", *NUMBER_NAMES, "witness (--at)", "float test"]
     return Table(header, rows, "lll" + "c" * 7 + "ll",
-                  {0: "0.9cm", 1: "2.3cm", 10: "2.6cm", 11: "1.6cm"}, css="components",
-                  latex_skip=(2,))
+                 {0: "0.9cm", 1: "2.3cm", 10: "2.6cm", 11: "1.6cm"}, css="components",
+                 latex_skip=(2,))
 
 
 def _equation_parts(equations: Sequence[str]) -> list[Span]:
@@ -195,14 +195,13 @@ def _float_check_blocks(c: Component, generic: Mapping[str, int]) -> list:
     n = len(rows)
     count = f"{n} test{'' if n == 1 else 's'} at and near the witness, "
     count += f"{len(wrong)} wrong" if wrong else "all agree with the exact numbers"
+    tests = f" (numpy matrix_rank, default tolerance): {count}"  # float-ok: words
     out: list = [Paragraph([("strong", "Float rank tests"),
-                     _t(f" (numpy matrix_rank, default tolerance): {count}"  # float-ok: words
-                        + (":" if wrong else "."))], only=("latex",)),
-                 Paragraph([("strong", "Float rank tests"),
-                     _t(f" (numpy matrix_rank, default tolerance): {count}.")],  # float-ok: words
-                    only=("markdown", "html")),
+                            _t(tests + (":" if wrong else "."))], only=("latex",)),
+                 Paragraph([("strong", "Float rank tests"), _t(f"{tests}.")],
+                           only=("markdown", "html")),
                  Table(header, rows, "lllll", widths, css="checks",
-                        only=("markdown", "html"), details=f"the {n} float tests")]
+                       only=("markdown", "html"), details=f"the {n} float tests")]
     if wrong:
         out.append(Table(header, wrong, "lllll", widths, css="checks", only=("latex",)))
     return out

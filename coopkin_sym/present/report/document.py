@@ -70,7 +70,7 @@ def _generic_table(locus: Locus) -> Table:
     rows = [[[("strong", k)], [_t(NUMBER_WORDS[k])], [_t(str(locus.generic.get(k, "?")))]]
             for k in NUMBER_NAMES]
     return Table(["number", "meaning", "generic value"], rows, "llc", {1: "7.5cm"},
-                  css="numbers")
+                 css="numbers")
 
 
 def _float_summary_blocks(locus: Locus) -> list:
@@ -98,8 +98,8 @@ def _float_summary_blocks(locus: Locus) -> list:
                      [_t(str(len(v)))], [_t(str(v.count("agree")))],
                      [_t(str(v.count("missed")))], [_t(str(v.count("false")))]])
     out.append(Table(["#", "where", "tests", "agree", "missed singular",
-                       "regular called singular"], rows, "llcccc",
-                      {1: "3.4cm", 4: "1.5cm", 5: "1.7cm"}, css="floatsum"))
+                      "regular called singular"], rows, "llcccc",
+                     {1: "3.4cm", 4: "1.5cm", 5: "1.7cm"}, css="floatsum"))
     return out
 
 
@@ -123,8 +123,8 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
     out.append(_h(2, "Dropped factors (no real points)", "dropped"))
     out.extend(_list_or(remark_texts(locus.dropped), "None.", True))
     out.append(_h(2, "Not explored", "unexplored"))
-    out.extend(_list_or(remark_texts(locus.unexplored), "Nothing: the search finished within its "
-                                          "bounds."))
+    out.extend(_list_or(remark_texts(locus.unexplored),
+                        "Nothing: the search finished within its bounds."))
     out.extend(_certificate_blocks(locus))
     if locus.notes:
         out.append(_h(2, "Notes", "notes"))

@@ -40,24 +40,24 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
     out: list = [_h(2, "Passive joints", "passive")]
     motors = ", ".join(locked.locked_joints) or "none"
     out.append(Paragraph([_t("Motors (actuated joints): "), ("code", motors),
-                   _t("; every other joint is passive. With the motors held still, the "
-                      "object motions left free (Nuo) and the motions of the passive "
-                      "joints alone (Npi) are the locked system's Nc and Nr - Na: they "
-                      "change exactly where its numbers change, a locus searched like the "
-                      "one above. Nco = Nc - Nuo, Nar = Nr - Npi and Nam = Nco + Nar "
-                      "change only on the components of either locus.")]))
+                          _t("; every other joint is passive. With the motors held still, the "
+                             "object motions left free (Nuo) and the motions of the passive "
+                             "joints alone (Npi) are the locked system's Nc and Nr - Na: they "
+                             "change exactly where its numbers change, a locus searched like the "
+                             "one above. Nco = Nc - Nuo, Nar = Nr - Npi and Nam = Nco + Nar "
+                             "change only on the components of either locus.")]))
     generic = _locked_numbers(locus, locked, locked.generic)
     rows = [[[("strong", k)], [_t(PASSIVE_WORDS[k])], [_t(str(generic[k]))]]
             for k in PASSIVE_NUMBER_NAMES if k not in ("Na", "Np")]
     out.append(Table(["number", "meaning", "generic value"], rows, "llc", {1: "7.5cm"},
-                      css="numbers"))
+                     css="numbers"))
     said = locked.completeness()
     n = len(locked.components)
     out.append(Paragraph([_t(f"Locus of the locked system: {n} component{'' if n == 1 else 's'}; "
-                      f"{said}."
-                      + (f" Not explored there: {len(locked.unexplored)} item"
-                         f"{'' if len(locked.unexplored) == 1 else 's'}, listed below "
-                         f"the table." if locked.unexplored else ""))], css="summary"))
+                             f"{said}."
+                             + (f" Not explored there: {len(locked.unexplored)} item"
+                                f"{'' if len(locked.unexplored) == 1 else 's'}, listed below "
+                                f"the table." if locked.unexplored else ""))], css="summary"))
     table = []
     for k, c in enumerate(locked.components):
         values = _locked_numbers(locus, locked, c.numbers)
@@ -73,15 +73,15 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
     others = len(locked.components) - len(table)
     if table:
         out.append(Table(["#", "where", "Nuo", "Npi", "witness (--at)"], table, "llccl",
-                          {0: "0.9cm", 1: "6cm", 4: "4cm"}, css="components"))
+                         {0: "0.9cm", 1: "6cm", 4: "4cm"}, css="components"))
     else:
         out.append(Paragraph([_t("Nuo and Npi keep their generic values on every component "
-                          "found.")]))
+                                 "found.")]))
     if others:
         out.append(Paragraph([_t(f"{others} other component{'' if others == 1 else 's'} of the "
-                          f"locked system change{'s' if others == 1 else ''} only its "
-                          f"other numbers (its JSON report lists "
-                          f"{'it' if others == 1 else 'them'} under \"locked\").")]))
+                                 f"locked system change{'s' if others == 1 else ''} only its "
+                                 f"other numbers (its JSON report lists "
+                                 f"{'it' if others == 1 else 'them'} under \"locked\").")]))
     if locked.unexplored:
         out.append(Paragraph([_t("Not explored in the locked system:")]))
         out.extend(_list_or(remark_texts(locked.unexplored), ""))

@@ -29,8 +29,6 @@ KIND_WORDS = {"hypersurface": "hypersurface", "subvariety": "subvariety (codimen
               "isolated": "isolated point", "chart": "at q = pi (second chart)"}
 KIND_PLURALS = {"hypersurface": "hypersurfaces", "subvariety": "subvarieties",
                 "isolated": "isolated points", "chart": "at q = pi (second chart)"}
-# names the parser reads itself (functions and constants), never variables
-
 
 def witness_text(witness: Mapping[str, str] | None) -> str:
     """A witness in ``--at`` syntax (``"q1=pi/2,q2=0"``), or ``"none"``.
