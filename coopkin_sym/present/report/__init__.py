@@ -190,6 +190,8 @@ def _png_name(stem: str, pair: tuple[str, str]) -> str:
     return f"{stem}_{safe[0]}_{safe[1]}.png"
 
 
+# drawn here, with this module's plot_png and MAX_SYSTEM_PICTURES: the names a caller
+# of coopkin_sym.present.report sees (and may replace) are the ones used
 def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
            dpi: int, until: float | None = None
            ) -> tuple[dict[tuple[str, str], bytes], str | None]:
