@@ -63,8 +63,15 @@ def _tex_escape(text: str) -> str:
 
 
 def _tex_comment(text: str) -> str:
-    """Text inside a ``%`` comment: on one line, so nothing can leave the comment."""
-    return " ".join(_one_line(text).split())
+    r"""Text inside a ``%`` comment: on one line, so nothing can leave the comment, and
+    with its backslashes written out, so that no command is seen in it either.
+
+    Example
+    -------
+    >>> print(_tex_comment("\\input{x}\nnext"))
+    \textbackslash{}input{x} next
+    """
+    return " ".join(_one_line(text).replace("\\", r"\textbackslash{}").split())
 
 
 def _tex_code(text: str) -> str:
