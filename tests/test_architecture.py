@@ -241,13 +241,10 @@ OVER_SIZE = {
     "coopkin_sym/analysis/locus/certify.py",
     "coopkin_sym/model/model.py",
     "coopkin_sym/present/draw.py",
-    "coopkin_sym/present/report.py",
     "coopkin_sym/model/model.py:_build",
     "coopkin_sym/model/model.py:_contact",
-    "coopkin_sym/present/locus_plot.py:plot_components",
     "coopkin_sym/analysis/locus/verify.py:__init__",
     "coopkin_sym/analysis/locus/verify.py:verify_locus",
-    "coopkin_sym/present/report.py:_blocks",
 }
 
 

@@ -557,62 +557,102 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     grid_a = np.linspace(lo_a, hi_a, GRID)  # float-ok
     grid_b = np.linspace(lo_b, hi_b, GRID)  # float-ok
     A, B = np.meshgrid(grid_a, grid_b)  # float-ok
-    handles = []
-    placed: dict[tuple[float, float], int] = {}  # float-ok: marker positions
-    notes: set[str] = set()
-    has_others = False
+    plane = _Plane(ax, locus, kinds, names, tuple(pair), rev, A, B, Line2D)
     for n, k in enumerate(components_on(locus, system, pair)):
-        c = locus.components[k]
-        color = COLORS[n % len(COLORS)]
-        gid = f"component:{k + 1}"
-        used = _joints_in(c, kinds, names)
-        axes = []
-        for j in pair:
-            v = used.get(j) or kinds.variables(j)[0]
-            axes.append(_Axis(j, v, kinds.joint_of(v)[1]))
-        values, chosen = _slice(locus, kinds, c, {a.variable for a in axes}, names)
-        notes.update(chosen)
-        has_others = has_others or any(kinds.joint_of(v)[0] for v in values)
-        drawn = _in_plane(c, values, axes[0], axes[1], names)
-        label = _label(k, c) + (" (the whole plane)" if drawn.whole else "")
-        marks = list(drawn.points)
-        drawn_curve = False
-        if drawn.curve is not None:
-            F = _trig(drawn.curve, A, B, (axes[0].chart, axes[1].chart))
-            if np.any(F > 0) and np.any(F < 0):  # float-ok: a contour exists
-                cs = ax.contour(A, B, F, levels=[0.0], colors=[color],  # float-ok
-                                linewidths=2.0)  # float-ok
-                cs.set_gid(gid)
-                drawn_curve = True
-                handles.append(Line2D([], [], color=color, lw=2.0, label=label))  # float-ok
-        where = _witness_xy(c, pair, kinds)
-        if not drawn_curve and not marks and where is not None:
-            marks = [where]   # the witness is the only point we can place
-        marks = _both_edges(marks, rev)
-        if not drawn_curve:
-            # points of several components at one place: concentric discs
-            size = _ring_size(placed, marks)
-            xs, ys = zip(*marks, strict=True) if marks else ((), ())
-            ax.plot(xs, ys, linestyle="none", marker="o", markersize=size, color=color,
-                    markeredgecolor="black", gid=gid, zorder=3 + n / 100)  # float-ok
-            handles.append(Line2D([], [], linestyle="none", marker="o", markersize=11,
-                                  color=color, markeredgecolor="black", label=label))
-        elif marks:
-            xs, ys = zip(*marks, strict=True)
-            ax.plot(xs, ys, linestyle="none", marker="o", markersize=7, color=color,
-                    markeredgecolor="black", gid=f"points:{k + 1}", zorder=3)
-        if where is not None:
-            ax.plot([where[0]], [where[1]], linestyle="none", marker="*", markersize=10,
-                    color="white", markeredgecolor="black", gid=f"witness:{k + 1}",
-                    zorder=4)
+        _draw_component(plane, n, k)
     rows = 0.0  # float-ok: lines of the legend
-    if handles:
-        rows = _legend(fig, ax, handles, Line2D, own)
+    if plane.handles:
+        rows = _legend(fig, ax, plane.handles, Line2D, own)
     else:
         ax.text(0.5, 0.5, "no real component involves these joints", ha="center",  # float-ok
                 va="center", transform=ax.transAxes, color="0.4")
-    ax.set_xlim(lo_a, hi_a)
-    ax.set_ylim(lo_b, hi_b)
+    _finish_axes(ax, pair, rev, ((lo_a, hi_a), (lo_b, hi_b)), own)
+    title = _title(locus, pair, sorted(plane.notes), plane.has_others)
+    # a fixed place (y given): the layout knows where a title of several lines ends
+    ax.set_title(title, fontsize=10, y=1.0)  # float-ok: axes coordinates
+    if own:
+        fig.set_size_inches(WIDTH, _height(title, rows))
+    return fig
+
+
+@dataclass
+class _Plane:
+    """What drawing the components in the plane of a pair of joints shares: the axes,
+    the grid of the contours, and what the components drawn so far left (legend
+    entries, markers placed, notes on the values chosen for the other variables)."""
+
+    ax: Any
+    locus: Locus
+    kinds: _Kinds
+    names: tuple[str, ...]
+    pair: tuple[str, ...]
+    rev: tuple[bool, bool]
+    A: Any
+    B: Any
+    Line2D: Any
+    handles: list = field(default_factory=list)
+    placed: dict[tuple[float, float], int] = field(default_factory=dict)  # float-ok
+    notes: set[str] = field(default_factory=set)
+    has_others: bool = False
+
+
+def _draw_component(plane: _Plane, n: int, k: int) -> None:
+    """Draw component ``k`` (the ``n``-th drawn) of the locus: its zero contour, else
+    its points (concentric discs where several components meet), and its witness."""
+    ax, kinds, names, pair, rev, Line2D = (plane.ax, plane.kinds, plane.names, plane.pair,
+                                           plane.rev, plane.Line2D)
+    c = plane.locus.components[k]
+    color = COLORS[n % len(COLORS)]
+    gid = f"component:{k + 1}"
+    used = _joints_in(c, kinds, names)
+    axes = []
+    for j in pair:
+        v = used.get(j) or kinds.variables(j)[0]
+        axes.append(_Axis(j, v, kinds.joint_of(v)[1]))
+    values, chosen = _slice(plane.locus, kinds, c, {a.variable for a in axes}, names)
+    plane.notes.update(chosen)
+    plane.has_others = plane.has_others or any(kinds.joint_of(v)[0] for v in values)
+    drawn = _in_plane(c, values, axes[0], axes[1], names)
+    label = _label(k, c) + (" (the whole plane)" if drawn.whole else "")
+    marks = list(drawn.points)
+    drawn_curve = False
+    if drawn.curve is not None:
+        F = _trig(drawn.curve, plane.A, plane.B, (axes[0].chart, axes[1].chart))
+        if np.any(F > 0) and np.any(F < 0):  # float-ok: a contour exists
+            cs = ax.contour(plane.A, plane.B, F, levels=[0.0], colors=[color],  # float-ok
+                            linewidths=2.0)  # float-ok
+            cs.set_gid(gid)
+            drawn_curve = True
+            plane.handles.append(Line2D([], [], color=color, lw=2.0, label=label))  # float-ok
+    where = _witness_xy(c, pair, kinds)
+    if not drawn_curve and not marks and where is not None:
+        marks = [where]   # the witness is the only point we can place
+    marks = _both_edges(marks, rev)
+    if not drawn_curve:
+        # points of several components at one place: concentric discs
+        size = _ring_size(plane.placed, marks)
+        xs, ys = zip(*marks, strict=True) if marks else ((), ())
+        ax.plot(xs, ys, linestyle="none", marker="o", markersize=size, color=color,
+                markeredgecolor="black", gid=gid, zorder=3 + n / 100)  # float-ok
+        plane.handles.append(Line2D([], [], linestyle="none", marker="o", markersize=11,
+                                    color=color, markeredgecolor="black", label=label))
+    elif marks:
+        xs, ys = zip(*marks, strict=True)
+        ax.plot(xs, ys, linestyle="none", marker="o", markersize=7, color=color,
+                markeredgecolor="black", gid=f"points:{k + 1}", zorder=3)
+    if where is not None:
+        ax.plot([where[0]], [where[1]], linestyle="none", marker="*", markersize=10,
+                color="white", markeredgecolor="black", gid=f"witness:{k + 1}",
+                zorder=4)
+
+
+def _finish_axes(ax: Axes, pair: Sequence[str], rev: tuple[bool, bool],
+                 ranges: tuple[tuple[float, float], tuple[float, float]],  # float-ok
+                 own: bool) -> None:
+    """Limits, ticks (multiples of pi on a revolute joint, whose edges -pi and pi are
+    one), labels and grid."""
+    ax.set_xlim(*ranges[0])
+    ax.set_ylim(*ranges[1])
     if rev[0] == rev[1] and not own:
         ax.set_aspect("equal")
     # on a figure of our own the height is chosen for a nearly square axes: a fixed
@@ -627,12 +667,6 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     ax.grid(True, color="0.9", linewidth=0.8)  # float-ok
     ax.axhline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
     ax.axvline(0, color="0.75", linewidth=0.8, zorder=0)  # float-ok
-    title = _title(locus, pair, sorted(notes), has_others)
-    # a fixed place (y given): the layout knows where a title of several lines ends
-    ax.set_title(title, fontsize=10, y=1.0)  # float-ok: axes coordinates
-    if own:
-        fig.set_size_inches(WIDTH, _height(title, rows))
-    return fig
 
 
 #: Width of a plot (inches); its height grows with the title and the legend.

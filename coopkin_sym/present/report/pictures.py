@@ -1,0 +1,150 @@
+"""Pictures of the system in a report: drawn at the witness of each real component,
+with a motion gained there, within a bound on the time.
+
+Example
+-------
+>>> from coopkin_sym.analysis.locus.types import Component, Locus
+>>> c = Component(["t_q1"], {"Nm": 3}, {"q1": "0"}, True)
+>>> drawable_components(Locus("demo", ["t_q1"], "", {}, [c]))
+[0]
+"""
+
+from __future__ import annotations
+
+import io
+import time
+import warnings
+from collections.abc import Mapping
+from typing import Any
+
+from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.errors import DrawError, OutputSkipped, SkippedForTime
+from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
+
+# key of a picture of the system at a witness among the plots
+SYSTEM_PICTURE = "system"
+#: Pictures of the system a report carries at most (one per real component).
+MAX_SYSTEM_PICTURES = 12
+#: Resolution of those pictures (they are large figures; this keeps reports small).
+SYSTEM_PICTURE_DPI = 72
+
+
+def _witness_point(comp: Component) -> tuple[dict[str, str], bool] | None:
+    """The point to draw a component at (``--at`` values) and whether it is exact and
+    rational (else algebraic: drawn without its motions); None without a real
+    witness."""
+    if not comp.real:
+        return None
+    if comp.witness:
+        return dict(comp.witness), True
+    point = (comp.algebraic_witness or {}).get("point")
+    if point:
+        return dict(point), False
+    return None
+
+
+def drawable_components(locus: Locus) -> list[int]:
+    """The components (indices from 0) with a real witness to draw the system at.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
+    >>> c = Component(["t_q1"], {"Nm": 3}, {"q1": "0"}, True)
+    >>> without = Component(["t_q1"], {}, None, True)
+    >>> drawable_components(Locus("demo", ["t_q1"], "", {}, [c, without]))
+    [0]
+    """
+    return [k for k, c in enumerate(locus.components) if _witness_point(c) is not None]
+
+
+def _counts_words(kind: str, here: Mapping, generic: Mapping) -> str:
+    now, before = motion_counts(here)[kind], motion_counts(generic)[kind]
+    return f"{kind} motions: {before} generically, {now} here"
+
+
+def _system_caption(locus: Locus, k: int, comp: Component, at: Mapping[str, str],
+                    exact: bool, motion: tuple[str, int] | None) -> str:
+    where = ", ".join(f"{n}={v}" for n, v in at.items())
+    head = f"Component {k + 1} ({comp.condition or 'see its equations'}): the system at "
+    head += f"its witness {where}" if exact else f"its algebraic witness {where}"
+    if motion is None:
+        changed = ", ".join(f"{n} {a} \u2192 {b}" for n, (a, b) in comp.changes.items())
+        return f"{head}; no motion of the object or the joints is gained there ({changed})."
+    kind, index = motion
+    counts = _counts_words(kind, comp.numbers, locus.generic)
+    if not exact:
+        return (f"{head}; it gains {kind} motions ({counts}), not drawn: the blocks are "
+                "not computed at irrational angles.")
+    return (f"{head}, with {kind} motion {index} ({MOTION_KINDS[kind]}), a motion gained "
+            f"there ({counts}).")
+
+
+def _system_pictures(locus: Locus, system: Any, dpi: int,
+                     clock: _PictureClock | None = None,
+                     limit: int = MAX_SYSTEM_PICTURES) -> dict[tuple[str, ...], bytes]:
+    """The system drawn at the witness of every real component (the first ``limit``),
+    each with a motion gained there (see
+    :func:`~coopkin_sym.present.draw.gained_motion`); a note
+    (:class:`~coopkin_sym.errors.OutputSkipped`) for each one that cannot be drawn."""
+    if system is None or not hasattr(system, "model"):
+        return {}
+    chosen = drawable_components(locus)
+    if not chosen:
+        _skipped("no picture of the system: no component has a real witness to draw it at")
+        return {}
+    if len(chosen) > limit:
+        _skipped(f"pictures of the system at {len(chosen) - limit} more "
+                 f"components left out (at most {limit})")
+    out: dict[tuple[str, ...], bytes] = {}
+    for drawn, k in enumerate(chosen[:limit]):
+        if clock is not None and not clock.time_for_one_more():
+            _skipped(f"pictures of the system at {len(chosen[:limit]) - drawn} "
+                     f"more components left out: the time bound was reached", SkippedForTime)
+            break
+        comp = locus.components[k]
+        at, exact = _witness_point(comp)
+        motion = gained_motion(comp.numbers, locus.generic)
+        at_text = ",".join(f"{n}={v}" for n, v in at.items())
+        title = f"{locus.system}: component {k + 1}"
+        try:
+            try:
+                fig = draw_system(system, at=at_text, title=title,
+                                  motion=f"{motion[0]}:{motion[1]}" if motion and exact
+                                  else None)
+            except DrawError:   # the motion is not there after all: the system alone
+                if motion is None or not exact:
+                    raise
+                fig = draw_system(system, at=at_text, title=title)
+                motion = None
+            buf = io.BytesIO()
+            fig.savefig(buf, format="png", dpi=min(dpi, SYSTEM_PICTURE_DPI))
+        except (ImportError, ValueError) as exc:  # the picture is optional here
+            _skipped(f"no picture of the system at component {k + 1}: "
+                     f"{' '.join(str(exc).split())}")
+            continue
+        caption = _system_caption(locus, k, comp, at, exact, motion)
+        out[(SYSTEM_PICTURE, f"component {k + 1}", caption)] = buf.getvalue()
+    return out
+
+
+class _PictureClock:
+    """Whether there is time for one more picture before ``until`` (a
+    ``time.monotonic()`` value; None: always): the next one is taken to last as long
+    as the longest drawn so far, so that the last one ends before the bound."""
+
+    def __init__(self, until: float | None):
+        self.until = until
+        self.longest = 0.0
+        self.started: float | None = None
+
+    def time_for_one_more(self) -> bool:
+        now = time.monotonic()
+        if self.started is not None:
+            self.longest = max(self.longest, now - self.started)
+        self.started = now
+        return self.until is None or now + self.longest < self.until
+
+
+def _skipped(text: str, kind: type[OutputSkipped] = OutputSkipped) -> None:
+    """Say that a part of the report is left out (shown by ``coopkin`` on stderr)."""
+    warnings.warn(text, kind, stacklevel=3)
