@@ -421,6 +421,7 @@ def locus(
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
     from coopkin_sym.errors import LocusError, ReportError
+    from coopkin_sym.present.certificate import completeness_text
     from coopkin_sym.present.report import check_target, parse_pairs, write_report
     from coopkin_sym.present.verification import verification_json
     from coopkin_sym.system import load
@@ -475,12 +476,12 @@ def locus(
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
     files = ", ".join(str(p) for p in written)
     typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
-               f"{result.completeness()}; wrote " + files)
+               f"{completeness_text(result)}; wrote " + files)
     if result.locked is not None:
         lk = result.locked
         typer.echo(f"with the motors held still (where the passive-joint numbers change): "
                    f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
-                   f"; {lk.completeness()}")
+                   f"; {completeness_text(lk)}")
     if cut is not None:
         pictures = len(written) - 1
         also = f" and {pictures} picture{'' if pictures == 1 else 's'}" if pictures else ""
@@ -535,12 +536,10 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     try:
         if certify:
             from coopkin_sym.analysis.locus.certify import certify_locus
-            from coopkin_sym.present.certificate import certificate_json
-            result.certificate = certificate_json(certify_locus(system, result,
-                                                                budget=certify_timeout))
+            result.certificate = certify_locus(system, result, budget=certify_timeout)
             if result.locked is not None:
-                result.locked.certificate = certificate_json(certify_locus(
-                    locked, result.locked, budget=certify_timeout))
+                result.locked.certificate = certify_locus(locked, result.locked,
+                                                          budget=certify_timeout)
         if verify:
             checked = verify_locus(system, result)
             if result.locked is not None:

@@ -46,6 +46,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
 from coopkin_sym.errors import DrawError, OutputSkipped, ReportError, SkippedForTime
 from coopkin_sym.exact.parse import FUNCTIONS, NumberError, brief, parse_expression
+from coopkin_sym.present.certificate import certificate_json, completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
 from coopkin_sym.present.files import check_output_path, write_files
@@ -321,7 +322,7 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
             for k in PASSIVE_NUMBER_NAMES if k not in ("Na", "Np")]
     out.append(_Table(["number", "meaning", "generic value"], rows, "llc", {1: "7.5cm"},
                       css="numbers"))
-    said = locked.completeness()
+    said = completeness_text(locked)
     n = len(locked.components)
     out.append(_P([_t(f"Locus of the locked system: {n} component{'' if n == 1 else 's'}; "
                       f"{said}."
@@ -502,14 +503,15 @@ SHOWN_FAILURES = 10
 def _certificate_blocks(locus: Locus) -> list:
     """The completeness certificate: per depth, the tests not certified, its notes."""
     out: list = [_H(2, "Completeness certificate", "certificate")]
-    cert = locus.certificate
-    if cert is None:
-        out.append(_P([_t(locus.completeness()[:1].upper() + locus.completeness()[1:]
+    if locus.certificate is None:
+        said = completeness_text(locus)
+        out.append(_P([_t(said[:1].upper() + said[1:]
                           + ": no proof was made that the components above hold every "
                             "configuration where the numbers change.")]))
         return out
+    cert = certificate_json(locus.certificate)
     tests = cert.get("tests", 0)
-    out.append(_P([("strong", locus.completeness()),
+    out.append(_P([("strong", cert["summary"]),
                    _t(f" ({tests} exact test{'' if tests == 1 else 's'} in "
                       f"{len(cert.get('charts', {}))} chart"
                       f"{'' if len(cert.get('charts', {})) == 1 else 's'}, "
@@ -609,7 +611,7 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, str], Any] | None,
                                   f"item{'' if len(locus.unexplored) == 1 else 's'} "
                                   f"below."))
     out.append(_P(summary, css="summary"))
-    said = locus.completeness()
+    said = completeness_text(locus)
     out.append(_P([("strong", said[:1].upper() + said[1:]), _t(".")]
                   if locus.certificate is None else
                   [_t("Completeness: "), ("strong", said), _t(".")], css="summary"))
@@ -1035,7 +1037,7 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:4]
     ['certificate', 'completeness', 'components', 'dropped']
     """
-    data = locus.to_json()
+    data = _worded_certificate(locus.to_json(), locus)
     for key in _REMARK_LISTS:
         data[key] = remark_texts(getattr(locus, key))
     data["components"] = [_with_meaning(d, c)
@@ -1047,6 +1049,19 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     if verification is not None:
         data["verification"] = dict(verification)
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def _worded_certificate(data: dict, locus: Locus) -> dict:
+    """``data`` with the completeness in words (after ``seconds``) and the certificate's
+    JSON (:func:`~coopkin_sym.present.certificate.certificate_json`)."""
+    out = {}
+    for key, value in data.items():
+        if key == "certificate":
+            value = None if locus.certificate is None else certificate_json(locus.certificate)
+        out[key] = value
+        if key == "seconds":
+            out["completeness"] = completeness_text(locus)
+    return out
 
 
 def locus_from_json(data: Mapping | str) -> Locus:

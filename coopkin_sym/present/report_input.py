@@ -56,6 +56,7 @@ from coopkin_sym.exact.parse import (
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
+from coopkin_sym.present.certificate import certificate_read, completeness_text
 
 __all__ = ["ReportInputError", "validate_report"]
 
@@ -445,14 +446,15 @@ def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps
     if parsed.certificate is not None:
-        values["certificate"] = parsed.certificate.model_dump(exclude_unset=True)
+        values["certificate"] = certificate_read(parsed.certificate)
     if parsed.locked is not None:  # the locus of the locked system, read the same way
         try:
             values["locked"] = validate_report(parsed.locked)
         except ReportInputError as exc:
             raise ReportInputError([f"locked.{line}" for line in exc.problems]) from None
     locus = Locus(**values)
-    if parsed.completeness is not None and parsed.completeness != locus.completeness():
+    said = completeness_text(locus)
+    if parsed.completeness is not None and parsed.completeness != said:
         raise ReportInputError([f"completeness: {brief(parsed.completeness)} does not agree "
-                                f"with the certificate ({brief(locus.completeness())})"])
+                                f"with the certificate ({brief(said)})"])
     return locus

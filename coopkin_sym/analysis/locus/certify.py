@@ -110,7 +110,7 @@ import itertools
 import math
 import random
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import partial
 from math import comb
 
@@ -118,8 +118,8 @@ import flint
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.locus.remarks import NOT_USED, Remark
-from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.locus.types import Certificate, Check, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import CertifyError, TimeLimitReached
 from coopkin_sym.exact import deadline
@@ -145,143 +145,6 @@ Poly = flint.fmpz_mpoly
 MAX_MINORS = 400
 #: Largest size (terms) a minor may reach by the product of its largest entries.
 MAX_MINOR_TERMS = 2_000_000
-
-
-@dataclass
-class Check:
-    """One test of the certificate.
-
-    Attributes
-    ----------
-    chart
-        ``"t chart"`` or the slice, e.g. ``"q1 = pi"``, ``"q1 = q3 = pi"``.
-    depth
-        0 for the generic drop sets; ``k`` for the numbers of a component of depth
-        ``k``; ``k + 1`` for the drops inside it.
-    inside
-        Index (in the locus's components) of the component the test is about, or None.
-    matrix
-        ``"HG^T"``, ``"HD[arm]"``, ``"HD"`` (all arms), ``"Q"``.
-    kind
-        ``"drops"`` (the drop set lies in the components) or ``"numbers"`` (the
-        component's numbers bound the ranks everywhere on it).
-    certified
-        Whether it is proved.
-    why
-        How it was decided without a Gröbner basis, or why it is not certified: a
-        :class:`~.remarks.Remark` (``cert_*``), None when a backend proved it.
-    backend, seconds
-        What decided it, and how long it took.
-
-    Example
-    -------
-    >>> from coopkin_sym import load
-    >>> system = load("paper-case1-hard")
-    >>> check = certify_locus(system, system.locus(), timeout=60).checks[0]
-    >>> check.chart, check.depth, check.certified
-    ('t chart', 0, True)
-    """
-
-    chart: str
-    depth: int
-    inside: int | None
-    matrix: str
-    kind: str
-    certified: bool = False
-    why: Remark | None = None
-    backend: str = ""
-    seconds: float = 0.0
-
-    def where(self) -> str:
-        """Which test this is (chart, depth, component, matrix), as reports label it.
-
-        Example
-        -------
-        >>> Check("t chart", 1, 4, "HG^T", "drops").where()
-        't chart, depth 1, component #5, rank of HG^T'
-        """
-        inside = f", component #{self.inside + 1}" if self.inside is not None else ""
-        what = "rank of" if self.kind == "drops" else "numbers, rank of"
-        return f"{self.chart}, depth {self.depth}{inside}, {what} {self.matrix}"
-
-
-
-@dataclass
-class Certificate:
-    """Whether a locus is proved complete, chart by chart and depth by depth.
-
-    Attributes
-    ----------
-    system
-        The system's name.
-    certified
-        True only when every test is certified.
-    refused
-        Why no test could be run (a :class:`~.remarks.Remark`), or None.
-    depths, charts
-        Depth (or chart) -> ``{"certified": bool, "why": Check | Remark | None,
-        "tests": int, "failed": int}``: ``why`` is the first test not certified there,
-        or what was not tested.
-    checks
-        Every test.
-    notes
-        What the certificate assumed or could not use (remarks).
-    untested_beyond
-        The depth past which nothing was tested (``max_depth``), or None.
-    seconds
-        Wall time.
-
-    :mod:`coopkin_sym.present.certificate` words it (its summary and JSON).
-
-    Example
-    -------
-    >>> from coopkin_sym import load
-    >>> system = load("paper-case1-hard")
-    >>> cert = certify_locus(system, system.locus(), timeout=60)
-    >>> cert.certified, len(cert.checks), cert.depths[0]["failed"]
-    (True, 46, 0)
-    """
-
-    system: str
-    certified: bool = False
-    refused: Remark | None = None
-    depths: dict[int, dict] = field(default_factory=dict)
-    charts: dict[str, dict] = field(default_factory=dict)
-    checks: list[Check] = field(default_factory=list)
-    notes: list[Remark] = field(default_factory=list)
-    untested_beyond: int | None = None
-    seconds: float = 0.0
-
-    def certified_by(self) -> dict[str, int]:
-        """How many tests each backend certified.
-
-        Example
-        -------
-        >>> Certificate("demo").certified_by()
-        {}
-        """
-        backends: dict[str, int] = {}
-        for c in self.checks:
-            if c.certified:
-                backends[c.backend] = backends.get(c.backend, 0) + 1
-        return dict(sorted(backends.items()))
-
-    def failures(self) -> list[Check | Remark]:
-        """Why it is not certified, in order: components and conditions not used, the
-        tests not certified (shallowest first), depths not tested; empty when certified.
-
-        Example
-        -------
-        >>> Certificate("demo", untested_beyond=0).failures()[0].kind
-        'cert_depths_untested'
-        """
-        if self.refused is not None:
-            return [self.refused]
-        out: list[Check | Remark] = [n for n in self.notes if n.kind in NOT_USED]
-        out += sorted((c for c in self.checks if not c.certified), key=lambda c: c.depth)
-        if self.untested_beyond is not None:
-            out.append(Remark.of("cert_depths_untested", depth=self.untested_beyond))
-        return out
 
 
 # --- the certificate ---------------------------------------------------------------------
