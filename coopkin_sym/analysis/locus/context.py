@@ -137,7 +137,8 @@ class SearchContext:
     sets of single minors; ``pi`` are the joints at q = pi in this chart; ``deferred``
     holds, per level, searches run after that level's components; ``polys`` maps
     equation texts to their polynomials; ``owners`` (component id -> its context) is
-    shared by the charts.
+    shared by the charts; ``analyses`` holds the exact analyses at the points tried
+    (``--at`` text -> analysis).
 
     Example
     -------
@@ -170,6 +171,7 @@ class SearchContext:
     deferred: list = field(default_factory=list)
     polys: dict = field(default_factory=dict)
     owners: dict | None = None
+    analyses: dict = field(default_factory=dict)
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""

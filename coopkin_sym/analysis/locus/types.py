@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import copy
 import time
-from collections.abc import Sequence
-from dataclasses import asdict, dataclass, field, fields
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.locus.remarks import NOT_USED, Remark
@@ -31,6 +31,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.irrational import PointMotions
     from coopkin_sym.analysis.mobility import Analysis
     from coopkin_sym.analysis.numbers import Numbers
+    from coopkin_sym.model.configuration import Point
 
 # exact data and read-back text a component's JSON does not carry
 _NOT_IN_JSON = ("shown", "stated_meaning", "polynomials", "outside_polynomials")
@@ -52,13 +53,18 @@ class FloatCheck:
 
     distance: float
     scale: str
-    point: dict[str, str]
+    point: Point | Mapping[str, str]
     exact: dict[str, int]
     float: dict[str, int]
 
     @property
     def agree(self) -> bool:
         return self.exact == self.float
+
+    def to_json(self) -> dict:
+        """Plain JSON data (the point as its ``--at`` texts), with ``agree``."""
+        return {"distance": self.distance, "scale": self.scale, "point": dict(self.point),
+                "exact": dict(self.exact), "float": dict(self.float), "agree": self.agree}
 
 
 @dataclass(frozen=True)
@@ -99,7 +105,9 @@ class Component(Displayable):
     numbers
         The seven numbers on the component (at its generic points).
     witness
-        An exact point on it, in ``--at`` syntax (``{"q1": "pi/2", ...}``), or None.
+        An exact point on it (a :class:`~coopkin_sym.model.configuration.Point`,
+        read as its ``--at`` texts: ``{"q1": "pi/2", ...}``), or None; a report read
+        back keeps the texts.
     real
         Whether the component has real points: True only with a real witness
         (rational, or algebraic in a certified isolating interval).
@@ -158,7 +166,7 @@ class Component(Displayable):
 
     equations: list[str]
     numbers: dict[str, int]
-    witness: dict[str, str] | None
+    witness: Point | Mapping[str, str] | None
     real: bool
     kind: str = "hypersurface"
     condition: str = ""
@@ -215,7 +223,8 @@ class Component(Displayable):
             out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["decided"] = _remark_json(self.decided)
-        out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
+        out["witness"] = None if self.witness is None else dict(self.witness)
+        out["float_checks"] = [f.to_json() for f in self.float_checks]
         return out
 
 
