@@ -71,7 +71,7 @@ from coopkin_sym.analysis.locus.algebra import (
 )
 from coopkin_sym.analysis.locus.context import Place, Progress, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
-from coopkin_sym.analysis.locus.types import Component, Locus, cut_short
+from coopkin_sym.analysis.locus.types import Component, Locus, canonical_order, cut_short
 from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
     algebraic_witness_on,
@@ -195,6 +195,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         with ctx.reporter.parts(len(weights), weights):
             _pi_slices(ctx, size)
         _settle_realness(ctx)
+        canonical_order(locus)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
     if model.passive_joints and not model.locked:

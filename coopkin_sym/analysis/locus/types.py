@@ -552,6 +552,66 @@ class Locus(Displayable):
         return False, failing[0] if failing else None
 
 
+#: The order of the kinds of components among siblings.
+KIND_ORDER = ("hypersurface", "subvariety", "isolated", "chart")
+
+
+def _sibling_key(c: Component) -> tuple:
+    kind = KIND_ORDER.index(c.kind) if c.kind in KIND_ORDER else len(KIND_ORDER)
+    return (kind, len(c.equations), [(len(e), e) for e in c.equations], c.condition,
+            sorted(c.numbers.items()), sorted((c.witness or {}).items()))
+
+
+def canonical_order(locus: Locus) -> list[int]:
+    """Put the components of ``locus`` in their canonical order, whatever order the
+    search found them in: depth first down the tree of parents, siblings sorted by
+    kind, number of equations, then their texts (shortest first). Parents and the
+    component indices held by remarks follow; returns the old index of each
+    component, in the new order.
+
+    Example
+    -------
+    >>> a = Component(["t_q1 - 1"], {"Nm": 3}, None, True, kind="isolated")
+    >>> b = Component(["t_q1"], {"Nm": 3}, None, True)
+    >>> inner = Component(["t_q1", "t_q2"], {"Nm": 4}, None, True, depth=1, parent=1)
+    >>> locus = Locus("demo", ["t_q1", "t_q2"], "", {"Nm": 2}, [a, b, inner])
+    >>> canonical_order(locus), [c.parent for c in locus.components]
+    ([1, 2, 0], [None, 0, None])
+    """
+    comps = locus.components
+    children: dict[int | None, list[int]] = {}
+    for k, c in enumerate(comps):
+        parent = c.parent if c.parent is not None and 0 <= c.parent < len(comps) else None
+        children.setdefault(parent, []).append(k)
+    order: list[int] = []
+
+    def visit(parent: int | None) -> None:
+        for k in sorted(children.get(parent, []), key=lambda k: _sibling_key(comps[k])):
+            order.append(k)
+            visit(k)
+
+    visit(None)
+    order += [k for k in range(len(comps)) if k not in set(order)]  # a cycle: kept last
+    new = {old: i for i, old in enumerate(order)}
+    locus.components = [comps[k] for k in order]
+    for c in locus.components:
+        if c.parent is not None:
+            c.parent = new.get(c.parent, c.parent)
+    for name in ("parameter_conditions", "dropped", "unexplored", "notes"):
+        setattr(locus, name, [_renumbered(r, new) for r in getattr(locus, name)])
+    return order
+
+
+def _renumbered(remark: Remark | str, new: dict[int, int]) -> Remark | str:
+    """``remark`` with the component index it holds (if any) in the new numbering."""
+    if not isinstance(remark, Remark) or "component" not in dict(remark.facts):
+        return remark
+    facts = dict(remark.facts)
+    if facts["component"] is not None:
+        facts["component"] = new.get(facts["component"], facts["component"])
+    return Remark.of(remark.kind, **facts)
+
+
 def cut_short(bound, exc: TimeLimitReached) -> Locus:
     """The locus as far as it got when the wall-clock bound ran out inside a long
     computation (``bound`` is the :class:`~coopkin_sym.exact.deadline.Bound` the
