@@ -239,7 +239,6 @@ MAX_PUBLIC_PARAMETERS = 8
 OVER_SIZE = {
     "coopkin_sym/analysis/locus/search.py",
     "coopkin_sym/analysis/locus/verify.py",
-    "coopkin_sym/analysis/locus/certify.py",
     "coopkin_sym/analysis/mobility.py",
     "coopkin_sym/exact/parse.py",
     "coopkin_sym/model/model.py",

@@ -116,6 +116,16 @@ class Configuration:
         return ",".join(parts)
 
 
+class NotInPoint(KeyError, ConfigurationError):
+    """A name a :class:`Point` does not give (a ``KeyError``, as a mapping raises).
+
+    Example
+    -------
+    >>> issubclass(NotInPoint, KeyError) and issubclass(NotInPoint, ConfigurationError)
+    True
+    """
+
+
 @dataclass(frozen=True, eq=False)
 class Point(Configuration, Mapping):
     """A configuration with every joint and parameter given (no free joint), exact,
@@ -167,7 +177,7 @@ class Point(Configuration, Mapping):
         for values in (self.prismatic, self.parameters):
             if name in values and name in self.order:
                 return sp.sstr(values[name])
-        raise KeyError(name)
+        raise NotInPoint(name)
 
     def __iter__(self) -> Iterator[str]:
         return iter(self.order)
