@@ -439,17 +439,19 @@ def _locus_report(model: str, o: LocusOptions, started: float):
 
 def _echo_locus(result, written) -> None:
     """The summary lines of ``coopkin locus``: components, completeness, files."""
+    from coopkin_sym.present.certificate import completeness_text
+
     real = sum(1 for c in result.components if c.real)
     n, u = len(result.components), len(result.unexplored)
     left = f"; {u} item{'' if u == 1 else 's'} not explored" if u else ""
     files = ", ".join(str(p) for p in written)
     typer.echo(f"{n} component{'' if n == 1 else 's'} ({real} real){left}; "
-               f"{result.completeness()}; wrote " + files)
+               f"{completeness_text(result)}; wrote " + files)
     if result.locked is not None:
         lk = result.locked
         typer.echo(f"with the motors held still (where the passive-joint numbers change): "
                    f"{len(lk.components)} component{'' if len(lk.components) == 1 else 's'}"
-                   f"; {lk.completeness()}")
+                   f"; {completeness_text(lk)}")
 
 
 #: The share of ``coopkin locus --timeout`` given to the search (and its certificate and
@@ -496,12 +498,10 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     try:
         if certify:
             from coopkin_sym.analysis.locus.certify import certify_locus
-            from coopkin_sym.present.certificate import certificate_json
-            result.certificate = certificate_json(certify_locus(system, result,
-                                                                budget=certify_timeout))
+            result.certificate = certify_locus(system, result, budget=certify_timeout)
             if result.locked is not None:
-                result.locked.certificate = certificate_json(certify_locus(
-                    locked, result.locked, budget=certify_timeout))
+                result.locked.certificate = certify_locus(locked, result.locked,
+                                                          budget=certify_timeout)
         if verify:
             checked = verify_locus(system, result)
             if result.locked is not None:

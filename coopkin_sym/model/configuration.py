@@ -17,13 +17,21 @@ Example
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field, replace
+from fractions import Fraction
 
 import sympy as sp
 
 from coopkin_sym.errors import ConfigurationError
-from coopkin_sym.exact.parse import NumberError, angle_text, brief, parse_angle, parse_number
+from coopkin_sym.exact.parse import (
+    NumberError,
+    angle_text,
+    brief,
+    parse_angle,
+    parse_number,
+    tangent_text,
+)
 from coopkin_sym.model.model import Model
 
 
@@ -106,6 +114,91 @@ class Configuration:
         parts += [f"{n}={sp.sstr(v)}" for n, v in self.prismatic.items()]
         parts += [f"{n}={sp.sstr(v)}" for n, v in self.parameters.items()]
         return ",".join(parts)
+
+
+class NotInPoint(KeyError, ConfigurationError):
+    """A name a :class:`Point` does not give (a ``KeyError``, as a mapping raises).
+
+    Example
+    -------
+    >>> issubclass(NotInPoint, KeyError) and issubclass(NotInPoint, ConfigurationError)
+    True
+    """
+
+
+@dataclass(frozen=True, eq=False)
+class Point(Configuration, Mapping):
+    """A configuration with every joint and parameter given (no free joint), exact,
+    whose names come in a fixed ``order``; read as a mapping, it is its ``--at``
+    texts (``point["q1"] == "pi/2"``, ``dict(point)``), so it is equal to the mapping
+    of the same texts. Witnesses of a locus, points of a sweep and of ``--at`` share
+    this type; an analysis takes it as it is (nothing is parsed again).
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> p = Point.of({"q1": (sp.Integer(0), sp.Integer(1))}, parameters={"L": sp.Integer(1)})
+    >>> dict(p), p == {"q1": "pi/2", "L": "1"}, p.at_text()
+    ({'q1': 'pi/2', 'L': '1'}, True, 'q1=pi/2,L=1')
+    >>> p.moved("q1", (sp.Integer(-1), sp.Integer(0)))["q1"]
+    'pi'
+    """
+
+    order: tuple[str, ...] = ()
+
+    @classmethod
+    def of(cls, revolute: Mapping[str, tuple[sp.Rational, sp.Rational]] | None = None,
+           prismatic: Mapping[str, sp.Expr] | None = None,
+           parameters: Mapping[str, sp.Rational] | None = None,
+           order: Iterable[str] | None = None) -> Point:
+        """The point of these exact values, named in ``order`` (default: revolute,
+        prismatic, then parameters, each in the order given)."""
+        revolute, prismatic = dict(revolute or {}), dict(prismatic or {})
+        parameters = dict(parameters or {})
+        names = tuple(order) if order is not None else (*revolute, *prismatic, *parameters)
+        return cls(revolute, prismatic, parameters, frozenset(), names)
+
+    def moved(self, name: str, value) -> Point:
+        """This point with ``name`` set to ``value`` (a ``(cos, sin)`` pair for a
+        revolute joint, an exact number otherwise): a new name goes last."""
+        order = self.order if name in self.order else (*self.order, name)
+        if name in self.revolute:
+            return replace(self, revolute={**self.revolute, name: value}, order=order)
+        if name in self.prismatic:
+            return replace(self, prismatic={**self.prismatic, name: value}, order=order)
+        return replace(self, parameters={**self.parameters, name: value}, order=order)
+
+    def __getitem__(self, name: str) -> str:
+        if name in self.revolute and name in self.order:
+            c, s = self.revolute[name]
+            return tangent_text(None if c == -1 else
+                                Fraction(int(s.p), int(s.q)) / Fraction(int((1 + c).p),
+                                                                        int((1 + c).q)))
+        for values in (self.prismatic, self.parameters):
+            if name in values and name in self.order:
+                return sp.sstr(values[name])
+        raise NotInPoint(name)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.order)
+
+    def __len__(self) -> int:
+        return len(self.order)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, Point):
+            return (self.order == other.order and dict(self.revolute) == dict(other.revolute)
+                    and dict(self.prismatic) == dict(other.prismatic)
+                    and dict(self.parameters) == dict(other.parameters))
+        if isinstance(other, Mapping):
+            return dict(self.items()) == dict(other.items())
+        return NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def at_text(self) -> str:
+        """The point in ``--at`` syntax, in its order."""
+        return ",".join(f"{k}={v}" for k, v in self.items())
 
 
 def _split_at(at) -> list[tuple[str, object]]:

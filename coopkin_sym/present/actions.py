@@ -22,7 +22,6 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from coopkin_sym.analysis.locus.certify import Certificate
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.renderers import register_action
 from coopkin_sym.errors import ReportError
@@ -84,14 +83,7 @@ def plot_locus(locus: Locus, pair: Sequence[str] | None = None, *, system: Any =
     return plot_components(locus, system, tuple(pair))
 
 
-def locus_certificate(certificate: Certificate) -> dict:
-    """What a locus keeps of its certificate (:attr:`Locus.certificate`): its JSON."""
-    from coopkin_sym.present.certificate import certificate_json
-    return certificate_json(certificate)
-
-
 register_action(Locus, "write", write_locus)
 register_action(Locus, "plot", plot_locus)
-register_action(Certificate, "as_locus_certificate", locus_certificate)
 
-__all__ = ["SUFFIXES", "locus_certificate", "plot_locus", "report_path", "write_locus"]
+__all__ = ["SUFFIXES", "plot_locus", "report_path", "write_locus"]

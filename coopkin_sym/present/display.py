@@ -44,6 +44,7 @@ from coopkin_sym.analysis.renderers import clip, register
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.model.model import Model
+from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
@@ -426,14 +427,14 @@ def locus_html(locus: Locus) -> str:
 
 def _completeness(locus: Locus) -> str:
     """Whether the locus is proved complete, as its report says it (HTML)."""
-    said = locus.completeness()
+    said = completeness_text(locus)
     if locus.certificate is None:
         return f"<strong>{_e(said[:1].upper() + said[1:])}</strong>."
     return f"Completeness: <strong>{_e(said)}</strong>."
 
 
 def _locus_pretty(locus: Locus) -> str:
-    said = locus.completeness()
+    said = completeness_text(locus)
     lines = [repr(locus), f"  {said if locus.certificate is None else 'completeness: ' + said}",
              "  generic: " + _numbers_spaced(locus.generic)]
     if _classes(locus.generic):

@@ -42,9 +42,10 @@ from pydantic import (
     create_model,
 )
 
-from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus
+from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.locus.types import Certificate, Check, Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
-from coopkin_sym.errors import ReportInputError
+from coopkin_sym.errors import CoopkinError, ReportInputError
 from coopkin_sym.exact.angles import cotangent_name
 from coopkin_sym.exact.parse import (
     FUNCTIONS,
@@ -56,6 +57,7 @@ from coopkin_sym.exact.parse import (
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import top_level_parts
 from coopkin_sym.model.trees import TreeError, check_tree, read_text
+from coopkin_sym.present.certificate import certificate_read, completeness_text
 
 __all__ = ["ReportInputError", "validate_report"]
 
@@ -126,6 +128,44 @@ class _CertificateIn(_In):
     seconds: StrictFloat | StrictInt
 
 
+#: A remark: its sentence (a report), or its kind and facts (:meth:`Locus.to_json`).
+RemarkIn = StrictStr | dict[StrictStr, Any]
+
+
+class _CheckDataIn(_In):
+    chart: StrictStr
+    depth: StrictInt
+    inside: StrictInt | None
+    matrix: StrictStr
+    kind: StrictStr
+    certified: StrictBool
+    why: RemarkIn | None = None
+    backend: StrictStr = ""
+    seconds: StrictFloat | StrictInt = 0
+
+
+class _TallyDataIn(_In):
+    certified: StrictBool
+    why: RemarkIn | None
+    tests: StrictInt
+    failed: StrictInt
+
+
+class _CertificateDataIn(_In):
+    """A certificate as data (:meth:`~coopkin_sym.analysis.locus.types.Certificate.to_json`):
+    a table's ``why`` is ``{"check": index}`` (a test of ``checks``) or a remark."""
+
+    system: StrictStr
+    certified: StrictBool
+    refused: RemarkIn | None = None
+    depths: dict[StrictStr, _TallyDataIn]
+    charts: dict[StrictStr, _TallyDataIn]
+    checks: list[_CheckDataIn]
+    notes: list[RemarkIn]
+    untested_beyond: StrictInt | None = None
+    seconds: StrictFloat | StrictInt
+
+
 #: The type of each known field; a field of the dataclass not listed here (added
 #: later) is accepted with any plain value, and a key that is no field is refused.
 _COMPONENT_TYPES: dict[str, Any] = {
@@ -133,16 +173,17 @@ _COMPONENT_TYPES: dict[str, Any] = {
     "witness": Names | None, "real": StrictBool, "kind": StrictStr,
     "condition": StrictStr, "drops": list[StrictStr],
     "changes": dict[StrictStr, tuple[StrictInt, StrictInt]], "meaning": list[StrictStr],
-    "decided": StrictStr, "witness_checked": StrictBool,
+    "decided": RemarkIn, "witness_checked": StrictBool,
     "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
     "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
     "outside": list[StrictStr],
 }
 _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
-    "generic": dict[StrictStr, StrictInt], "parameter_conditions": list[StrictStr],
-    "dropped": list[StrictStr], "unexplored": list[StrictStr], "notes": list[StrictStr],
-    "seconds": StrictFloat | StrictInt, "certificate": _CertificateIn | None,
+    "generic": dict[StrictStr, StrictInt], "parameter_conditions": list[RemarkIn],
+    "dropped": list[RemarkIn], "unexplored": list[RemarkIn], "notes": list[RemarkIn],
+    "seconds": StrictFloat | StrictInt,
+    "certificate": _CertificateIn | _CertificateDataIn | None,
     "locked_joints": list[StrictStr], "locked": dict[StrictStr, Any] | None,
 }
 
@@ -204,7 +245,8 @@ def _render(exc: ValidationError) -> list[str]:
     for err in exc.errors(include_url=False):
         loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and (
             p.startswith("function-") or p in ("_FloatCheckIn", "_AlgebraicIn",
-                                               "_CertificateIn"))))
+                                               "_CertificateIn", "_CertificateDataIn",
+                                               "str", "dict[str,any]"))))
         message = " ".join(str(err["msg"]).split())
         if len(loc) >= 2 and loc[-1] in _TYPE_TAGS and loc[-2] in _EITHER_NUMBER:
             loc, message = loc[:-1], "input should be a number"   # one line, not two
@@ -216,7 +258,20 @@ def _render(exc: ValidationError) -> list[str]:
         else:
             out.append(f"{_path(loc)}: {message[:1].lower()}{message[1:]}"
                        f" (got {brief(err.get('input'))})")
-    return sorted(dict.fromkeys(out))
+    return sorted(_one_remark_line(dict.fromkeys(out)))
+
+
+def _one_remark_line(lines) -> list[str]:
+    """The two lines of a remark that is neither a sentence nor a mapping, as one."""
+    lines = list(lines)
+    for line in list(lines):
+        where, sep, got = line.partition(": input should be a valid dictionary (got ")
+        twin = f"{where}: input should be a valid string (got {got}"
+        if sep and twin in lines:
+            lines.remove(twin)
+            lines[lines.index(line)] = (f"{where}: input should be a sentence or a remark "
+                                        f"(a mapping with its kind) (got {got}")
+    return lines
 
 
 class _Checker:
@@ -302,8 +357,47 @@ class _Checker:
         n = len(locus.components)
         for k, c in enumerate(locus.components):
             self.component(f"components[{k}]", c, n)
-        if locus.certificate is not None:
+        for key in ("parameter_conditions", "dropped", "unexplored", "notes"):
+            for k, r in enumerate(getattr(locus, key)):
+                self.remark(f"{key}[{k}]", r)
+        if isinstance(locus.certificate, _CertificateDataIn):
+            self.certificate_data("certificate", locus.certificate, n)
+        elif locus.certificate is not None:
             self.certificate("certificate", locus.certificate, n)
+
+    def remark(self, where: str, value) -> None:
+        """A remark as data: a known kind with exactly its facts."""
+        if isinstance(value, Mapping):
+            try:
+                _remark(value)
+            except CoopkinError as exc:
+                self.add(where, str(exc))
+
+    def certificate_data(self, where: str, cert, count: int) -> None:
+        """A certificate as data: its remarks, the tests its tables name, indices."""
+        self.remark(f"{where}.refused", cert.refused)
+        for j, r in enumerate(cert.notes):
+            self.remark(f"{where}.notes[{j}]", r)
+        for j, check in enumerate(cert.checks):
+            self.remark(f"{where}.checks[{j}].why", check.why)
+            if check.inside is not None and not 0 <= check.inside < count:
+                self.add(f"{where}.checks[{j}].inside", f"no component with index "
+                                                       f"{check.inside}")
+            if check.depth < 0:
+                self.add(f"{where}.checks[{j}].depth", "cannot be negative")
+        for table in ("depths", "charts"):
+            for key, entry in getattr(cert, table).items():
+                at = _path((where, table, key))
+                if table == "depths" and not key.isdigit():
+                    self.add(f"{where}.depths", f"{brief(key)} is not a depth")
+                if min(entry.tests, entry.failed) < 0 or entry.failed > entry.tests:
+                    self.add(at, "counts must satisfy 0 <= failed <= tests")
+                if isinstance(entry.why, Mapping) and set(entry.why) == {"check"}:
+                    k = entry.why["check"]
+                    if not (isinstance(k, int) and 0 <= k < len(cert.checks)):
+                        self.add(f"{at}.why", f"no test with index {brief(str(k))}")
+                else:
+                    self.remark(f"{at}.why", entry.why)
 
     def certificate(self, where: str, cert, count: int) -> None:
         """A certificate's summary agrees with its verdict; counts and depths are
@@ -337,6 +431,7 @@ class _Checker:
         for i, eq in enumerate(c.outside):
             self.expression(f"{where}.outside[{i}]", eq, self.variables, polynomial=True)
         self.numbers(f"{where}.numbers", c.numbers)
+        self.remark(f"{where}.decided", c.decided)
         if c.witness is not None:
             self.point(f"{where}.witness", c.witness)
         if c.kind not in KINDS:
@@ -420,6 +515,36 @@ def validate_report(data: Mapping | str) -> Locus:
     return _to_locus(parsed, checker.polynomials)
 
 
+def _remark(value) -> Remark | str:
+    """A remark from report data: a sentence as it is, or a kind and its facts."""
+    if isinstance(value, Mapping):
+        facts = {k: v for k, v in value.items() if k != "kind"}
+        return Remark.of(str(value.get("kind")), **facts)
+    return value
+
+
+def _certificate_data(cert) -> Certificate:
+    """A :class:`Certificate` back from its data (validated)."""
+    checks = [Check(c.chart, c.depth, c.inside, c.matrix, c.kind, c.certified,
+                    None if c.why is None else _remark(c.why), c.backend, c.seconds)
+              for c in cert.checks]
+
+    def table(entry) -> dict:
+        why = entry.why
+        if isinstance(why, Mapping) and set(why) == {"check"}:
+            why = checks[why["check"]]
+        elif why is not None:
+            why = _remark(why)
+        return {"certified": entry.certified, "why": why, "tests": entry.tests,
+                "failed": entry.failed}
+
+    return Certificate(cert.system, cert.certified,
+                       None if cert.refused is None else _remark(cert.refused),
+                       {int(k): table(v) for k, v in cert.depths.items()},
+                       {k: table(v) for k, v in cert.charts.items()}, checks,
+                       [_remark(n) for n in cert.notes], cert.untested_beyond, cert.seconds)
+
+
 def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
     comps = []
     for i, c in enumerate(parsed.components):
@@ -434,6 +559,7 @@ def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
         values["outside_polynomials"] = [polynomials[f"{where}.outside[{k}]"]
                                          for k in range(len(c.outside))]
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
+        values["decided"] = _remark(c.decided)
         if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index
             values["parent"] = c.parent - 1
         values["float_checks"] = [
@@ -444,15 +570,20 @@ def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
         comps.append(Component(**values))
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps
-    if parsed.certificate is not None:
-        values["certificate"] = parsed.certificate.model_dump(exclude_unset=True)
+    for key in ("parameter_conditions", "dropped", "unexplored", "notes"):
+        values[key] = [_remark(r) for r in values[key]]
+    if isinstance(parsed.certificate, _CertificateDataIn):
+        values["certificate"] = _certificate_data(parsed.certificate)
+    elif parsed.certificate is not None:
+        values["certificate"] = certificate_read(parsed.certificate)
     if parsed.locked is not None:  # the locus of the locked system, read the same way
         try:
             values["locked"] = validate_report(parsed.locked)
         except ReportInputError as exc:
             raise ReportInputError([f"locked.{line}" for line in exc.problems]) from None
     locus = Locus(**values)
-    if parsed.completeness is not None and parsed.completeness != locus.completeness():
+    said = completeness_text(locus)
+    if parsed.completeness is not None and parsed.completeness != said:
         raise ReportInputError([f"completeness: {brief(parsed.completeness)} does not agree "
-                                f"with the certificate ({brief(locus.completeness())})"])
+                                f"with the certificate ({brief(said)})"])
     return locus

@@ -36,7 +36,7 @@ from coopkin_sym.cli import app
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
 from coopkin_sym.exact.parse import NumberError
-from coopkin_sym.present.certificate import certificate_json
+from coopkin_sym.present.certificate import certificate_json, completeness_text
 from coopkin_sym.present.certificate import certificate_summary as summary
 from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report import (
@@ -519,7 +519,9 @@ def test_cli_certify_report_and_json_round_trip(tmp_path):
                               "1": {"certified": True, "why": "", "tests": 15, "failed": 0}}
     assert sorted(cert["charts"]) == ["q1 = pi", "q1 = q2 = pi", "q2 = pi", "t chart"]
     back = locus_from_json(js.read_text())
-    assert back.certificate == cert and back.completeness() == "complete (certified)"
+    assert certificate_json(back.certificate) == cert
+    assert completeness_text(back) == "complete (certified)"
+    assert back.certified and back.completeness() == (True, None)
     assert json.loads(render_json(back)) == data
     text = render_markdown(back)
     assert "Completeness: **complete (certified)**." in text
@@ -548,10 +550,11 @@ def test_failed_certificate_in_reports_and_read_back():
     comps = case1_hard_components()
     del comps[4]
     locus = case1_locus(comps)
-    locus.certificate = certificate_json(certify_locus(system, locus, timeout=60))
+    locus.certificate = certify_locus(system, locus, timeout=60)
     why = ("not certified: t chart, depth 0, rank of HG^T: the rank drops below its generic "
            "value at points on no listed component (and 1 more)")
-    assert locus.completeness() == why
+    assert completeness_text(locus) == why
+    assert locus.completeness() == (False, locus.certificate.failures()[0])
     text = render_markdown(locus)
     assert f"Completeness: **{why}**." in text
     assert ("- Depth 0: not certified (2 of 28 tests): t chart, depth 0, rank of HG^T: the "
@@ -563,7 +566,8 @@ def test_failed_certificate_in_reports_and_read_back():
     latex = render_latex(locus)
     assert "not certified: t chart, depth 0, rank of HG" in latex
     data = json.loads(render_json(locus))
-    assert locus_from_json(data).certificate == locus.certificate
+    assert (certificate_json(locus_from_json(data).certificate)
+            == certificate_json(locus.certificate))
     # read back: the summary must agree with the verdict, indices must exist
     bad = copy.deepcopy(data)
     bad["certificate"]["certified"] = True

@@ -16,6 +16,7 @@ import pytest
 
 import coopkin_sym
 from coopkin_sym.analysis import renderers
+from coopkin_sym.analysis.locus.certify import Certificate
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
 from coopkin_sym.analysis.sweep import grid
@@ -57,7 +58,7 @@ def _nasty_locus() -> Locus:
     component = Component([long_equation], dict(GENERIC, Nm=3), {"q1": NASTY}, True,
                           condition=NASTY + " " + long_equation, changes={"Nm": (2, 3)})
     return Locus(NASTY * 20, ["t_q1", "t_q2"], NASTY, GENERIC, [component] * 250,
-                 certificate={"certified": True, "summary": "complete (certified)"})
+                 certificate=Certificate(NASTY, certified=True))
 
 
 NAMES = ["system", "case1 at a point", "case2 at a point", "planar", "case2 generic",

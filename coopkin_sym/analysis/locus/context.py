@@ -137,7 +137,8 @@ class SearchContext:
     sets of single minors; ``pi`` are the joints at q = pi in this chart; ``deferred``
     holds, per level, searches run after that level's components; ``polys`` maps
     equation texts to their polynomials; ``owners`` (component id -> its context) is
-    shared by the charts.
+    shared by the charts; ``analyses`` holds the exact analyses at the points tried
+    (``--at`` text -> analysis).
 
     Example
     -------
@@ -171,6 +172,7 @@ class SearchContext:
     polys: dict = field(default_factory=dict)
     owners: dict | None = None
     steps: Any = None  # the search's recursive steps (search.components.Steps)
+    analyses: dict = field(default_factory=dict)
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""

@@ -110,8 +110,8 @@ class LocusMethods:
         return certificate
 
     def _keep(self, certificate: Certificate) -> None:
-        """Keep ``certificate`` on the locus, in the form its ``certificate`` holds."""
-        self.certificate = action(certificate, "as_locus_certificate")()
+        """Keep ``certificate`` (the exact dataclass) on the locus."""
+        self.certificate = certificate
 
     def verify(self, *, system: Any = None, max_points: int = 50_000, lines: int = 12,
                seed: int = 0, timeout: float | None = None) -> Verification:

@@ -17,12 +17,12 @@ from __future__ import annotations
 
 import copy
 import time
-from collections.abc import Sequence
-from dataclasses import asdict, dataclass, field, fields
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.locus.facade import LocusMethods
-from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.locus.remarks import NOT_USED, Remark
 from coopkin_sym.analysis.numbers import numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import TimeLimitReached
@@ -32,12 +32,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.irrational import PointMotions
     from coopkin_sym.analysis.mobility import Analysis
     from coopkin_sym.analysis.numbers import Numbers
+    from coopkin_sym.model.configuration import Point
 
 # exact data and read-back text a component's JSON does not carry
 _NOT_IN_JSON = ("shown", "stated_meaning", "polynomials", "outside_polynomials")
-
-#: What a locus without a completeness certificate says about its completeness.
-NOT_CERTIFIED = "completeness not certified (run with --certify)"
 
 
 @dataclass
@@ -56,13 +54,18 @@ class FloatCheck:
 
     distance: float
     scale: str
-    point: dict[str, str]
+    point: Point | Mapping[str, str]
     exact: dict[str, int]
     float: dict[str, int]
 
     @property
     def agree(self) -> bool:
         return self.exact == self.float
+
+    def to_json(self) -> dict:
+        """Plain JSON data (the point as its ``--at`` texts), with ``agree``."""
+        return {"distance": self.distance, "scale": self.scale, "point": dict(self.point),
+                "exact": dict(self.exact), "float": dict(self.float), "agree": self.agree}
 
 
 @dataclass(frozen=True)
@@ -103,7 +106,9 @@ class Component(Displayable):
     numbers
         The seven numbers on the component (at its generic points).
     witness
-        An exact point on it, in ``--at`` syntax (``{"q1": "pi/2", ...}``), or None.
+        An exact point on it (a :class:`~coopkin_sym.model.configuration.Point`,
+        read as its ``--at`` texts: ``{"q1": "pi/2", ...}``), or None; a report read
+        back keeps the texts.
     real
         Whether the component has real points: True only with a real witness
         (rational, or algebraic in a certified isolating interval).
@@ -162,7 +167,7 @@ class Component(Displayable):
 
     equations: list[str]
     numbers: dict[str, int]
-    witness: dict[str, str] | None
+    witness: Point | Mapping[str, str] | None
     real: bool
     kind: str = "hypersurface"
     condition: str = ""
@@ -219,7 +224,8 @@ class Component(Displayable):
             out["parent"] = self.parent + 1
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["decided"] = _remark_json(self.decided)
-        out["float_checks"] = [dict(asdict(f), agree=f.agree) for f in self.float_checks]
+        out["witness"] = None if self.witness is None else dict(self.witness)
+        out["float_checks"] = [f.to_json() for f in self.float_checks]
         return out
 
 
@@ -235,6 +241,174 @@ def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence
         return list(kept)
     return [NamedPolynomial.parse(text, names, f"{what} {k + 1}")
             for k, text in enumerate(texts)]
+
+
+@dataclass
+class Check:
+    """One test of the certificate.
+
+    Attributes
+    ----------
+    chart
+        ``"t chart"`` or the slice, e.g. ``"q1 = pi"``, ``"q1 = q3 = pi"``.
+    depth
+        0 for the generic drop sets; ``k`` for the numbers of a component of depth
+        ``k``; ``k + 1`` for the drops inside it.
+    inside
+        Index (in the locus's components) of the component the test is about, or None.
+    matrix
+        ``"HG^T"``, ``"HD[arm]"``, ``"HD"`` (all arms), ``"Q"``.
+    kind
+        ``"drops"`` (the drop set lies in the components) or ``"numbers"`` (the
+        component's numbers bound the ranks everywhere on it).
+    certified
+        Whether it is proved.
+    why
+        How it was decided without a Gröbner basis, or why it is not certified: a
+        :class:`~.remarks.Remark` (``cert_*``), None when a backend proved it; a
+        report read back keeps its sentence (a string).
+    backend, seconds
+        What decided it, and how long it took.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.certify import certify_locus
+    >>> system = load("paper-case1-hard")
+    >>> check = certify_locus(system, system.locus(), timeout=60).checks[0]
+    >>> check.chart, check.depth, check.certified
+    ('t chart', 0, True)
+    """
+
+    chart: str
+    depth: int
+    inside: int | None
+    matrix: str
+    kind: str
+    certified: bool = False
+    why: Remark | str | None = None
+    backend: str = ""
+    seconds: float = 0.0
+
+    def where(self) -> str:
+        """Which test this is (chart, depth, component, matrix), as reports label it.
+
+        Example
+        -------
+        >>> Check("t chart", 1, 4, "HG^T", "drops").where()
+        't chart, depth 1, component #5, rank of HG^T'
+        """
+        inside = f", component #{self.inside + 1}" if self.inside is not None else ""
+        what = "rank of" if self.kind == "drops" else "numbers, rank of"
+        return f"{self.chart}, depth {self.depth}{inside}, {what} {self.matrix}"
+
+
+
+@dataclass
+class Certificate:
+    """Whether a locus is proved complete, chart by chart and depth by depth.
+
+    Attributes
+    ----------
+    system
+        The system's name.
+    certified
+        True only when every test is certified.
+    refused
+        Why no test could be run (a :class:`~.remarks.Remark`), or None.
+    depths, charts
+        Depth (or chart) -> ``{"certified": bool, "why": Check | Remark | None,
+        "tests": int, "failed": int}``: ``why`` is the first test not certified there,
+        or what was not tested.
+    checks
+        Every test.
+    notes
+        What the certificate assumed or could not use (remarks).
+    untested_beyond
+        The depth past which nothing was tested (``max_depth``), or None.
+    seconds
+        Wall time.
+
+    :mod:`coopkin_sym.present.certificate` words it (its summary and JSON).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.certify import certify_locus
+    >>> system = load("paper-case1-hard")
+    >>> cert = certify_locus(system, system.locus(), timeout=60)
+    >>> cert.certified, len(cert.checks), cert.depths[0]["failed"]
+    (True, 46, 0)
+    """
+
+    system: str
+    certified: bool = False
+    refused: Remark | str | None = None
+    depths: dict[int, dict] = field(default_factory=dict)
+    charts: dict[str, dict] = field(default_factory=dict)
+    checks: list[Check] = field(default_factory=list)
+    notes: list[Remark | str] = field(default_factory=list)
+    untested_beyond: int | None = None
+    seconds: float = 0.0
+
+    def certified_by(self) -> dict[str, int]:
+        """How many tests each backend certified.
+
+        Example
+        -------
+        >>> Certificate("demo").certified_by()
+        {}
+        """
+        backends: dict[str, int] = {}
+        for c in self.checks:
+            if c.certified:
+                backends[c.backend] = backends.get(c.backend, 0) + 1
+        return dict(sorted(backends.items()))
+
+    def to_json(self) -> dict:
+        """Plain JSON data (remarks as their kind and facts, a table's reason as the
+        index of its test in :attr:`checks` or a remark);
+        :func:`coopkin_sym.present.certificate.certificate_json` words it.
+
+        Example
+        -------
+        >>> Certificate("demo", True).to_json()["certified"]
+        True
+        """
+        def why(value):
+            if isinstance(value, Check):
+                return {"check": next(k for k, c in enumerate(self.checks) if c is value)}
+            return _data(value)
+
+        return {"system": self.system, "certified": self.certified,
+                "refused": _data(self.refused),
+                "depths": {str(k): dict(v, why=why(v["why"])) for k, v in self.depths.items()},
+                "charts": {k: dict(v, why=why(v["why"])) for k, v in self.charts.items()},
+                "checks": [dict(vars(c), why=_data(c.why)) for c in self.checks],
+                "notes": [_data(n) for n in self.notes],
+                "untested_beyond": self.untested_beyond, "seconds": self.seconds}
+
+    def failures(self) -> list[Check | Remark]:
+        """Why it is not certified, in order: components and conditions not used, the
+        tests not certified (shallowest first), depths not tested; empty when certified.
+
+        Example
+        -------
+        >>> Certificate("demo", untested_beyond=0).failures()[0].kind
+        'cert_depths_untested'
+        """
+        if self.refused is not None:
+            return [self.refused]
+        out: list[Check | Remark] = [n for n in self.notes
+                                     if getattr(n, "kind", None) in NOT_USED]
+        out += sorted((c for c in self.checks if not c.certified), key=lambda c: c.depth)
+        if self.untested_beyond is not None:
+            out.append(Remark.of("cert_depths_untested", depth=self.untested_beyond))
+        return out
+
+
+def _data(remark: Remark | str | None):
+    return remark.to_json() if isinstance(remark, Remark) else remark
 
 
 @dataclass
@@ -268,8 +442,8 @@ class Locus(LocusMethods, Displayable):
     (strings) there instead.
     certificate
         The completeness certificate
-        (:meth:`~coopkin_sym.analysis.locus.certify.Certificate.to_json`), or None when none was
-        made (:func:`~coopkin_sym.analysis.locus.certify.certify_locus`).
+        (:class:`~coopkin_sym.analysis.locus.certify.Certificate`), or None when none
+        was made (:func:`~coopkin_sym.analysis.locus.certify.certify_locus`).
     locked_joints
         The joints held still (no velocity) in this search: the actuated joints for
         the locus of a locked system, else empty.
@@ -299,7 +473,7 @@ class Locus(LocusMethods, Displayable):
     unexplored: list[Remark | str] = field(default_factory=list)
     notes: list[Remark | str] = field(default_factory=list)
     seconds: float = 0.0
-    certificate: dict | None = None
+    certificate: Certificate | None = None
     locked_joints: list[str] = field(default_factory=list)
     locked: Locus | None = None
 
@@ -318,10 +492,11 @@ class Locus(LocusMethods, Displayable):
 
         Example
         -------
-        >>> Locus("demo", [], "", {}, certificate={"certified": True}).certified
+        >>> from coopkin_sym.analysis.locus.certify import Certificate
+        >>> Locus("demo", [], "", {}, certificate=Certificate("demo", True)).certified
         True
         """
-        return self.certificate is not None and self.certificate.get("certified") is True
+        return self.certificate is not None and self.certificate.certified is True
 
     def float_summary(self) -> dict[str, int]:
         """How many singular configurations float tests called regular (missed), and
@@ -354,18 +529,88 @@ class Locus(LocusMethods, Displayable):
             "notes": [_remark_json(r) for r in self.notes],
             "float_summary": self.float_summary(),
             "seconds": self.seconds,
-            "completeness": self.completeness(),
-            "certificate": self.certificate,
+            "certificate": (None if self.certificate is None
+                            else self.certificate.to_json()),
             "locked_joints": self.locked_joints,
             "locked": None if self.locked is None else self.locked.to_json(),
         }
 
-    def completeness(self) -> str:
-        """Whether the locus is proved complete, in one line: ``"complete
-        (certified)"``, ``"not certified: <why>"``, or that no certificate was made."""
+    def completeness(self) -> tuple[bool, Check | Remark | str | None]:
+        """Whether the locus is proved complete, and if not the first reason (a test
+        not certified, a remark; None when no certificate was made).
+        :func:`coopkin_sym.present.certificate.completeness_text` words it.
+
+        Example
+        -------
+        >>> Locus("demo", [], "", {}).completeness()
+        (False, None)
+        """
         if self.certificate is None:
-            return NOT_CERTIFIED
-        return str(self.certificate.get("summary", NOT_CERTIFIED))
+            return False, None
+        if self.certificate.certified:
+            return True, None
+        failing = self.certificate.failures()
+        return False, failing[0] if failing else None
+
+
+#: The order of the kinds of components among siblings.
+KIND_ORDER = ("hypersurface", "subvariety", "isolated", "chart")
+
+
+def _sibling_key(c: Component) -> tuple:
+    kind = KIND_ORDER.index(c.kind) if c.kind in KIND_ORDER else len(KIND_ORDER)
+    return (kind, len(c.equations), [(len(e), e) for e in c.equations], c.condition,
+            sorted(c.numbers.items()), sorted((c.witness or {}).items()))
+
+
+def canonical_order(locus: Locus) -> list[int]:
+    """Put the components of ``locus`` in their canonical order, whatever order the
+    search found them in: depth first down the tree of parents, siblings sorted by
+    kind, number of equations, then their texts (shortest first). Parents and the
+    component indices held by remarks follow; returns the old index of each
+    component, in the new order.
+
+    Example
+    -------
+    >>> a = Component(["t_q1 - 1"], {"Nm": 3}, None, True, kind="isolated")
+    >>> b = Component(["t_q1"], {"Nm": 3}, None, True)
+    >>> inner = Component(["t_q1", "t_q2"], {"Nm": 4}, None, True, depth=1, parent=1)
+    >>> locus = Locus("demo", ["t_q1", "t_q2"], "", {"Nm": 2}, [a, b, inner])
+    >>> canonical_order(locus), [c.parent for c in locus.components]
+    ([1, 2, 0], [None, 0, None])
+    """
+    comps = locus.components
+    children: dict[int | None, list[int]] = {}
+    for k, c in enumerate(comps):
+        parent = c.parent if c.parent is not None and 0 <= c.parent < len(comps) else None
+        children.setdefault(parent, []).append(k)
+    order: list[int] = []
+
+    def visit(parent: int | None) -> None:
+        for k in sorted(children.get(parent, []), key=lambda k: _sibling_key(comps[k])):
+            order.append(k)
+            visit(k)
+
+    visit(None)
+    order += [k for k in range(len(comps)) if k not in set(order)]  # a cycle: kept last
+    new = {old: i for i, old in enumerate(order)}
+    locus.components = [comps[k] for k in order]
+    for c in locus.components:
+        if c.parent is not None:
+            c.parent = new.get(c.parent, c.parent)
+    for name in ("parameter_conditions", "dropped", "unexplored", "notes"):
+        setattr(locus, name, [_renumbered(r, new) for r in getattr(locus, name)])
+    return order
+
+
+def _renumbered(remark: Remark | str, new: dict[int, int]) -> Remark | str:
+    """``remark`` with the component index it holds (if any) in the new numbering."""
+    if not isinstance(remark, Remark) or "component" not in dict(remark.facts):
+        return remark
+    facts = dict(remark.facts)
+    if facts["component"] is not None:
+        facts["component"] = new.get(facts["component"], facts["component"])
+    return Remark.of(remark.kind, **facts)
 
 
 def cut_short(bound, exc: TimeLimitReached) -> Locus:

@@ -23,6 +23,7 @@ from fractions import Fraction
 from math import atan, pi
 
 import flint
+import numpy as np
 import sympy as sp
 
 from coopkin_sym.analysis.floatcheck import float_numbers
@@ -30,8 +31,9 @@ from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
-from coopkin_sym.analysis.mobility import analyze, numbers_modulo
-from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.analysis.mobility import Analysis, numbers_modulo
+from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
+from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text, parse_expression
@@ -40,7 +42,7 @@ from coopkin_sym.exact.rationals import to_fraction
 from coopkin_sym.exact.realroot import RealRoot, element_expression
 from coopkin_sym.exact.substitution import substitute
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
-from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.configuration import Configuration, Point
 
 FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 
@@ -99,34 +101,43 @@ def witness_linear(ctx: SearchContext, sub_rows, name, f0, f1, point_so_far, num
 
 
 def numbers_at_values(ctx: SearchContext, values: dict[str, Fraction]) -> Numbers | None:
-    at = to_at(ctx, values)
-    if at is None:
-        return None
-    return analyze(ctx.model, Configuration.parse(ctx.model, at)).numbers
+    """The numbers at a full point (see :func:`to_at`) by a direct exact analysis;
+    None when the values are no point (a length not positive)."""
+    point = to_at(ctx, values)
+    return None if point is None else analysis_at(ctx, point).numbers
 
 
-def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> dict[str, str] | None:
-    """A full point in ``--at`` syntax (joints set by the caller and fixed values
-    included)."""
-    out: dict[str, str] = {}
+def analysis_at(ctx: SearchContext, point: Point) -> Analysis:
+    """The exact analysis at ``point``, made once per point in a search."""
+    key = point.at_text()
+    if key not in ctx.analyses:
+        ctx.analyses[key] = Analysis(ctx.model, point)
+    return ctx.analyses[key]
+
+
+def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> Point | None:
+    """A full exact point (joints set by the caller and fixed values included), named
+    in the order of ``--at``: the fixed joints, the free variables, the fixed
+    parameters; None when a length is not positive."""
     config = ctx.config
-    for j in ctx.model.joints:
-        if j.name in config.revolute:
-            out[j.name] = angle_text(*config.revolute[j.name])
-        elif j.name in config.prismatic:
-            out[j.name] = sp.sstr(config.prismatic[j.name])
+    order = [j.name for j in ctx.model.joints
+             if j.name in config.revolute or j.name in config.prismatic]
+    revolute, prismatic = dict(config.revolute), dict(config.prismatic)
+    parameters = {}
     for n, (kind, name) in ctx.kinds.items():
         v = values.get(n)
         if v is None or (kind == "parameter" and v <= 0):
             return None
+        order.append(name)
         if kind == "revolute":
-            out[name] = ExactAngle.from_tangent(v).text
+            revolute[name] = ExactAngle.from_tangent(v).cos_sin
+        elif kind == "parameter":
+            parameters[name] = sp.Rational(v.numerator, v.denominator)
         else:
-            out[name] = f"{v.numerator}" if v.denominator == 1 else f"{v.numerator}/" \
-                f"{v.denominator}"
-    for p, v in config.parameters.items():
-        out[p] = sp.sstr(v)
-    return out
+            prismatic[name] = sp.Rational(v.numerator, v.denominator)
+    order += list(config.parameters)
+    parameters.update(config.parameters)
+    return Point.of(revolute, prismatic, parameters, order)
 
 
 def complete_algebraic(ctx: SearchContext, point_so_far: dict, x: str, field: NumberField,
@@ -278,9 +289,8 @@ def attach_algebraic_witness(ctx: SearchContext, comp: Component, x: str, g, val
         comp.witness_checked = True
         comp.shown = algebraic_motions(ctx, full, x, g, root, numbers, comp.changes)
         if approx_at is not None:
-            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
-            comp.float_checks = float_image_checks(ctx, approx_at, analysis, numbers,
-                                                    comp.equations)
+            comp.float_checks = float_image_checks(ctx, approx_at, analysis_at(ctx, approx_at),
+                                                   numbers, comp.equations)
         return
 
 
@@ -319,7 +329,7 @@ def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot,
                           motions=motions, object_dim=ctx.model.object_dim)
 
 
-def float_image_checks(ctx: SearchContext, approx_at: dict[str, str], analysis, numbers: Numbers,
+def float_image_checks(ctx: SearchContext, approx_at: Point, analysis, numbers: Numbers,
                         comp_equations: list[str]):
     """Float checks at the float image of an irrational witness (a rational point
     within 1e-40 of it stands in for it; its float64 image is the same), where the
@@ -336,10 +346,10 @@ def float_image_checks(ctx: SearchContext, approx_at: dict[str, str], analysis, 
     return out
 
 
-def attach_witness(ctx: SearchContext, comp: Component, witness: dict[str, str],
+def attach_witness(ctx: SearchContext, comp: Component, witness: Point,
                    numbers: Numbers) -> None:
     """A rational witness, checked by a direct exact analysis, with its float checks."""
-    analysis = analyze(ctx.model, Configuration.parse(ctx.model, witness))
+    analysis = analysis_at(ctx, witness)
     comp.witness = witness
     comp.witness_checked = analysis.numbers == numbers
     comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes),
@@ -347,15 +357,17 @@ def attach_witness(ctx: SearchContext, comp: Component, witness: dict[str, str],
     comp.float_checks = float_checks(ctx, witness, analysis, comp.equations)
 
 
-def float_checks(ctx: SearchContext, witness: dict[str, str], analysis,
+def float_checks(ctx: SearchContext, witness: Point, analysis,
                   equations: list[str] = ()) -> list[FloatCheck]:
     """Float ranks at the witness, at points near it, and with lengths rescaled. The
     nearby points move a revolute joint of the component's last equation (so they leave
     the component, and stay in its parent)."""
     checks = []
     scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
+    probe = _FloatProbe.of(ctx, witness)
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
-                             float_numbers(analysis)))
+                             float_numbers(analysis) if probe is None else
+                             probe.numbers(witness)[1]))
     local = {str(v): v for v in ctx.symbols.values()}
     used = [set(re.findall(r"[A-Za-z_]\w*", eq)) & set(local) for eq in reversed(equations)]
     revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
@@ -364,24 +376,90 @@ def float_checks(ctx: SearchContext, witness: dict[str, str], analysis,
     for distance in FLOAT_DISTANCES:
         if joint is None:
             break
-        point = dict(witness)
-        point[joint] = ExactAngle.parse(point[joint], "witness").nudged(distance).text
-        near = analyze(ctx.model, Configuration.parse(ctx.model, point))
-        checks.append(FloatCheck(distance, scale, point, near.numbers.as_dict(),
-                                 float_numbers(near)))
+        point = witness.moved(joint, _nudged(witness, joint, distance))
+        checks.append(FloatCheck(distance, scale, point, *_both(ctx, probe, point)))
     for p in ctx.model.parameters:
         for value in ("1/1000", "1000"):
             for distance in (0.0, *FLOAT_DISTANCES):
-                point = dict(witness)
-                point[p.name] = value
+                point = witness.moved(p.name, sp.Rational(value))
                 if distance and joint is not None:
-                    point[joint] = ExactAngle.parse(point[joint], "witness").nudged(distance).text
+                    point = point.moved(joint, _nudged(witness, joint, distance))
                 elif distance:
                     continue
-                a = analyze(ctx.model, Configuration.parse(ctx.model, point))
                 checks.append(FloatCheck(distance, f"{p.name}={value}", point,
-                                         a.numbers.as_dict(), float_numbers(a)))
+                                         *_both(ctx, _FloatProbe.of(ctx, point), point)))
     return checks
+
+
+def _both(ctx: SearchContext, probe: _FloatProbe | None, point: Point
+          ) -> tuple[dict[str, int], dict[str, int]]:
+    """The exact and the float numbers at ``point``: from ``Q`` there (the compiled
+    chains), else from an analysis."""
+    if probe is not None:
+        return probe.numbers(point)
+    a = Analysis(ctx.model, point)
+    return a.numbers.as_dict(), float_numbers(a)
+
+
+class _FloatProbe:
+    """``Q`` at exact points with given parameter values, from the compiled chains
+    (:mod:`coopkin_sym.analysis.sweep.chains`): the exact numbers there (exact ranks)
+    and what a float pipeline says (ranks of its float64 image by numpy, as
+    :func:`~coopkin_sym.analysis.floatcheck.float_numbers`). One per parameter values
+    in a search."""
+
+    def __init__(self, model, parameters):
+        self.model = model
+        self.joints = [j for j in model.joints]
+        base = Configuration(parameters=dict(parameters))
+        self.chain = ChainQ(chain_data(model, base, [j.name for j in self.joints]))
+        self.field = RationalField()
+
+    @classmethod
+    def of(cls, ctx: SearchContext, point: Point) -> _FloatProbe | None:
+        """The probe for the parameter values of ``point``; None when one is missing
+        (a parameter left symbolic)."""
+        if any(p.name not in point.parameters for p in ctx.model.parameters):
+            return None
+        key = ("probe", *sorted((k, str(v)) for k, v in point.parameters.items()))
+        if key not in ctx.analyses:
+            ctx.analyses[key] = cls(ctx.model, point.parameters)
+        return ctx.analyses[key]
+
+    def numbers(self, point: Point) -> tuple[dict[str, int], dict[str, int]]:
+        values = []
+        for j in self.joints:
+            if j.type == "revolute":
+                c, s = point.revolute.get(j.name, (sp.Integer(1), sp.Integer(0)))
+                t = None if c == -1 else sp.Rational(s) / (1 + c)
+                values.append((1, 0) if t is None else (int(t.p), int(t.q)))
+            else:
+                v = sp.Rational(point.prismatic.get(j.name, 0))
+                values.append((int(v.p), int(v.q)))
+        rows = self.chain.rows(self.field, values)
+        d, n = self.model.object_dim, self.chain.n
+        m, r = len(rows), len(self.joints)
+
+        def exact(cols: range) -> int:
+            return flint.fmpq_mat([[row[k] for k in cols] for row in rows]).rank() if (
+                m and len(cols)) else 0
+
+        q = np.array([[int(x.p) / int(x.q) for x in row] for row in rows],  # float-ok
+                     dtype=float).reshape(m, n)
+
+        def rank(a: np.ndarray) -> int:
+            return int(np.linalg.matrix_rank(a)) if a.size else 0  # float-ok
+
+        exact_numbers = numbers_from_ranks(m, r, exact(range(n)), exact(range(d)),
+                                           exact(range(d, n)), dim=d)
+        float_ranks = numbers_from_ranks(m, r, rank(q), rank(q[:, :d]), rank(q[:, d:]),
+                                         dim=d)
+        return exact_numbers.as_dict(), float_ranks.as_dict()
+
+
+def _nudged(point: Point, joint: str, distance: float):  # float-ok: chooses a point
+    """``(cos, sin)`` of an exact angle about ``distance`` above the joint's."""
+    return ExactAngle.from_cos_sin(*point.revolute[joint]).nudged(distance).cos_sin
 
 
 def family_witness(ctx: SearchContext, comp: Component, f, x: str, inner: dict,
@@ -462,7 +540,6 @@ def attach_two_root_witness(ctx: SearchContext, comp: Component, first: tuple, s
                                     object_dim=ctx.model.object_dim)
         approx_at = to_at(ctx, near)
         if approx_at is not None:
-            analysis = analyze(ctx.model, Configuration.parse(ctx.model, approx_at))
-            comp.float_checks = float_image_checks(ctx, approx_at, analysis, numbers,
-                                                   comp.equations)
+            comp.float_checks = float_image_checks(ctx, approx_at, analysis_at(ctx, approx_at),
+                                                   numbers, comp.equations)
         return

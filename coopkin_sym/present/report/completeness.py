@@ -13,13 +13,14 @@ Example
 from __future__ import annotations
 
 from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.present.certificate import certificate_json, completeness_text
 from coopkin_sym.present.report.blocks import Bullets, Paragraph, _h, _t
 from coopkin_sym.present.report.formulas import _list_or
 
 
 def _completeness_line(locus: Locus) -> Paragraph:
     """Whether the locus is proved complete, in the summary."""
-    said = locus.completeness()
+    said = completeness_text(locus)
     return Paragraph([("strong", said[:1].upper() + said[1:]), _t(".")]
                      if locus.certificate is None else
                      [_t("Completeness: "), ("strong", said), _t(".")], css="summary")
@@ -32,14 +33,15 @@ SHOWN_FAILURES = 10
 def _certificate_blocks(locus: Locus) -> list:
     """The completeness certificate: per depth, the tests not certified, its notes."""
     out: list = [_h(2, "Completeness certificate", "certificate")]
-    cert = locus.certificate
-    if cert is None:
-        out.append(Paragraph([_t(locus.completeness()[:1].upper() + locus.completeness()[1:]
+    if locus.certificate is None:
+        said = completeness_text(locus)
+        out.append(Paragraph([_t(said[:1].upper() + said[1:]
                                  + ": no proof was made that the components above hold every "
                                    "configuration where the numbers change.")]))
         return out
+    cert = certificate_json(locus.certificate)
     tests = cert.get("tests", 0)
-    out.append(Paragraph([("strong", locus.completeness()),
+    out.append(Paragraph([("strong", cert["summary"]),
                           _t(f" ({tests} exact test{'' if tests == 1 else 's'} in "
                              f"{len(cert.get('charts', {}))} chart"
                              f"{'' if len(cert.get('charts', {})) == 1 else 's'}, "

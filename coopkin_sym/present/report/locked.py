@@ -15,6 +15,7 @@ from collections.abc import Mapping
 
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
+from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.passive import PASSIVE_WORDS
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report.blocks import Paragraph, Table, _h, _t
@@ -51,7 +52,7 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
             for k in PASSIVE_NUMBER_NAMES if k not in ("Na", "Np")]
     out.append(Table(["number", "meaning", "generic value"], rows, "llc", {1: "7.5cm"},
                      css="numbers"))
-    said = locked.completeness()
+    said = completeness_text(locked)
     n = len(locked.components)
     out.append(Paragraph([_t(f"Locus of the locked system: {n} component{'' if n == 1 else 's'}; "
                              f"{said}."

@@ -18,7 +18,9 @@ from collections.abc import Mapping
 from typing import Any
 
 from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError, OutputSkipped, SkippedForTime
+from coopkin_sym.model.configuration import Point
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
 
 # key of a picture of the system at a witness among the plots
@@ -40,6 +42,18 @@ def _witness_point(comp: Component) -> tuple[dict[str, str], bool] | None:
     point = (comp.algebraic_witness or {}).get("point")
     if point:
         return dict(point), False
+    return None
+
+
+def _witness_analysis(system: Any, comp: Component) -> Analysis | None:
+    """The exact analysis at a component's witness for its picture: the one the search
+    made (when its model is the system's), else one at the exact point (nothing is
+    parsed), else None (a witness read back as text)."""
+    held = getattr(comp.shown, "analysis", None)
+    if held is not None and held.model is system.model:
+        return held
+    if isinstance(comp.witness, Point):
+        return Analysis(system.model, comp.witness)
     return None
 
 
@@ -106,15 +120,17 @@ def _system_pictures(locus: Locus, system: Any, dpi: int,
         motion = gained_motion(comp.numbers, locus.generic)
         at_text = ",".join(f"{n}={v}" for n, v in at.items())
         title = f"{locus.system}: component {k + 1}"
+        held = _witness_analysis(system, comp) if exact else None
+        drawn_at = (held, None) if held is not None else (system, at_text)
         try:
             try:
-                fig = draw_system(system, at=at_text, title=title,
+                fig = draw_system(*drawn_at, title=title,
                                   motion=f"{motion[0]}:{motion[1]}" if motion and exact
                                   else None)
             except DrawError:   # the motion is not there after all: the system alone
                 if motion is None or not exact:
                     raise
-                fig = draw_system(system, at=at_text, title=title)
+                fig = draw_system(*drawn_at, title=title)
                 motion = None
             buf = io.BytesIO()
             fig.savefig(buf, format="png", dpi=min(dpi, SYSTEM_PICTURE_DPI))

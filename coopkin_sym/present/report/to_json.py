@@ -16,6 +16,7 @@ from collections.abc import Mapping
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import ReportError
+from coopkin_sym.present.certificate import certificate_json, completeness_text
 from coopkin_sym.present.remarks import remark_text, remark_texts
 from coopkin_sym.present.report.words import _has_classes
 from coopkin_sym.present.report_input import ReportInputError, validate_report
@@ -50,7 +51,7 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     >>> sorted(json.loads(render_json(Locus("demo", [], "", {"Nm": 1}))))[:4]
     ['certificate', 'completeness', 'components', 'dropped']
     """
-    data = locus.to_json()
+    data = _worded_certificate(locus.to_json(), locus)
     for key in _REMARK_LISTS:
         data[key] = remark_texts(getattr(locus, key))
     data["components"] = [_with_meaning(d, c)
@@ -62,6 +63,19 @@ def render_json(locus: Locus, verification: Mapping | None = None) -> str:
     if verification is not None:
         data["verification"] = dict(verification)
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def _worded_certificate(data: dict, locus: Locus) -> dict:
+    """``data`` with the completeness in words (after ``seconds``) and the certificate's
+    JSON (:func:`~coopkin_sym.present.certificate.certificate_json`)."""
+    out = {}
+    for key, value in data.items():
+        if key == "certificate":
+            value = None if locus.certificate is None else certificate_json(locus.certificate)
+        out[key] = value
+        if key == "seconds":
+            out["completeness"] = completeness_text(locus)
+    return out
 
 
 def locus_from_json(data: Mapping | str) -> Locus:

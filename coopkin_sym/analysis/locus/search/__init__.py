@@ -69,7 +69,7 @@ from coopkin_sym.analysis.locus.search.charts import (
 )
 from coopkin_sym.analysis.locus.search.components import settle_realness
 from coopkin_sym.analysis.locus.search.recursion import STEPS, explore
-from coopkin_sym.analysis.locus.types import Locus, cut_short
+from coopkin_sym.analysis.locus.types import Locus, canonical_order, cut_short
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
@@ -130,6 +130,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         with ctx.reporter.parts(len(weights), weights):
             pi_slices(ctx, size)
         settle_realness(ctx)
+        canonical_order(locus)
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
     if model.passive_joints and not model.locked:

@@ -1,0 +1,91 @@
+"""Witnesses are exact points (:class:`~coopkin_sym.model.configuration.Point`), and
+their float checks come from the exact point the search holds: no text is read again."""
+
+from __future__ import annotations
+
+import inspect
+
+import pytest
+import sympy as sp
+
+from coopkin_sym import load
+from coopkin_sym.analysis.floatcheck import float_numbers
+from coopkin_sym.analysis.locus import witness as witness_module
+from coopkin_sym.analysis.locus.search import compute_locus
+from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.model.configuration import Configuration, Point
+
+
+@pytest.fixture(scope="module")
+def case1():
+    system = load("paper-case1-hard")
+    return system, compute_locus(system)
+
+
+def test_a_witness_is_an_exact_point(case1):
+    _, locus = case1
+    first = locus.components[0]
+    assert isinstance(first.witness, Point)
+    assert first.witness.revolute["q1"] == (0, -1) == first.witness.revolute["q2"]
+    assert first.witness.parameters == {"L": 1}
+    assert first.witness == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
+    assert first.to_json()["witness"] == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
+    check = first.float_checks[1]
+    assert isinstance(check.point, Point) and check.distance == 1e-6
+    # the joint of the last equation moved, exactly
+    assert [k for k in ("q1", "q2") if check.point.revolute[k] != first.witness.revolute[k]
+            ] == ["q2"]
+    assert check.point["q2"].startswith("2*atan(")
+
+
+def test_the_search_reads_no_point_text(monkeypatch):
+    """Inside the search only the user's ``at`` is parsed; the witnesses and the
+    points of their float checks are built exactly."""
+    original = Configuration.parse.__func__
+    callers = []
+
+    def parse(cls, *args, **kwargs):
+        caller = inspect.stack()[1]
+        callers.append((caller.filename.rsplit("/", 1)[-1], caller.function))
+        return original(cls, *args, **kwargs)
+
+    monkeypatch.setattr(Configuration, "parse", classmethod(parse))
+    made = []
+    init = Analysis.__init__
+
+    def count(self, *args, **kwargs):
+        made.append(1)
+        init(self, *args, **kwargs)
+
+    monkeypatch.setattr(Analysis, "__init__", count)
+    compute_locus(load("paper-case1-hard"))
+    assert [c for c in callers if c[0] in ("witness.py", "search.py")] == [
+        ("search.py", "compute_locus")]
+    assert len(made) == 5    # one per witness (the float checks need none)
+
+
+def test_float_checks_from_the_chains_equal_those_of_analyses(case1):
+    """Every float check of case 1 (at, near and with L rescaled): the exact and the
+    float numbers from the compiled chains are those of an exact analysis there."""
+    system, locus = case1
+    points = 0
+    for c in locus.components:
+        for check in c.float_checks:
+            a = Analysis(system.model, check.point)
+            probe = witness_module._FloatProbe(system.model, check.point.parameters)
+            assert probe.numbers(check.point) == (a.numbers.as_dict(), float_numbers(a))
+            assert (check.exact, check.float) == (a.numbers.as_dict(), float_numbers(a)) \
+                or check.distance == 0   # an irrational witness's own numbers at 0
+            points += 1
+    assert points == 5 * 12
+
+
+def test_point_moved_and_compared():
+    p = Point.of({"q1": (sp.Integer(1), sp.Integer(0))}, {"d2": sp.Rational(1, 2)},
+                 {"L": sp.Integer(2)})
+    assert dict(p) == {"q1": "0", "d2": "1/2", "L": "2"}
+    moved = p.moved("L", sp.Rational(1, 1000))
+    assert moved["L"] == "1/1000" and list(moved) == ["q1", "d2", "L"]
+    assert moved != p and p == Point.of({"q1": (1, 0)}, {"d2": sp.Rational(1, 2)},
+                                        {"L": 2})
+    assert p.moved("e", sp.Integer(3))["e"] == "3" and len(p.moved("e", 3)) == 4
