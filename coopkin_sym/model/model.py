@@ -37,6 +37,7 @@ from pydantic import BaseModel, ConfigDict, StrictBool, StrictStr, ValidationErr
 from coopkin_sym.errors import ArgumentTypeError, ModelError, UndeclaredSymbol, UrdfError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
+from coopkin_sym.model.contacts import contact_kind, contact_names, listed, planar_names
 from coopkin_sym.model.dh import (
     CONVENTIONS,
     IDENTITY,
@@ -58,8 +59,11 @@ from coopkin_sym.model.urdf import (
 )
 
 JointType = Literal["revolute", "prismatic"]
-ContactModel = Literal["complete", "soft", "hard", "frictionless"]
-CONTACT_MODELS: tuple[str, ...] = ("complete", "soft", "hard", "frictionless")
+#: The name of a registered contact model (see :mod:`coopkin_sym.model.contacts`).
+ContactModel = str
+#: The shipped contact models (the registry may hold more: read
+#: :func:`coopkin_sym.model.contacts.contact_names`).
+CONTACT_MODELS: tuple[str, ...] = contact_names()
 #: The components of an object twist, spatial and planar.
 SPATIAL_TWIST: tuple[str, ...] = ("v_x", "v_y", "v_z", "w_x", "w_y", "w_z")
 PLANAR_TWIST: tuple[str, ...] = ("v_x", "v_y", "w_z")
@@ -120,7 +124,7 @@ class Contact:
     (``link: base``); ``link`` is ``K`` for the link moved by joint ``K`` of that arm
     (1-based), 0 for the arm's fixed base (always 0 for the ground).
     ``normal`` is an exact unit vector, or ``None`` when the file gives none (allowed
-    only for ``hard`` and ``complete`` contacts).
+    only for a model whose rows need no normal, e.g. ``hard`` and ``complete``).
 
     Example
     -------
@@ -630,10 +634,11 @@ def _planar_problems(arms: list[Arm], joint_paths: dict[str, str], contacts,
                 problems.append(f"{path}.point: {where} joint points in the xy-plane "
                                 f"(z = 0), got {_vec_text(joint.point)}")
     for path, contact in contacts:
-        if contact.model == "soft":
-            problems.append(f"{path}.model: a soft contact has no planar model (its spin "
-                            f"about the normal is out of the plane); use hard (point "
-                            f"with friction), frictionless or complete")
+        kind = contact_kind(contact.model)
+        if kind is not None and kind.planar is None:
+            why = f" ({kind.no_planar})" if kind.no_planar else ""
+            problems.append(f"{path}.model: a {kind.name} contact has no planar model"
+                            f"{why}; use {listed(planar_names())}")
         if not _is_zero(contact.point[2]):
             problems.append(f"{path}.point: {where} contact points in the xy-plane "
                             f"(z = 0 in the base frame at home), got "
@@ -892,10 +897,11 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
             problems.append(f"{path}.link: arm {match.group(1)} has {count} {plural}, "
                             f"no link {digits if len(digits) <= 20 else digits[:12] + '...'}")
     point = _vector(entry.point, f"{path}.point", parameters, problems, rational=False)
-    model = entry.model
-    if model not in CONTACT_MODELS:
+    kind = contact_kind(entry.model)
+    model = kind.name if kind is not None else entry.model
+    if kind is None:
         problems.append(f"{path}.model: unknown contact model {brief(model)} (expected "
-                        f"complete, soft, hard or frictionless)")
+                        f"{listed(contact_names())})")
     normal = None
     if entry.normal is not None:
         normal = _vector(entry.normal, f"{path}.normal", parameters, problems,
@@ -903,7 +909,7 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         why = _unit_problem(normal) if normal is not None else None
         if why:
             problems.append(f"{path}.normal: {why}")
-    elif model in ("soft", "frictionless") and "normal" not in bad:
+    elif kind is not None and kind.needs_normal and "normal" not in bad:
         problems.append(f"{path}.normal: required for a {model} contact")
     if entry.frame not in (None, "base", "link"):
         problems.append(f"{path}.frame: expected base (the default: point and normal in "

@@ -70,9 +70,14 @@ from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ring import Frac
 from coopkin_sym.exact.sympy_bridge import rational_to_sympy
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model, load_model, model_of
 from coopkin_sym.present.files import check_output_path, write_files
-from coopkin_sym.present.sentences import describe_joint_motion, describe_twist
+from coopkin_sym.present.sentences import (
+    contact_phrase,
+    describe_joint_motion,
+    describe_twist,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -93,9 +98,6 @@ ARM_COLORS = ("tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:olive", "
               "tab:pink", "tab:gray")
 OBJECT_MOTION_COLOR = "crimson"
 JOINT_MOTION_COLOR = "darkorange"
-CONTACT_MARKERS = {"hard": "o", "soft": "D", "complete": "s", "frictionless": "^"}
-CONTACT_WORDS = {"hard": "hard finger", "soft": "soft finger",
-                 "complete": "complete constraint", "frictionless": "frictionless"}
 SAVE_FORMATS = (".png", ".pdf", ".svg")
 _LABEL_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "alpha": 0.7,
               "edgecolor": "none"}
@@ -768,7 +770,7 @@ def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list) -> None:
     seen = set()
     normal_len = 0.2 * scene.size  # float-ok
     for c, p, n in zip(a.model.contacts, scene.points, scene.normals, strict=True):
-        marker = CONTACT_MARKERS[c.model]
+        marker = contact_marker(c.model)
         (dot,) = ax.plot([p[0]], [p[1]], [p[2]], linestyle="none", marker=marker,  # float-ok
                          markersize=10, markerfacecolor="gold", markeredgecolor="black",
                          zorder=900)
@@ -780,13 +782,28 @@ def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list) -> None:
             seen.add(c.model)
             legend.append(Line2D([], [], linestyle="none", marker=marker, markersize=8,
                                  markerfacecolor="gold", markeredgecolor="black",
-                                 label=f"{CONTACT_WORDS[c.model]} contact"))
+                                 label=contact_phrase(c.model)))
         if n is not None:
             q = ax.quiver(*p, *(normal_len * n), color="black", linewidth=1.2,  # float-ok
                           arrow_length_ratio=0.3)
             q.set_gid(f"normal:{c.name}")
     if any(n is not None for n in scene.normals):
         legend.append(Line2D([], [], color="black", linewidth=1.2, label="contact normal"))
+
+
+def contact_marker(model: str) -> str:
+    """The Matplotlib marker of a contact of model ``model``: its entry's in
+    :data:`~coopkin_sym.model.contacts.REGISTRY`.
+
+    Example
+    -------
+    >>> contact_marker("hard"), contact_marker("soft")
+    ('o', 'D')
+    """
+    kind = contact_kind(model)
+    if kind is None:
+        raise DrawError(f"no marker for the contact model {model!r}")
+    return kind.marker
 
 
 #: A ratio is shown as a fraction when its numerator and denominator are at most this.
