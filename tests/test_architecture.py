@@ -242,7 +242,6 @@ OVER_SIZE = {
     "coopkin_sym/analysis/locus/certify.py",
     "coopkin_sym/analysis/mobility.py",
     "coopkin_sym/exact/parse.py",
-    "coopkin_sym/present/draw.py",
     "coopkin_sym/present/report.py",
     "coopkin_sym/analysis/generic.py:generic_numbers",
     "coopkin_sym/exact/groebner.py:covers",
