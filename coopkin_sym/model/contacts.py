@@ -72,7 +72,7 @@ class ContactKind:
 
     @property
     def needs_normal(self) -> bool:
-        """Whether a rows depends on the contact normal (``v.n`` or ``w.n``).
+        """Whether its rows depend on the contact normal (``v.n`` or ``w.n``).
 
         Example
         -------
