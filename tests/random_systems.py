@@ -3,8 +3,9 @@
 Each system has two planar arms of two joints (revolute about z; prismatic in the plane
 one time in five), small integer geometry (so coincident points, contacts on a joint
 axis and parallel axes come up often) and one contact on each arm's last link. The
-contact models of the pair are ``MODELS[seed % 4]`` and ``MODELS[seed // 4 % 4]``, so
-any 16 consecutive seeds make every pair.
+contact models of the pair are ``MODELS[seed % k]`` and ``MODELS[seed // k % k]`` (``k``
+the number of registered models, 4 as shipped), so any ``k**2`` consecutive seeds make
+every pair.
 
 Example
 -------
@@ -17,7 +18,10 @@ from __future__ import annotations
 import random
 from fractions import Fraction
 
-MODELS = ("complete", "soft", "hard", "frictionless")
+from coopkin_sym.model.contacts import contact_names
+
+#: The registered contact models, in registry order.
+MODELS = contact_names()
 
 
 def _number(x: Fraction):
@@ -54,10 +58,11 @@ def random_system(seed: int) -> dict:
                 joints.append({"name": f"q{q}", "type": "revolute", "axis": [0, 0, 1],
                                "point": point})
         arms.append({"name": f"a{a}", "joints": joints})
+    k = len(MODELS)
     contacts = [{"name": f"c{i + 1}", "link": f"a{i + 1}/2",
                  "point": [rng.randint(-2, 2), rng.randint(-2, 2), 0],
                  "normal": _planar_unit(rng),
-                 "model": MODELS[(seed if i == 0 else seed // 4) % 4]} for i in range(2)]
+                 "model": MODELS[(seed if i == 0 else seed // k) % k]} for i in range(2)]
     return {"name": f"random system {seed}", "parameters": [], "arms": arms,
             "contacts": contacts}
 

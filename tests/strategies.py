@@ -26,7 +26,10 @@ from typing import Any
 import sympy as sp
 from hypothesis import strategies as st
 
-CONTACT_MODELS = ("complete", "soft", "hard", "frictionless")
+from coopkin_sym.model.contacts import contact_names
+
+#: The registered contact models (read from the registry: a new one is sampled too).
+CONTACT_MODELS = contact_names()
 
 
 def model_number(value: sp.Rational) -> int | str:
@@ -182,7 +185,7 @@ def random_systems(
                 "link": link,
                 "point": draw(_point(with_parameter)),
                 "normal": draw(rational_unit_vectors()),
-                "model": draw(st.sampled_from(CONTACT_MODELS)),
+                "model": draw(st.sampled_from(contact_names())),
             }
         )
     return {

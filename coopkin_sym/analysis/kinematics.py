@@ -15,8 +15,9 @@ constrains; ``Q = (H G^T | -H D)``.
 
 A planar system (``planar: true``) keeps the in-plane components: object twist
 ``(v_x, v_y, w_z)``, contact velocities ``(v_x, v_y)`` of every contact then ``w_z``
-of every contact; a hard contact (point with friction) constrains ``v_x, v_y``, a
-frictionless one ``v.n``, a complete one also ``w_z``. With joints about z (or
+of every contact; each contact model keeps the components of its entry in
+:mod:`coopkin_sym.model.contacts` (a hard contact, point with friction, ``v_x, v_y``,
+a frictionless one ``v.n``, a complete one also ``w_z``). With joints about z (or
 sliding in the plane) and contacts in the plane the dropped components of the
 spatial matrices are identically zero, so this is the spatial analysis restricted
 to the plane.
@@ -44,6 +45,7 @@ from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.ring import Frac, Ring
 from coopkin_sym.exact.sympy_bridge import poly_from_sympy
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
 
 Vec = list[Frac]
@@ -266,63 +268,74 @@ class _Builder:
     def selection(self, normals: list[Vec | None]
                   ) -> tuple[list[SparseRow], list[str], list[int]]:
         """H: linear-block rows contact by contact, then angular-block rows (each row
-        as its few non-zero entries); with the rows' labels and contacts."""
+        as its few non-zero entries); with the rows' labels and contacts. Each contact
+        keeps the components its model transmits
+        (:attr:`~coopkin_sym.model.contacts.ContactKind.spatial`)."""
         n = len(self.model.contacts)
-        one = self.ring.one()
-        lin_rows, ang_rows, lin_labels, ang_labels = [], [], [], []
-        lin_owner: list[int] = []
-        ang_owner: list[int] = []
-        for i, c in enumerate(self.model.contacts):
-            lin, ang = 3 * i, 3 * n + 3 * i
-            if c.model == "frictionless":
-                lin_rows.append(_normal_row(normals[i], lin))
-                lin_labels.append(f"{c.name}: v.n")
-            else:
-                lin_rows += [[(lin + a, one)] for a in range(3)]
-                lin_labels += [f"{c.name}: v_{a}" for a in "xyz"]
-            if c.model == "complete":
-                ang_rows += [[(ang + a, one)] for a in range(3)]
-                ang_labels += [f"{c.name}: w_{a}" for a in "xyz"]
-            elif c.model == "soft":
-                ang_rows.append(_normal_row(normals[i], ang))
-                ang_labels.append(f"{c.name}: w.n")
-            lin_owner += [i] * (len(lin_rows) - len(lin_owner))
-            ang_owner += [i] * (len(ang_rows) - len(ang_owner))
-        return lin_rows + ang_rows, lin_labels + ang_labels, lin_owner + ang_owner
+        return self._select(normals, lambda i: (3 * i, 3 * n + 3 * i), 3, planar=False)
 
     def planar_selection(self, normals: list[Vec | None]
                          ) -> tuple[list[SparseRow], list[str], list[int]]:
         """H of a planar system over the components ``(v_x, v_y)`` of every contact,
         then ``w_z`` of every contact (each row as its few non-zero entries); with the
-        rows' labels and contacts."""
+        rows' labels and contacts (the components of
+        :attr:`~coopkin_sym.model.contacts.ContactKind.planar`)."""
         n = len(self.model.contacts)
+        return self._select(normals, lambda i: (2 * i, 2 * n + i - 2), 2, planar=True)
+
+    def _select(self, normals: list[Vec | None], starts, width: int, planar: bool
+                ) -> tuple[list[SparseRow], list[str], list[int]]:
+        """The rows of H: contact ``i``'s linear components start at column
+        ``starts(i)[0]``, its angular ones at ``starts(i)[1]`` (``x`` there, ``z`` two
+        further), a normal component spans ``width`` columns."""
         one = self.ring.one()
-        lin_rows, ang_rows, labels_lin, labels_ang = [], [], [], []
-        lin_owner: list[int] = []
-        ang_owner: list[int] = []
+        lin_rows: list[SparseRow] = []
+        ang_rows: list[SparseRow] = []
+        labels: tuple[list[str], list[str]] = ([], [])
+        owners: tuple[list[int], list[int]] = ([], [])
         for i, c in enumerate(self.model.contacts):
-            if c.model == "frictionless":
-                lin_rows.append([(2 * i + a, normals[i][a]) for a in range(2)
-                                 if not normals[i][a].is_zero()])
-                labels_lin.append(f"{c.name}: v.n")
-                lin_owner.append(i)
-            else:
-                lin_rows += [[(2 * i, one)], [(2 * i + 1, one)]]
-                labels_lin += [f"{c.name}: v_x", f"{c.name}: v_y"]
-                lin_owner += [i, i]
-            if c.model == "complete":
-                ang_rows.append([(2 * n + i, one)])
-                labels_ang.append(f"{c.name}: w_z")
-                ang_owner.append(i)
-        return lin_rows + ang_rows, labels_lin + labels_ang, lin_owner + ang_owner
+            lin, ang = starts(i)
+            linear = {a: [(lin + k, one)] for k, a in enumerate("xyz"[:width])}
+            angular = {a: [(ang + "xyz".index(a), one)] for a in ("z" if planar else "xyz")}
+            normal = normals[i]
+
+            def along(rows: list[SparseRow], normal=normal) -> SparseRow:
+                return [(col, normal[a] * v) for a, row in enumerate(rows)
+                        for col, v in row if not normal[a].is_zero()]
+            comps = contact_kind(c.model).components(planar)  # type: ignore[union-attr]
+            picked = pick_rows(comps, linear, angular, along)
+            for block, (rows, out) in enumerate(zip(picked, (lin_rows, ang_rows),
+                                                    strict=True)):
+                out += rows
+                labels[block].extend(f"{c.name}: {x}" for x in comps
+                                     if (x[0] == "w") == bool(block))
+                owners[block].extend([i] * len(rows))
+        return lin_rows + ang_rows, labels[0] + labels[1], owners[0] + owners[1]
+
+
+def pick_rows(components: Sequence[str], linear: dict, angular: dict, along
+              ) -> tuple[list, list]:
+    """The rows a contact transmits (its model's ``components``, see
+    :mod:`coopkin_sym.model.contacts`), linear then angular: ``linear`` and
+    ``angular`` map an axis letter to the row of that velocity component,
+    ``along(rows)`` combines the rows of a block into the component along the normal.
+
+    Example
+    -------
+    >>> pick_rows(("v_x", "v_y", "w.n"), {"x": "vx", "y": "vy"}, {"z": "wz"},
+    ...           lambda rows: "+".join(rows))
+    (['vx', 'vy'], ['wz'])
+    """
+    lin: list = []
+    ang: list = []
+    for comp in components:
+        rows, out = (linear, lin) if comp[0] == "v" else (angular, ang)
+        out.append(along(list(rows.values())) if comp.endswith(".n") else rows[comp[-1]])
+    return lin, ang
 
 
 #: A row of H as its non-zero entries: (column, value) pairs.
 SparseRow = list[tuple[int, Frac]]
-
-
-def _normal_row(normal: Vec, start: int) -> SparseRow:
-    return [(start + a, normal[a]) for a in range(3) if not normal[a].is_zero()]
 
 
 def _dense(rows: list[SparseRow], width: int, zero: Frac) -> Mat:

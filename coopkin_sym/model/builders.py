@@ -32,8 +32,11 @@ from fractions import Fraction
 from typing import Any
 
 from coopkin_sym.errors import ArgumentError
+from coopkin_sym.model.contacts import contact_kind, contact_names
 
-CONTACT_MODELS = ("complete", "soft", "hard", "frictionless")
+#: The shipped contact models (the registry may hold more; see
+#: :mod:`coopkin_sym.model.contacts`).
+CONTACT_MODELS = contact_names()
 
 #: Rational tangent half-angles of 24 directions in the plane, about 7.5 + 15 k degrees.
 _HALF_TANGENTS = tuple(Fraction(t) for t in (
@@ -103,9 +106,9 @@ def _models(spec, count: int, what: str) -> list[str]:
     if len(models) != count:
         raise ArgumentError(f"{what}: expected {count} contact models, got {len(models)}")
     for m in models:
-        if m not in CONTACT_MODELS:
+        if contact_kind(m) is None:
             raise ArgumentError(f"{what}: unknown contact model {m!r} "
-                             f"(one of {', '.join(CONTACT_MODELS)})")
+                                f"(one of {', '.join(contact_names())})")
     return models
 
 

@@ -26,9 +26,11 @@ import sympy as sp
 
 from coopkin_sym.analysis.kinematics import spatial_twist
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.entry_field import ExprArithmetic, field_of
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+from coopkin_sym.model.contacts import contact_kind
 
 if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.irrational import IrrationalAnalysis, PointMotions
@@ -46,6 +48,33 @@ _TOO_LARGE = "make a motion too large to describe in words (see the blocks)"
 
 _WORDS = ["no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
           "ten"]
+
+
+def contact_words(model: str) -> str:
+    """The name of the contact model ``model`` (as a model stores it) in sentences,
+    tables and legends: the words of its entry in
+    :data:`~coopkin_sym.model.contacts.REGISTRY`.
+
+    Example
+    -------
+    >>> contact_words("hard"), contact_words("complete")
+    ('hard finger', 'complete constraint')
+    """
+    kind = contact_kind(model)
+    if kind is None or not kind.words:
+        raise ArgumentError(f"no words for the contact model {model!r}")
+    return kind.words
+
+
+def contact_phrase(model: str) -> str:
+    """A contact of model ``model`` in words, as a legend or a table names it.
+
+    Example
+    -------
+    >>> contact_phrase("soft")
+    'soft finger contact'
+    """
+    return f"{contact_words(model)} contact"
 
 
 def _count(n: int, noun: str) -> str:

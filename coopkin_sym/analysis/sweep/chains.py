@@ -39,8 +39,10 @@ from typing import Any
 import flint
 import sympy as sp
 
+from coopkin_sym.analysis.kinematics import pick_rows
 from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
 
 #: An exact number as plain data: ``((exponents of the symbolic parameters, numerator,
@@ -136,12 +138,9 @@ def row_contacts(model: Model) -> list[int]:
     lin: list[int] = []
     ang: list[int] = []
     for i, c in enumerate(model.contacts):
-        if model.planar:
-            lin += [i] if c.model == "frictionless" else [i, i]
-            ang += [i] if c.model == "complete" else []
-        else:
-            lin += [i] if c.model == "frictionless" else [i, i, i]
-            ang += {"complete": [i, i, i], "soft": [i]}.get(c.model, [])
+        comps = contact_kind(c.model).components(model.planar)  # type: ignore[union-attr]
+        lin += [i] * sum(x[0] == "v" for x in comps)
+        ang += [i] * sum(x[0] == "w" for x in comps)
     return lin + ang
 
 
@@ -432,26 +431,19 @@ class ChainQ:
                 keep = (0, 1, 5)
                 lin = [[row[k] for k in keep] + row[6:] for row in lin[:2]]
                 ang = [[row[k] for k in keep] + row[6:] for row in ang[2:]]
-                if model == "frictionless":
-                    lin_rows.append([red(nm[0] * x + nm[1] * y)
-                                     for x, y in zip(*lin, strict=True)])
-                else:
-                    lin_rows += lin
-                if model == "complete":
-                    ang_rows += ang
-                continue
-            if model == "frictionless":
-                lin_rows.append(_combine(nm, lin, red))
-            else:
-                lin_rows += lin
-            if model == "complete":
-                ang_rows += ang
-            elif model == "soft":
-                ang_rows.append(_combine(nm, ang, red))
+            comps = contact_kind(model).components(planar)  # type: ignore[union-attr]
+            picked = pick_rows(comps, dict(zip("xyz"[:len(lin)], lin, strict=True)),
+                               dict(zip("z" if planar else "xyz", ang, strict=True)),
+                               lambda rows, nm=nm: _combine(nm, rows, red))
+            lin_rows += picked[0]
+            ang_rows += picked[1]
         return lin_rows + ang_rows
 
 
 def _combine(normal, rows, red) -> list:
+    """The row ``sum_a normal[a] rows[a]`` (over the first ``len(rows)`` axes)."""
+    if len(rows) == 2:
+        return [red(normal[0] * x + normal[1] * y) for x, y in zip(*rows, strict=True)]
     return [red(normal[0] * x + normal[1] * y + normal[2] * z)
             for x, y, z in zip(*rows, strict=True)]
 

@@ -42,6 +42,7 @@ from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
 )
+from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model, model_of
 
 # --- compilation ----------------------------------------------------------------------
@@ -393,14 +394,16 @@ class Compiled:
             if model.planar:
                 lin = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in lin[:2]]
                 ang = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in ang[2:]]
-            along = [sum((a * b for a, b in zip(n[:len(lin)], col, strict=True)), zero)
-                     for col in zip(*lin, strict=True)]
-            lin_rows += [along] if c.model == "frictionless" else lin
-            if c.model == "complete":
-                ang_rows += ang
-            elif c.model == "soft" and not model.planar:
-                ang_rows.append([sum((a * b for a, b in zip(n, col, strict=True)), zero)
-                                 for col in zip(*ang, strict=True)])
+
+            def along(rows, n=n):
+                return [sum((a * b for a, b in zip(n[:len(rows)], col, strict=True)), zero)
+                        for col in zip(*rows, strict=True)]
+            comps = contact_kind(c.model).components(model.planar)  # type: ignore[union-attr]
+            axes = "z" if model.planar else "xyz"
+            picked = kinematics.pick_rows(comps, dict(zip("xyz"[:len(lin)], lin, strict=True)),
+                                          dict(zip(axes, ang, strict=True)), along)
+            lin_rows += picked[0]
+            ang_rows += picked[1]
         rows = lin_rows + ang_rows
         return PolyMatrix(rows, self.dim, context=ctx).rank() if rows else 0
 

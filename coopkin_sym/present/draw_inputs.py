@@ -1,0 +1,192 @@
+"""What a picture is drawn from: the motion asked for (``coordinated:1``), how many
+motions of each kind a system has and gains at a point, and the analysis (rational,
+or at an irrational angle the exact numbers with the geometry at a rational next to
+it). Used by :mod:`coopkin_sym.present.draw`, which re-exports the public names.
+
+Example
+-------
+>>> motion_counts({"Nc": 3, "Ni": 1, "Nr": 0})
+{'coordinated': 2, 'indeterminate': 1, 'redundant': 0}
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.irrational import (
+    IrrationalAnalysis,
+    analyze_irrational,
+    irrational_values,
+)
+from coopkin_sym.analysis.mobility import Analysis, analyze
+from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.errors import ConfigurationError, DrawError
+from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.parse import brief
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.model import Model, load_model, model_of
+
+#: Motion kinds and the blocks they come from.
+MOTION_KINDS: dict[str, str] = {
+    "coordinated": "C12, C22",
+    "indeterminate": "C11",
+    "redundant": "C23",
+}
+
+
+# ------------------------------------------------------------------ inputs
+
+
+def parse_motion(motion: str | Sequence | None, analysis: Analysis) -> tuple[str, int] | None:
+    """Check a motion request against ``analysis``; return ``(kind, k)`` (k from 1).
+
+    ``motion`` is ``None``, a pair ``("coordinated", 1)`` or the text
+    ``"coordinated:1"`` (kinds: coordinated, indeterminate, redundant).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> a = load("paper-case1-hard").analyze()
+    >>> parse_motion("indeterminate:1", a)
+    ('indeterminate', 1)
+    >>> parse_motion(("coordinated", 2), a)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.DrawError: motion: there is no coordinated motion 2: this system ...
+    """
+    if motion is None:
+        return None
+    if isinstance(motion, str):
+        kind, sep, index = motion.partition(":")
+        if not sep:
+            raise DrawError(f"motion: expected KIND:K (e.g. coordinated:1), got {brief(motion)}")
+    elif isinstance(motion, Sequence) and len(motion) == 2:
+        kind, index = motion
+    else:
+        raise DrawError(f"motion: expected (kind, k) or 'kind:k', got {brief(motion)}")
+    kind = str(kind).strip()
+    if kind not in MOTION_KINDS:
+        raise DrawError(f"motion: unknown kind {brief(kind)} (expected "
+                        f"{', '.join(MOTION_KINDS)})")
+    try:
+        k = int(str(index).strip())
+    except ValueError:
+        raise DrawError(f"motion: the index must be a whole number, got {brief(index)}") from None
+    count = _motion_count(kind, analysis)
+    if not 1 <= k <= count:
+        if count == 0:
+            raise DrawError(f"motion: this system has no {kind} motion here "
+                            f"({MOTION_KINDS[kind]} empty)")
+        raise DrawError(f"motion: there is no {kind} motion {k}: this system has {count} "
+                        f"(the columns of {MOTION_KINDS[kind]})")
+    return kind, k
+
+
+def _motion_count(kind: str, a: Analysis) -> int:
+    return motion_counts(a.numbers.as_dict())[kind]
+
+
+def motion_counts(numbers: Mapping[str, int]) -> dict[str, int]:
+    """How many motions of each kind (:data:`MOTION_KINDS`) numbers give: the columns
+    of ``C12, C22`` (``Nc - Ni``), ``C11`` (``Ni``) and ``C23`` (``Nr``).
+
+    Example
+    -------
+    >>> motion_counts({"Nc": 3, "Ni": 1, "Nr": 0})
+    {'coordinated': 2, 'indeterminate': 1, 'redundant': 0}
+    """
+    return {"coordinated": numbers["Nc"] - numbers["Ni"], "indeterminate": numbers["Ni"],
+            "redundant": numbers["Nr"]}
+
+
+def gained_motion(here: Mapping[str, int], generic: Mapping[str, int]
+                  ) -> tuple[str, int] | None:
+    """A motion a configuration has that the generic one has not: the kind whose count
+    grows (indeterminate first, then redundant, then coordinated) and its last column
+    (``k`` from 1, as :func:`draw_system` takes it); None when no count grows.
+
+    Which column is new is not defined (only the count is): the last one is drawn;
+    any motion of that kind beyond the generic count shows what is gained.
+
+    Example
+    -------
+    >>> generic = {"Nc": 2, "Ni": 1, "Nr": 0}
+    >>> gained_motion({"Nc": 3, "Ni": 3, "Nr": 0}, generic)
+    ('indeterminate', 3)
+    >>> gained_motion({"Nc": 3, "Ni": 1, "Nr": 0}, generic)
+    ('coordinated', 2)
+    >>> gained_motion(generic, generic) is None
+    True
+    """
+    if not all(isinstance(n.get(k), int) for n in (here, generic) for k in ("Nc", "Ni", "Nr")):
+        return None
+    now, before = motion_counts(here), motion_counts(generic)
+    for kind in ("indeterminate", "redundant", "coordinated"):
+        if now[kind] > before[kind]:
+            return kind, now[kind]
+    return None
+
+
+@dataclass(frozen=True)
+class _AtIrrational:
+    """What a picture needs at a configuration with irrational tangents: the exact
+    analysis there (its numbers), the geometry with those joints symbolic, and for
+    each of their ``tan(q/2)`` a rational within ``1e-30`` to draw it at."""
+
+    model: Model
+    kinematics: Any
+    configuration: Configuration
+    exact: IrrationalAnalysis
+    near: dict[str, sp.Rational]
+
+    @property
+    def numbers(self) -> Numbers:
+        return self.exact.numbers
+
+
+def _near(value: sp.Expr) -> sp.Rational:
+    """A rational within ``1e-30`` of a real algebraic number (for drawing only)."""
+    return sp.Rational(sp.N(value, 45))
+
+
+def _at_irrational(model: Model, at: str | Mapping) -> _AtIrrational | None:
+    """The picture's data at ``at`` when some angle there has an irrational (but
+    algebraic) ``tan(q/2)``; None when every value is rational."""
+    rational, irrational = irrational_values(model, at)
+    if not irrational:
+        return None
+    exact = analyze_irrational(model, at)
+    config = Configuration.parse(model, dict(rational), free=list(irrational))
+    return _AtIrrational(model, kinematics.build(model, config), config, exact,
+                         {tangent_name(n): _near(v) for n, v in irrational.items()})
+
+
+def _analysis(source: Any, at: str | Mapping | None) -> Analysis | _AtIrrational:
+    if isinstance(source, Analysis):
+        if at is not None:
+            raise DrawError("at: this analysis already has its configuration; pass the "
+                            "system (or analyze it at the configuration) instead")
+        return source
+    if isinstance(source, IrrationalAnalysis):
+        if at is not None or source.model is None:
+            raise DrawError("at: pass the system and the configuration to draw an "
+                            "analysis at irrational angles")
+        model, at = source.model, dict(source.at)
+    elif isinstance(source, Model) or hasattr(source, "model"):
+        model = model_of(source)
+    else:
+        model = load_model(source)
+    try:
+        config = Configuration.parse(model, at)
+    except ConfigurationError:
+        there = _at_irrational(model, at) if at is not None else None
+        if there is None:
+            raise
+        return there
+    return analyze(model, config)
+
