@@ -23,7 +23,7 @@ from typing import Any
 
 import sympy as sp
 
-from coopkin_sym.errors import UrdfError
+from coopkin_sym.errors import MjcfError, UrdfError
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import CONVENTIONS, DHRow, dh_joints
@@ -44,6 +44,7 @@ from coopkin_sym.model.entries import (
     _validate,
     _vector,
 )
+from coopkin_sym.model.mjcf import read_mjcf
 from coopkin_sym.model.structure import JOINT_TYPES, Arm, Joint
 from coopkin_sym.model.urdf import (
     DEFAULT_BOUND,
@@ -117,11 +118,12 @@ def _read_arm(i: int, raw_arm: object, parameters: dict[str, sp.Symbol], names: 
     duplicate = arm.name in names.where
     if not names.add(arm.name, f"{apath}.name", symbol=False) and not duplicate:
         arm_joints.setdefault(arm.name, None)   # contacts cannot name it
-    if arm_bad & _ARM_SHAPE or (arm.urdf is not None and arm_bad & _URDF_CHOICE):
+    robot_file = arm.urdf is not None or arm.mjcf is not None
+    if arm_bad & _ARM_SHAPE or (robot_file and arm_bad & _URDF_CHOICE):
         # what the arm is made of could not be read: it has problems, not more
         arm_joints.setdefault(arm.name, None)
         return
-    if arm.urdf is not None:
+    if robot_file:
         built = _urdf_arm(arm, apath, parameters, names, problems, read.joint_paths,
                           source, read.snapped, read.notes)
         arm_joints.setdefault(arm.name, (i, len(built.joints)) if built else None)
@@ -254,12 +256,16 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
               problems: list[str], joint_paths: dict[str, str], source: str | None,
               snapped: list[Snapped],
               notes: tuple[list[Renamed], list[IgnoredJoint]]) -> Arm | None:
-    """An arm read from a URDF file (relative paths: from the model file's folder).
-    Joint names that are not identifiers, are reserved or are parameters, and link
-    names that ``ARM/LINK`` cannot write, get safe names
+    """An arm read from a URDF file, or an MJCF one (``mjcf:``, the same keys; its
+    bodies are the links), relative paths from the model file's folder. Joint names
+    that are not identifiers, are reserved or are parameters, and link names that
+    ``ARM/LINK`` cannot write, get safe names
     (:func:`~coopkin_sym.model.urdf.variable_names`), listed in ``notes`` with the
     joints off the chain that were ignored."""
     before = len(problems)
+    kind = "urdf" if arm.mjcf is None else "mjcf"
+    if arm.urdf is not None and arm.mjcf is not None:
+        problems.append(f"{path}: an arm is read from one robot file: urdf or mjcf")
     for key in ("joints", "dh", "convention"):
         if getattr(arm, key) is not None:
             problems.append(f"{path}.{key}: an arm read from a URDF file has no {key}")
@@ -280,13 +286,13 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
                         f"(letters, digits and underscores, not starting with a digit)")
     if len(problems) > before or base is None:
         return None
-    where = Path(arm.urdf)
+    where = Path(getattr(arm, kind))
     if not where.is_absolute():
         where = (Path(source).parent if source else Path.cwd()) / where
     try:
-        read = read_urdf(where, arm.tip, base, bound)
-    except UrdfError as exc:
-        problems.append(f"{path}.urdf: {exc}")
+        read = (read_urdf if kind == "urdf" else read_mjcf)(where, arm.tip, base, bound)
+    except (UrdfError, MjcfError) as exc:
+        problems.append(f"{path}.{kind}: {exc}")
         return None
     label = f"{path} ({where.name})"
     safe = variable_names([j.name for j in read.joints], prefix,
@@ -297,8 +303,8 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
         name = safe[j.name]
         if name != prefix + j.name:
             notes[0].append(Renamed(label, "joint", j.name, name))
-        if names.add(name, f"{path}.urdf: joint {k + 1} ({brief(j.name)})", symbol=True):
-            joint_paths[name] = f"{path}.urdf"
+        if names.add(name, f"{path}.{kind}: joint {k + 1} ({brief(j.name)})", symbol=True):
+            joint_paths[name] = f"{path}.{kind}"
         joints.append(Joint(name, j.type, j.axis, j.point,  # type: ignore[arg-type]
                             not passive & {j.name, name}))
     unknown = sorted(passive - {j.name for j in read.joints} - set(safe.values()))

@@ -69,6 +69,7 @@ class _ArmIn(_Entry):
     convention: StrictStr | None = None
     base: Any = None
     urdf: StrictStr | None = None
+    mjcf: StrictStr | None = None
     tip: StrictStr | None = None
     prefix: StrictStr | None = None
     snap: Any = None
@@ -78,7 +79,7 @@ class _ArmIn(_Entry):
 #: The keys of an arm that say what it is made of (and, for an arm read from a URDF
 #: file, which chain and joint names): when one of them cannot be read, the arm is not
 #: built, and contacts on it are not checked against it.
-_ARM_SHAPE = frozenset({"joints", "dh", "urdf"})
+_ARM_SHAPE = frozenset({"joints", "dh", "urdf", "mjcf"})
 _URDF_CHOICE = frozenset({"tip", "prefix"})
 
 

@@ -98,3 +98,44 @@ def test_what_an_arm_cannot_have_is_refused_with_the_element(text, message):
     with pytest.raises(MjcfError) as info:
         read_mjcf_text(text, "m.xml")
     assert str(info.value).startswith(message), str(info.value)
+
+
+def test_a_model_file_reads_arms_from_mjcf_as_from_urdf(tmp_path):
+    """``mjcf:`` takes the keys of ``urdf:`` (tip, base, prefix, snap, passive): two
+    seven-joint arms holding a box give the same Q read either way."""
+    from coopkin_sym import load
+
+    (tmp_path / "arm7.xml").write_text(PANDA_MJCF)
+    (tmp_path / "arm7.urdf").write_text(PANDA_URDF)
+
+    def model(kind: str) -> str:
+        path = tmp_path / f"cell-{kind}.yaml"
+        path.write_text(f"""name: two arms, {kind}
+arms:
+  - {{name: left, {kind}: arm7.{'xml' if kind == 'mjcf' else 'urdf'}, tip: link7, prefix: l_}}
+  - {{name: right, {kind}: arm7.{'xml' if kind == 'mjcf' else 'urdf'}, tip: link7,
+     prefix: r_, base: {{xyz: [1, 0, 0]}}}}
+contacts:
+  - {{name: c1, link: left/link7, point: [0.088, 0, 0.926], model: complete}}
+  - {{name: c2, link: right/link7, point: [1.088, 0, 0.926], model: hard}}
+""")
+        return str(path)
+
+    at = "l_j2=2*atan(1/3),l_j4=-pi/2,r_j2=2*atan(1/2),r_j4=-pi/2,r_j6=pi/2"
+    from_mjcf, from_urdf = load(model("mjcf")), load(model("urdf"))
+    assert [j.name for j in from_mjcf.model.joints][:3] == ["l_j1", "l_j2", "l_j3"]
+    a, b = from_mjcf.analyze(at), from_urdf.analyze(at)
+    assert a.Q == b.Q and a.numbers == b.numbers
+    assert (a.numbers.Nm, a.numbers.Nr) == (11, 5)      # 14 joints, 9 rows of rank 9
+
+
+def test_an_arm_reads_one_robot_file(tmp_path):
+    from coopkin_sym import load
+    from coopkin_sym.errors import ModelError
+
+    (tmp_path / "a.xml").write_text(PANDA_MJCF)
+    (tmp_path / "m.yaml").write_text("arms:\n  - {name: a, mjcf: a.xml, urdf: a.urdf, "
+                                     "tip: link7}\ncontacts: []\n")
+    with pytest.raises(ModelError, match="arms\\[0\\]: an arm is read from one robot "
+                                         "file: urdf or mjcf"):
+        load(str(tmp_path / "m.yaml"))
