@@ -158,8 +158,8 @@ class System:
         >>> locus = load("paper-case1-hard").locus(certify=True)
         >>> locus.generic["Nm"], [c.condition for c in locus.components][:2]
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
-        >>> locus.completeness()
-        'complete (certified)'
+        >>> locus.certified, locus.completeness()
+        (True, (True, None))
         """
         from coopkin_sym.analysis.locus.search import compute_locus
         from coopkin_sym.analysis.locus.types import ended_at_bound

@@ -98,7 +98,8 @@ RATIONAL_ONLY = frozenset({
     "block_terms", "coordinated_factored", "coordinated_form", "coordinated_terms",
     "decompose_rows", "in_angles", "joint_velocities", "object_velocities",
     "manipulability", "kinematics", "twist_in_base", "classes", "certificate", "check",
-    "where", "ring", "poly", "m", "configuration", "term_budget", "r", "dim"})
+    "where", "ring", "poly", "m", "configuration", "term_budget", "r", "dim",
+    "finite_mobility"})
 
 
 @dataclass(frozen=True)

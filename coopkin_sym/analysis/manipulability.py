@@ -128,7 +128,7 @@ class Manipulability(Displayable):
         {'L': 'positive', 't_q1': 'real', 't_q2': 'real'}
         """
         exprs = [self.length, self.index, *self.form, *self.shape, *self.degeneracy]
-        names = sorted({s for e in exprs for s in sp.sympify(e).free_symbols}, key=str)
+        names = sorted({s for e in exprs for s in getattr(e, "free_symbols", ())}, key=str)
         return {"controlled": list(self.controlled), "length": sp.sstr(self.length),
                 "form": _rows(self.form), "shape": _rows(self.shape),
                 "index": sp.sstr(self.index), "rank": self.rank,

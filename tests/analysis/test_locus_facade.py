@@ -9,6 +9,7 @@ import pytest
 
 import coopkin_sym
 from coopkin_sym.errors import ArgumentError, MissingDependency, NotAvailable, ReportError
+from coopkin_sym.present.certificate import completeness_text
 
 
 @pytest.fixture(scope="module")
@@ -24,7 +25,8 @@ def locus(system):
 def test_locus_with_certify_and_verify(system):
     locus = system.locus(certify=True, verify=True)
     assert locus.certified
-    assert locus.completeness() == "complete (certified)"
+    assert locus.completeness() == (True, None)
+    assert completeness_text(locus) == "complete (certified)"
     assert locus.verification is not None and locus.verification.ok
     assert [c.condition for c in locus.components][:2] == ["q1 = -pi/2, q2 = -pi/2",
                                                           "q1 = -pi/2, q2 = pi/2"]
@@ -43,7 +45,7 @@ def test_certify_later_keeps_the_certificate(system):
     assert not locus.certified
     certificate = locus.certify(timeout=60)
     assert certificate.certified is True
-    assert locus.certified and locus.certificate["certified"] is True
+    assert locus.certified and locus.certificate.certified is True
 
 
 def test_a_locus_read_back_is_given_its_system(system, locus, tmp_path):
