@@ -1644,12 +1644,109 @@ NB05 = [
 ]
 
 
+NB06 = [
+    md("""
+    # Instantaneous or finite? The finite mobility at a singular configuration
+
+    The seven numbers count first-order motions: velocities that keep every contact.
+    At a singular configuration some of them may have no finite motion behind them,
+    and the configuration space may branch. With hard and complete contacts the arms
+    and the object form a linkage, and `finite_mobility` expands its loop closure
+    exactly at a configuration: the local dimension of the configuration space, its
+    branches, and how it was proved (see `docs/finite-mobility.md`).
+    """),
+    code("""
+    import sympy as sp
+    from coopkin_sym import load
+
+    four_bar = load("four-bar")
+    home = four_bar.analyze("q1=0,q2=0").finite_mobility()
+    print(home.dimension, home.first_order, home.classification, home.reason)
+    assert (home.dimension, home.first_order, home.classification) == (1, 1, "regular")
+    """),
+    md("""
+    ## The folded four-bar: two branches
+
+    At `q1 = q2 = -pi/2` the crank, coupler, rocker and ground lie on one line. There
+    are two first-order motions, but the loop closure's reduced equation,
+    $3u_1^2 - 2u_1u_2 - u_2^2 = 0$ in $u_k = \\tan(\\Delta q_k/2)$, is a product of two lines:
+    the parallelogram and the anti-parallelogram motions cross, each of one motion.
+    """),
+    code("""
+    folded = four_bar.analyze("q1=-pi/2,q2=-pi/2")
+    fm = folded.finite_mobility()
+    print(fm.dimension, fm.first_order, fm.classification, fm.equations)
+    for branch in fm.branches:
+        v = sp.Matrix(branch.tangent[0])
+        print("branch tangent (u, qdot):", list(v), " Q v = 0:", (folded.Q * v).is_zero_matrix)
+        assert (folded.Q * v).is_zero_matrix
+    assert (fm.dimension, fm.first_order, fm.classification) == (1, 2, "bifurcation")
+    assert fm.orders == ((1, 2), (2, 1))
+    four_bar.draw("q1=-pi/2,q2=-pi/2", title="four-bar, folded: two branches cross")
+    """),
+    md("""
+    ## Paper case 1 as a linkage
+
+    In the plane, case 1 with hard contacts is a four-bar with all four lengths equal
+    (a rhombus). At $q_1 = q_2 = \\pi/2$ it folds and bifurcates. In space, the object
+    can also spin about the line through the two contacts. With the joints still,
+    those rotations keep both contacts, so they are split off and counted, and the
+    expansion decides the rest: at $q_1 = \\pi/2$, $q_2 = -\\pi/2$ only the spin is a
+    finite motion.
+    """),
+    code("""
+    planar = load("paper-case1-planar").finite_mobility("q1=pi/2,q2=pi/2")
+    spatial = load("paper-case1-hard").finite_mobility("q1=pi/2,q2=-pi/2")
+    print("planar:", planar.dimension, planar.first_order, planar.classification)
+    print("spatial:", spatial.dimension, spatial.first_order, spatial.classification,
+          "spin:", spatial.group_motions)
+    assert (planar.dimension, planar.classification) == (1, "bifurcation")
+    assert (spatial.dimension, spatial.first_order, spatial.classification) == (1, 3, "shaky")
+    """),
+    md("""
+    ## A shaky structure, and what is not decided
+
+    Two bars pinned end to end on the line of their pivots can start to move: the pin
+    moves across the line, one first-order motion. But no finite motion follows. Where
+    the expansion proves nothing (a rank drop whose reduced equations vanish to every
+    order computed), the result says *undecided* and gives the bounds it proves.
+    """),
+    code("""
+    shaky = load("shaky-pinned-bars").finite_mobility("q1=0,q2=0")
+    print(shaky.dimension, shaky.first_order, shaky.classification, shaky.equations)
+    assert (shaky.dimension, shaky.first_order, shaky.classification) == (0, 1, "shaky")
+    open_question = load("paper-case1-complete-hard").finite_mobility("q1=0,q2=pi/2")
+    print(open_question.dimension, open_question.bounds, open_question.reason)
+    assert open_question.dimension is None and open_question.bounds == (0, 1)
+    """),
+    md("""
+    ## Along the locus
+
+    The singularity locus of the four-bar has four isolated configurations. At each
+    witness, the finite mobility says which ones are bifurcations, where the system is
+    shaky, and which are only first-order.
+    """),
+    code("""
+    locus = four_bar.locus()
+    for c in locus.components:
+        at = ",".join(f"{k}={v}" for k, v in c.witness.items())
+        fm = four_bar.finite_mobility(at)
+        print(f"{c.condition:28} Nm {c.numbers['Nm']}: finite {fm.dimension}, "
+              f"{fm.classification}")
+    kinds = sorted(four_bar.finite_mobility(",".join(f"{k}={v}" for k, v in
+                   c.witness.items())).classification for c in locus.components)
+    assert kinds == ["bifurcation", "bifurcation", "shaky", "shaky"], kinds
+    """),
+]
+
+
 NOTEBOOKS = {
     "01_two_one_link_arms.ipynb": NB01,
     "02_two_scara_robots.ipynb": NB02,
     "03_singularity_locus.ipynb": NB03,
     "04_exact_vs_float.ipynb": NB04,
     "05_passive_joints_and_manipulability.ipynb": NB05,
+    "06_finite_mobility.ipynb": NB06,
 }
 
 
