@@ -27,6 +27,9 @@ from coopkin_sym.errors import ArgumentError
 
 #: The components a spatial contact may transmit, linear then angular.
 SPATIAL_COMPONENTS: tuple[str, ...] = ("v_x", "v_y", "v_z", "v.n", "w_x", "w_y", "w_z", "w.n")
+#: The conditions a contact model may put on positions ("" when it puts none: it is not
+#: holonomic); each transmits the components of its rows (see :class:`ContactKind`).
+POSITIONS: tuple[str, ...] = ("", "point", "weld", "face")
 #: The components a planar contact may transmit (the plane is xy).
 PLANAR_COMPONENTS: tuple[str, ...] = ("v_x", "v_y", "v.n", "w_z")
 
@@ -39,7 +42,11 @@ class ContactKind:
     may use; ``spatial`` and ``planar`` the components of the relative twist it
     transmits, in the order of their rows (``planar`` is ``None`` for a model with no
     planar form, ``no_planar`` then says why); ``words`` names it in sentences and
-    tables, ``marker`` (a Matplotlib marker) draws it.
+    tables, ``marker`` (a Matplotlib marker) draws it. ``position`` is the condition
+    it puts on positions, for the finite mobility (:data:`POSITIONS`: ``"point"``, the
+    contact point fixed on both bodies; ``"weld"``, the link welded to the object;
+    ``"face"``, the link's point on a flat face of the object), or ``""`` when it is
+    not holonomic, ``not_holonomic`` then saying why.
 
     Example
     -------
@@ -56,8 +63,14 @@ class ContactKind:
     words: str
     marker: str
     no_planar: str = ""
+    position: str = ""
+    not_holonomic: str = ("its condition bounds velocities, not positions (it is not "
+                          "holonomic)")
 
     def __post_init__(self) -> None:
+        if self.position not in POSITIONS:
+            raise ArgumentError(f"contact model {self.name!r}: position "
+                                f"{self.position!r} (one of {', '.join(map(repr, POSITIONS))})")
         if not self.name or not self.words or not self.marker:
             raise ArgumentError(f"contact model {self.name!r}: a name, words and a "
                                 f"marker are required")
@@ -172,8 +185,12 @@ def listed(names: tuple[str, ...], last: str = "or") -> str:
 
 
 register(ContactKind("complete", (), ("v_x", "v_y", "v_z", "w_x", "w_y", "w_z"),
-                     ("v_x", "v_y", "w_z"), "complete constraint", "s"))
+                     ("v_x", "v_y", "w_z"), "complete constraint", "s", position="weld"))
 register(ContactKind("soft", (), ("v_x", "v_y", "v_z", "w.n"), None, "soft finger", "D",
-                     no_planar="its spin about the normal is out of the plane"))
-register(ContactKind("hard", (), ("v_x", "v_y", "v_z"), ("v_x", "v_y"), "hard finger", "o"))
-register(ContactKind("frictionless", (), ("v.n",), ("v.n",), "frictionless", "^"))
+                     no_planar="its spin about the normal is out of the plane",
+                     not_holonomic="its no-spin condition is not holonomic (it bounds "
+                                   "velocities, not positions)"))
+register(ContactKind("hard", (), ("v_x", "v_y", "v_z"), ("v_x", "v_y"), "hard finger", "o",
+                     position="point"))
+register(ContactKind("frictionless", (), ("v.n",), ("v.n",), "frictionless", "^",
+                     position="face"))

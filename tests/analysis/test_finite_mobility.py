@@ -143,3 +143,13 @@ def test_the_command_says_it_and_refuses_what_it_cannot_expand():
     latex = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=pi/2,q2=pi/2",
                                 "--finite", "--latex"])
     assert "Finite mobility $1$ (first-order motions: $2$): a bifurcation" in latex.stdout
+
+
+def test_the_registry_says_which_contact_models_hold_on_positions():
+    from coopkin_sym.analysis.finite.constraints import holonomic_models
+    from coopkin_sym.model.contacts import REGISTRY
+
+    assert holonomic_models() == ("complete", "hard", "frictionless")
+    assert {k.name: k.position for k in REGISTRY.values()} == {
+        "complete": "weld", "soft": "", "hard": "point", "frictionless": "face"}
+    assert all(k.position or k.not_holonomic for k in REGISTRY.values())

@@ -38,6 +38,7 @@ from coopkin_sym.analysis.finite.forms import diagonal_form, quadratic_matrix, r
 from coopkin_sym.analysis.finite.reduce import Reduced, reduce_map
 from coopkin_sym.analysis.finite.series import SeriesField
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
 
 #: The highest order tried when none is given.
@@ -136,7 +137,7 @@ def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
     ([[0, 0, 0, 1, 0, 0, 0, 0]], [(0, 0, -1, 1, 0, 0, 0, 0)])
     """
     points = cmap.contact_points()
-    if not points or any(m != "hard" for _, m in points):
+    if not points or any(contact_kind(m).position != "point" for _, m in points):
         return [], []
     base = [sp.Rational(str(x)) for x in points[0][0]]
     spread = [[sp.Rational(str(x)) - b for x, b in zip(pt, base, strict=True)]

@@ -41,10 +41,19 @@ from coopkin_sym.analysis.finite.series import SeriesField
 from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.errors import FiniteMobilityError
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.contacts import REGISTRY, contact_kind, listed
 from coopkin_sym.model.model import Model
 
-#: The contact models whose constraints hold on positions (soft is not holonomic).
-HOLONOMIC = ("hard", "complete", "frictionless")
+
+def holonomic_models() -> tuple[str, ...]:
+    """The registered contact models that put a condition on positions.
+
+    Example
+    -------
+    >>> holonomic_models()
+    ('complete', 'hard', 'frictionless')
+    """
+    return tuple(k.name for k in REGISTRY.values() if k.position)
 
 
 def _cross(a, b, f: SeriesField):
@@ -98,12 +107,12 @@ class ConstraintMap:
     def __init__(self, model: Model, config: Configuration,
                  slice_rows: Sequence[Sequence] = ()):
         for i, contact in enumerate(model.contacts):
-            if contact.model not in HOLONOMIC:
+            kind = contact_kind(contact.model)
+            if not kind.position:
                 raise FiniteMobilityError(
-                    f"contact {i + 1} is {contact.model}: its no-spin condition is not "
-                    "holonomic (it bounds velocities, not positions), so the system has "
-                    "no configuration space to expand; finite mobility is defined for "
-                    "hard, complete and frictionless contacts")
+                    f"contact {i + 1} is {contact.model}: {kind.not_holonomic}, so the "
+                    f"system has no configuration space to expand; finite mobility is "
+                    f"defined for {listed(holonomic_models(), 'and')} contacts")
         unset = [p.name for p in model.parameters if p.name not in config.parameters]
         if unset:
             raise FiniteMobilityError(f"finite mobility needs a value for {', '.join(unset)}"
@@ -119,7 +128,8 @@ class ConstraintMap:
         self.names = obj + tuple(
             ("u_" if joints[k]["kind"] == "revolute" else "d_") + self.joint_names[k]
             for k in self.moving)
-        self.frictionless = any(c.model == "frictionless" for c in model.contacts)
+        self.positions = [contact_kind(c.model).position for c in model.contacts]
+        self.frictionless = "face" in self.positions
         #: Linear forms in the coordinates appended as rows (a slice: see
         #: :func:`stabilizer`).
         self.slice_rows = [[flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))
@@ -162,9 +172,9 @@ class ConstraintMap:
         poses, _, _ = self.chain.poses(f, value)
         lin_rows, ang_rows = [], []
         keep = (0, 1) if planar else (0, 1, 2)
-        for (arm, link, _, _, model), (home_pt, home_nm) in zip(
+        for (arm, link, _, _, _), (home_pt, home_nm), position in zip(
                 self.chain.data["contacts"], self.chain._bound(RationalField())[1],
-                strict=True):
+                self.positions, strict=True):
             if arm is None:
                 c = [f.ctx.constant(x) for x in home_pt]
                 c0 = list(home_pt)
@@ -177,14 +187,14 @@ class ConstraintMap:
                       for i in range(3)]
             local = _apply(rt, [f.red(c[i] - p[i]) for i in range(3)], f)
             gap = [f.red(local[i] - c0[i]) for i in range(3)]
-            if model == "frictionless":
+            if position == "face":
                 rot0 = (self._home_poses[arm][link][0] if arm is not None else
                         [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
                 n0 = [sum((rot0[i][j] * home_nm[j] for j in range(3)), 0) for i in range(3)]
                 lin_rows.append(f.red(sum((n0[i] * gap[i] for i in keep), zero)))
             else:
                 lin_rows += [gap[i] for i in keep]
-            if model == "complete":
+            if position == "weld":
                 if arm is None:
                     rel = rt
                 else:
