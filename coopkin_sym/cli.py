@@ -409,7 +409,7 @@ def _locus_report(model: str, o: LocusOptions, started: float):
         pairs = parse_pairs(o.pair, system) if o.pair else None
         deliver((system, pairs))
         return _locus_work(system, o.at, o.max_depth, o.timeout, o.free_joints,
-                           o.pi_size, o.certify, o.certify_timeout, o.verify)
+                           o.pi_size, o.certify, o.certify_timeout, o.verify, o.finite)
 
     loaded: list = []
     # the search has a share of the bound, the report the rest: its text first, then
@@ -481,7 +481,7 @@ def _ended_locus(exc: TimeLimitReached, loaded: list):
 
 
 def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
-                certify_timeout, verify):
+                certify_timeout, verify, finite=False):
     """The computation of ``coopkin locus`` (run under its bound): the locus, its
     certificate and verification when asked, and the
     :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
@@ -496,6 +496,10 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     if cut is not None:      # the bound has passed: nothing more to run
         return result, checked, checked_locked, cut
     try:
+        if finite:
+            from coopkin_sym.exact.bounded import report
+            report("the finite mobility at the witnesses")
+            system.finite_locus(result)
         if certify:
             from coopkin_sym.analysis.locus.certify import certify_locus
             result.certificate = certify_locus(system, result, budget=certify_timeout)

@@ -113,6 +113,11 @@ class LocusOptions:
     certify_timeout: Annotated[float, typer.Option(
         "--certify-timeout", min=0, help="Wall-clock bound in seconds for the whole "
                                          "certificate (each test at most 30 s).")] = 300.0
+    finite: Annotated[bool, typer.Option(
+        "--finite", help="Also the finite mobility at each component's rational witness: "
+                         "which singular families are bifurcations, which are shaky, "
+                         "which only change the first-order numbers (hard, complete and "
+                         "frictionless contacts).")] = False
 
     @property
     def free_joints(self) -> list[str] | None:

@@ -206,6 +206,24 @@ class System:
         from coopkin_sym.analysis.locus.certify import certify_locus
         return certify_locus(self, locus, timeout=timeout, budget=budget)
 
+    def finite_locus(self, locus: Locus, *, order: int | None = None) -> int:
+        """The finite mobility at every rational witness of ``locus`` (a locus of this
+        system), kept in each component's ``finite`` (see
+        :func:`coopkin_sym.analysis.finite.on_locus.finite_at_witnesses`); how many
+        were computed. :meth:`Locus.finite_mobility
+        <coopkin_sym.analysis.locus.facade.LocusMethods.finite_mobility>` calls it.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> system = load("shaky-pinned-bars")
+        >>> locus = system.locus()
+        >>> system.finite_locus(locus), locus.components[0].finite["classification"]
+        (2, 'shaky')
+        """
+        from coopkin_sym.analysis.finite.on_locus import finite_at_witnesses
+        return finite_at_witnesses(locus, self.model, order)
+
     def verify_locus(self, locus: Locus, *, max_points: int = 50_000, lines: int = 12,
                      seed: int = 0, timeout: float | None = None) -> Verification:
         """An independent check of ``locus`` (see

@@ -25,8 +25,8 @@ _CLASS_WORDS = {
     "cone": "a singular point of the configuration space: its motions form a cone "
             "(one branch of {dim} motion{s}, not smooth here)",
     "shaky": "shaky: first-order motions exist, but no finite motion follows them",
-    "shaky_partly": "shaky: of the first-order motions only {dim} extend to finite "
-                    "motions, no finite motion follows the others",
+    "shaky_partly": "shaky: only {dim} of the first-order motions are finite; no "
+                    "finite motion follows the others",
     "undecided": "undecided at order {order}: the expansion proves only "
                  "{lower} <= finite mobility <= {upper}",
 }
@@ -56,13 +56,34 @@ _ASSUMPTION_WORDS = {
 
 def classification_text(fm: FiniteMobility) -> str:
     """The classification in words."""
-    dim = fm.branches[0].dimension if fm.branches else fm.dimension
-    key = fm.classification
-    if key == "shaky" and fm.dimension:
-        key = "shaky_partly"
-    return _CLASS_WORDS[key].format(
-        branches=len(fm.branches), dim=dim, s="" if dim == 1 else "s", order=fm.order,
-        lower=fm.bounds[0], upper=fm.bounds[1])
+    return _classification_words(fm.classification, fm.dimension,
+                                 [b.dimension for b in fm.branches], fm.order, fm.bounds)
+
+
+def _classification_words(kind: str, dimension: int | None, branches: list[int],
+                          order: int, bounds) -> str:
+    dim = branches[0] if branches else dimension
+    if kind == "shaky" and dimension:
+        kind = "shaky_partly"
+    return _CLASS_WORDS[kind].format(branches=len(branches), dim=dim,
+                                     s="" if dim == 1 else "s", order=order,
+                                     lower=bounds[0], upper=bounds[1])
+
+
+def finite_summary(data: dict) -> str:
+    """One line for a component's finite mobility (the plain data a locus keeps).
+
+    Example
+    -------
+    >>> finite_summary({"dimension": 1, "bounds": [1, 1], "first_order": 2,
+    ...                 "classification": "bifurcation", "reason": "cone_regular_points",
+    ...                 "order": 2, "branches": [1, 1]})
+    '1 (first-order motions: 2): a bifurcation: 2 branches of 1 motion cross here'
+    """
+    value = "undecided" if data["dimension"] is None else str(data["dimension"])
+    words = _classification_words(data["classification"], data["dimension"],
+                                  list(data["branches"]), data["order"], data["bounds"])
+    return f"{value} (first-order motions: {data['first_order']}): {words}"
 
 
 def _vector(v) -> str:

@@ -28,7 +28,7 @@ import dataclasses
 import math
 import re
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import (
     BaseModel,
@@ -93,6 +93,19 @@ class _AlgebraicIn(_In):
     root: StrictStr = ""
     interval: list[StrictStr] = Field(default_factory=list)
     approx: Names = Field(default_factory=dict)
+
+
+class _FiniteIn(_In):
+    """The finite mobility at a component's witness (``coopkin locus --finite``)."""
+
+    dimension: StrictInt | None
+    bounds: tuple[StrictInt, StrictInt]
+    first_order: StrictInt
+    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cone",
+                            "shaky", "undecided"]
+    reason: StrictStr
+    order: StrictInt
+    branches: list[StrictInt]
 
 
 class _CheckIn(_In):
@@ -176,7 +189,7 @@ _COMPONENT_TYPES: dict[str, Any] = {
     "decided": RemarkIn, "witness_checked": StrictBool,
     "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
     "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
-    "outside": list[StrictStr],
+    "outside": list[StrictStr], "finite": _FiniteIn | None,
 }
 _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
@@ -567,6 +580,8 @@ def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
                        exact=dict(f.exact), float=dict(f.float)) for f in c.float_checks]
         if c.algebraic_witness is not None:
             values["algebraic_witness"] = c.algebraic_witness.model_dump(exclude_unset=True)
+        if c.finite is not None:
+            values["finite"] = dict(c.finite.model_dump(), bounds=list(c.finite.bounds))
         comps.append(Component(**values))
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps

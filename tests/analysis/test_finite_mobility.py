@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 import sympy as sp
 
@@ -153,3 +155,31 @@ def test_the_registry_says_which_contact_models_hold_on_positions():
     assert {k.name: k.position for k in REGISTRY.values()} == {
         "complete": "weld", "soft": "", "hard": "point", "frictionless": "face"}
     assert all(k.position or k.not_holonomic for k in REGISTRY.values())
+
+
+def test_the_locus_keeps_the_finite_mobility_at_its_witnesses(tmp_path):
+    """``Locus.finite_mobility()`` (``coopkin locus --finite``): the classification at
+    every witness as data, written in the report and its JSON, read back equal, and
+    valid for the locus schema."""
+    import json
+
+    from coopkin_sym.present.report import locus_from_json, render_json, render_markdown
+
+    system = load("four-bar")
+    locus = system.locus()
+    assert locus.finite_mobility() == 4
+    data = [c.finite for c in locus.components]
+    assert [d["classification"] for d in data] == ["bifurcation", "shaky", "shaky",
+                                                   "bifurcation"]
+    assert [(d["dimension"], d["first_order"], d["branches"]) for d in data] == [
+        (1, 2, [1, 1]), (1, 2, [1]), (0, 2, []), (1, 2, [1, 1])]
+    text = render_json(locus)
+    back = locus_from_json(text)
+    assert [c.finite for c in back.components] == data
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = json.loads((Path(__file__).resolve().parents[2] / "docs" /
+                         "locus.schema.json").read_text())
+    jsonschema.Draft202012Validator(schema).validate(json.loads(text))
+    assert ("**Finite mobility at the witness:** 0 (first-order motions: 2): shaky: "
+            "first-order motions exist, but no finite motion follows them"
+            ) in render_markdown(locus)

@@ -77,6 +77,20 @@ class LocusMethods:
         locked = getattr(self.locked, "_system", None)
         return locked if locked is not None else system.with_actuators_locked()
 
+    def finite_mobility(self, order: int | None = None, *, system: Any = None) -> int:
+        """The finite mobility at every rational witness (which singular families are
+        bifurcations, shaky, or only first-order), kept in each component's ``finite``;
+        how many were computed (see :meth:`coopkin_sym.system.System.finite_locus`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("four-bar").locus()
+        >>> locus.finite_mobility(), locus.components[0].finite["branches"]
+        (4, [1, 1])
+        """
+        return self._the_system(system, "finite").finite_locus(self, order=order)
+
     def certify(self, timeout: float = 30.0, *, budget: float | None = 300.0,
                 system: Any = None) -> Certificate:
         """Prove the locus complete by Gröbner bases (see

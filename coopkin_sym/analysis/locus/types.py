@@ -149,6 +149,11 @@ class Component(Displayable):
     real_points
         ``"witness"`` (real, a witness is given) or ``"undecided"`` (no real witness
         found and no proof that there is none: never reported as real).
+    finite
+        The finite mobility at the witness, as plain data (dimension, bounds,
+        first_order, classification, reason, order, branches: see
+        :func:`coopkin_sym.analysis.finite.on_locus.finite_at_witnesses`), when it was
+        asked for; None otherwise.
     algebraic_witness
         When no rational witness exists: a real point with algebraic coordinates,
         ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
@@ -182,6 +187,7 @@ class Component(Displayable):
     algebraic_witness: dict | None = None
     real_points: str = ""
     outside: list[str] = field(default_factory=list)
+    finite: dict | None = None
     shown: Any = field(default=None, repr=False, compare=False)
     polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
                                                       compare=False)

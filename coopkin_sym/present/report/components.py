@@ -18,6 +18,7 @@ from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.present.classes import class_changes_text
+from coopkin_sym.present.finite import finite_summary
 from coopkin_sym.present.remarks import remark_text
 from coopkin_sym.present.report.blocks import Bullets, Heading, Paragraph, Span, Table, _t
 from coopkin_sym.present.report.conditions import _short_condition
@@ -148,6 +149,9 @@ def _component_blocks(locus: Locus, k: int, c: Component) -> list:
                       f"({class_changes_text(c.numbers, locus.generic)})")])
     if c.drops:
         items.append([("strong", "Rank drops in:"), _t(" "), _t(", ".join(c.drops))])
+    if c.finite is not None:
+        items.append([("strong", "Finite mobility at the witness:"), _t(" "),
+                      _t(finite_summary(c.finite))])
     if c.witness:
         checked = ("; a direct exact analysis there gives the same numbers"
                    if c.witness_checked else "; not checked by a direct analysis")
