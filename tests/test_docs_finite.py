@@ -23,10 +23,13 @@ def _commands() -> list[str]:
 
 
 @pytest.mark.parametrize("command", _commands())
-def test_every_command_of_the_page_runs(command):
+def test_every_command_of_the_page_runs(command, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(app, shlex.split(command)[1:])
     assert result.exit_code == 0, result.output
-    assert "inite mobility" in result.stdout or '"finite": {' in result.stdout
+    written = [p.read_text() for p in tmp_path.glob("*.md")]
+    assert ("inite mobility" in result.stdout or '"finite": {' in result.stdout
+            or any("Finite mobility at the witness" in text for text in written))
 
 
 def _rows() -> list[list[str]]:
