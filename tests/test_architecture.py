@@ -238,8 +238,6 @@ MAX_PUBLIC_PARAMETERS = 8
 #: shrinks (a test fails when an entry is no longer needed).
 OVER_SIZE = {
     "coopkin_sym/analysis/locus/verify.py",
-    "coopkin_sym/analysis/locus/verify.py:__init__",
-    "coopkin_sym/analysis/locus/verify.py:verify_locus",
 }
 
 

@@ -481,18 +481,7 @@ class _Checker:
     def __init__(self, model: Model, locus: Locus, at):
         self.model = model
         self.locus = locus
-        at_text = locus.fixed if at is None else at
-        try:
-            items = split_assignments(at_text, "fixed") if at_text else []
-            fixed_cfg = Configuration.parse(model, dict(items))
-        except ConfigurationError as exc:
-            raise VerifyError(f"the locus's fixed values: {exc}") from None
-        self.fixed_items = [(str(k), str(v)) for k, v in items]
-        params = dict(fixed_cfg.parameters)
-        self.notes: list[Remark] = []
-        if locus.system and locus.system != model.name:
-            self.notes.append(Remark.of("verify_other_system", locus_system=locus.system,
-                                        model_system=model.name))
+        fixed_cfg, params = self._read_fixed(model, locus, at)
         variables = list(locus.variables)
         for p in model.parameters:
             if p.name not in params and p.name not in variables:
@@ -509,6 +498,44 @@ class _Checker:
                 f"the locus's variables {variables} do not match the model at its fixed "
                 f"values (free variables there: {list(kin.ring.names)})")
         self.kin = kin
+        self._read_free(model, variables)
+        self.r = len(model.joints)
+        self.m = len(kin.Q)
+        self._number_cache: dict[tuple, dict[str, int]] = {}
+        rows = [kin.ring.clear_row(row) for row in kin.Q]
+        self.dim = model.object_dim
+        n = self.dim + self.r
+        self.generic_ranks = ranks_of_q(PolyMatrix(rows, n, context=kin.ring.zctx),
+                                        dim=self.dim)
+        self.generic = self.numbers(self.generic_ranks)
+        self.equations = _Equations(model, self.free, self._fixed_values(params))
+        self._read_components(locus)
+        self._memo: list[dict] = [{} for _ in self.components]
+        self.flats = [f for f in (self._flat(eqs) for eqs, empty, _, _ in self.components
+                                  if not empty)
+                      if f and len(f) < len(self.free)
+                      and all(x > 0 for i, x in f.items() if self.free[i].kind == "parameter")]
+        self._compiled: dict[tuple, object] = {}
+
+    def _read_fixed(self, model: Model, locus: Locus, at):
+        """The locus's fixed values as a configuration and its parameters; sets
+        ``fixed_items`` and the first notes."""
+        at_text = locus.fixed if at is None else at
+        try:
+            items = split_assignments(at_text, "fixed") if at_text else []
+            fixed_cfg = Configuration.parse(model, dict(items))
+        except ConfigurationError as exc:
+            raise VerifyError(f"the locus's fixed values: {exc}") from None
+        self.fixed_items = [(str(k), str(v)) for k, v in items]
+        params = dict(fixed_cfg.parameters)
+        self.notes: list[Remark] = []
+        if locus.system and locus.system != model.name:
+            self.notes.append(Remark.of("verify_other_system", locus_system=locus.system,
+                                        model_system=model.name))
+        return fixed_cfg, params
+
+    def _read_free(self, model: Model, variables: list[str]) -> None:
+        """The free variables (``free``) and the free joints (``joints``)."""
         kinds = {j.name: j.type for j in model.joints}
         self.free: list[_Var] = []
         for name in variables:
@@ -519,15 +546,9 @@ class _Checker:
             else:
                 self.free.append(_Var(name, "parameter", name))
         self.joints = [v.source for v in self.free if v.kind != "parameter"]
-        self.r = len(model.joints)
-        self.m = len(kin.Q)
-        self._number_cache: dict[tuple, dict[str, int]] = {}
-        rows = [kin.ring.clear_row(row) for row in kin.Q]
-        self.dim = model.object_dim
-        n = self.dim + self.r
-        self.generic_ranks = ranks_of_q(PolyMatrix(rows, n, context=kin.ring.zctx),
-                                        dim=self.dim)
-        self.generic = self.numbers(self.generic_ranks)
+
+    def _fixed_values(self, params) -> dict[str, object]:
+        """The fixed joints and parameters: ``tan(q/2)`` (None for q = pi) or a value."""
         fixed_values: dict[str, object] = {}
         for j, (c, s) in self.config.revolute.items():
             fixed_values[j] = None if c == -1 else _frac(s) / (1 + _frac(c))
@@ -537,7 +558,10 @@ class _Checker:
             fixed_values[j] = _frac(d)
         for p, value in params.items():
             fixed_values[p] = _frac(value)
-        self.equations = _Equations(model, self.free, fixed_values)
+        return fixed_values
+
+    def _read_components(self, locus: Locus) -> None:
+        """Each component's equations, ``outside`` polynomials and claimed numbers."""
         self.components = []
         self.outside: list[list] = []               # each component's denominators
         self.claims: list[dict[str, int]] = []      # each component's seven numbers
@@ -571,12 +595,6 @@ class _Checker:
             relevant = sorted({self.equations.role[k][0] for _, used in eqs + outs
                                for k in used})
             self.components.append((eqs, empty, relevant, self.ranks_of(comp.numbers)))
-        self._memo: list[dict] = [{} for _ in self.components]
-        self.flats = [f for f in (self._flat(eqs) for eqs, empty, _, _ in self.components
-                                  if not empty)
-                      if f and len(f) < len(self.free)
-                      and all(x > 0 for i, x in f.items() if self.free[i].kind == "parameter")]
-        self._compiled: dict[tuple, object] = {}
 
     def _flat(self, eqs) -> dict[int, object] | None:
         """``{free index: value}`` when every equation fixes one variable at a
@@ -725,21 +743,9 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
     checker = _Checker(model, locus, at)
     requested = _value_sets(checker.free, values)
     used, reduced = _fit(requested, max_points)
-    result = Verification(
-        system=locus.system, variables=list(locus.variables),
-        fixed=",".join(f"{k}={v}" for k, v in checker.fixed_items),
-        generic=checker.generic,
-        values={v.name: [_tan_text(x) if v.kind == "revolute" else str(x) for x in xs]
-                for v, xs in zip(checker.free, used, strict=True)},
-        reduced=reduced, max_points=max_points, seed=seed,
-        components=len(locus.components), notes=list(checker.notes))
+    result = _new_result(checker, locus, used, reduced, max_points, seed)
     state = _State(checker, result)
-    if {k: locus.generic.get(k) for k in NUMBER_NAMES} != checker.generic:
-        result.unsound.append(ComponentIssue(-1, "generic", None, dict(locus.generic),
-                                             f"exact generic numbers: {checker.generic}"))
-    for i, claim in enumerate(checker.claims):
-        if claim == checker.generic:
-            state.issue(i, "generic-numbers", None, claim)
+    _check_generic(checker, state, locus)
     report("the witnesses")
     _check_witnesses(checker, state)
     report("the grid", 0.0)
@@ -755,6 +761,30 @@ def verify_locus(system, locus: Locus, *, at: str | Mapping | None = None,
             result.unchecked.append(i)
     result.seconds = round(time.monotonic() - started, 3)
     return result
+
+
+def _new_result(checker: _Checker, locus: Locus, used: list[list], reduced: bool,
+                max_points: int, seed: int) -> Verification:
+    """The result before any check: the locus, the value sets used, the notes."""
+    return Verification(
+        system=locus.system, variables=list(locus.variables),
+        fixed=",".join(f"{k}={v}" for k, v in checker.fixed_items),
+        generic=checker.generic,
+        values={v.name: [_tan_text(x) if v.kind == "revolute" else str(x) for x in xs]
+                for v, xs in zip(checker.free, used, strict=True)},
+        reduced=reduced, max_points=max_points, seed=seed,
+        components=len(locus.components), notes=list(checker.notes))
+
+
+def _check_generic(checker: _Checker, state: _State, locus: Locus) -> None:
+    """The locus's generic numbers, and no component claiming them."""
+    result = state.result
+    if {k: locus.generic.get(k) for k in NUMBER_NAMES} != checker.generic:
+        result.unsound.append(ComponentIssue(-1, "generic", None, dict(locus.generic),
+                                             f"exact generic numbers: {checker.generic}"))
+    for i, claim in enumerate(checker.claims):
+        if claim == checker.generic:
+            state.issue(i, "generic-numbers", None, claim)
 
 
 class _State:
