@@ -1657,6 +1657,7 @@ NB06 = [
     """),
     code("""
     import sympy as sp
+
     from coopkin_sym import load
 
     four_bar = load("four-bar")
