@@ -227,7 +227,8 @@ def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> str:
 
         def near(k: str, a: Fraction = a) -> float:  # float-ok: display only
             n = variables[k]
-            t = float(a if n == x and n not in values else value_near(values[n], a))
+            t = float(a if n == x and n not in values  # float-ok: display only
+                      else value_near(values[n], a))
             return 2 * atan(t) if kinds[k] == "revolute" else t  # float-ok
 
         parts.append(", ".join(readable(k, v, kinds[k], near) for k, v in text.items()))
