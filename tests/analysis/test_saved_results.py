@@ -91,9 +91,13 @@ def test_symbolic_and_parametric_ellipsoids_round_trip():
         round_trip_manipulability(m)
 
 
-@settings(max_examples=15, deadline=None, suppress_health_check=list(HealthCheck))
+@settings(max_examples=15, deadline=None, derandomize=True,
+          suppress_health_check=list(HealthCheck))
 @given(random_systems(max_arms=2, max_joints=2, max_contacts=2), st.integers(2, 4))
 def test_random_systems_round_trip(model, count):
+    """Random systems (the same ones at every run), their manipulability at home with
+    every length 1: a symbolic ellipsoid of a random system can need more memory than
+    the machine has (the symbolic round trip has its own test above)."""
     try:
         system = coopkin_sym.load(model)
     except ModelError:
@@ -102,7 +106,8 @@ def test_random_systems_round_trip(model, count):
                     else f"{j}=-1..1:{count}"
                     for k, j in enumerate(system.joint_names[:2]))
     round_trip_sweep(system.sweep(grid(system, spec)))
-    round_trip_manipulability(system.analyze().manipulability())
+    lengths = ",".join(f"{p.name}=1" for p in system.model.parameters) or None
+    round_trip_manipulability(system.analyze(lengths).manipulability())
 
 
 @pytest.mark.parametrize("seed", range(4))
