@@ -521,7 +521,8 @@ def _time_cut(locus, timeout: float | None):
     the search; None if it was not cut."""
     steps = {"time_depth": lambda r: f"the search at depth {r['depth']}",
              "time_component": lambda r: f"a component at depth {r['depth']}",
-             "time_pi_set": lambda r: "the slices at q = pi"}
+             "time_pi_set": lambda r: "the slices at q = pi",
+             "time_pi_sets_left": lambda r: "the slices at q = pi"}
     for part in (locus, locus.locked):
         for item in (part.unexplored if part is not None else ()):
             kind = getattr(item, "kind", None)

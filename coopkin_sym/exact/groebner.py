@@ -62,6 +62,7 @@ False
 from __future__ import annotations
 
 import multiprocessing
+import os
 import random
 import time
 from collections.abc import Callable, Sequence
@@ -660,7 +661,8 @@ class _Worker:
     def _start(cls) -> None:
         ctx = multiprocessing.get_context("fork")
         cls._conn, child_end = ctx.Pipe()
-        cls._proc = ctx.Process(target=_serve, args=(child_end,), daemon=True)
+        cls._proc = ctx.Process(target=_serve, args=(child_end, cls._conn, os.getpid()),
+                                daemon=True)
         cls._proc.start()
         child_end.close()
 
@@ -674,11 +676,18 @@ class _Worker:
         cls._proc = cls._conn = None
 
 
-def _serve(conn) -> None:  # pragma: no cover - runs in the child
+def _serve(conn, parent_end, parent: int) -> None:  # pragma: no cover - in the child
+    """Answer the parent's requests until it closes its end or ends. The child closes
+    the parent's end it inherited (else that end would never close), and stops when the
+    parent is gone, so that it never outlives it holding the parent's files."""
+    parent_end.close()
     children: dict[str, Callable] = {f.__name__: f for f in (_flint_unit_child,
                                                             _sympy_unit_child)}
     while True:
         try:
+            while not conn.poll(1.0):
+                if os.getppid() != parent:
+                    return
             child, polys, n = conn.recv()
         except EOFError:
             return

@@ -113,6 +113,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "time_component": lambda f: (f"component {f['polynomial']} = 0 (depth {f['depth']}): "
                                  "not decided, time bound reached"),
     "time_pi_set": lambda f: f"{_at_pi(f['joints'])}: not searched, time bound reached",
+    "time_pi_sets_left": lambda f: (
+        f"{_at_pi(f['joints'])} and {f['left']} more sets of joints at q = pi: not "
+        f"searched, time bound reached"),
     "time_whole_run": lambda f: (
         f"{TimeLimitReached(f['seconds'], f['where'])} (the search's wall-clock bound; "
         "coopkin locus --timeout gives it four fifths of its bound): the rest of the "

@@ -37,7 +37,7 @@ def _start(name: str, max_depth: int = 0):
 def test_charts_list_every_joint_set_at_pi_and_the_rows_of_q():
     ctx, rows, _ = _start("paper-case1-hard")
     assert revolute_joints(ctx) == ["q1", "q2"]
-    assert pi_subsets(revolute_joints(ctx)) == [("q1",), ("q2",), ("q1", "q2")]
+    assert list(pi_subsets(revolute_joints(ctx))) == [("q1",), ("q2",), ("q1", "q2")]
     assert default_pi_size(ctx) is None          # two joints: every set searched inside
     chart, again = chart_of(ctx.model, ctx.config)
     assert chart["ring_names"] == ("t_q1", "t_q2") == ctx.ring_names
@@ -99,3 +99,16 @@ def test_the_recursion_joins_the_seams_into_the_t_chart_locus(name):
     assert [c.equations for c in ctx.locus.components] == [
         c.equations for c in whole.components if c.kind != "chart"]
     assert ctx.steps is STEPS
+
+
+def test_the_slices_at_pi_are_counted_not_listed():
+    """Thirty free revolute joints have 2^30 - 1 slices at q = pi: the progress weights
+    stop at a cap and the slices come one at a time (a list of them would not fit in
+    memory)."""
+    from coopkin_sym.analysis.locus.search import MAX_PI_PARTS, _pi_weights
+
+    assert _pi_weights(2, None) == [20, 20, 20]
+    assert _pi_weights(3, 1) == [20, 20, 20, 1, 1, 1, 1]
+    assert len(_pi_weights(30, 2)) == MAX_PI_PARTS
+    subsets = pi_subsets([f"q{k}" for k in range(30)])
+    assert next(subsets) == ("q0",) and next(subsets) == ("q1",)

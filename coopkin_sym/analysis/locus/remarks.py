@@ -41,6 +41,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "time_depth": ("depth", "equations"),
     "time_component": ("polynomial", "depth"),
     "time_pi_set": ("joints",),
+    "time_pi_sets_left": ("joints", "left"),
     "time_whole_run": ("seconds", "where"),
     # not explored: sets the search does not solve
     "block_not_solved": ("rows", "columns", "block", "variables", "limit", "bound"),

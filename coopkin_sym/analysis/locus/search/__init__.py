@@ -54,6 +54,7 @@ from __future__ import annotations
 
 import random
 import time
+from math import comb
 
 import sympy as sp
 
@@ -64,7 +65,6 @@ from coopkin_sym.analysis.locus.search.charts import (
     chart_of,
     default_pi_size,
     pi_slices,
-    pi_subsets,
     revolute_joints,
 )
 from coopkin_sym.analysis.locus.search.components import settle_realness
@@ -125,8 +125,7 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         explore(ctx, Place(rows=q_rows, equations=[], point={}, depth=0))
         ctx.reporter.step("q = pi")
         # a slice searched inside weighs more than one whose numbers alone are decided
-        weights = [PI_SEARCH_WEIGHT if size is None or len(s) <= size else 1
-                   for s in pi_subsets(revolute_joints(ctx))]
+        weights = _pi_weights(len(revolute_joints(ctx)), size)
         with ctx.reporter.parts(len(weights), weights):
             pi_slices(ctx, size)
         settle_realness(ctx)
@@ -144,6 +143,24 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     locus.seconds = round(time.monotonic() - started, 3)
     return locus
 
+
+
+#: The most slices at q = pi the progress bar gives a part each (the later ones share
+#: the last part: there are 2^r - 1 slices for r free revolute joints).
+MAX_PI_PARTS = 4096
+
+
+def _pi_weights(revolute: int, size: int | None) -> list[int]:
+    """The progress weights of the slices at q = pi, in the order they are searched
+    (at most :data:`MAX_PI_PARTS`): one searched inside weighs more than one whose
+    numbers alone are decided."""
+    weights: list[int] = []
+    for k in range(1, revolute + 1):
+        weight = PI_SEARCH_WEIGHT if size is None or k <= size else 1
+        weights += [weight] * min(comb(revolute, k), MAX_PI_PARTS - len(weights))
+        if len(weights) >= MAX_PI_PARTS:
+            break
+    return weights
 
 def search_configuration(model: Model, at=None, free=None
                          ) -> tuple[Configuration, list[Remark]]:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
+from collections.abc import Iterator
 
 import sympy as sp
 
@@ -66,13 +67,16 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
     ``pi_size``: the largest set of joints at pi searched inside (None: all); larger
     sets get their own numbers decided and a note."""
     rev = revolute_joints(ctx)
-    subsets = pi_subsets(rev)
-    for subset in subsets:
+    total = 2 ** len(rev) - 1
+    for k, subset in enumerate(pi_subsets(rev)):
         where = ", ".join(f"{n} = pi" for n in subset)
         ctx.reporter.step(where)
-        if ctx.expired():
-            ctx.locus.unexplored.append(Remark.of("time_pi_set", joints=subset))
-            continue
+        if ctx.expired():   # one remark for this set and the ones after it
+            left = total - k - 1
+            ctx.locus.unexplored.append(
+                Remark.of("time_pi_sets_left", joints=subset, left=left) if left else
+                Remark.of("time_pi_set", joints=subset))
+            break
         revolute = dict(ctx.config.revolute)
         for n in subset:
             revolute[n] = (sp.Integer(-1), sp.Integer(0))
@@ -125,9 +129,11 @@ def revolute_joints(ctx: SearchContext) -> list[str]:
     return [name for kind, name in ctx.kinds.values() if kind == "revolute"]
 
 
-def pi_subsets(rev: list[str]) -> list[tuple[str, ...]]:
-    """Every non-empty set of the joints ``rev`` (the slices at q = pi), smallest first."""
-    return [s for size in range(1, len(rev) + 1) for s in itertools.combinations(rev, size)]
+def pi_subsets(rev: list[str]) -> Iterator[tuple[str, ...]]:
+    """Every non-empty set of the joints ``rev`` (the slices at q = pi), smallest first,
+    one at a time (there are ``2^r - 1``)."""
+    for size in range(1, len(rev) + 1):
+        yield from itertools.combinations(rev, size)
 
 
 def default_pi_size(ctx: SearchContext) -> int | None:
