@@ -130,6 +130,11 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
             pi_slices(ctx, size)
         settle_realness(ctx)
         canonical_order(locus)
+    if ctx.expired() and not any(getattr(u, "kind", None) == "time_whole_run"
+                                 for u in locus.unexplored):
+        # the bound passed between steps: what each step left is said, and this
+        locus.unexplored.append(Remark.of("time_whole_run", seconds=timeout,
+                                          where="the search"))
     if any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
     if model.passive_joints and not model.locked:
