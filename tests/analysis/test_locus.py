@@ -253,18 +253,26 @@ def three_fingers():
 def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
     model, locus = three_fingers
     assert locus.generic == {"Nm": 6, "Nc": 3, "Ni": 0, "Nr": 3, "Ng": 3, "Nd": 3, "Nh": 0}
-    assert [c.depth for c in locus.components] == [0, 0, 0, 1, 1, 1]
+    # each intersection follows the component it was found in (canonical order)
+    assert sorted(c.depth for c in locus.components) == [0, 0, 0, 1, 1, 1]
+    assert all(c.parent is not None and c.parent < k
+               for k, c in enumerate(locus.components) if c.depth == 1)
+    top = [c for c in locus.components if c.depth == 0]
     # two fingers stretched at once: the intersections, over Q(alpha, beta)
-    pairs = locus.components[3:]
+    pairs = [c for c in locus.components if c.depth == 1]
     assert {tuple(sorted({e.split("*")[1].split("_")[1] for e in c.equations
                           if "*t_f" in e})) for c in pairs} == {
         ("f1", "f2"), ("f1", "f3"), ("f2", "f3")}
     for c in pairs:
         assert c.changes == {"Nc": (3, 1), "Nr": (3, 5), "Nd": (3, 5)}
         assert c.witness_checked and c.decided == Remark.of("decided_joined_fields", fields=2)
-    for i, c in enumerate(locus.components[:3], start=1):
+    fingers = [{e.split("_")[1] for e in c.equations for e in [e] if "t_f" in e}
+               for c in top]
+    assert sorted(next(iter(f)) for f in fingers) == ["f1", "f2", "f3"]
+    for f, c in zip(fingers, top, strict=True):
         # a finger whose tip and joints 2, 3 line up: codimension 2, irrational angles
-        names = {f"t_f{i}_2", f"t_f{i}_3"}
+        (finger,) = f
+        names = {f"t_{finger}_2", f"t_{finger}_3"}
         assert c.kind == "subvariety" and c.real
         assert c.changes == {"Nc": (3, 2), "Nr": (3, 4), "Nd": (3, 4)}
         assert c.witness is None and c.witness_checked
