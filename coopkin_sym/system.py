@@ -156,7 +156,7 @@ class System:
         -------
         >>> from coopkin_sym import load
         >>> locus = load("paper-case1-hard").locus(certify=True)
-        >>> locus.generic["Nm"], [c.condition for c in locus.components][:2]
+        >>> locus.generic["Nm"], [c.condition.text for c in locus.components][:2]
         (2, ['q1 = -pi/2, q2 = -pi/2', 'q1 = -pi/2, q2 = pi/2'])
         >>> locus.certified, locus.completeness()
         (True, (True, None))

@@ -338,8 +338,8 @@ NB01 = [
     planar = coopkin_sym.load("paper-case1-planar")
     flat_locus = planar.locus()
     for c in flat_locus.components:
-        print(c.condition, c.numbers)
-    assert "q1 = pi/2, q2 = pi/2" in [c.condition for c in flat_locus.components]
+        print(c.condition.text, c.numbers)
+    assert "q1 = pi/2, q2 = pi/2" in [c.condition.text for c in flat_locus.components]
     certificate = flat_locus.certify()
     print(flat_locus.completeness())
     assert certificate.certified_by() is not None and not certificate.failures()
@@ -546,14 +546,14 @@ NB03 = [
         for c, row in zip(locus.components, locus.table(), strict=True):
             if c.real_points == "undecided":     # no real witness found: not called real
                 assert not c.real
-                print(f"{c.condition[:58]:58} real points: undecided")
+                print(f"{c.condition.text[:58]:58} real points: undecided")
                 continue
-            assert c.witness_checked, c.condition
+            assert c.witness_checked, c.condition.text
             if c.witness is None:
                 print(f"{row['witness']:58} irrational: checked over Q(alpha)")
                 continue
             direct = system.analyze(c.witness).numbers.as_dict()
-            assert c.witness_checked and direct == c.numbers, c.condition
+            assert c.witness_checked and direct == c.numbers, c.condition.text
             print(f"{row['witness']:58} Nm={direct['Nm']} Nc={direct['Nc']} "
                   f"Nr={direct['Nr']}: as reported")
     """),
@@ -572,7 +572,7 @@ NB03 = [
     code("""
     GENERIC1 = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
     assert locus1.generic == GENERIC1            # the paper's numbers, now generic
-    assert [c.condition for c in locus1.components] == [
+    assert [c.condition.text for c in locus1.components] == [
         "q1 = -pi/2, q2 = -pi/2", "q1 = -pi/2, q2 = pi/2",
         "q1 = pi/2, q2 = -pi/2", "q1 = pi/2, q2 = pi/2",
         "q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6"]
@@ -712,8 +712,8 @@ NB03 = [
     """),
     code("""
     assert locus2.generic == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
-    by = {c.condition: c for c in locus2.components}
-    index = {c.condition: k for k, c in enumerate(locus2.components)}
+    by = {c.condition.text: c for c in locus2.components}
+    index = {c.condition.text: k for k, c in enumerate(locus2.components)}
     straight = {"Nc": (4, 3), "Nr": (0, 1), "Nd": (2, 3)}
     for cond in ("a2 = 0", "b2 = 0"):                     # one finger straight
         assert by[cond].kind == "hypersurface" and by[cond].depth == 0
@@ -724,7 +724,7 @@ NB03 = [
     t_chart = [c for c in locus2.components              # every t = tan(q/2) finite
                if not any(e.startswith("s_") for e in c.equations)]
     deepest = [c for c in t_chart if c.depth == 2 and c.witness]  # on the line
-    assert sorted(c.condition for c in deepest) == sorted(
+    assert sorted(c.condition.text for c in deepest) == sorted(
         f"a2 = 0, b2 = 0, a1 = {a}, b1 = {b}" for a in ("pi/2", "-pi/2")
         for b in ("pi/2", "-pi/2"))
     for c in deepest:
@@ -740,7 +740,7 @@ NB03 = [
     assert tips.changes == {"Nm": (4, 5), "Nc": (4, 3), "Ni": (1, 3), "Nr": (0, 2),
                             "Ng": (1, 3), "Nd": (2, 4), "Nh": (0, 1)}
     charts = [c for c in locus2.components if c.kind == "chart"]  # q = pi: t infinite
-    assert {c.condition: c.equations for c in charts} == {
+    assert {c.condition.text: c.equations for c in charts} == {
         "a2 = pi": ["s_a2"], "b2 = pi": ["s_b2"], "a2 = pi, b2 = pi": ["s_a2", "s_b2"]}
     assert [c.changes for c in charts] == [straight, straight, both.changes]
     mixed = by["a2 = pi, b2 = 0"]                         # one folded, one straight
@@ -826,18 +826,18 @@ NB03 = [
     t_chart3 = [c for c in locus3.components
                 if not any(e.startswith("s_") for e in c.equations)]
     elbow = [c for c in t_chart3 if c.kind == "hypersurface"]
-    assert [c.condition for c in elbow] == ["q2 = -pi/2", "q2 = pi/2"]
+    assert [c.condition.text for c in elbow] == ["q2 = -pi/2", "q2 = pi/2"]
     for c in elbow:
         assert c.equations in (["t_q2 + 1"], ["t_q2 - 1"])
         assert c.changes == {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
-        print(c.condition, "->", component_sentences(c)[1])
+        print(c.condition.text, "->", component_sentences(c)[1])
     one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
     in_line = [c for c in t_chart3 if c.depth == 0 and c.kind == "subvariety"
                and c.changes == one]
     assert [c.equations for c in in_line] == [["t_q8**2 + 2*t_q8 - 1", "t_q7 + 1"],
                                               ["t_q8**2 + 2*t_q8 - 1", "t_q7 - 1"]]
     for c in in_line:
-        print(c.condition)
+        print(c.condition.text)
     meet = [c for c in t_chart3 if c.depth == 0 and c.changes != one]
     assert meet and all(c.changes == {"Ni": (1, 3), "Ng": (1, 3)} for c in meet)
     print("contact points meeting:", len(meet[0].equations), "equations, e.g. at",
@@ -936,7 +936,7 @@ NB03 = [
         for c in locus.components:
             for f in c.float_checks:
                 if not f.agree:
-                    rows.append(f"| {name} | `{c.condition}` | {f.scale} | "
+                    rows.append(f"| {name} | `{c.condition.text}` | {f.scale} | "
                                 f"{f.distance:.0e} rad | {f.exact['Nm']} | {f.float['Nm']} |")
     display(Markdown("\\n".join(rows)))
 
@@ -1424,8 +1424,8 @@ NB05 = [
     display(floc)
     display(floc.locked)
     assert floc.generic == a.numbers.as_dict()
-    assert {"q2 = pi/2", "q2 = -pi/2"} <= {c.condition for c in floc.components}
-    assert {c.condition for c in floc.locked.components} == {"q1 = 0, q2 = -pi/2",
+    assert {"q2 = pi/2", "q2 = -pi/2"} <= {c.condition.text for c in floc.components}
+    assert {c.condition.text for c in floc.locked.components} == {"q1 = 0, q2 = -pi/2",
                                                              "q1 = 0, q2 = pi/2"}
     for c in floc.locked.components:
         direct = finger.analyze(c.witness).passive.numbers
@@ -1732,7 +1732,7 @@ NB06 = [
     for c in locus.components:
         at = ",".join(f"{k}={v}" for k, v in c.witness.items())
         fm = four_bar.finite_mobility(at)
-        print(f"{c.condition:28} Nm {c.numbers['Nm']}: finite {fm.dimension}, "
+        print(f"{c.condition.text:28} Nm {c.numbers['Nm']}: finite {fm.dimension}, "
               f"{fm.classification}")
     kinds = sorted(four_bar.finite_mobility(",".join(f"{k}={v}" for k, v in
                    c.witness.items())).classification for c in locus.components)

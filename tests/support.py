@@ -23,6 +23,11 @@ from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.locus.types import Locus
 
 
+def texts(polynomials) -> list[str]:
+    """The texts of exact polynomials (a component's equations or outside)."""
+    return [p.text for p in polynomials]
+
+
 def rank(m: sp.Matrix) -> int:
     """The exact rank of ``m`` over the field of its entries (DomainMatrix: no
     simplification heuristics); 0 for an empty matrix."""

@@ -507,7 +507,7 @@ def test_a_report_with_an_equation_of_30000_terms_is_read_within_the_bound():
     tree = copy.deepcopy(REAL_REPORT)
     tree["components"][0]["equations"][0] = " + ".join(
         f"t_q1**{i}*t_q2**{j}" for i in range(173) for j in range(173))
-    outcome = run_bounded(lambda: len(validate_report(tree).components[0].polynomials[0]
+    outcome = run_bounded(lambda: len(validate_report(tree).components[0].equations[0]
                                       .terms))
     problem_lines(outcome, "an equation of 30,000 terms")
     assert outcome.value == 173 * 173

@@ -179,16 +179,29 @@ def test_api_entries_taking_text_never_run_code(marker):
         assert _refused(lambda t=text: system.sweep(["q1=0"], at=f"L={t}"))
 
 
-def _locus(text: str) -> Locus:
+def _report(text: str, k: int) -> dict:
+    """A report whose every text field a user could edit holds ``text``: equations,
+    witness, fixed values, the condition (as text, or as data every other time)."""
     generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
-    return Locus("demo", ["t_q1", "t_q2", "L"], f"L={text}", generic, [Component(
-        [text, f"t_q1 - {text}"], dict(generic, Nm=3), {"q1": text, "q2": "0"}, True,
-        condition=f"q1 = {text}", kind="isolated")])
+    locus = Locus("demo", ["t_q1", "t_q2", "L"], "L=1", generic, [Component(
+        ["t_q1", "t_q1 - 1"], dict(generic, Nm=3), {"q1": "0", "q2": "0"}, True,
+        condition="q1 = 0", kind="isolated")])
+    data = json.loads(render_json(locus))
+    data["fixed"] = f"L={text}"
+    comp = data["components"][0]
+    comp.update(equations=[text, f"t_q1 - {text}"], witness={"q1": text, "q2": "0"},
+                condition=f"q1 = {text}")
+    if k % 2:
+        comp.pop("condition_data")
+    else:
+        comp["condition_data"] = [[{"value": "q1", "equals": text, "kind": "revolute"}],
+                                  [{"vanishes": text}]]
+    return data
 
 
 def test_reports_read_back_never_run_code(marker, tmp_path):
     for k, text in enumerate(payloads(marker)):
-        data = json.loads(render_json(_locus(text)))
+        data = _report(text, k)
         try:
             locus = locus_from_json(data)
         except CoopkinError:

@@ -170,6 +170,22 @@ class ExactAngle:
         ``2*atan(p/q)``), as :func:`~coopkin_sym.exact.parse.angle_text` writes it."""
         return tangent_text(self.tangent)
 
+    @property
+    def value(self) -> sp.Expr:
+        """The angle as an exact SymPy number, in ``(-pi, pi]``, written as
+        :attr:`text` is (``pi/2``, ``2*atan(1/3)``).
+
+        Example
+        -------
+        >>> ExactAngle(1, 3).value, ExactAngle(1, 0).value
+        (2*atan(1/3), pi)
+        """
+        t = self.tangent
+        if t is None:
+            return sp.pi
+        return {0: sp.Integer(0), 1: sp.pi / 2, -1: -sp.pi / 2}.get(
+            t, 2 * sp.atan(sp.Rational(t.numerator, t.denominator)))
+
     def radians(self) -> float:  # float-ok: for choosing and for pictures only
         """The angle in radians, in ``(-pi, pi]`` (a float)."""
         return 2 * math.atan2(self.num, self.den)  # float-ok

@@ -19,6 +19,7 @@ Example
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -27,18 +28,23 @@ from functools import cached_property
 import sympy as sp
 
 from coopkin_sym.errors import NumberError
-from coopkin_sym.exact.parse import brief, parse_expression
+from coopkin_sym.exact.parse import brief, parse_polynomial
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 __all__ = ["NamedPolynomial"]
+
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_RESERVED = frozenset({"pi", "E", "I", "oo", "sqrt", "sin", "cos", "tan", "atan", "asin",
+                       "acos", "exp", "log"})
 
 
 @dataclass(frozen=True)
 class NamedPolynomial:
     """``sum c * prod(names[i] ** e[i])`` over the terms ``(e, c)``, exactly.
 
-    ``variables`` are the names it uses (in first-seen order); ``terms`` maps exponent
-    tuples over ``variables`` to nonzero rational coefficients, sorted.
+    ``variables`` are the names it uses (sorted); ``terms`` maps exponent tuples over
+    ``variables`` to nonzero rational coefficients, sorted: equal polynomials are
+    equal (and hash alike) however they were built.
 
     Example
     -------
@@ -56,7 +62,9 @@ class NamedPolynomial:
     @classmethod
     def _build(cls, names: Sequence[str], terms: Mapping[tuple[int, ...], object]
                ) -> NamedPolynomial:
-        used = [k for k in range(len(names)) if any(e[k] for e in terms)]
+        # the variables it uses, by name: equal polynomials are equal objects
+        used = sorted((k for k in range(len(names)) if any(e[k] for e in terms)),
+                      key=lambda k: names[k])
         out: dict[tuple[int, ...], Fraction] = {}
         for exps, c in terms.items():
             c = to_fraction(c)
@@ -97,13 +105,9 @@ class NamedPolynomial:
     @classmethod
     def parse(cls, text: str, names: Sequence[str], where: str) -> NamedPolynomial:
         """A polynomial from text, through the package's one parser (only ``names``
-        may appear)."""
-        expr = parse_expression(text, list(names), where)
-        num, den = sp.fraction(sp.together(expr))
-        if den.free_symbols or not den.is_Rational:
-            raise NumberError(where, f"{brief(text)} is not a polynomial (it divides by "
-                                     f"{brief(str(den))})")
-        return cls.from_sympy(sp.expand(num / den), where)
+        may appear); read by the parser's own arithmetic, without SymPy."""
+        read = parse_polynomial(text, list(names), where)
+        return cls.from_flint(read, read.context().names())
 
     def exponents(self, names: Sequence[str]) -> dict[tuple[int, ...], Fraction]:
         """The terms as exponent tuples over ``names`` (which must hold every
@@ -147,3 +151,26 @@ class NamedPolynomial:
 
     def is_zero(self) -> bool:
         return not self.terms
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        return f"NamedPolynomial({self.text!r})"
+
+    def sort_key(self) -> tuple[int, str]:
+        """Shortest text first, then by text: the order of equations in reports."""
+        return (len(self.text), self.text)
+
+    @classmethod
+    def read(cls, text: str, where: str) -> NamedPolynomial:
+        """A polynomial from text whose variables are the names it uses (through the
+        one parser; for polynomials written by hand, where no list of names is known).
+
+        Example
+        -------
+        >>> NamedPolynomial.read("t_q1 - 2*L", "equation").variables
+        ('L', 't_q1')
+        """
+        names = [n for n in dict.fromkeys(_NAME.findall(str(text))) if n not in _RESERVED]
+        return cls.parse(text, names, where)

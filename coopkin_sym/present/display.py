@@ -46,10 +46,10 @@ from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.model.model import Model
 from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
+from coopkin_sym.present.conditions import short_condition
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
 from coopkin_sym.present.report import _changes as changes_of
-from coopkin_sym.present.report import _short_condition as short_condition
 from coopkin_sym.present.sentences import (
     component_sentences,
     count_sentences,
@@ -461,7 +461,8 @@ def component_html(c: Component) -> str:
     True
     """
     generic = {k: a for k, (a, _) in c.changes.items()}
-    items = [f"<li>Equations: <code>{_e(clip(', '.join(c.equations), 2000))}</code></li>",
+    equations = ", ".join(e.text for e in c.equations)
+    items = [f"<li>Equations: <code>{_e(clip(equations, 2000))}</code></li>",
              f"<li>Kind: {_e(KIND_WORDS.get(c.kind, c.kind))} (depth {c.depth})</li>",
              f"<li>Changes: {_e(_changes_text(c, generic))}</li>",
              f"<li>Witness: <code>{_e(_witness(c))}</code></li>"]

@@ -48,6 +48,7 @@ import sympy as sp
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import PlotError
 from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
+from coopkin_sym.present.conditions import condition_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -483,8 +484,7 @@ def _label(k: int, c: Component, width: int = LABEL_WIDTH) -> str:
     >>> _label(0, c)
     '#1: q1 = 0'
     """
-    text = c.condition or ", ".join(f"{e} = 0" for e in c.equations)
-    return _wrapped(f"#{k + 1}: {text}", width, LABEL_LINES)
+    return _wrapped(f"#{k + 1}: {condition_text(c)}", width, LABEL_LINES)
 
 
 def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds

@@ -42,11 +42,19 @@ from pydantic import (
     create_model,
 )
 
+from coopkin_sym.analysis.locus.conditions import (
+    Clause,
+    Condition,
+    Related,
+    Value,
+    Vanishes,
+    vanishing,
+)
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.types import Certificate, Check, Component, FloatCheck, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import CoopkinError, ReportInputError
-from coopkin_sym.exact.angles import cotangent_name
+from coopkin_sym.exact.angles import cotangent_name, joint_of
 from coopkin_sym.exact.parse import (
     FUNCTIONS,
     NumberError,
@@ -93,6 +101,19 @@ class _AlgebraicIn(_In):
     root: StrictStr = ""
     interval: list[StrictStr] = Field(default_factory=list)
     approx: Names = Field(default_factory=dict)
+
+
+class _ClauseIn(_In):
+    """One clause of a condition (see
+    :func:`coopkin_sym.analysis.locus.conditions.clause_json`)."""
+
+    value: StrictStr | None = None
+    equals: StrictStr | None = None
+    kind: StrictStr | None = None
+    related: tuple[StrictStr, StrictStr] | None = None
+    sign: StrictInt | None = None
+    plus_pi: StrictBool | None = None
+    vanishes: StrictStr | None = None
 
 
 class _FiniteIn(_In):
@@ -189,7 +210,7 @@ _COMPONENT_TYPES: dict[str, Any] = {
     "decided": RemarkIn, "witness_checked": StrictBool,
     "float_checks": list[_FloatCheckIn], "depth": StrictInt, "parent": StrictInt | None,
     "algebraic_witness": _AlgebraicIn | None, "real_points": StrictStr,
-    "outside": list[StrictStr], "finite": _FiniteIn | None,
+    "outside": list[StrictStr], "finite": _FiniteIn | None, "chart": list[StrictStr],
 }
 _LOCUS_TYPES: dict[str, Any] = {
     "system": StrictStr, "variables": list[StrictStr], "fixed": StrictStr,
@@ -223,9 +244,9 @@ def _model_of(cls: type, types: dict[str, Any], extra: dict[str, Any], name: str
 # computed component keeps the exact data instead ("shown"), which a report does not carry
 _ComponentIn = _model_of(Component, _COMPONENT_TYPES,
                          {"meaning": (list[StrictStr], Field(default_factory=list)),
-                          "classes": (list[StrictStr], Field(default_factory=list))},
-                         "_ComponentIn", skip=("shown", "stated_meaning", "polynomials",
-                                               "outside_polynomials"))
+                          "classes": (list[StrictStr], Field(default_factory=list)),
+                          "condition_data": (list[list[_ClauseIn]] | None, None)},
+                         "_ComponentIn", skip=("shown", "stated_meaning"))
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
                      {"float_summary": (dict[StrictStr, StrictInt] | None, None),
                       "generic_classes": (list[StrictStr], Field(default_factory=list)),
@@ -296,6 +317,7 @@ class _Checker:
         self.variables: list[str] = []
         self.variables_read = True   # False when an entry of ``variables`` is refused
         self.polynomials: dict[str, NamedPolynomial] = {}  # entry -> its polynomial
+        self.conditions: dict[str, Condition] = {}         # component -> its condition
 
     def add(self, where: str, message: str) -> None:
         self.problems.append(f"{where}: {message}")
@@ -325,6 +347,59 @@ class _Checker:
                 parse_expression(text, names, where)
         except NumberError as exc:
             self.problems.append(str(exc))
+
+    def read(self, text: str, where: str) -> NamedPolynomial:
+        """A polynomial in the report's variables, read without SymPy."""
+        read = parse_polynomial(text, self.variables, where)
+        return NamedPolynomial.from_flint(read, read.context().names())
+
+    def condition(self, where: str, c) -> None:
+        """The component's condition as data: from ``condition_data`` when the report
+        has it, else read from its text (a report of an earlier version), else its
+        equations (a text that does not read as a condition)."""
+        kinds = {joint_of(v): "revolute" for v in self.variables if joint_of(v)}
+        if c.condition_data is None:
+            try:
+                self.conditions[where] = Condition.parse(c.condition, kinds,
+                                                         f"{where}.condition", self.read)
+            except NumberError:
+                eqs = [self.polynomials.get(f"{where}.equations[{k}]")
+                       for k in range(len(c.equations))]
+                self.conditions[where] = vanishing([e for e in eqs if e is not None])
+            return
+        alternatives = []
+        for i, alt in enumerate(c.condition_data):
+            clauses = []
+            for j, clause in enumerate(alt):
+                read = self.clause(f"{where}.condition_data[{i}][{j}]", clause, kinds)
+                if read is not None:
+                    clauses.append(read)
+            alternatives.append(tuple(clauses))
+        self.conditions[where] = Condition(tuple(alternatives))
+
+    def clause(self, where: str, clause, kinds: Mapping[str, str]) -> Clause | None:
+        given = [k for k in ("value", "related", "vanishes") if getattr(clause, k) is not None]
+        if len(given) != 1:
+            self.add(where, "a clause is one of value (with equals), related (with sign) "
+                            "or vanishes")
+            return None
+        try:
+            if clause.value is not None:
+                if self.name(f"{where}.value", clause.value) and clause.equals is not None:
+                    value = parse_expression(clause.equals, [], f"{where}.equals")
+                    return Value(clause.value, value, clause.kind
+                                 or kinds.get(clause.value, "prismatic"))
+                self.add(where, "a value clause needs a name and what it equals")
+            elif clause.related is not None:
+                if clause.sign not in (1, -1):
+                    self.add(f"{where}.sign", "the sign is 1 or -1")
+                elif all(self.name(f"{where}.related", n) for n in clause.related):
+                    return Related(*clause.related, clause.sign, bool(clause.plus_pi))
+            else:
+                return Vanishes(self.read(clause.vanishes, f"{where}.vanishes"))
+        except NumberError as exc:
+            self.problems.append(str(exc))
+        return None
 
     def numbers(self, where: str, numbers: Mapping[str, int]) -> None:
         for key, value in numbers.items():
@@ -443,6 +518,9 @@ class _Checker:
             self.expression(f"{where}.equations[{i}]", eq, self.variables, polynomial=True)
         for i, eq in enumerate(c.outside):
             self.expression(f"{where}.outside[{i}]", eq, self.variables, polynomial=True)
+        self.condition(where, c)
+        for i, joint in enumerate(c.chart):
+            self.name(f"{where}.chart[{i}]", joint)
         self.numbers(f"{where}.numbers", c.numbers)
         self.remark(f"{where}.decided", c.decided)
         if c.witness is not None:
@@ -525,7 +603,7 @@ def validate_report(data: Mapping | str) -> Locus:
     checker.run(parsed)
     if checker.problems:
         raise ReportInputError(checker.problems)
-    return _to_locus(parsed, checker.polynomials)
+    return _to_locus(parsed, checker)
 
 
 def _remark(value) -> Remark | str:
@@ -558,19 +636,21 @@ def _certificate_data(cert) -> Certificate:
                        [_remark(n) for n in cert.notes], cert.untested_beyond, cert.seconds)
 
 
-def _to_locus(parsed, polynomials: Mapping[str, NamedPolynomial]) -> Locus:
+def _to_locus(parsed, checker: _Checker) -> Locus:
+    polynomials = checker.polynomials
     comps = []
     for i, c in enumerate(parsed.components):
         values = {f.name: getattr(c, f.name) for f in dataclasses.fields(Component)
-                  if f.name not in ("shown", "stated_meaning", "polynomials",
-                                    "outside_polynomials")}
+                  if f.name not in ("shown", "stated_meaning")}
         values["stated_meaning"] = list(c.meaning)
-        # the report's polynomials, as the checker read them
+        # the report's polynomials and condition, as the checker read them
         where = f"components[{i}]"
-        values["polynomials"] = [polynomials[f"{where}.equations[{k}]"]
-                                 for k in range(len(c.equations))]
-        values["outside_polynomials"] = [polynomials[f"{where}.outside[{k}]"]
-                                         for k in range(len(c.outside))]
+        values["equations"] = [polynomials[f"{where}.equations[{k}]"]
+                               for k in range(len(c.equations))]
+        values["outside"] = [polynomials[f"{where}.outside[{k}]"]
+                             for k in range(len(c.outside))]
+        values["condition"] = checker.conditions[where]
+        values["chart"] = tuple(c.chart)
         values["changes"] = {k: tuple(v) for k, v in c.changes.items()}
         values["decided"] = _remark(c.decided)
         if c.parent is not None:  # the report's numbering (#1, #2, ...) -> an index

@@ -14,7 +14,7 @@ from independent import (
     reference_jacobians,
     reference_numbers_algebraic,
 )
-from support import shipped_locus
+from support import shipped_locus, texts
 from sympy.polys.matrices import DomainMatrix
 
 import coopkin_sym
@@ -49,7 +49,7 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
     #   sin q1 = -1/2: q1 = -pi/6 or -5pi/6, i.e. t1 = tan(q1/2) = -2 +- sqrt(3), the
     #   roots of t^2 + 4t + 1, with t2 = -t1. No rational point: decided over Q(sqrt 3).
     assert case1.generic == CASE1_GENERIC
-    found = {tuple(sorted(c.equations)): c for c in case1.components}
+    found = {tuple(sorted(texts(c.equations))): c for c in case1.components}
     assert set(found) == ON_LINE | {COINCIDENT}
     for key, c in found.items():
         assert c.kind == "isolated" and c.real and c.witness_checked
@@ -58,7 +58,7 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
             assert c.changes == {"Nm": (2, 3), "Nc": (2, 3), "Nh": (0, 1)}
     c = found[COINCIDENT]
     assert c.numbers == CASE1_COINCIDENT
-    assert c.condition == "q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6"
+    assert c.condition.text == "q1 = -5*pi/6, q2 = 5*pi/6 or q1 = -pi/6, q2 = pi/6"
     assert c.decided == Remark.of("decided_algebraic", variable="t_q1",
                                   minimal_polynomial="alpha**2 + 4*alpha + 1")
     assert remark_text(c.decided) == ("exact over Q(alpha), alpha = t_q1 a root of "
@@ -90,7 +90,7 @@ def test_case1_witnesses_are_confirmed_by_an_independent_analysis(case1):
             ref = reference_analysis(model, at_from_text(model, ",".join(
                 f"{k}={v}" for k, v in c.witness.items())))
             assert {k: ref[k] for k in c.numbers} == c.numbers
-            conditions.add(c.condition)
+            conditions.add(c.condition.text)
             continue
         # the irrational witness, and the other real point of the family, in radicals
         for q1, q2 in ((-5 * sp.pi / 6, 5 * sp.pi / 6), (-sp.pi / 6, sp.pi / 6)):
@@ -154,10 +154,10 @@ TWO_FINGERS = {
 
 def test_recursion_finds_the_codimension_two_drop():
     locus = compute_locus(coopkin_sym.load(TWO_FINGERS), max_depth=2)
-    by_eqs = {tuple(c.equations): c for c in locus.components}
+    by_eqs = {tuple(texts(c.equations)): c for c in locus.components}
     # one finger stretched straight: it can no longer move its tip along itself
     a2 = by_eqs[("t_a2",)]
-    assert a2.kind == "hypersurface" and a2.condition == "a2 = 0"
+    assert a2.kind == "hypersurface" and a2.condition.text == "a2 = 0"
     assert a2.changes == {"Nc": (4, 3), "Nr": (0, 1), "Nd": (2, 3)}
     # both stretched: found inside the first component (depth 1, codimension 2)
     both = by_eqs[("t_a2", "t_b2")]
@@ -165,29 +165,29 @@ def test_recursion_finds_the_codimension_two_drop():
     assert both.changes == {"Nc": (4, 2), "Nr": (0, 2), "Nd": (2, 4)}
     # and deeper still: both stretched along the contact line (isolated, depth 2)
     t_chart = [c for c in locus.components if not any(e.startswith("s_") for e in
-                                                      c.equations)]
+                                                      texts(c.equations))]
     deepest = [c for c in t_chart if c.depth == 2]
     assert len(deepest) == 5 and all(c.numbers["Nm"] == 5 for c in deepest)
     # ... and both stretched with the tips at one point: tip1 = 2L(-sin a1, cos a1),
     # tip2 = (3L, 0) + 2L(-sin b1, cos b1), so b1 = -a1 and sin a1 = -3/4, i.e.
     # 3 t^2 + 8 t + 3 = 0 for t = tan(a1/2): irrational, Ni 1 -> 3 as in case 1
     (tips,) = [c for c in deepest if c.witness is None]
-    assert tips.equations == ["t_a2", "t_b2", "3*t_a1**2 + 8*t_a1 + 3", "t_a1 + t_b1"]
+    assert texts(tips.equations) == ["t_a2", "t_b2", "3*t_a1**2 + 8*t_a1 + 3", "t_a1 + t_b1"]
     assert tips.changes["Ni"] == (1, 3) and tips.witness_checked
     assert tips.algebraic_witness["point"]["a1"] == "-2*atan(sqrt(7)/3 + 4/3)"
     # q = pi, outside the t chart: the finger folded back is singular too, alone and
     # with the other finger folded back (both at once: Nr 2, as both stretched); the
     # sets with a1 or b1 at pi lie in these (their equations do not involve a1, b1)
-    assert {c.condition for c in locus.components if c.kind == "chart"} == {
+    assert {c.condition.text for c in locus.components if c.kind == "chart"} == {
         "a2 = pi", "b2 = pi", "a2 = pi, b2 = pi"}
-    (folded,) = [c for c in locus.components if c.equations == ["s_a2", "s_b2"]]
+    (folded,) = [c for c in locus.components if texts(c.equations) == ["s_a2", "s_b2"]]
     assert folded.changes == both.changes
     # one folded back, the other stretched, and both along the contact line
-    (mixed,) = [c for c in locus.components if c.equations == ["s_a2", "t_b2"]]
+    (mixed,) = [c for c in locus.components if texts(c.equations) == ["s_a2", "t_b2"]]
     assert mixed.changes == both.changes and mixed.witness == {
         "a1": "2*atan(1/2)", "a2": "pi", "b1": "2*atan(1/2)", "b2": "0", "L": "1"}
     inside = [c for c in locus.components if c.parent == locus.components.index(mixed)]
-    assert {c.condition for c in inside} == {
+    assert {c.condition.text for c in inside} == {
         f"a2 = pi, b2 = 0, a1 = {x}, b1 = {y}" for x in ("pi/2", "-pi/2")
         for y in ("pi/2", "-pi/2")}
     assert all(c.numbers["Nm"] == 5 for c in inside)
@@ -224,7 +224,7 @@ def test_function_field_rank_agrees_with_the_parametrization():
     system = coopkin_sym.load("paper-case1-soft-hard")
     locus = compute_locus(system, max_depth=0)
     curve = "t_q1**2*t_q2 - t_q1**2 + 2*t_q1*t_q2 + 2*t_q1 - t_q2 + 1"
-    (comp,) = [c for c in locus.components if c.equations == [curve]]
+    (comp,) = [c for c in locus.components if texts(c.equations) == [curve]]
     assert comp.decided == Remark.of("decided_function_field")
     config = Configuration.parse(system.model, "L=1", free=["q1", "q2"])
     kin = kinematics.build(system.model, config)
@@ -260,13 +260,13 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
     top = [c for c in locus.components if c.depth == 0]
     # two fingers stretched at once: the intersections, over Q(alpha, beta)
     pairs = [c for c in locus.components if c.depth == 1]
-    assert {tuple(sorted({e.split("*")[1].split("_")[1] for e in c.equations
+    assert {tuple(sorted({e.split("*")[1].split("_")[1] for e in texts(c.equations)
                           if "*t_f" in e})) for c in pairs} == {
         ("f1", "f2"), ("f1", "f3"), ("f2", "f3")}
     for c in pairs:
         assert c.changes == {"Nc": (3, 1), "Nr": (3, 5), "Nd": (3, 5)}
         assert c.witness_checked and c.decided == Remark.of("decided_joined_fields", fields=2)
-    fingers = [{e.split("_")[1] for e in c.equations for e in [e] if "t_f" in e}
+    fingers = [{e.split("_")[1] for e in texts(c.equations) for e in [e] if "t_f" in e}
                for c in top]
     assert sorted(next(iter(f)) for f in fingers) == ["f1", "f2", "f3"]
     for f, c in zip(fingers, top, strict=True):
@@ -280,7 +280,7 @@ def test_planar_three_finger_hand_finds_each_finger_stretched(three_fingers):
                                                       for j in a["joints"]} | {"L"}
         assert c.condition.count(" or ") == 3          # four real points per finger
         syms = sp.symbols(sorted(names))
-        eqs = [sp.sympify(e, locals={str(s): s for s in syms}) for e in c.equations]
+        eqs = [sp.sympify(e, locals={str(s): s for s in syms}) for e in texts(c.equations)]
         assert set().union(*(e.free_symbols for e in eqs)) == set(syms)
     # what is not decided is said, with the reason: only families too large to reduce
     # modulo (the contact points in line, HG^T: a hypersurface of 12824 terms)
@@ -305,9 +305,9 @@ def test_three_finger_components_are_where_an_independent_jacobian_drops(three_f
               for r in itertools.combinations(range(3), 2)
               for c in itertools.combinations(range(3), 2)]
     assert any(sp.expand(m) != 0 for m in minors)       # rank 2 at generic angles
-    (comp,) = [c for c in locus.components if "t_f1_2" in c.equations[0] and not c.depth]
+    (comp,) = [c for c in locus.components if "t_f1_2" in texts(c.equations)[0] and not c.depth]
     basis = sp.groebner([sp.sympify(e, locals={"t_f1_2": t2, "t_f1_3": t3})
-                         for e in comp.equations], t2, t3, order="lex")
+                         for e in texts(comp.equations)], t2, t3, order="lex")
     assert all(basis.reduce(sp.expand(m))[1] == 0 for m in minors)
 
 
@@ -317,8 +317,8 @@ def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
     checked independently at its irrational witness (radicals)."""
     locus = compute_locus(coopkin_sym.load(TWO_FINGERS), max_depth=0)
     (tips,) = [c for c in locus.components if c.kind == "subvariety"
-               and not any(e.startswith("s_") for e in c.equations)]
-    assert tips.depth == 0 and len(tips.equations) == 2
+               and not any(e.startswith("s_") for e in texts(c.equations))]
+    assert tips.depth == 0 and len(texts(tips.equations)) == 2
     assert tips.changes == {"Nm": (4, 5), "Nc": (4, 5), "Ni": (1, 3), "Ng": (1, 3),
                             "Nh": (0, 1)}
     assert tips.witness is None and tips.witness_checked
@@ -333,7 +333,7 @@ def test_two_fingers_tips_together_is_found_as_a_two_dimensional_family():
     assert 6 - rg == tips.numbers["Ni"] == 3 and 10 - rq == tips.numbers["Nm"]
     # the equations vanish there, exactly
     syms = {f"t_{j}": sp.tan(sp.sympify(point[j]) / 2) for j in cs}
-    for eq in tips.equations:
+    for eq in texts(tips.equations):
         expr = sp.sympify(eq, locals={n: sp.Symbol(n) for n in syms}).subs(
             {sp.Symbol(n): v for n, v in syms.items()})
         assert sp.simplify(sp.radsimp(expr)) == 0
@@ -358,7 +358,7 @@ def test_irrational_witnesses_reanalyzed_from_their_text():
             if any("sqrt" in w["point"][j] for j in prismatic if j in w["point"]):
                 continue  # the number-field path takes rational displacements only
             again = analyze_irrational(system.model, w["point"])
-            assert again.numbers.as_dict() == c.numbers, c.condition
+            assert again.numbers.as_dict() == c.numbers, c.condition.text
             checked += 1
         assert checked >= 1
 
@@ -382,10 +382,10 @@ def test_case2_all_eight_joints_hand_checked():
     locus = compute_locus(coopkin_sym.load("paper-case2-hard"), max_depth=1)
     one = {"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)}
     t_chart = [c for c in locus.components
-               if not any(e.startswith("s_") for e in c.equations)]
+               if not any(e.startswith("s_") for e in texts(c.equations))]
     by_depth = {d: [c for c in t_chart if c.depth == d] for d in (0, 1)}
     meet = {"Ni": (1, 3), "Ng": (1, 3)}
-    assert sorted((c.kind, tuple(c.equations)) for c in by_depth[0]
+    assert sorted((c.kind, tuple(texts(c.equations))) for c in by_depth[0]
                   if c.changes == one) == [
         ("hypersurface", ("t_q2 + 1",)), ("hypersurface", ("t_q2 - 1",)),
         ("subvariety", ("t_q8**2 + 2*t_q8 - 1", "t_q7 + 1")),
@@ -394,8 +394,8 @@ def test_case2_all_eight_joints_hand_checked():
     assert contacts_meet and all(c.changes == meet and c.kind == "subvariety"
                                  for c in contacts_meet)
     # the whole family: three equations, linear in q5 (x), in q4 (z), and y1 = y2
-    assert any(len(c.equations) == 3 and c.equations[0].startswith("q5*")
-               and c.equations[1].startswith("q4*") for c in contacts_meet)
+    assert any(len(texts(c.equations)) == 3 and texts(c.equations)[0].startswith("q5*")
+               and texts(c.equations)[1].startswith("q4*") for c in contacts_meet)
     two = {"Nc": (6, 4), "Nr": (2, 4), "Nd": (0, 2)}
     both = {"Nc": (6, 5), "Ni": (1, 3), "Nr": (2, 3), "Ng": (1, 3), "Nd": (0, 1)}
     found = sorted(tuple(sorted(c.changes.items())) for c in by_depth[1])
@@ -404,7 +404,7 @@ def test_case2_all_eight_joints_hand_checked():
     # anything else found there lies inside q2 = +-pi/2 and loses more
     for c in by_depth[1]:
         if tuple(sorted(c.changes.items())) not in known:
-            assert c.equations[0] in ("t_q2 + 1", "t_q2 - 1")
+            assert texts(c.equations)[0] in ("t_q2 + 1", "t_q2 - 1")
             assert c.numbers["Nr"] > 3 and c.numbers["Ni"] == 3
     for c in locus.components:
         # a witness checked, or no real point found and none claimed
@@ -415,7 +415,8 @@ def test_case2_all_eight_joints_hand_checked():
                   if j.startswith("q") and j not in ("q4", "q5")}
             at.update({j: sp.sympify(point[j]) for j in ("q4", "q5")})
             assert reference_numbers_algebraic(model, {**at, "L": 1}) == c.numbers
-    assert {c.condition for c in by_depth[0] if c.changes == one and c.kind == "subvariety"} == {
+    assert {c.condition.text for c in by_depth[0]
+            if c.changes == one and c.kind == "subvariety"} == {
         "q7 = -pi/2, q8 = -3*pi/4 or q7 = -pi/2, q8 = pi/4",
         "q7 = pi/2, q8 = -3*pi/4 or q7 = pi/2, q8 = pi/4"}
     # joints at pi: no set of them changes a number by itself (q = pi is not special
@@ -445,10 +446,10 @@ def test_content_of_a_row_is_a_candidate_case1_complete_hard():
     The rank drop there is the content of a row after constant pivots."""
     system = coopkin_sym.load("paper-case1-complete-hard")
     locus = compute_locus(system)
-    by_eqs = {tuple(c.equations): c for c in locus.components}
+    by_eqs = {tuple(texts(c.equations)): c for c in locus.components}
     for eq, angle in (("t_q2 - 1", "pi/2"), ("t_q2 + 1", "-pi/2")):
         comp = by_eqs[(eq,)]
-        assert comp.kind == "hypersurface" and comp.condition == f"q2 = {angle}"
+        assert comp.kind == "hypersurface" and comp.condition.text == f"q2 = {angle}"
         assert comp.changes == {"Nm": (0, 1), "Nc": (0, 1), "Nh": (1, 2)}
         assert comp.witness_checked and comp.real
     # a direct analysis anywhere on the family agrees (q1 = 0 and a generic q1)
@@ -466,7 +467,7 @@ def test_two_fingers_with_bases_fixed_find_every_drop_q_pi_included():
     assert locus.generic == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
     one = {"Nm": 4, "Nc": 3, "Ni": 1, "Nr": 1, "Ng": 1, "Nd": 3, "Nh": 0}
     two = {"Nm": 4, "Nc": 2, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 4, "Nh": 0}
-    assert {(c.condition, tuple(sorted(c.numbers.items()))) for c in locus.components} == {
+    assert {(c.condition.text, tuple(sorted(c.numbers.items()))) for c in locus.components} == {
         (cond, tuple(sorted(n.items()))) for cond, n in (
             ("a2 = 0", one), ("b2 = 0", one), ("a2 = pi", one), ("b2 = pi", one),
             ("a2 = 0, b2 = 0", two), ("a2 = pi, b2 = 0", two), ("b2 = pi, a2 = 0", two),

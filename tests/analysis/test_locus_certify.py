@@ -25,6 +25,7 @@ import random
 
 import flint
 import pytest
+from support import texts
 from typer.testing import CliRunner
 
 from coopkin_sym import load
@@ -36,6 +37,7 @@ from coopkin_sym.cli import app
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
 from coopkin_sym.exact.parse import NumberError
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.certificate import certificate_json, completeness_text
 from coopkin_sym.present.certificate import certificate_summary as summary
 from coopkin_sym.present.remarks import remark_text, remark_texts
@@ -188,7 +190,7 @@ def test_equations_read_by_the_package_parser():
                          ("__import__('os')", "eq: "),
                          ("t_q1**t_q1", "eq: "),
                          ("1/t_q1", "not a polynomial"),
-                         ("pi*t_q1", "not a polynomial with rational coefficients"),
+                         ("pi*t_q1", "'pi\\*t_q1' is not a polynomial"),
                          ("(t_q1 + 1", "eq: "),
                          ("t_q1**1001", "too large"),
                          ("(t_q1 + t_q2 + 7)**999*(t_q1 - t_q2)**999", "too large")]:
@@ -414,11 +416,11 @@ def test_bad_locus_input():
     with pytest.raises(CertifyError, match="certify with the values the locus was computed"):
         certify_locus(system, Locus("x", ["t_q1"], "L=1", dict(CASE1_GENERIC)))
     comps = case1_hard_components()
-    comps[0].equations = ["t_q1 - __import__"]
+    comps[0].equations = [NamedPolynomial.read("t_q1 - __import__", "test")]
     cert = certify_locus(system, case1_locus(comps), timeout=60)
     assert not cert.certified
     assert summary(cert).startswith("not certified: component #1, equation 1: "
-                                   "'t_q1 - __import__' uses undeclared symbol __import__")
+                                   "-__import__ + t_q1 uses __import__, not among t_q1")
     wrong = dict(CASE1_GENERIC, Nm=3)
     cert = certify_locus(system, case1_locus(case1_hard_components(), wrong), timeout=60)
     assert summary(cert) == ("not certified: the locus's generic numbers (Nm 3, Nc 2, Ni 1, "
@@ -459,7 +461,7 @@ def test_msolve_alone_never_certifies():
 def _without(locus: Locus, equations: list[str]) -> tuple[Locus, int | None]:
     """The locus without the component cut out by ``equations`` (parents renumbered),
     and the index its parent has afterwards."""
-    index = next(k for k, c in enumerate(locus.components) if c.equations == equations)
+    index = next(k for k, c in enumerate(locus.components) if texts(c.equations) == equations)
     out = copy.deepcopy(locus)
     parent = out.components.pop(index).parent
     for c in out.components:
@@ -480,7 +482,7 @@ def test_search_locus_with_a_planted_missing_component_fails(soft_hard):
     assert summary(certify_locus(system, locus)) == "complete (certified)"
     # the point q1 = -pi/2, q2 = pi/2 inside the family t_q2 = 1 left out
     planted, parent = _without(locus, ["t_q2 - 1", "t_q1 + 1"])
-    assert planted.components[parent].equations == ["t_q2 - 1"]
+    assert texts(planted.components[parent].equations) == ["t_q2 - 1"]
     cert = certify_locus(system, planted)
     assert not cert.certified
     failed = [(c.chart, c.depth, c.inside, c.kind, c.matrix) for c in cert.checks

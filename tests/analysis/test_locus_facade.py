@@ -28,7 +28,7 @@ def test_locus_with_certify_and_verify(system):
     assert locus.completeness() == (True, None)
     assert completeness_text(locus) == "complete (certified)"
     assert locus.verification is not None and locus.verification.ok
-    assert [c.condition for c in locus.components][:2] == ["q1 = -pi/2, q2 = -pi/2",
+    assert [c.condition.text for c in locus.components][:2] == ["q1 = -pi/2, q2 = -pi/2",
                                                           "q1 = -pi/2, q2 = pi/2"]
 
 

@@ -14,6 +14,7 @@ import flint
 import pytest
 import sympy as sp
 from random_systems import random_system
+from support import texts
 from typer.testing import CliRunner
 
 import coopkin_sym
@@ -33,7 +34,8 @@ from coopkin_sym.analysis.locus.verify import (
 from coopkin_sym.analysis.mobility import analyze
 from coopkin_sym.analysis.sweep import compile_system
 from coopkin_sym.cli import app
-from coopkin_sym.exact.parse import parse_expression
+from coopkin_sym.exact.parse import NumberError, parse_expression
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import locus_from_json, render_json
@@ -293,13 +295,12 @@ def _ranks_of(rows, r):
 def test_bad_reports_get_one_clear_error():
     system = coopkin_sym.load("paper-case1-hard")
     locus = case1_locus()
-    locus.components[1].equations = ["t_q1 - t_q9"]
+    locus.components[1].equations = [NamedPolynomial.read("t_q1 - t_q9", "test")]
     with pytest.raises(VerifyError, match=r"component 2, equation 1: .*t_q9"):
         verify_locus(system, locus)
-    locus = case1_locus()
-    locus.components[0].equations = ["__import__('os')"]
-    with pytest.raises(VerifyError, match="component 1, equation 1"):
-        verify_locus(system, locus)
+    # an equation is an exact polynomial: text that is not one never becomes one
+    with pytest.raises(NumberError, match="equation 1: .* cannot be parsed"):
+        Component(["__import__('os')"], {}, None, True)
     locus = case1_locus()
     locus.variables = ["t_q1"]
     with pytest.raises(VerifyError, match="do not match the model"):
@@ -430,15 +431,15 @@ def test_a_family_inside_a_parametrization_excludes_its_denominators():
     # t = 0, any q4), which is not in the family: the ranks there are above its own.
     system = coopkin_sym.load(random_system(7))
     locus = compute_locus(system)
-    inner = [c for c in locus.components if c.depth == 1 and c.outside
-             and not any(e.startswith("s_") for e in c.equations)]
+    inner = [c for c in locus.components if c.depth == 1 and texts(c.outside)
+             and not any(e.startswith("s_") for e in texts(c.equations))]
     assert inner
     names = {v: sp.Symbol(v) for v in locus.variables}
     zero = {s: 0 for s in names.values()}
     at_home = analyze(system.model, Configuration.parse(system.model, "q4=1")).numbers
     for comp in inner:
-        eqs = [parse_expression(e, names, "test") for e in comp.equations]
-        outs = [parse_expression(e, names, "test") for e in comp.outside]
+        eqs = [parse_expression(e, names, "test") for e in texts(comp.equations)]
+        outs = [parse_expression(e, names, "test") for e in texts(comp.outside)]
         assert comp.parent is not None
         if all(e.subs(zero) == 0 for e in eqs):
             assert any(o.subs(zero) == 0 for o in outs)

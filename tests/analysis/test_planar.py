@@ -353,7 +353,7 @@ def test_planar_locus_is_certified_and_verified():
     system = coopkin_sym.load("paper-case1-planar")
     locus = system.locus()
     assert locus.generic == {"Nm": 1, "Nc": 1, "Ni": 0, "Nr": 0, "Ng": 1, "Nd": 2, "Nh": 0}
-    conditions = [c.condition for c in locus.components]
+    conditions = [c.condition.text for c in locus.components]
     assert "q1 = pi/2, q2 = pi/2" in conditions
     v = verify_locus(system, locus)
     assert v.uncovered_total == 0 and v.unsound == []

@@ -149,11 +149,11 @@ def test_lined_up_families_on_the_locus(finger):
     q1 = 0 there, where Nuo = Nc of the locked system goes from 0 to 1."""
     locus = finger.locus(free=["q1", "q2"])
     assert locus.generic == HOME
-    conditions = [c.condition for c in locus.components]
+    conditions = [c.condition.text for c in locus.components]
     assert "q2 = pi/2" in conditions and "q2 = -pi/2" in conditions
     for c in locus.components:
         assert c.numbers["Nm"] == 2
     assert locus.locked is not None and locus.locked.generic["Nc"] == 0
-    locked = {c.condition: c.numbers for c in locus.locked.components}
+    locked = {c.condition.text: c.numbers for c in locus.locked.components}
     assert set(locked) == {"q1 = 0, q2 = -pi/2", "q1 = 0, q2 = pi/2"}
     assert all(n["Nc"] == 1 for n in locked.values())

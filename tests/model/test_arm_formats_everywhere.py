@@ -5,6 +5,7 @@ how a model was written."""
 from __future__ import annotations
 
 import pytest
+from support import texts
 from test_dh import as_joints
 from test_urdf import fingers_by_hand
 
@@ -22,7 +23,7 @@ def _hand_joints() -> dict:
 
 
 def _locus_key(locus) -> list:
-    return [(c.equations, c.numbers, c.witness, c.kind, c.depth) for c in locus.components]
+    return [(texts(c.equations), c.numbers, c.witness, c.kind, c.depth) for c in locus.components]
 
 
 @pytest.mark.parametrize("name, written, at", [

@@ -56,7 +56,7 @@ def results() -> dict[str, object]:
 def _nasty_locus() -> Locus:
     long_equation = " + ".join(f"{k}*t_q1**{k}*t_q2" for k in range(1, 400))
     component = Component([long_equation], dict(GENERIC, Nm=3), {"q1": NASTY}, True,
-                          condition=NASTY + " " + long_equation, changes={"Nm": (2, 3)})
+                          condition=f"{long_equation} = 0", changes={"Nm": (2, 3)})
     return Locus(NASTY * 20, ["t_q1", "t_q2"], NASTY, GENERIC, [component] * 250,
                  certificate=Certificate(NASTY, certified=True))
 

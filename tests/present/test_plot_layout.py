@@ -20,8 +20,8 @@ def crowded(count: int) -> Locus:
     components = []
     for k in range(count):
         a, b = k % 7 - 3, k // 7 - 3
-        text = (f"q1 = 2*atan({a}) and q2 = 2*atan({b}), the rank of HG^T drops and "
-                f"an indeterminate motion appears about the line through both contacts")
+        text = (f"q1 = 2*atan({a}), q2 = 2*atan({b}), 3*t_q1**2*t_q2**2 + 8*t_q1*t_q2 "
+                f"+ 3*t_q1**2 - 7*t_q2 + 11*t_q1*L**2 + 13*t_q2*L**3 - 17*L**4 + 1 = 0")
         components.append(Component([f"t_q1 - ({a})", f"t_q2 - ({b})"],
                                     dict(GENERIC, Ni=2), {"q1": f"2*atan({a})",
                                                           "q2": f"2*atan({b})"},

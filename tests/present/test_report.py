@@ -15,13 +15,14 @@ import pytest
 pytest.importorskip("matplotlib")
 
 import matplotlib.image  # noqa: E402
-from support import shipped_locus  # noqa: E402
+from support import shipped_locus, texts  # noqa: E402
 from typer.testing import CliRunner  # noqa: E402
 
 from coopkin_sym import load  # noqa: E402
 from coopkin_sym.analysis.locus.search import compute_locus  # noqa: E402
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, Locus  # noqa: E402
 from coopkin_sym.cli import app  # noqa: E402
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.locus_plot import (  # noqa: E402
     PlotError,
     components_on,
@@ -103,7 +104,7 @@ def case1() -> Locus:
 
 def test_case1_hard_real_locus_is_five_isolated_families(case1):
     assert case1.generic == GENERIC
-    assert sorted(tuple(c.equations) for c in case1.components) == [
+    assert sorted(tuple(texts(c.equations)) for c in case1.components) == [
         ("t_q1 + 1", "t_q2 + 1"), ("t_q1 + 1", "t_q2 - 1"),
         ("t_q1 - 1", "t_q2 + 1"), ("t_q1 - 1", "t_q2 - 1"),
         ("t_q1**2 + 4*t_q1 + 1", "t_q1 + t_q2")]
@@ -111,7 +112,7 @@ def test_case1_hard_real_locus_is_five_isolated_families(case1):
         assert c.kind == "isolated" and c.real
     assert [c.numbers == ON_LINE for c in case1.components] == [True] * 4 + [False]
     # the brief's check: a direct analysis at the witness gives the same numbers
-    c = next(c for c in case1.components if c.equations == ["t_q1 + 1", "t_q2 + 1"])
+    c = next(c for c in case1.components if texts(c.equations) == ["t_q1 + 1", "t_q2 + 1"])
     assert c.witness == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
     assert load("paper-case1-hard").analyze("q1=-pi/2,q2=-pi/2").numbers.as_dict() == ON_LINE
 
@@ -303,16 +304,13 @@ def test_json_contract_and_round_trip(case1):
         assert render_json(locus_from_json(data)) == render_json(locus)
         assert render_json(locus_from_json(render_json(locus))) == render_json(locus)
         back = locus_from_json(data)
-        assert [c.equations for c in back.components] == [c.equations
-                                                          for c in locus.components]
-        # the exact polynomials: read back from the report's text, they are the ones
-        # the search kept; each prints as the equation's text
+        # the exact polynomials and conditions: read back from the report, they are
+        # the ones the search found
+        assert [(c.equations, c.outside, c.condition, c.chart) for c in back.components] \
+            == [(c.equations, c.outside, c.condition, c.chart) for c in locus.components]
         names = list(locus.variables)
-        assert [c.equation_polynomials(names) for c in back.components] == \
-            [c.equation_polynomials(names) for c in locus.components]
-        for c in [*back.components, *(c for c in locus.components if c.polynomials)]:
-            assert [p.text for p in c.polynomials] == c.equations
-            assert [p.text for p in c.outside_polynomials] == c.outside
+        assert all(isinstance(p, NamedPolynomial)
+                   for c in back.components for p in c.equation_polynomials(names))
     data = json.loads(render_json(hand_made()))
     assert data["components"][0]["witness"] == {"q1": "-pi/2", "q2": "-pi/2"}
     assert data["components"][2]["witness"] is None
@@ -353,8 +351,8 @@ def test_plot_case1_one_point_per_component_at_the_exact_places(case1):
                                                          abs=1e-9)
     for k, c in enumerate(case1.components[:4]):
         xs, ys = artist(fig, f"component:{k + 1}").get_data()
-        expected = (half if c.equations[0] == "t_q1 - 1" else -half,
-                    half if c.equations[1] == "t_q2 - 1" else -half)
+        expected = (half if texts(c.equations)[0] == "t_q1 - 1" else -half,
+                    half if texts(c.equations)[1] == "t_q2 - 1" else -half)
         assert [(float(x), float(y)) for x, y in zip(xs, ys, strict=True)] == \
             [pytest.approx(expected, abs=1e-12)]
         wx, wy = artist(fig, f"witness:{k + 1}").get_data()

@@ -142,9 +142,8 @@ def _user_tex_is_inert(tex: str) -> None:
 
 def test_latex_escapes_every_user_string():
     evil = locus(system=EVIL, notes=[EVIL], unexplored=[EVIL])
-    evil.components[0].condition = f"q1 = {EVIL}"
+    # (equations and conditions are exact data: no text of a user reaches them)
     evil.components[0].stated_meaning = [EVIL]
-    evil.components[0].equations = ["t_q1 + 1", EVIL]
     evil.components[0].witness = {"q1": EVIL}
     tex = render_latex(evil, {("q1", "q2"): "r_q1_q2.png"})
     _user_tex_is_inert(tex)
@@ -153,12 +152,12 @@ def test_latex_escapes_every_user_string():
 
 def test_markdown_keeps_user_text_on_its_line():
     evil = locus(system="demo\n# injected heading\n<script>alert(1)</script>")
-    evil.components[0].equations = ["t_q1 + 1", "x``<img src=x onerror=alert(1)>``"]
+    evil.components[0].witness = {"q1": "x``<img src=x onerror=alert(1)>``"}
     md = render_markdown(evil)
     assert not any(line.startswith("# injected") for line in md.splitlines())
     assert "<script>" not in md and "\\<script\\>" in md
     # the code span's fence is longer than any run of backticks inside it
-    assert "``` x``<img src=x onerror=alert(1)>`` = 0 ```" in md
+    assert "``` q1=x``<img src=x onerror=alert(1)>`` ```" in md
 
 
 def test_analyze_latex_keeps_the_model_name_in_its_comment(tmp_path):
@@ -236,4 +235,4 @@ def test_equations_are_read_without_sympy(monkeypatch):
     monkeypatch.setattr(NamedPolynomial, "from_sympy", refuse)
     monkeypatch.setattr("sympy.expand", refuse)
     read = locus_from_json(tree(components__0__equations__0="(t_q1 + 1)**2/4 - t_q2"))
-    assert read.components[0].polynomials[0].text == "t_q1**2/4 + t_q1/2 - t_q2 + 1/4"
+    assert read.components[0].equations[0].text == "t_q1**2/4 + t_q1/2 - t_q2 + 1/4"

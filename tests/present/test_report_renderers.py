@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import pytest
 
-from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.analysis.locus.conditions import Condition, Related
+from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.present.conditions import short_condition
 from coopkin_sym.present.report import RENDERERS, render_html, render_latex, render_markdown
 from coopkin_sym.present.report.blocks import (
     BLOCKS,
@@ -23,8 +25,11 @@ from coopkin_sym.present.report.blocks import (
 )
 from coopkin_sym.present.report.document import build_document
 
+# a condition span is written from the component's exact condition
+CONDITION = short_condition(Component(["t_q1 - t_q2"], {}, None, True,
+                                      condition=Condition.of(Related("q1", "q2", 1))))
 SPANS = [("text", "a_b <c>"), ("strong", "bold"), ("code", "x|y"), ("nums", "(1, 2)"),
-         ("eq", "t_q1 + 1"), ("eq0", "t_q2"), ("at", "q1=pi/2"), ("cond", "q1 = q2")]
+         ("eq", "t_q1 + 1"), ("eq0", "t_q2"), ("at", "q1=pi/2"), ("cond", CONDITION)]
 
 BLOCK = {
     "heading": Heading(2, [("text", "Parts & <pieces>")], "parts"),

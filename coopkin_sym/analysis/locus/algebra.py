@@ -22,11 +22,13 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from coopkin_sym.analysis.locus.conditions import Clause, Related, Value, Vanishes
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import angle_text
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
@@ -61,9 +63,11 @@ def poly_text(ctx: SearchContext, f) -> str:
     return text
 
 
-def read_poly(ctx: SearchContext, f, text: str) -> str:
+def read_poly(ctx: SearchContext, f, text: str) -> Clause:
     """The condition ``f = 0`` in angles where it reads simply (``q2 = pi/2``,
-    ``q1 = -q2``, ``q1 + q2 = pi (mod 2*pi)``, ``d4 = 1/2``), else ``"<text> = 0"``.
+    ``q1 = -q2``, ``q1 + q2 = pi (mod 2*pi)``, ``d4 = 1/2``: a
+    :class:`~.conditions.Value` or :class:`~.conditions.Related`), else
+    ``f = 0`` (:class:`~.conditions.Vanishes`).
 
     Works on the polynomial itself (no text is parsed)."""
     names = vars_of(ctx, f)
@@ -78,19 +82,31 @@ def read_poly(ctx: SearchContext, f, text: str) -> str:
             value = sp.Rational(-int(terms.get(zero, 0)), int(terms[one]))
             kind, joint = kinds[0]
             if kind == "revolute":
-                return f"{joint} = " + angle_text((1 - value**2) / (1 + value**2),
-                                                  2 * value / (1 + value**2))
+                return Value(joint, angle_value(value), kind)
             if kind == "prismatic":
-                return f"{joint} = {value}"
+                return Value(joint, value, kind)
     if len(names) == 2 and all(k[0] == "revolute" for k in kinds):
         a, b = (zctx.gens()[ctx.ring_names.index(n)] for n in names)
         na, nb = kinds[0][1], kinds[1][1]
-        for candidate, reading in ((a - b, f"{na} = {nb}"), (a + b, f"{na} = -{nb}"),
-                                   (a * b + 1, f"{na} = {nb} + pi (mod 2*pi)"),
-                                   (a * b - 1, f"{na} + {nb} = pi (mod 2*pi)")):
+        for candidate, reading in ((a - b, Related(na, nb, 1)), (a + b, Related(na, nb, -1)),
+                                   (a * b + 1, Related(na, nb, 1, True)),
+                                   (a * b - 1, Related(na, nb, -1, True))):
             if f == candidate or f == -candidate:
                 return reading
-    return f"{text} = 0"
+    return Vanishes(NamedPolynomial.from_flint(f, ctx.ring_names))
+
+
+def angle_value(t: sp.Rational) -> sp.Expr:
+    """The angle (in radians, in (-pi, pi)) whose tangent half-angle is ``t``, as
+    :class:`~coopkin_sym.exact.angles.ExactAngle` writes it (``pi/2``,
+    ``2*atan(1/3)``).
+
+    Example
+    -------
+    >>> angle_value(sp.Integer(-1)), angle_value(sp.Rational(1, 3))
+    (-pi/2, 2*atan(1/3))
+    """
+    return ExactAngle.from_tangent(Fraction(int(t.p), int(t.q))).value
 
 
 def has_real_point(ctx: SearchContext, f, names) -> bool | None:

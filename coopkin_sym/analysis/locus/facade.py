@@ -206,7 +206,7 @@ class LocusMethods:
             point = c.witness or (c.algebraic_witness or {}).get("point")
             rows.append({
                 "#": k + 1, "parent": None if c.parent is None else c.parent + 1,
-                "condition": c.condition, "kind": c.kind, "depth": c.depth,
+                "condition": c.condition.text, "kind": c.kind, "depth": c.depth,
                 **{n: c.numbers.get(n) for n in NUMBER_NAMES},
                 "changed": [n for n in NUMBER_NAMES if n in c.changes], "real": c.real,
                 "witness": ",".join(f"{j}={v}" for j, v in point.items()) if point

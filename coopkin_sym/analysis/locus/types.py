@@ -21,11 +21,12 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.locus.conditions import Condition
 from coopkin_sym.analysis.locus.facade import LocusMethods
 from coopkin_sym.analysis.locus.remarks import NOT_USED, Remark
 from coopkin_sym.analysis.numbers import numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.errors import TimeLimitReached
+from coopkin_sym.errors import NumberError, TimeLimitReached
 from coopkin_sym.exact.polynomial import NamedPolynomial
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -35,7 +36,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.model.configuration import Point
 
 # exact data and read-back text a component's JSON does not carry
-_NOT_IN_JSON = ("shown", "stated_meaning", "polynomials", "outside_polynomials")
+_NOT_IN_JSON = ("shown", "stated_meaning")
 
 
 @dataclass
@@ -101,8 +102,11 @@ class Component(Displayable):
     Attributes
     ----------
     equations
-        Polynomials (strings) in the variables ``t_<joint>`` (tan of half the angle),
-        prismatic displacements and parameters, whose common zeros are the component.
+        Exact polynomials (:class:`~coopkin_sym.exact.polynomial.NamedPolynomial`) in
+        the variables ``t_<joint>`` (tan of half the angle), ``s_<joint>`` (cot of half
+        the angle, for the joints of :attr:`chart`), prismatic displacements and
+        parameters, whose common zeros are the component. Texts given by hand are read
+        by the one parser.
     numbers
         The seven numbers on the component (at its generic points).
     witness
@@ -116,7 +120,8 @@ class Component(Displayable):
         ``"hypersurface"``, ``"subvariety"`` (codimension 2 or more), ``"isolated"``
         (a point), or ``"chart"`` (a joint at q = pi, outside the t chart).
     condition
-        The equations in angles where they read simply (``"q1 = q2"``, ``"q2 = 0"``).
+        The equations in angles where they read simply, as data (a
+        :class:`~.conditions.Condition`; its ``text`` is ``"q1 = q2"``, ``"q2 = 0"``).
     drops
         Which matrices lose rank there: subset of ``["Q", "HG^T", "HD"]``.
     changes
@@ -142,7 +147,7 @@ class Component(Displayable):
         Index (in :attr:`Locus.components`) of the component this one lies in; in the
         JSON and the reports, its number there (index + 1: ``#1`` is the first).
     outside
-        Polynomials (strings, same variables as ``equations``) that do not vanish on
+        Exact polynomials (same variables as ``equations``) that do not vanish on
         the component: it is the set where its equations hold and none of these
         vanish. They are the denominators of its parametrization; the points where one
         vanishes are searched as sets of their own.
@@ -154,6 +159,10 @@ class Component(Displayable):
         first_order, classification, reason, order, branches: see
         :func:`coopkin_sym.analysis.finite.on_locus.finite_at_witnesses`), when it was
         asked for; None otherwise.
+    chart
+        The joints at q = pi in the chart the equations are written in (their variable
+        is ``s_<joint>``, and a component of that chart lies where they are at pi);
+        empty in the ``t`` chart.
     algebraic_witness
         When no rational witness exists: a real point with algebraic coordinates,
         ``{"point": {"q1": "-pi/6", ...}, "root_of": "t_q1**2 + 4*t_q1 + 1", "root":
@@ -164,18 +173,18 @@ class Component(Displayable):
     -------
     >>> from coopkin_sym import load
     >>> c = load("paper-case1-hard").locus().components[0]
-    >>> c.equations, c.condition, c.changes["Nm"]
-    (['t_q1 + 1', 't_q2 + 1'], 'q1 = -pi/2, q2 = -pi/2', (2, 3))
+    >>> c.equations, c.condition.text, c.changes["Nm"]
+    ([NamedPolynomial('t_q1 + 1'), NamedPolynomial('t_q2 + 1')], 'q1 = -pi/2, q2 = -pi/2', (2, 3))
     >>> c
     <Component q1 = -pi/2, q2 = -pi/2 (isolated): Nm 2->3, Nc 2->3, Nh 0->1>
     """
 
-    equations: list[str]
+    equations: list[NamedPolynomial]
     numbers: dict[str, int]
     witness: Point | Mapping[str, str] | None
     real: bool
     kind: str = "hypersurface"
-    condition: str = ""
+    condition: Condition = field(default_factory=Condition)
     drops: list[str] = field(default_factory=list)
     changes: dict[str, tuple[int, int]] = field(default_factory=dict)
     stated_meaning: list[str] = field(default_factory=list)
@@ -186,16 +195,22 @@ class Component(Displayable):
     parent: int | None = None
     algebraic_witness: dict | None = None
     real_points: str = ""
-    outside: list[str] = field(default_factory=list)
+    outside: list[NamedPolynomial] = field(default_factory=list)
     finite: dict | None = None
+    chart: tuple[str, ...] = ()
     shown: Any = field(default=None, repr=False, compare=False)
-    polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
-                                                      compare=False)
-    outside_polynomials: list[NamedPolynomial] | None = field(default=None, repr=False,
-                                                              compare=False)
+
+    def __post_init__(self) -> None:
+        # a component written by hand may give texts: read once, by the one parser
+        self.equations = [_polynomial(e, f"equation {k + 1}")
+                          for k, e in enumerate(self.equations)]
+        self.outside = [_polynomial(e, f"outside {k + 1}") for k, e in enumerate(self.outside)]
+        if isinstance(self.condition, str):
+            self.condition = Condition.parse(self.condition)
+        self.chart = tuple(sorted(self.chart))
 
     def __repr__(self) -> str:
-        where = self.condition or ", ".join(f"{e} = 0" for e in self.equations)
+        where = self.condition.text or ", ".join(f"{e} = 0" for e in self.equations)
         depth = f", depth {self.depth}" if self.depth else ""
         changes = (", ".join(f"{k} {a}->{b}" for k, (a, b) in self.changes.items())
                    if self.changes else numbers_line(self.numbers))
@@ -203,10 +218,8 @@ class Component(Displayable):
 
     def equation_polynomials(self, names: Sequence[str], where: str = ""
                              ) -> list[NamedPolynomial]:
-        """The equations as exact polynomials: those the search found them as, or, for
-        a component written by hand (or whose texts were changed since), read from
-        :attr:`equations` by the package's one parser (only ``names`` may appear;
-        ``where`` starts the entry an error names).
+        """The equations, checked to use only ``names`` (a package error names the
+        entry, starting with ``where``, of one that uses another name).
 
         Example
         -------
@@ -214,12 +227,12 @@ class Component(Displayable):
         >>> [p.variables for p in c.equation_polynomials(["t_q1", "t_q2"])]
         [('t_q1', 't_q2')]
         """
-        return _exact(self.polynomials, self.equations, names, f"{where}equation")
+        return _within(self.equations, names, f"{where}equation")
 
     def outside_polynomials_of(self, names: Sequence[str], where: str = ""
                                ) -> list[NamedPolynomial]:
-        """:attr:`outside` as exact polynomials (see :meth:`equation_polynomials`)."""
-        return _exact(self.outside_polynomials, self.outside, names, f"{where}outside")
+        """:attr:`outside`, checked as in :meth:`equation_polynomials`."""
+        return _within(self.outside, names, f"{where}outside")
 
     def to_json(self) -> dict:
         """Plain JSON data; ``parent`` in the report's numbering (``#1`` is 1). The
@@ -228,6 +241,11 @@ class Component(Displayable):
                if f.name not in _NOT_IN_JSON}
         if self.parent is not None:
             out["parent"] = self.parent + 1
+        out["equations"] = [p.text for p in self.equations]
+        out["outside"] = [p.text for p in self.outside]
+        out["condition"] = self.condition.text
+        out["condition_data"] = self.condition.to_json()
+        out["chart"] = list(self.chart)
         out["changes"] = {k: list(v) for k, v in self.changes.items()}
         out["decided"] = _remark_json(self.decided)
         out["witness"] = None if self.witness is None else dict(self.witness)
@@ -235,18 +253,22 @@ class Component(Displayable):
         return out
 
 
+def _polynomial(p: NamedPolynomial | str, where: str) -> NamedPolynomial:
+    return p if isinstance(p, NamedPolynomial) else NamedPolynomial.read(p, where)
+
+
+def _within(polys: list[NamedPolynomial], names: Sequence[str], what: str
+            ) -> list[NamedPolynomial]:
+    for k, p in enumerate(polys):
+        missing = [v for v in p.variables if v not in names]
+        if missing:
+            raise NumberError(f"{what} {k + 1}", f"{clip(p.text, 200)} uses "
+                              f"{', '.join(missing)}, not among {', '.join(names) or 'no names'}")
+    return list(polys)
+
+
 def _remark_json(remark: Remark | str) -> dict | str:
     return remark.to_json() if isinstance(remark, Remark) else remark
-
-
-def _exact(kept: list[NamedPolynomial] | None, texts: list[str], names: Sequence[str],
-           what: str) -> list[NamedPolynomial]:
-    """The exact polynomials of a component's texts: those kept by the search while
-    they still print as the texts, else the texts read by the one parser."""
-    if kept is not None and [p.text for p in kept] == list(texts):
-        return list(kept)
-    return [NamedPolynomial.parse(text, names, f"{what} {k + 1}")
-            for k, text in enumerate(texts)]
 
 
 @dataclass
@@ -565,7 +587,7 @@ KIND_ORDER = ("hypersurface", "subvariety", "isolated", "chart")
 
 def _sibling_key(c: Component) -> tuple:
     kind = KIND_ORDER.index(c.kind) if c.kind in KIND_ORDER else len(KIND_ORDER)
-    return (kind, len(c.equations), [(len(e), e) for e in c.equations], c.condition,
+    return (kind, len(c.equations), [e.sort_key() for e in c.equations], c.condition.text,
             sorted(c.numbers.items()), sorted((c.witness or {}).items()))
 
 

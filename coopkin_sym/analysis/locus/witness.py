@@ -17,10 +17,8 @@ True
 from __future__ import annotations
 
 import itertools
-import re
-from collections.abc import Callable
+from collections.abc import Sequence
 from fractions import Fraction
-from math import atan, pi
 
 import flint
 import numpy as np
@@ -29,6 +27,7 @@ import sympy as sp
 from coopkin_sym.analysis.floatcheck import float_numbers
 from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
+from coopkin_sym.analysis.locus.conditions import Condition, Value
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
 from coopkin_sym.analysis.mobility import Analysis, numbers_modulo
@@ -37,6 +36,7 @@ from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import angle_text, parse_expression
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.quotient import Quotient, Tower
 from coopkin_sym.exact.rationals import to_fraction
 from coopkin_sym.exact.realroot import RealRoot, element_expression
@@ -194,61 +194,41 @@ def value_near(v, a: Fraction) -> Fraction:
                Fraction(0))
 
 
-def algebraic_point_text(ctx: SearchContext, values: dict, root: RealRoot, x: str,
-                          only: set[str] | None = None) -> dict[str, str]:
-    """The point (at one real root) in ``--at`` syntax, exact (radicals, or CRootOf);
-    an angle is a rational multiple of pi when it is one (decided by arithmetic in
-    ``Q(alpha)``, :meth:`~coopkin_sym.exact.realroot.RealRoot.angle_at`)."""
+def algebraic_point_values(ctx: SearchContext, values: dict, root: RealRoot, x: str,
+                            only: set[str] | None = None) -> dict[str, sp.Expr]:
+    """The point (at one real root), exact SymPy numbers (radicals, or CRootOf) named
+    as in ``--at``; an angle is a rational multiple of pi when it is one (decided by
+    arithmetic in ``Q(alpha)``, :meth:`~coopkin_sym.exact.realroot.RealRoot.angle_at`)."""
     expr = root.expression()
-    out: dict[str, str] = {}
+    out: dict[str, sp.Expr] = {}
     for n, (kind, name) in ctx.kinds.items():
         if only is not None and n not in only:
             continue
         v = _GENERATOR if n == x and n not in values else values[n]
-        out[name] = sp.sstr(root.angle_at(v) if kind == "revolute"
-                            else element_expression(v, expr))
+        out[name] = root.angle_at(v) if kind == "revolute" else element_expression(v, expr)
     return out
+
+
+def algebraic_point_text(ctx: SearchContext, values: dict, root: RealRoot, x: str,
+                         only: set[str] | None = None) -> dict[str, str]:
+    """:func:`algebraic_point_values` in ``--at`` syntax."""
+    return {k: sp.sstr(v) for k, v in algebraic_point_values(ctx, values, root, x,
+                                                               only).items()}
 
 
 #: alpha itself, as an element of ``Q(alpha)``.
 _GENERATOR = flint.fmpq_poly([0, 1])
 
 
-def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> str:
-    """The real points of an algebraic component, in angles where they read simply."""
+def algebraic_condition(ctx: SearchContext, x: str, g, values: dict) -> Condition:
+    """The real points of an algebraic component, one alternative per real root."""
     names = {x, *values}
     roots = RealRoot.all_of(univariate(ctx, g, x).coeffs())
     kinds = {name: kind for kind, name in ctx.kinds.values()}
-    variables = {name: n for n, (_kind, name) in ctx.kinds.items()}
-    parts = []
-    for root in roots:
-        text = algebraic_point_text(ctx, values, root, x, only=names)
-        a = root.approximation(Fraction(1, 10**30))
-
-        def near(k: str, a: Fraction = a) -> float:  # float-ok: display only
-            n = variables[k]
-            t = float(a if n == x and n not in values  # float-ok: display only
-                      else value_near(values[n], a))
-            return 2 * atan(t) if kinds[k] == "revolute" else t  # float-ok
-
-        parts.append(", ".join(readable(k, v, kinds[k], near) for k, v in text.items()))
-    return " or ".join(parts)
-
-
-def readable(name: str, exact: str, kind: str,
-             near: Callable[[str], float] | None = None) -> str:  # float-ok
-    """``name = exact`` when short, else its value to 4 significant digits (in degrees
-    for an angle); the exact value stays in the witness. ``near(name)``, when given,
-    is that value (in radians for an angle), else it is read from ``exact``."""
-    if len(exact) <= 32 and "CRootOf" not in exact:
-        return f"{name} = {exact}"
-    if near is not None:
-        value = near(name)
-    else:
-        value = float(parse_expression(exact, [], name).evalf(30))  # float-ok: display only
-    if kind == "revolute":
-        return f"{name} \u2248 {value * 180 / pi:.4g}\u00b0"
-    return f"{name} \u2248 {value:.4g}"
+    return Condition.either(
+        Condition.of(*(Value(k, v, kinds[k]) for k, v in
+                       algebraic_point_values(ctx, values, root, x, only=names).items()))
+        for root in roots)
 
 
 def attach_algebraic_witness(ctx: SearchContext, comp: Component, x: str, g, values: dict,
@@ -331,7 +311,7 @@ def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot,
 
 
 def float_image_checks(ctx: SearchContext, approx_at: Point, analysis, numbers: Numbers,
-                        comp_equations: list[str]):
+                        comp_equations: Sequence[NamedPolynomial]):
     """Float checks at the float image of an irrational witness (a rational point
     within 1e-40 of it stands in for it; its float64 image is the same), where the
     exact numbers are the witness's own."""
@@ -359,7 +339,7 @@ def attach_witness(ctx: SearchContext, comp: Component, witness: Point,
 
 
 def float_checks(ctx: SearchContext, witness: Point, analysis,
-                  equations: list[str] = ()) -> list[FloatCheck]:
+                  equations: Sequence[NamedPolynomial] = ()) -> list[FloatCheck]:
     """Float ranks at the witness, at points near it, and with lengths rescaled. The
     nearby points move a revolute joint of the component's last equation (so they leave
     the component, and stay in its parent)."""
@@ -369,11 +349,10 @@ def float_checks(ctx: SearchContext, witness: Point, analysis,
     checks.append(FloatCheck(0.0, scale, witness, analysis.numbers.as_dict(),
                              float_numbers(analysis) if probe is None else
                              probe.numbers(witness)[1]))
-    local = {str(v): v for v in ctx.symbols.values()}
-    used = [set(re.findall(r"[A-Za-z_]\w*", eq)) & set(local) for eq in reversed(equations)]
+    used = [set(eq.variables) for eq in reversed(equations)]
     revolute = [(n, name) for n, (kind, name) in ctx.kinds.items() if kind == "revolute"]
-    joint = next((name for names in used for n, name in revolute
-                  if str(ctx.symbols[n]) in names), revolute[0][1] if revolute else None)
+    joint = next((name for names in used for n, name in revolute if n in names),
+                 revolute[0][1] if revolute else None)
     for distance in FLOAT_DISTANCES:
         if joint is None:
             break

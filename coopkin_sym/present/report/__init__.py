@@ -45,7 +45,6 @@ from coopkin_sym.present.files import check_output_path, write_files
 from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
 from coopkin_sym.present.report.blocks import Renderer, render
 from coopkin_sym.present.report.completeness import SHOWN_FAILURES as SHOWN_FAILURES
-from coopkin_sym.present.report.conditions import _short_condition as _short_condition
 from coopkin_sym.present.report.document import build_document
 from coopkin_sym.present.report.formulas import MAX_EQUATION as MAX_EQUATION
 from coopkin_sym.present.report.pictures import (

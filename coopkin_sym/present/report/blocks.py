@@ -24,8 +24,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol, runtime_checkable
 
+from coopkin_sym.present.formula import Formula as Formula
+
 #: An inline span: ``(kind, value)``, the kind one of :data:`SPAN_KINDS`.
 Span = tuple[str, str]
+
+
 
 #: The kinds of inline spans, with what their value is.
 SPAN_KINDS: dict[str, str] = {
@@ -33,10 +37,11 @@ SPAN_KINDS: dict[str, str] = {
     "strong": "words in bold",
     "code": "text shown as typed (names, commands)",
     "nums": "a tuple of numbers, kept on one line",
-    "eq": "a polynomial (mathematics in LaTeX)",
-    "eq0": "a polynomial equated to zero (mathematics in LaTeX)",
+    "eq": "a polynomial (mathematics in LaTeX; a Formula's tex is its LaTeX)",
+    "eq0": "a polynomial equated to zero (mathematics in LaTeX; a Formula's tex is the "
+           "polynomial's LaTeX)",
     "at": "a point in --at syntax (mathematics in LaTeX)",
-    "cond": "a condition in angles (mathematics in LaTeX)",
+    "cond": "a condition in angles (mathematics in LaTeX; a Formula's tex is all of it)",
 }
 
 

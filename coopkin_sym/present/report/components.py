@@ -11,17 +11,27 @@ Example
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping, Sequence
 
 from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
+from coopkin_sym.exact.angles import joint_of
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.classes import class_changes_text
+from coopkin_sym.present.conditions import condition_text, short_condition
 from coopkin_sym.present.finite import finite_summary
+from coopkin_sym.present.formula import latex as _latex
 from coopkin_sym.present.remarks import remark_text
-from coopkin_sym.present.report.blocks import Bullets, Heading, Paragraph, Span, Table, _t
-from coopkin_sym.present.report.conditions import _short_condition
+from coopkin_sym.present.report.blocks import (
+    Bullets,
+    Formula,
+    Heading,
+    Paragraph,
+    Span,
+    Table,
+    _t,
+)
 from coopkin_sym.present.report.formulas import MAX_EQUATION
 from coopkin_sym.present.report.words import (
     KIND_WORDS,
@@ -60,7 +70,7 @@ def _float_cell(c: Component, generic: Mapping[str, int]) -> list[Span]:
     return [("strong", f"{wrong}/{len(verdicts)} wrong"), _t(": " + ", ".join(kinds))]
 
 
-def _algebraic_witness_cell(w: Mapping, equations: Sequence[str] = (),
+def _algebraic_witness_cell(w: Mapping, equations: Sequence[NamedPolynomial] = (),
                             compact: bool = False) -> list:
     """An algebraic witness: exact in ``--at`` syntax when short, else its value to 12
     digits (the exact point is in the component's details); ``compact`` (tables) keeps
@@ -71,8 +81,7 @@ def _algebraic_witness_cell(w: Mapping, equations: Sequence[str] = (),
     approx = dict(point)
     approx.update({k: v for k, v in w.get("approx", {}).items()})
     if compact:
-        used = {n[2:] if n.startswith("t_") else n
-                for e in equations for n in re.findall(r"[A-Za-z_]\w*", e)}
+        used = {joint_of(n) or n for e in equations for n in e.variables}
         shown = {k: f"{float(v):.4g}" for k, v in w.get("approx", {}).items()  # float-ok
                  if k in used}
         if shown:
@@ -86,7 +95,7 @@ def _components_table(locus: Locus) -> Table:
         name = _component_name(k)
         if c.parent is not None:
             name += f" (in #{c.parent + 1})"
-        where = [("cond", _short_condition(c))]
+        where = [("cond", short_condition(c))]
         if not c.real:
             where.append(_t(" (real points: undecided)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
@@ -102,27 +111,27 @@ def _components_table(locus: Locus) -> Table:
                  latex_skip=(2,))
 
 
-def _equation_parts(equations: Sequence[str]) -> list[Span]:
+def _equation_parts(equations: Sequence[NamedPolynomial]) -> list[Span]:
     parts: list[Span] = []
     for i, e in enumerate(equations):
         if i:
             parts.append(_t(", "))
-        if len(e) > MAX_EQUATION:
-            parts.append(("code", e[:MAX_EQUATION] + " ..."))
-            parts.append(_t(f" ({len(e)} characters; all of it in the JSON report) = 0"))
+        if len(e.text) > MAX_EQUATION:
+            parts.append(("code", e.text[:MAX_EQUATION] + " ..."))
+            parts.append(_t(f" ({len(e.text)} characters; all of it in the JSON report) = 0"))
         else:
-            parts.append(("eq0", e))
+            parts.append(("eq0", Formula(e.text, _latex(e.to_sympy()))))
     return parts
 
 
 def _component_blocks(locus: Locus, k: int, c: Component) -> list:
     name = f"Component {_component_name(k)}: "
     out: list = [Heading(3, [_t(name), ("cond" if c.condition else "text",
-                                        _short_condition(c))], f"component-{k + 1}")]
+                                        short_condition(c))], f"component-{k + 1}")]
     items: list[list[Span]] = []
     items.append([("strong", "Equations:"), _t(" "), *_equation_parts(c.equations)])
     if c.condition:
-        items.append([("strong", "In angles:"), _t(" "), ("cond", c.condition)])
+        items.append([("strong", "In angles:"), _t(" "), ("cond", condition_text(c))])
     if c.outside:
         items.append([("strong", "Except where:"), _t(" "), *_equation_parts(c.outside),
                       _t(" (denominators of its parametrization; those points are "

@@ -19,11 +19,11 @@ from typing import Any
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.present.classes import classes_text
+from coopkin_sym.present.conditions import short_condition
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report.blocks import Document, Figure, Paragraph, Table, _h, _t
 from coopkin_sym.present.report.completeness import _certificate_blocks, _completeness_line
 from coopkin_sym.present.report.components import _component_blocks, _components_table
-from coopkin_sym.present.report.conditions import _short_condition
 from coopkin_sym.present.report.formulas import _list_or
 from coopkin_sym.present.report.locked import _passive_blocks
 from coopkin_sym.present.report.pictures import (
@@ -94,7 +94,7 @@ def _float_summary_blocks(locus: Locus) -> list:
         if not c.float_checks:
             continue
         v = [_verdict(f, locus.generic) for f in c.float_checks]
-        rows.append([[_t(_component_name(k))], [("cond", _short_condition(c))],
+        rows.append([[_t(_component_name(k))], [("cond", short_condition(c))],
                      [_t(str(len(v)))], [_t(str(v.count("agree")))],
                      [_t(str(v.count("missed")))], [_t(str(v.count("false")))]])
     out.append(Table(["#", "where", "tests", "agree", "missed singular",

@@ -79,12 +79,6 @@ def _tex_code(text: str) -> str:
     return r"\texttt{" + _tex_escape(text).replace(",", r",\allowbreak{}") + "}"
 
 
-def _latex(expr: sp.Expr) -> str:
-    """SymPy's LaTeX with plain-LaTeX commands only (no amsmath's \\operatorname)."""
-    text = sp.latex(expr, inv_trig_style="full")
-    return re.sub(r"\\operatorname\{(\w+)\}", r"\\mathrm{\1}", text)
-
-
 def _formula(text: str) -> list[Span]:
     """``t_q1**2 + 1 = 0 (no real points)`` as an equation and its words; plain text
     when it is not a polynomial."""

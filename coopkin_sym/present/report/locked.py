@@ -16,10 +16,10 @@ from collections.abc import Mapping
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
 from coopkin_sym.present.certificate import completeness_text
+from coopkin_sym.present.conditions import condition_text
 from coopkin_sym.present.passive import PASSIVE_WORDS
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report.blocks import Paragraph, Table, _h, _t
-from coopkin_sym.present.report.conditions import _condition
 from coopkin_sym.present.report.formulas import _list_or
 from coopkin_sym.present.report.words import witness_text
 
@@ -70,7 +70,7 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
         if not c.real:
             witness.append(_t(" (real points: undecided)"))
-        table.append([[_t(name)], [("cond", _condition(c))], *cells, witness])
+        table.append([[_t(name)], [("cond", condition_text(c))], *cells, witness])
     others = len(locked.components) - len(table)
     if table:
         out.append(Table(["#", "where", "Nuo", "Npi", "witness (--at)"], table, "llccl",

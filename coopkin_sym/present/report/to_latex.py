@@ -16,19 +16,19 @@ from string import Template
 import sympy as sp
 
 from coopkin_sym.exact.parse import NumberError, parse_expression
+from coopkin_sym.present.formula import latex as _latex
 from coopkin_sym.present.report.blocks import (
     Bullets,
     Document,
     Figure,
+    Formula,
     Heading,
     Paragraph,
     Span,
     Table,
 )
-from coopkin_sym.present.report.conditions import _tex_cond
 from coopkin_sym.present.report.formulas import (
     MAX_EQUATION,
-    _latex,
     _read,
     _tex_code,
     _tex_comment,
@@ -43,6 +43,8 @@ _TOP = Template("% Singularity-locus report of $subject (coopkin locus); \\input
 
 
 def _tex_eq(text: str, tail: str = "") -> str:
+    if isinstance(text, Formula):  # written from the exact polynomial
+        return f"${text.tex}{tail}$"
     expr = _read(text)
     if expr is None:
         return _tex_code(text + tail)
@@ -98,7 +100,7 @@ class LatexRenderer:
             elif kind == "at":
                 out.append(_tex_at(value))
             elif kind == "cond":
-                out.append(_tex_cond(value))
+                out.append(value.tex if isinstance(value, Formula) else _tex_code(value))
             else:
                 out.append(_tex_code(value))
         return "".join(out)

@@ -11,6 +11,7 @@ from collections.abc import Iterator
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.locus.conditions import Condition, Value
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.search.codimension import isolated
@@ -87,7 +88,7 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
                                   deferred=[], polys={})
         equations = [cotangent_name(n) for n in subset]
         for n in subset:
-            ctx.readings[cotangent_name(n)] = f"{n} = pi"
+            ctx.readings[cotangent_name(n)] = Value(n, sp.pi, "revolute")
         numbers = decompose(rows, ctx.model, sub.row_contacts, sub.ring.zctx).numbers
         parent, depth = None, 0
         wider = wider_component(sub, {}, numbers)
@@ -99,7 +100,8 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
                                   equations, numbers, kind, {"Q"},
                                   Remark.of("decided_other_variables" if sub.ring_names
                                             else "decided_at_point"),
-                                  condition=where)
+                                  condition=Condition.of(*(Value(n, sp.pi, "revolute")
+                                                           for n in subset)))
             for offset in range(6):
                 values = complete_point(sub, {}, {}, offset)
                 if values is not None and numbers_at_values(sub, values) == numbers:

@@ -117,13 +117,14 @@ def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
             numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, reducer)
         if numbers.as_dict() in (ci.numbers, cj.numbers):
             continue
-        eqs = ci.equations + [e for e in cj.equations if e not in ci.equations]
+        eqs = [e.text for e in ci.equations]
+        eqs += [e.text for e in cj.equations if e not in ci.equations]
         kind = "isolated" if len(dims_i | dims_j) == len(free) else "subvariety"
         comp = _new_component(ctx, place.inside(depth=place.depth + 1,
                                                 parent=ctx.locus.components.index(ci)),
                               eqs, numbers, kind, {"Q"},
                               Remark.of("decided_joined_fields", fields=len(moduli)),
-                              condition=f"{ci.condition}; and {cj.condition}",
+                              condition=ci.condition & cj.condition,
                               within=place.point)
         if comp is None:
             continue
@@ -336,7 +337,7 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                             "no_parametrization")
     else:
         inside_curved(ctx, place.inside(
-            rows=rows, equations=comp.equations, point=inner,
+            rows=rows, equations=[e.text for e in comp.equations], point=inner,
             charts=(*place.charts, c1) if not c1.is_constant() else place.charts),
             h, kx, comp)
 
@@ -434,8 +435,7 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
     x, g, eq_polys, alpha = algebraic
     condition = algebraic_condition(ctx, x, g, values)
     if place.equations:
-        inside = angle_condition(ctx, place.equations)
-        condition = " or ".join(f"{inside}, {part}" for part in condition.split(" or "))
+        condition = angle_condition(ctx, place.equations) & condition
     m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
                                                              sp.Symbol("alpha")))
     comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},

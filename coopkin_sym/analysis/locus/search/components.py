@@ -14,6 +14,7 @@ from coopkin_sym.analysis.locus.algebra import (
     poly_text,
     vars_of,
 )
+from coopkin_sym.analysis.locus.conditions import Condition, Vanishes
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.types import Component
@@ -98,7 +99,7 @@ def off_charts(charts, substitute, quotient=None) -> bool:
 # --- components -------------------------------------------------------------------------
 def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbers: Numbers,
                    kind: str, drops, decided: Remark, *, witness: dict | None = None,
-                   condition: str | None = None, real: bool = True, chain: dict | None = None,
+                   condition: Condition | None = None, real: bool = True, chain: dict | None = None,
                    within: dict | None = None,
                    generic_point: tuple | None = None) -> Component | None:
     """Record a component found at ``place`` (its depth and parent; None when the same
@@ -110,10 +111,11 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     ``(parametrization, quotient or None)``, describes its generic point: a component of
     the same chart with the same numbers whose equations vanish there contains it, and
     it is not recorded."""
-    if any(sorted(c.equations) == sorted(equations) for c in ctx.locus.components):
+    polys = [_named(ctx, text) for text in equations]
+    if any(set(c.equations) == set(polys) for c in ctx.locus.components):
         return None
     here = numbers.as_dict()
-    if any(c.numbers == here and c.equations and set(c.equations) < set(equations)
+    if any(c.numbers == here and c.equations and set(c.equations) < set(polys)
            for c in ctx.locus.components):
         return None  # inside a recorded component, with its numbers: nothing new
     if chain is not None and any(_within(ctx, chain, c, numbers)
@@ -126,14 +128,13 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
     changes = {k: (generic[k], here[k]) for k in generic if generic[k] != here[k]}
-    comp = Component(equations=equations, numbers=here, witness=None, real=real,
+    outside = _denominators(ctx, chain if chain is not None else within, equations)
+    comp = Component(equations=polys, numbers=here, witness=None, real=real,
                      kind=kind, condition=condition or angle_condition(ctx, equations),
                      drops=drops_text(drops), changes=changes, decided=decided,
                      depth=place.depth, parent=place.parent,
-                     outside=_denominators(ctx, chain if chain is not None else within,
-                                           equations))
-    comp.polynomials = [_named(ctx, text) for text in comp.equations]
-    comp.outside_polynomials = [_named(ctx, text) for text in comp.outside]
+                     outside=[_named(ctx, text) for text in outside],
+                     chart=tuple(ctx.pi))
     if witness is not None:
         attach_witness(ctx, comp, witness, numbers)
     ctx.locus.components.append(comp)
@@ -165,8 +166,8 @@ def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bo
     ``quotient`` by an irreducible polynomial."""
     if ctx.owners is None or ctx.owners.get(id(comp)) is not ctx:
         return False
-    for text in comp.equations:
-        p = ctx.polys.get(text)
+    for eq in comp.equations:
+        p = ctx.polys.get(eq.text)
         if p is None:
             return False
         p = _on_chain(p, ctx, point)
@@ -283,10 +284,11 @@ def _within(ctx: SearchContext, chain: dict, other: Component, numbers: Numbers)
     return _contained(ctx, chain, known[1])
 
 
-def angle_condition(ctx: SearchContext, equations: list[str]) -> str:
+def angle_condition(ctx: SearchContext, equations: list[str]) -> Condition:
     """The equations in angles where they read simply (see
     :func:`~coopkin_sym.analysis.locus.algebra.read_poly`)."""
-    return ", ".join(ctx.readings.get(eq, f"{eq} = 0") for eq in equations)
+    return Condition.of(*(ctx.readings.get(eq) or Vanishes(_named(ctx, eq))
+                          for eq in equations))
 
 
 def settle_realness(ctx: SearchContext) -> None:

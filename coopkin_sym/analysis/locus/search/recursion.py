@@ -206,7 +206,7 @@ def go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
         why_not = "max_depth"
     if why_not is not None:
         ctx.locus.unexplored.append(Remark.of(
-            "deeper_not_explored", component=index, condition=comp.condition,
+            "deeper_not_explored", component=index, condition=comp.condition.text,
             reason=why_not, bound=ctx.max_depth if why_not == "max_depth" else None))
     else:
         explore(ctx, place.inside(depth=place.depth + 1, parent=index))
