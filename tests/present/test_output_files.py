@@ -54,7 +54,8 @@ def test_a_symlink_at_the_old_partial_name_redirects_nothing(tmp_path):
     assert result.exit_code == 0, result.output
     assert victim.read_text() == "precious"
     assert out.is_file() and not out.is_symlink()
-    assert out.read_text().startswith("#")
+    assert out.read_text().startswith("q1,q1_rad,Nm,")            # the table
+    assert (tmp_path / "out.csv.json").is_file()                  # and its metadata
 
 
 def test_a_symlink_at_the_target_is_replaced_not_followed(tmp_path):
