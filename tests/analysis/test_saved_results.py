@@ -443,6 +443,9 @@ def test_parquet(tmp_path):
                                       "-o", str(out), "--no-progress"])
     assert result.exit_code == 0, result.output
     pd.testing.assert_frame_equal(pd.read_parquet(out), frame)
+    with pytest.raises(SweepError, match=r"cli\.parquet: a Parquet table is read with "
+                                         r"pandas\.read_parquet \(SweepResult\.read reads"):
+        SweepResult.read(out)
 
 
 def test_parquet_without_pyarrow_says_what_to_install(tmp_path, monkeypatch):

@@ -21,7 +21,7 @@ from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.analysis.sweep.saved import sweep_from_file, sweep_from_tree
 from coopkin_sym.analysis.sweep.saved_csv import metadata_path, sweep_from_csv_file
 from coopkin_sym.analysis.sweep.values import Value
-from coopkin_sym.errors import MissingDependency
+from coopkin_sym.errors import MissingDependency, SweepError
 
 
 @dataclass(eq=False)
@@ -338,8 +338,13 @@ class SweepResult(Displayable):
         ...
         coopkin_sym.errors.SweepError: /: is a directory, not a file
         """
-        if Path(path).suffix.lower() == ".csv":
+        suffix = Path(path).suffix.lower()
+        if suffix == ".csv":
             return sweep_from_csv_file(path, cls)
+        if suffix == ".parquet":
+            raise SweepError(f"{os.fspath(path)}: a Parquet table is read with "
+                             "pandas.read_parquet (SweepResult.read reads the .csv and "
+                             "the .json forms)")
         return sweep_from_file(path, cls)
 
     def files(self, path: str | os.PathLike) -> dict[Path, bytes]:
