@@ -333,6 +333,10 @@ def sweep(
             if fmt == "parquet":
                 from coopkin_sym.analysis.sweep.result import need_parquet
                 need_parquet()
+            if fmt == "csv":            # its metadata file, noted as the table is
+                from coopkin_sym.analysis.sweep.saved_csv import metadata_path
+                check_output_path(metadata_path(target), (".json",), SweepError,
+                                  "table metadata (--output)")
     except (*USER_ERRORS, SweepError) as exc:
         _fail(str(exc))
 
