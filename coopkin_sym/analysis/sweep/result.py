@@ -1,5 +1,6 @@
-"""The numbers at every point of a sweep, with their exact values, as rows, CSV and
-JSON (see :mod:`coopkin_sym.analysis.sweep`).
+"""The numbers at every point of a sweep, with their exact values, as rows, a plain CSV
+with its metadata file, JSON, a pandas DataFrame and Parquet (see
+:mod:`coopkin_sym.analysis.sweep` and ``docs/sweep-files.md``).
 """
 
 from __future__ import annotations
