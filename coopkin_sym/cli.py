@@ -308,8 +308,9 @@ def sweep(
         "--at", help="Values of the other joints and of parameters, as for "
                      "`coopkin analyze`.")] = None,
     output: Annotated[str | None, typer.Option(
-        "--output", "-o", help="Write the table to a .csv or .json file (default: CSV on "
-                               "standard output).")] = None,
+        "--output", "-o", help="Write the table to a .csv file (and its metadata to "
+                               "FILE.csv.json), a .json or a .parquet file (default: CSV "
+                               "on standard output).")] = None,
     as_json: Annotated[bool, typer.Option(
         "--json", help="Print JSON instead of CSV when no --output is given.")] = False,
     workers: Annotated[int, typer.Option(
@@ -326,9 +327,16 @@ def sweep(
     try:
         target = None
         if output is not None:
-            target, suffix = check_output_path(output, (".csv", ".json"), SweepError,
-                                               "table (--output)")
+            target, suffix = check_output_path(output, (".csv", ".json", ".parquet"),
+                                               SweepError, "table (--output)")
             fmt = suffix.lstrip(".")
+            if fmt == "parquet":
+                from coopkin_sym.analysis.sweep.result import need_parquet
+                need_parquet()
+            if fmt == "csv":            # its metadata file, noted as the table is
+                from coopkin_sym.analysis.sweep.saved_csv import metadata_path
+                check_output_path(metadata_path(target), (".json",), SweepError,
+                                  "table metadata (--output)")
     except (*USER_ERRORS, SweepError) as exc:
         _fail(str(exc))
 
@@ -342,13 +350,15 @@ def sweep(
         points = grid(system, grid_spec)
         result = _sweep(system, points, at, workers)
         report("the table")
+        if target is not None:
+            return result.files(target), result.summary(), result.prime
         text = result.json_text() if fmt == "json" else result.to_csv()
         return text, result.summary(), result.prime
 
     try:
         text, counts, prime = _bounded(work, timeout, "sweep", no_progress)
         if target is not None:
-            write_files({target: text.encode()}, SweepError)
+            write_files(text, SweepError)
     except TimeLimitReached as exc:
         _cut(exc, "nothing written")
     except (*USER_ERRORS, SweepError) as exc:
@@ -359,7 +369,8 @@ def sweep(
     c = counts
     typer.echo(f"{c['points']} points: {c['certified_mod_p']} certified modulo "
                f"{prime}, {c['rechecked_exact']} rechecked exactly; "
-               f"{c['snapped_values']} snapped angles; wrote {output}")
+               f"{c['snapped_values']} snapped angles; wrote "
+               + " and ".join(str(p) for p in text))
 
 
 @options_command(app, "locus", LocusOptions)

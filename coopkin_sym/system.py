@@ -290,8 +290,9 @@ class System:
 
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
-        :class:`concurrent.futures.Executor`; ``progress`` shows a bar on standard
-        error after a second; ``timeout`` is a wall-clock bound in seconds (past it,
+        :class:`concurrent.futures.Executor` or a dask ``distributed.Client``;
+        ``progress`` shows a bar on standard error after a second; ``timeout`` is a
+        wall-clock bound in seconds (past it,
         :class:`~coopkin_sym.errors.TimeLimitReached`); the bounded sweep runs in a
         process of its own, which cannot use an executor made outside it: give one
         or the other (``coopkin sweep --workers N --timeout S`` makes its pool inside).
@@ -385,7 +386,9 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         Also give each result the JSON document of ``coopkin analyze --json``.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool,
-        ``distributed.Client(...).get_executor()``); None runs here.
+        ``distributed.Client(...).get_executor()``) or a dask ``distributed.Client``
+        itself; None runs here. Anything else is an
+        :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
         Show a progress bar (on stderr, when it is a terminal, after a second).
     chunk

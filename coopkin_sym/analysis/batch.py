@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
-from coopkin_sym.analysis.tasks import Progress, run_tasks
+from coopkin_sym.analysis.tasks import Progress, run_tasks, task_executor
 from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.model import Model, load_model
 
@@ -110,7 +110,9 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     options
         Plain data passed to every call of ``compute``.
     executor
-        Any :class:`concurrent.futures.Executor`; None runs here, in order.
+        Any :class:`concurrent.futures.Executor` or a dask ``distributed.Client``
+        (see :func:`~coopkin_sym.analysis.tasks.task_executor`); None runs here, in
+        order.
     progress
         Report the items done (see :func:`coopkin_sym.exact.bounded.report`; the
         caller's display shows them).
@@ -126,6 +128,7 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     >>> [r.numbers.Nm for r in run_batch(numbers, ["paper-case1-hard", "five-bar"])]
     [2, 3]
     """
+    executor = task_executor(executor)
     results: list[BatchResult | None] = []
     work: list[tuple[int, Any, Any]] = []
     for index, item in enumerate(items):

@@ -4,7 +4,9 @@ The sweep (:mod:`coopkin_sym.analysis.sweep`) and the batches of analyses
 (:mod:`coopkin_sym.analysis.batch`) cut their work into tasks whose arguments and
 results are plain data (integers, numpy arrays, dicts, small frozen dataclasses), so
 they run in this process, in a process pool, or on a cluster
-(``distributed.Client(...).get_executor()``) alike. :func:`run_tasks` submits them and
+(a dask ``distributed.Client``, or its ``get_executor()``) alike: :func:`task_executor`
+checks what was given (a client is asked for its executor; dask is never imported
+here). :func:`run_tasks` submits them and
 yields each result with the position of its task as it completes; the caller puts it
 in place, so the outcome never depends on the order of completion. When the caller
 stops early (an error, an interrupt), the tasks still pending are cancelled.
@@ -26,10 +28,50 @@ from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import Executor, as_completed
 from typing import Any
 
+from coopkin_sym.errors import ArgumentTypeError
 from coopkin_sym.exact.bounded import report
 
+EXECUTORS = ("a concurrent.futures.Executor (ProcessPoolExecutor, ThreadPoolExecutor, "
+             "a cluster's executor), a dask distributed.Client, or None to run here")
 
-def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor | None, *,
+
+def task_executor(executor: object, where: str = "executor") -> Executor | None:
+    """The :class:`concurrent.futures.Executor` that runs the tasks given ``executor``:
+    itself, None (run here, in order), or the executor of a dask
+    ``distributed.Client`` (recognized by its ``get_executor`` and ``submit``; its
+    own ``submit`` returns dask futures, which :func:`concurrent.futures.as_completed`
+    cannot wait on).
+
+    Raises
+    ------
+    ArgumentTypeError
+        For anything else, naming ``where`` and what to pass.
+
+    Example
+    -------
+    >>> from concurrent.futures import ThreadPoolExecutor
+    >>> task_executor(None) is None
+    True
+    >>> with ThreadPoolExecutor(1) as pool:
+    ...     task_executor(pool) is pool
+    True
+    >>> task_executor(4)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.ArgumentTypeError: executor: expected a concurrent.futures.Executor ...int
+    """
+    if executor is None or isinstance(executor, Executor):
+        return executor
+    get = getattr(executor, "get_executor", None)
+    if callable(get) and callable(getattr(executor, "submit", None)):
+        pool = get()
+        if isinstance(pool, Executor):
+            return pool
+    raise ArgumentTypeError(f"{where}: expected {EXECUTORS}; got "
+                            f"{type(executor).__name__}")
+
+
+def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: object, *,
               on_error: Callable[[BaseException], Any] | None = None
               ) -> Iterator[tuple[int, Any]]:
     """``(i, fn(*tasks[i]))`` for every task, as each completes.
@@ -41,7 +83,8 @@ def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor
     tasks
         The argument tuples, plain data.
     executor
-        Any :class:`concurrent.futures.Executor`, or None to run in order here.
+        Any :class:`concurrent.futures.Executor`, a dask ``distributed.Client``, or
+        None to run in order here (see :func:`task_executor`).
     on_error
         With an executor: what a task that failed outside ``fn`` (a worker process that
         died) yields instead of raising, given the exception.
@@ -51,6 +94,7 @@ def run_tasks(fn: Callable[..., Any], tasks: Sequence[tuple], executor: Executor
     >>> list(run_tasks(divmod, [(7, 2), (9, 4)], None))
     [(0, (3, 1)), (1, (2, 1))]
     """
+    executor = task_executor(executor)
     if executor is None:
         for i, args in enumerate(tasks):
             yield i, fn(*args)

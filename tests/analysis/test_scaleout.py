@@ -16,6 +16,7 @@ from random_systems import random_system
 import coopkin_sym
 from coopkin_sym.analysis.batch import BatchResult, run_batch
 from coopkin_sym.analysis.sweep import compile_system, grid
+from coopkin_sym.errors import ArgumentTypeError
 from coopkin_sym.model.examples import list_examples
 from coopkin_sym.present.text import analysis_document
 
@@ -167,3 +168,50 @@ def test_result_as_plain_data():
     assert data["at"] == "q1=pi/2,q2=pi/2" and data["error"] is None
     assert data["numbers"] == data["document"]["numbers"] == r.numbers.as_dict()
     assert pickle.loads(pickle.dumps(r)) == r
+
+
+# --- what executor= takes ------------------------------------------------------------------
+def test_a_dask_client_itself_is_taken_as_executor():
+    distributed = pytest.importorskip("distributed")
+    g = grid(CASE1, "q1=-pi/2..pi/2:5,q2=-pi/2..pi/2:5")
+    items = [("paper-case1-hard", "q1=pi/2,q2=pi/2"), "five-bar", ("five-bar", "q1=1")]
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=2,
+                            dashboard_address=None) as client:
+        spread = CASE1.sweep(g, at="L=1", executor=client, chunk=4)
+        batch = coopkin_sym.analyze_many(items, executor=client, chunk=1)
+        points = CASE1.analyze_many(["q1=pi/2,q2=pi/2", "q1=0"], executor=client)
+    assert spread == CASE1.sweep(g, at="L=1")
+    corners = [k for k, n in enumerate(spread.numbers[:, 0].tolist()) if n == 3]
+    assert corners == [0, 4, 20, 24] and int(spread.rechecked.sum()) == 4   # Nm = 3
+    assert batch == coopkin_sym.analyze_many(items)
+    assert [r.numbers.Nm if r.ok else None for r in batch] == [3, 3, None]
+    assert [r.numbers.Nm for r in points] == [3, 2]
+
+
+class _ClientLike:
+    """Has ``get_executor`` and ``submit`` but its executor is not one."""
+
+    def submit(self, fn, *args):
+        raise AssertionError("never called")
+
+    def get_executor(self):
+        return "not an executor"
+
+
+WHAT_TO_PASS = ("executor: expected a concurrent.futures.Executor (ProcessPoolExecutor, "
+                "ThreadPoolExecutor, a cluster's executor), a dask distributed.Client, "
+                "or None to run here; got ")
+
+
+@pytest.mark.parametrize(("executor", "name"), [(4, "int"), (object(), "object"),
+                                                (_ClientLike(), "_ClientLike"),
+                                                (ProcessPoolExecutor, "type")])
+def test_any_other_executor_is_one_error_saying_what_to_pass(executor, name):
+    message = WHAT_TO_PASS + name
+    calls = [lambda: CASE1.sweep(["q1=0"], executor=executor),
+             lambda: coopkin_sym.analyze_many(["five-bar"], executor=executor),
+             lambda: CASE1.analyze_many(["q1=0"], executor=executor)]
+    for call in calls:
+        with pytest.raises(ArgumentTypeError) as info:
+            call()
+        assert str(info.value) == message

@@ -23,6 +23,7 @@ import coopkin_sym
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.sweep import (
     SweepError,
+    SweepResult,
     Value,
     compile_system,
     grid,
@@ -195,8 +196,10 @@ def test_snapping_is_exact_bounded_and_reported():
     assert res.bound == 1e-9 and len(res.snapped) == 2
     assert_agrees_with_analyze(CASE1, res)
     csv = res.to_csv()
-    assert "# snapped: 2 grid angles with an irrational tan(q/2)" in csv
-    assert "|dq| <= 1e-09 rad" in csv
+    note = res.csv_metadata()["header"]["snapping"]["note"]     # next to the CSV
+    assert note.startswith("2 grid angles with an irrational tan(q/2)")
+    assert "|dq| <= 1e-09 rad" in note
+    assert not any(line.startswith("#") for line in csv.splitlines())
     head = res.to_json()["header"]["snapping"]
     assert head["bound_rad"] == 1e-9 and [s["requested"] for s in head["snapped"]] == [
         "pi/6", "pi/3"]
@@ -299,20 +302,25 @@ def test_modular_evaluation_matches_integer_evaluation():
 
 
 # --- the command line ---------------------------------------------------------------------
-def test_cli_csv_content():
-    result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid",
-                                 "q1=-pi/2..pi/2:3,q2=-pi/2..pi/2:3", "--at", "L=1"])
+def test_cli_csv_content(tmp_path):
+    args = ["sweep", "paper-case1-hard", "--grid", "q1=-pi/2..pi/2:3,q2=-pi/2..pi/2:3",
+            "--at", "L=1"]
+    result = runner.invoke(app, args)
     assert result.exit_code == 0, result.output
-    lines = result.stdout.splitlines()
-    comments = [x for x in lines if x.startswith("#")]
-    assert "# fixed: L=1" in comments
-    assert "# snapped: none: every angle is exact as requested" in comments
-    table = [x for x in lines if not x.startswith("#")]
+    table = result.stdout.splitlines()          # a plain CSV: no comment lines
     assert table[0] == "q1,q1_rad,q2,q2_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
     assert table[1] == ("-pi/2,-1.5707963267948966,-pi/2,-1.5707963267948966,"
                         "3,3,1,0,1,4,1,true")
     assert table[5] == "0,0.0,0,0.0,2,2,1,0,1,4,0,false"
     assert len(table) == 10
+    out = tmp_path / "map.csv"                  # -o: the same table, its metadata next to it
+    result = runner.invoke(app, [*args, "-o", str(out), "--no-progress"])
+    assert result.exit_code == 0, result.output
+    assert f"wrote {out} and {out}.json" in result.stdout
+    assert out.read_text().splitlines() == table
+    header = json.loads((tmp_path / "map.csv.json").read_text())["header"]
+    assert header["at"] == "L=1" and header["columns"] == table[0].split(",")
+    assert header["snapping"]["note"] == "none: every angle is exact as requested"
 
 
 def test_cli_json_and_files(tmp_path):
@@ -332,7 +340,9 @@ def test_cli_json_and_files(tmp_path):
     result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid", "q1=0..pi/2:3",
                                  "-o", str(csv), "--no-progress"])
     assert result.exit_code == 0, result.output
-    assert csv.read_text().splitlines()[6] == "q1,q1_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
+    assert csv.read_text().splitlines()[0] == "q1,q1_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck"
+    back = SweepResult.read(csv)
+    assert back.to_csv() == csv.read_text() and back.summary()["snapped_values"] == 1
     result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid", "q1=0..1:2",
                                  "--json"])
     assert json.loads(result.stdout)["header"]["counts"]["points"] == 2
@@ -360,13 +370,15 @@ def test_cli_errors_are_clean_and_write_nothing(tmp_path, args, message):
 
 # --- float columns and pandas -------------------------------------------------------------
 def _table(csv: str) -> list[list[str]]:
-    return [line.split(",") for line in csv.splitlines() if not line.startswith("#")]
+    assert not any(line.startswith("#") for line in csv.splitlines())
+    return [line.split(",") for line in csv.splitlines()]
 
 
 def test_csv_has_a_float_column_next_to_each_exact_one():
     res = CASE1.sweep(grid(CASE1, "q1=-pi..pi:5,q2=pi/6..pi/6:1"), at="L=1")
     csv = res.to_csv()
-    assert "# q1_rad: q1 in radians, a float (the exact value is in column q1)" in csv
+    assert res.csv_metadata()["header"]["float_columns"]["q1_rad"] == (
+        "q1 in radians, a float (the exact value is in column q1)")
     head, *rows = _table(csv)
     assert head[:4] == ["q1", "q1_rad", "q2", "q2_rad"]
     for row in rows:

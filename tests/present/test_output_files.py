@@ -54,7 +54,8 @@ def test_a_symlink_at_the_old_partial_name_redirects_nothing(tmp_path):
     assert result.exit_code == 0, result.output
     assert victim.read_text() == "precious"
     assert out.is_file() and not out.is_symlink()
-    assert out.read_text().startswith("#")
+    assert out.read_text().startswith("q1,q1_rad,Nm,")            # the table
+    assert (tmp_path / "out.csv.json").is_file()                  # and its metadata
 
 
 def test_a_symlink_at_the_target_is_replaced_not_followed(tmp_path):
@@ -188,3 +189,28 @@ def test_a_report_written_by_another_run_meanwhile_is_not_lost(tmp_path, monkeyp
     assert "another run wrote this file" in result.stderr
     assert target.read_text() == "the other run's report"
     assert '"system": "paper case 1' in (tmp_path / "r.1.json").read_text()
+
+
+def test_a_table_and_its_metadata_written_meanwhile_are_both_kept(tmp_path, monkeypatch):
+    """Another run writes ``out.csv`` and ``out.csv.json`` while this one computes: this
+    run's two files are kept under new names, the other run's pair is left whole."""
+    import coopkin_sym.cli as cli
+
+    out = tmp_path / "out.csv"
+    real = cli._sweep
+
+    def meanwhile(*args, **kwargs):
+        out.write_text("theirs")
+        (tmp_path / "out.csv.json").write_text("their metadata")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(cli, "_sweep", meanwhile)
+    result = runner.invoke(app, ["sweep", "paper-case1-hard", "--grid", "q1=0..1:3",
+                                 "-o", str(out), "--no-progress"])
+    assert result.exit_code == 2
+    assert "another run wrote this file while this one was computing" in result.stderr
+    assert out.read_text() == "theirs"
+    assert (tmp_path / "out.csv.json").read_text() == "their metadata"
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "out.1.csv", "out.csv", "out.csv.1.json", "out.csv.json"]
+    assert (tmp_path / "out.1.csv").read_text().startswith("q1,q1_rad,")

@@ -23,10 +23,13 @@ over Q with flint. No rank is ever decided in floating point.
 irrational is snapped to a nearby angle with a rational ``tan(q/2)`` within
 ``|dq| <= bound`` (floats are used only to choose that rational) and the result says so.
 
-:class:`SweepResult` writes CSV (each swept joint's exact value followed by the same
-value as a float, ``q1_rad`` in radians or ``d1_float`` for a prismatic joint: labelled
-extras for plotting, never used in a decision) and JSON (exact values only), and gives
-a pandas DataFrame (:meth:`SweepResult.to_pandas`) when pandas is installed.
+:class:`SweepResult` writes a plain CSV (each swept joint's exact value followed by the
+same value as a float, ``q1_rad`` in radians or ``d1_float`` for a prismatic joint:
+labelled extras for plotting, never used in a decision) with its metadata in
+``<name>.csv.json``, JSON (exact values only) and, with pandas and pyarrow, Parquet;
+it reads the CSV and the JSON back (:meth:`SweepResult.read`), and gives a pandas
+DataFrame (:meth:`SweepResult.to_pandas`) when pandas is installed
+(``docs/sweep-files.md``).
 
 Example
 -------

@@ -1,9 +1,11 @@
-"""The numbers at every point of a sweep, with their exact values, as rows, CSV and
-JSON (see :mod:`coopkin_sym.analysis.sweep`).
+"""The numbers at every point of a sweep, with their exact values, as rows, a plain CSV
+with its metadata file, JSON, a pandas DataFrame and Parquet (see
+:mod:`coopkin_sym.analysis.sweep` and ``docs/sweep-files.md``).
 """
 
 from __future__ import annotations
 
+import csv
 import io
 import json
 import math
@@ -11,14 +13,16 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass, fields
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers, numbers_line
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.analysis.sweep.saved import sweep_from_file, sweep_from_tree
+from coopkin_sym.analysis.sweep.saved_csv import metadata_path, sweep_from_csv_file
 from coopkin_sym.analysis.sweep.values import Value
-from coopkin_sym.errors import MissingDependency
+from coopkin_sym.errors import MissingDependency, SweepError
 
 
 @dataclass(eq=False)
@@ -250,11 +254,37 @@ class SweepResult(Displayable):
                 f"(largest {worst:.3g} rad); the angles written are the exact ones used")
 
     def header(self) -> dict:
-        """Everything but the points, as plain data."""
+        """Everything but the points, as plain data, for the table (the CSV and its
+        metadata file, :meth:`to_pandas`, Parquet): ``columns`` are those of the table
+        (:meth:`csv_columns`) and ``float_columns`` gives the meaning of each float
+        column. The JSON's header (:meth:`to_json`) has the same entries but for
+        those: its ``columns`` are the keys of its points and ``kinds`` gives each
+        swept joint's kind.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> h = load("paper-case1-hard").sweep(["q1=pi/2"]).header()
+        >>> h["columns"][:3], h["float_columns"]["q1_rad"][:13]
+        (['q1', 'q1_rad', 'Nm'], 'q1 in radians')
+        """
+        return {
+            "system": self.system, "joints": list(self.joints), "at": self.at,
+            "columns": self.csv_columns(), "float_columns": self.float_columns(),
+            **self._rest_of_header(),
+        }
+
+    def _json_header(self) -> dict:
+        """The JSON's header: the columns of its points and the kind of each joint."""
         return {
             "system": self.system, "joints": list(self.joints), "at": self.at,
             "columns": list(self.joints) + list(NUMBER_NAMES) + ["exact_recheck"],
-            "float_columns": self.float_columns(),
+            "kinds": {j: self._kind(k) for k, j in enumerate(self.joints)},
+            **self._rest_of_header(),
+        }
+
+    def _rest_of_header(self) -> dict:
+        return {
             "generic": self.generic.as_dict(),
             "method": (f"ranks modulo p = {self.prime} certify a point when they equal the "
                        "generic ranks (a rank modulo p never exceeds the rank over Q); "
@@ -265,8 +295,10 @@ class SweepResult(Displayable):
         }
 
     def to_json(self) -> dict:
-        """``{"header": {...}, "points": [{"q1": "pi/2", ..., "Nm": 2, ...}, ...]}``."""
-        return {"header": self.header(), "points": self.rows()}
+        """``{"header": {...}, "points": [{"q1": "pi/2", ..., "Nm": 2, ...}, ...]}``:
+        exact values only; every column the header names is a key of every point
+        (schema: ``docs/sweep.schema.json``)."""
+        return {"header": self._json_header(), "points": self.rows()}
 
     @classmethod
     def from_json(cls, data: Mapping | str) -> SweepResult:
@@ -289,8 +321,16 @@ class SweepResult(Displayable):
 
     @classmethod
     def read(cls, path: str | os.PathLike) -> SweepResult:
-        """The result in a JSON file written by :meth:`write` (or ``coopkin sweep -o
-        FILE.json``), read as :meth:`from_json` does.
+        """The result in a file written by :meth:`write` (or ``coopkin sweep -o
+        FILE``): JSON, read as :meth:`from_json` does, or a ``.csv`` table with its
+        metadata file ``<name>.csv.json`` next to it; a ``.csv`` that starts with
+        ``#`` lines (the form of earlier versions, metadata in the comments) is read
+        too, without the snapped angles' requested values, which it does not hold.
+
+        Raises
+        ------
+        SweepError
+            One line naming the file and the first bad entry.
 
         Example
         -------
@@ -299,60 +339,92 @@ class SweepResult(Displayable):
         ...
         coopkin_sym.errors.SweepError: /: is a directory, not a file
         """
+        suffix = Path(path).suffix.lower()
+        if suffix == ".csv":
+            return sweep_from_csv_file(path, cls)
+        if suffix == ".parquet":
+            raise SweepError(f"{os.fspath(path)}: a Parquet table is read with "
+                             "pandas.read_parquet (SweepResult.read reads the .csv and "
+                             "the .json forms)")
         return sweep_from_file(path, cls)
 
+    def files(self, path: str | os.PathLike) -> dict[Path, bytes]:
+        """What :meth:`write` writes for ``path``, by its suffix: ``.csv`` the table
+        (:meth:`to_csv`) and its metadata ``<name>.csv.json``
+        (:meth:`csv_metadata`); ``.parquet`` the table as Parquet (needs pandas and
+        pyarrow); any other suffix the JSON (:meth:`json_text`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2"])
+        >>> [str(p) for p in res.files("map.csv")]
+        ['map.csv', 'map.csv.json']
+        """
+        target = Path(path)
+        suffix = target.suffix.lower()
+        if suffix == ".csv":
+            metadata = json.dumps(self.csv_metadata(), indent=2) + "\n"
+            return {target: self.to_csv().encode(),
+                    metadata_path(target): metadata.encode()}
+        if suffix == ".parquet":
+            return {target: self.parquet_bytes()}
+        return {target: self.json_text().encode()}
+
     def write(self, path: str | os.PathLike) -> None:
-        """Write :meth:`json_text` to ``path`` (read it back with :meth:`read`).
+        """Write the result to ``path`` as :meth:`files` says (read it back with
+        :meth:`read`).
 
         Example
         -------
         >>> import tempfile, pathlib
         >>> from coopkin_sym import load
         >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi/2"])
-        >>> path = pathlib.Path(tempfile.mkdtemp()) / "sweep.json"
-        >>> res.write(path)
-        >>> SweepResult.read(path) == res
+        >>> folder = pathlib.Path(tempfile.mkdtemp())
+        >>> res.write(folder / "sweep.json")
+        >>> SweepResult.read(folder / "sweep.json") == res
+        True
+        >>> res.write(folder / "sweep.csv")
+        >>> sorted(p.name for p in folder.iterdir())
+        ['sweep.csv', 'sweep.csv.json', 'sweep.json']
+        >>> SweepResult.read(folder / "sweep.csv") == res
         True
         """
-        with open(path, "w", encoding="utf-8") as out:
-            out.write(self.json_text())
+        for target, data in self.files(path).items():
+            with open(target, "wb") as out:
+                out.write(data)
 
     def json_text(self) -> str:
         """:meth:`to_json` as text: the header indented, one line per point."""
         points = ",\n".join("  " + json.dumps(row) for row in self.rows())
-        header = json.dumps(self.header(), indent=2).replace("\n", "\n  ")
+        header = json.dumps(self._json_header(), indent=2).replace("\n", "\n  ")
         return f'{{\n  "header": {header},\n  "points": [\n{points}\n  ]\n}}\n'
 
+    def csv_metadata(self) -> dict:
+        """The metadata of the CSV (:meth:`to_csv`), written next to it as
+        ``<name>.csv.json``: ``{"header": ...}`` with :meth:`header` (schema:
+        ``docs/sweep-csv.schema.json``)."""
+        return {"header": self.header()}
+
     def to_csv(self) -> str:
-        """CSV with ``#`` comment lines first (system, fixed values, generic numbers,
-        counts, snapping, float columns), then ``q1,q1_rad,...,Nm,...,Nh,exact_recheck``
-        rows: each swept joint's exact value (``2*atan(-15411/269)``) is followed by
+        """A plain CSV (``pandas.read_csv`` reads it with no option): one line of
+        column names ``q1,q1_rad,...,Nm,...,Nh,exact_recheck``, then one line per
+        point: each swept joint's exact value (``2*atan(-15411/269)``) followed by
         the same value as a float (``q1_rad``, radians; ``d1_float`` for a prismatic
-        joint), for plotting and pandas (:meth:`to_pandas`); the numbers are integers.
+        joint), for plotting and pandas (:meth:`to_pandas`); the numbers are
+        integers, ``exact_recheck`` is ``true`` or ``false``. What the table is (system,
+        fixed values, generic numbers, counts, snapping) is in :meth:`csv_metadata`.
 
         Example
         -------
         >>> from coopkin_sym import load
-        >>> csv = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi"]).to_csv()
-        >>> for line in csv.splitlines()[-2:]:
-        ...     print(line)
+        >>> print(load("paper-case1-hard").sweep(["q1=pi/2,q2=pi"]).to_csv(), end="")
         q1,q1_rad,q2,q2_rad,Nm,Nc,Ni,Nr,Ng,Nd,Nh,exact_recheck
         pi/2,1.5707963267948966,pi,3.141592653589793,2,2,1,0,1,4,0,false
         """
-        h = self.header()
         out = io.StringIO()
-        out.write(f"# system: {self.system}\n")
-        out.write(f"# fixed: {self.at or 'home, parameters symbolic'}\n")
-        out.write("# generic numbers (swept joints symbolic): "
-                  + " ".join(f"{k}={v}" for k, v in h["generic"].items()) + "\n")
-        c = h["counts"]
-        out.write(f"# points: {c['points']}; certified modulo p = {self.prime}: "
-                  f"{c['certified_mod_p']}; rechecked exactly over Q: "
-                  f"{c['rechecked_exact']}\n")
-        out.write(f"# snapped: {self._snap_note()}\n")
-        for name, meaning in h["float_columns"].items():
-            out.write(f"# {name}: {meaning}\n")
-        out.write(",".join(self.csv_columns()) + "\n")
+        table = csv.writer(out, lineterminator="\n")
+        table.writerow(self.csv_columns())
         texts = [[v.text for v in vs] for vs in self.levels]
         floats = [[repr(x) for x in fs] for fs in self._floats()]
         for idx, nums, re in zip(self.index.tolist(), self.numbers.tolist(),
@@ -360,8 +432,44 @@ class SweepResult(Displayable):
             cells = [c for k, i in enumerate(idx) for c in (texts[k][i], floats[k][i])]
             cells += [str(x) for x in nums]
             cells.append("true" if re else "false")
-            out.write(",".join(cells) + "\n")
+            table.writerow(cells)
         return out.getvalue()
+
+    def parquet_bytes(self) -> bytes:
+        """The table of :meth:`to_pandas` as Parquet (``header`` kept in the file's
+        pandas metadata, ``pandas.read_parquet(...).attrs["header"]``). Needs pandas
+        and pyarrow (``pip install pandas pyarrow``).
+
+        Example
+        -------
+        >>> import io
+        >>> from coopkin_sym import load
+        >>> res = load("paper-case1-hard").sweep(["q1=pi/2,q2=pi"])
+        >>> import pandas  # doctest: +SKIP
+        >>> pandas.read_parquet(io.BytesIO(res.parquet_bytes()))["Nm"].tolist()  # doctest: +SKIP
+        [2]
+        """
+        need_parquet()
+        out = io.BytesIO()
+        self.to_pandas().to_parquet(out, engine="pyarrow", index=False)
+        return out.getvalue()
+
+
+def need_parquet() -> None:
+    """Nothing when pandas and pyarrow are installed (a sweep can be written as
+    Parquet), else the :class:`~coopkin_sym.errors.MissingDependency` saying what to
+    install.
+
+    Example
+    -------
+    >>> need_parquet()  # doctest: +SKIP
+    """
+    try:
+        import pandas  # noqa: F401
+        import pyarrow  # noqa: F401
+    except ImportError:
+        raise MissingDependency("writing a sweep as .parquet needs pandas and pyarrow: "
+                                "pip install pandas pyarrow") from None
 
 
 def _float_of(value: Value, prismatic: bool) -> float:  # float-ok: a labelled extra column

@@ -18,7 +18,7 @@ from coopkin_sym.analysis.sweep.compiled import _exact_for, _joint_vector, compi
 from coopkin_sym.analysis.sweep.grid import Grid, _split_point
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.analysis.sweep.values import Value
-from coopkin_sym.analysis.tasks import Progress, run_tasks
+from coopkin_sym.analysis.tasks import Progress, run_tasks, task_executor
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.matrix import batch_rank_profile
@@ -100,8 +100,10 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
         Values of the other joints and of parameters.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool, a cluster's
-        executor such as ``distributed.Client(...).get_executor()``): chunks of
-        points are mapped over it as plain data; the result is the serial one.
+        executor such as ``distributed.Client(...).get_executor()``) or a dask
+        ``distributed.Client`` itself: chunks of points are mapped over it as plain
+        data; the result is the serial one. Anything else is an
+        :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
         Report the points done (see :func:`coopkin_sym.exact.bounded.report`; the
         caller's display shows them, as ``System.sweep(progress=True)`` does).
@@ -117,6 +119,7 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
     >>> res.numbers[:, 0].tolist(), res.rechecked.tolist()
     ([3, 2], [True, False])
     """
+    executor = task_executor(executor)
     model = model_of(system)
     bound = None
     if isinstance(points, Grid):

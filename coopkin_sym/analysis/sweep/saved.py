@@ -14,7 +14,8 @@ Example
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from fractions import Fraction
 
 import numpy as np
@@ -25,11 +26,49 @@ from coopkin_sym.analysis.saved import Entries
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import NumberError, SweepError
 from coopkin_sym.exact.angles import ExactAngle
-from coopkin_sym.exact.parse import parse_number
+from coopkin_sym.exact.parse import brief, parse_number
 
-_HEADER = ("system", "joints", "at", "columns", "float_columns", "generic", "method",
-           "prime", "counts", "snapping")
+_COMMON = ("system", "joints", "at", "columns", "generic", "method", "prime", "counts",
+           "snapping")
 _SNAPPED = ("joint", "requested", "used", "error_rad")
+_KINDS = ("revolute", "prismatic")
+
+
+@dataclass(frozen=True)
+class Head:
+    """A sweep's header, read: what the points are checked against.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> data = load("paper-case1-hard").sweep(["q1=pi/2"]).to_json()
+    >>> head = read_header(Entries(SweepError, "not a sweep result"), data["header"],
+    ...                    table=False)
+    >>> head.columns[:2], head.table_columns()[:3]
+    (['q1', 'Nm'], ['q1', 'q1_rad', 'Nm'])
+    """
+
+    tree: Mapping
+    system: str
+    joints: tuple[str, ...]
+    at: str
+    kinds: tuple[str, ...]
+    generic: Numbers
+    prime: int
+    bound: float | None  # float-ok: the grid's snapping bound
+    snapped: dict
+
+    @property
+    def columns(self) -> list[str]:
+        """The keys of every point: the joints, the seven numbers, ``exact_recheck``."""
+        return [*self.joints, *NUMBER_NAMES, "exact_recheck"]
+
+    def table_columns(self) -> list[str]:
+        """The columns of the table (CSV): each joint followed by its float column."""
+        cols: list[str] = []
+        for j, kind in zip(self.joints, self.kinds, strict=True):
+            cols += [j, f"{j}_rad" if kind == "revolute" else f"{j}_float"]
+        return [*cols, *NUMBER_NAMES, "exact_recheck"]
 
 
 def sweep_from_file(path: str | os.PathLike, make: type):
@@ -48,15 +87,34 @@ def sweep_from_tree(data: Mapping | str, make: type):
 
 def _read(e: Entries, tree: Mapping, make: type):
     e.keys(tree, ("header", "points"), "")
-    h = e.keys(tree["header"], _HEADER, "header")
+    head = read_header(e, tree["header"], table=False)
+    points = e.field(tree, "points", list, "")
+    if len(points) > limits.MAX_GRID_POINTS:
+        raise e.fail("points", f"more than {limits.MAX_GRID_POINTS:,} points")
+    for i, row in enumerate(points):
+        e.keys(row, head.columns, f"points[{i}]")
+    return build(e, head, points, lambda i, key: f"points[{i}].{key}", make)
+
+
+def read_header(e: Entries, tree: object, *, table: bool) -> Head:
+    """The header of a sweep's JSON (``table=False``: its columns are the points'
+    keys, with ``kinds``, or ``float_columns`` as files of earlier versions have it)
+    or of its table's metadata (``table=True``: the columns of the CSV, with
+    ``float_columns``)."""
+    optional = () if table else ("kinds", "float_columns")
+    h = e.keys(tree, (*_COMMON, "float_columns") if table else _COMMON, "header", optional)
     system, at = e.field(h, "system", str, "header"), e.field(h, "at", str, "header")
     joints = tuple(e.texts(h, "joints", "header"))
     if len(set(joints)) != len(joints):
         raise e.fail("header.joints", "a joint is named twice")
-    columns = [*joints, *NUMBER_NAMES, "exact_recheck"]
-    if e.texts(h, "columns", "header") != columns:
-        raise e.fail("header.columns", f"expected {', '.join(columns)}")
-    kinds = _kinds(e, h, joints)
+    if "kinds" in h and "float_columns" in h:
+        raise e.fail("header.float_columns", "not with kinds (a header has one of them)")
+    if "float_columns" in h:
+        kinds = _kinds(e, h, joints)
+    elif "kinds" in h:
+        kinds = _named_kinds(e, h, joints)
+    else:
+        raise e.fail("header.kinds", "missing")
     generic = _numbers(e, e.keys(h["generic"], NUMBER_NAMES, "header.generic"),
                        "header.generic")
     e.field(h, "method", str, "header")
@@ -64,31 +122,52 @@ def _read(e: Entries, tree: Mapping, make: type):
     if not 2 <= prime < 2**31:
         raise e.fail("header.prime", f"expected a prime below 2**31, got {prime}")
     bound, snapped = _snapping(e, h, joints)
-    points = e.field(tree, "points", list, "")
-    if len(points) > limits.MAX_GRID_POINTS:
-        raise e.fail("points", f"more than {limits.MAX_GRID_POINTS:,} points")
+    head = Head(h, system, joints, at, kinds, generic, prime, bound, snapped)
+    columns = head.table_columns() if table else head.columns
+    if e.texts(h, "columns", "header") != columns:
+        raise e.fail("header.columns", f"expected {', '.join(columns)}")
+    return head
+
+
+def build(e: Entries, head: Head, points: Sequence[Mapping], name, make: type):
+    """The result of the points (each a mapping with the keys :attr:`Head.columns`,
+    checked); ``name(i, key)`` names an entry in an error."""
+    joints = head.joints
     levels: list[list[Value]] = [[] for _ in joints]
     where_of: list[dict[str, int]] = [{} for _ in joints]
     index = np.zeros((len(points), len(joints)), dtype=np.int64)
     numbers = np.zeros((len(points), len(NUMBER_NAMES)), dtype=np.int64)
     rechecked = np.zeros(len(points), dtype=bool)
     for i, row in enumerate(points):
-        where = f"points[{i}]"
-        e.keys(row, columns, where)
         for k, j in enumerate(joints):
-            text = e.field(row, j, str, where)
+            text = e.value(row[j], str, name(i, j))
             pos = where_of[k].get(text)
             if pos is None:
-                value = _value(e, text, kinds[k], snapped.get((j, text)), f"{where}.{j}")
+                value = _value(e, text, head.kinds[k], head.snapped.get((j, text)),
+                               name(i, j))
                 pos = where_of[k][text] = len(levels[k])
                 levels[k].append(value)
             index[i, k] = pos
-        numbers[i] = [_count(e, row, n, where) for n in NUMBER_NAMES]
-        rechecked[i] = e.field(row, "exact_recheck", bool, where)
-    result = make(system, joints, at, generic, tuple(tuple(v) for v in levels),
-                         index, numbers, rechecked, prime, bound, kinds)
-    _check_counts(e, h, result)
+        numbers[i] = [_count(e, row[n], name(i, n)) for n in NUMBER_NAMES]
+        rechecked[i] = e.value(row["exact_recheck"], bool, name(i, "exact_recheck"))
+    result = make(head.system, joints, head.at, head.generic,
+                  tuple(tuple(v) for v in levels), index, numbers, rechecked, head.prime,
+                  head.bound, head.kinds)
+    _check_counts(e, head.tree, result)
     return result
+
+
+def _named_kinds(e: Entries, h: Mapping, joints: tuple[str, ...]) -> tuple[str, ...]:
+    """Each joint's kind, from ``kinds``: ``{joint: "revolute" | "prismatic"}``."""
+    kinds = e.keys(h["kinds"], joints, "header.kinds")
+    out = []
+    for j in joints:
+        kind = e.field(kinds, j, str, "header.kinds")
+        if kind not in _KINDS:
+            raise e.fail(f"header.kinds.{j}", f"expected revolute or prismatic, got "
+                                              f"{brief(kind)}")
+        out.append(kind)
+    return tuple(out)
 
 
 def _kinds(e: Entries, h: Mapping, joints: tuple[str, ...]) -> tuple[str, ...]:
@@ -144,15 +223,15 @@ def _value(e: Entries, text: str, kind: str, snap, where: str) -> Value:
     return Value(text, num, den, requested, error)
 
 
-def _count(e: Entries, row: Mapping, name: str, where: str) -> int:
-    n = e.field(row, name, int, where)
+def _count(e: Entries, value: object, where: str) -> int:
+    n = e.value(value, int, where)
     if n < 0:
-        raise e.fail(f"{where}.{name}", f"expected a count (0 or more), got {n}")
+        raise e.fail(where, f"expected a count (0 or more), got {n}")
     return n
 
 
 def _numbers(e: Entries, tree: Mapping, where: str) -> Numbers:
-    return Numbers(*(_count(e, tree, n, where) for n in NUMBER_NAMES))
+    return Numbers(*(_count(e, tree[n], f"{where}.{n}") for n in NUMBER_NAMES))
 
 
 def _check_counts(e: Entries, h: Mapping, result) -> None:
@@ -164,4 +243,4 @@ def _check_counts(e: Entries, h: Mapping, result) -> None:
                                                  f"points ({value})")
 
 
-__all__ = ["sweep_from_file", "sweep_from_tree"]
+__all__ = ["Head", "build", "read_header", "sweep_from_file", "sweep_from_tree"]
