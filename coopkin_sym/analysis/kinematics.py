@@ -161,8 +161,11 @@ class _Builder:
             k = ring.den_names.index(tangent_name(joint.name))
             c, s = ring.cos_of(k), ring.sin_of(k)
         else:
-            cv, sv = self.config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))
-            c, s = self.num(cv), self.num(sv)
+            angle = self.config.revolute.get(joint.name)
+            if angle is None:                                 # home: q = 0
+                c, s = one, zero
+            else:
+                c, s = (self.num(x) for x in angle.cos_sin)
         sk = skew(axis)
         sk2 = matmul(sk, sk)
         one_minus_c = one - c

@@ -32,7 +32,8 @@ from coopkin_sym.analysis.sweep import (
 from coopkin_sym.cli import app
 from coopkin_sym.errors import MissingDependency
 from coopkin_sym.exact import modular
-from coopkin_sym.exact.parse import angle_text, parse_angle
+from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.parse import parse_angle
 
 CASE1 = coopkin_sym.load("paper-case1-hard")
 CASE2 = coopkin_sym.load("paper-case2-hard")
@@ -219,9 +220,9 @@ def test_value_text_is_the_canonical_angle_text():
         v = Value.from_tangent(t)
         t = sp.Rational(str(t))
         cos, sin = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
-        assert v.text == angle_text(cos, sin)
+        assert v.text == ExactAngle.from_cos_sin(cos, sin).text
         assert Value.from_cos_sin(cos, sin) == v
-    assert Value.from_tangent(None).text == angle_text(-1, 0) == "pi"
+    assert Value.from_tangent(None).text == ExactAngle.from_cos_sin(-1, 0).text == "pi"
 
 
 @pytest.mark.parametrize("spec, message", [

@@ -24,9 +24,9 @@ import sympy as sp
 
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import angle_text
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
@@ -78,8 +78,7 @@ def read_poly(ctx: SearchContext, f, text: str) -> str:
             value = sp.Rational(-int(terms.get(zero, 0)), int(terms[one]))
             kind, joint = kinds[0]
             if kind == "revolute":
-                return f"{joint} = " + angle_text((1 - value**2) / (1 + value**2),
-                                                  2 * value / (1 + value**2))
+                return f"{joint} = " + ExactAngle.from_tangent(to_fraction(value)).text
             if kind == "prismatic":
                 return f"{joint} = {value}"
     if len(names) == 2 and all(k[0] == "revolute" for k in kinds):

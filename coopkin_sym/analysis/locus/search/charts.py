@@ -8,8 +8,6 @@ import dataclasses
 import itertools
 from collections.abc import Iterator
 
-import sympy as sp
-
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark
@@ -22,7 +20,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose
-from coopkin_sym.exact.angles import cotangent_name, tangent_name
+from coopkin_sym.exact.angles import ExactAngle, cotangent_name, tangent_name
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
@@ -79,7 +77,7 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
             break
         revolute = dict(ctx.config.revolute)
         for n in subset:
-            revolute[n] = (sp.Integer(-1), sp.Integer(0))
+            revolute[n] = ExactAngle(1, 0)
         config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters,
                                ctx.config.free - set(subset))
         chart, rows = chart_of(ctx.model, config)
