@@ -111,10 +111,9 @@ class Configuration:
 
     def at_text(self) -> str:
         """This configuration in ``--at`` syntax (free joints left out)."""
-        parts = [f"{n}={a.text}" for n, a in self.revolute.items()]
-        parts += [f"{n}={sp.sstr(v)}" for n, v in self.prismatic.items()]
-        parts += [f"{n}={sp.sstr(v)}" for n, v in self.parameters.items()]
-        return ",".join(parts)
+        return assignments_text({**{n: a.text for n, a in self.revolute.items()},
+                                 **{n: sp.sstr(v) for n, v in self.prismatic.items()},
+                                 **{n: sp.sstr(v) for n, v in self.parameters.items()}})
 
 
 class NotInPoint(KeyError, ConfigurationError):
@@ -200,7 +199,7 @@ class Point(Configuration, Mapping):
 
     def at_text(self) -> str:
         """The point in ``--at`` syntax, in its order."""
-        return ",".join(f"{k}={v}" for k, v in self.items())
+        return assignments_text(self)
 
 
 def _split_at(at) -> list[tuple[str, object]]:
@@ -228,6 +227,23 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     if dups:
         raise ConfigurationError(f"{context}: {', '.join(dups)} given more than once")
     return items
+
+
+def assignments_text(values: Mapping[str, object] | Iterable[tuple[str, object]]) -> str:
+    """Names and their ``--at`` texts (a mapping, or ``(name, text)`` pairs) as one
+    ``--at`` text, ``"q1=pi/2,L=2"``: the one writer of a point, which
+    :func:`split_assignments` reads back. Each value is written by ``str`` (an angle
+    already as :attr:`~coopkin_sym.exact.angles.ExactAngle.text`).
+
+    Example
+    -------
+    >>> assignments_text({"q1": ExactAngle(1, 3).text, "L": 2})
+    'q1=2*atan(1/3),L=2'
+    >>> split_assignments(assignments_text([("q1", "pi"), ("d2", "1/2")]), "--at")
+    [('q1', 'pi'), ('d2', '1/2')]
+    """
+    items = values.items() if isinstance(values, Mapping) else values
+    return ",".join(f"{name}={text}" for name, text in items)
 
 
 def top_level_parts(text: str) -> list[str]:

@@ -13,7 +13,12 @@ from hypothesis import strategies as st
 
 from coopkin_sym.errors import ConfigurationError
 from coopkin_sym.exact.angles import ExactAngle
-from coopkin_sym.model.configuration import Configuration, Point
+from coopkin_sym.model.configuration import (
+    Configuration,
+    Point,
+    assignments_text,
+    split_assignments,
+)
 from coopkin_sym.model.model import load_model
 
 MODEL = load_model("paper-case1-hard")          # revolute q1, q2; parameter L
@@ -90,3 +95,11 @@ def test_a_configuration_pickles_with_its_angles():
     c = Configuration.parse(MODEL, "q1=2*atan(1/3),q2=pi,L=2", free=())
     again = pickle.loads(pickle.dumps(c))
     assert again == c and again.revolute["q1"].cos_sin == (sp.Rational(4, 5), sp.Rational(3, 5))
+
+
+def test_assignments_text_is_what_split_assignments_reads():
+    values = {"q1": "2*atan(1/3)", "L": "Rational(1, 3)", "d2": "-1/2"}
+    assert split_assignments(assignments_text(values), "--at") == list(values.items())
+    assert assignments_text(list(values.items())) == assignments_text(values) == \
+        "q1=2*atan(1/3),L=Rational(1, 3),d2=-1/2"
+    assert assignments_text({}) == ""
