@@ -42,6 +42,7 @@ import sympy as sp
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.rationals import to_fmpq
 from coopkin_sym.exact.ring import Frac, Ring
 from coopkin_sym.exact.sympy_bridge import poly_from_sympy
 from coopkin_sym.model.configuration import Configuration
@@ -138,6 +139,8 @@ class _Builder:
 
     # exact numbers of the model, as fractions of the ring
     def num(self, expr) -> Frac:
+        if getattr(expr, "is_Rational", False) or type(expr) is int:
+            return self.ring.frac(to_fmpq(expr))        # a number: no polynomial to read
         e = exact_expr(expr, None, "value")
         e = e.subs(self.param_subs) if self.param_subs else e
         return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
