@@ -526,8 +526,9 @@ class Compiled:
         return numbers_from_ranks(self.m, self.r, rq, r6, rr, dim=self.dim)
 
     def value(self, joint: str, value) -> Value:
-        """The exact :class:`Value` of ``joint`` for ``value`` (an angle in SymPy syntax,
-        a ``(cos, sin)`` pair, a displacement, or a :class:`Value`)."""
+        """The exact :class:`Value` of ``joint`` for ``value`` (an angle in ``--at``
+        syntax, an :class:`~coopkin_sym.exact.angles.ExactAngle` or an exact
+        ``(cos, sin)`` pair, a displacement, or a :class:`Value`)."""
         if isinstance(value, Value):
             return value
         if joint not in self.joints:
