@@ -40,6 +40,7 @@ from typing import Any
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
 from coopkin_sym.analysis.tasks import Progress, run_tasks, task_executor
 from coopkin_sym.errors import CoopkinError
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.model.model import Model, load_model
 
 #: What one item computes: ``compute(model, at, *options) -> (numbers, document)``.
@@ -192,7 +193,7 @@ def _at_label(at: Any) -> str | None:
     if at is None or isinstance(at, str):
         return at
     if isinstance(at, Mapping):
-        return ",".join(f"{k}={v}" for k, v in at.items())
+        return assignments_text(at)
     return repr(at)
 
 

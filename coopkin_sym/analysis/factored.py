@@ -32,7 +32,7 @@ from typing import Any
 import sympy as sp
 
 from coopkin_sym.errors import ArgumentTypeError, ConfigurationError
-from coopkin_sym.exact.angles import tangent_name
+from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_sympy
@@ -216,12 +216,12 @@ class FactoredMotions:
         by_name: dict[str, sp.Expr] = dict(config.parameters)
         for joint in self.model.joints:
             if joint.type == "revolute":
-                c, s = config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))
-                if c == -1 and tangent_name(joint.name) in map(str, self.symbols):
+                t = config.revolute.get(joint.name, ExactAngle(0, 1)).tangent
+                if t is None and tangent_name(joint.name) in map(str, self.symbols):
                     raise ConfigurationError(
                         f"--at {joint.name}: q = pi lies outside the t = tan(q/2) chart of "
                         f"the factored form")
-                by_name[tangent_name(joint.name)] = s / (1 + c) if c != -1 else None
+                by_name[tangent_name(joint.name)] = None if t is None else to_sympy(t)
             else:
                 by_name[joint.name] = config.prismatic.get(joint.name, sp.Integer(0))
         return {x: by_name[str(x)] for x in self.symbols

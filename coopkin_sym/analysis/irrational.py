@@ -53,6 +53,7 @@ from coopkin_sym.exact.sympy_bridge import frac_to_sympy, poly_to_sympy
 from coopkin_sym.model.configuration import (
     Configuration,
     ConfigurationError,
+    assignments_text,
     split_assignments,
 )
 from coopkin_sym.model.model import Model
@@ -142,7 +143,7 @@ class IrrationalAnalysis(Displayable):
         # only called for names the dataclass does not have: the parts of a rational
         # analysis that are not computed over a number field get a package error
         if name in RATIONAL_ONLY:
-            at = ",".join(f"{k}={v}" for k, v in self.at.items())
+            at = assignments_text(self.at)
             raise NotAvailable(
                 f"{name} is not available at a configuration with irrational coordinates "
                 f"({clip(at, 100)}, over Q({clip(self.alpha, 50)})): only the numbers"
@@ -155,7 +156,7 @@ class IrrationalAnalysis(Displayable):
                            f"coordinates it has {', '.join(available_attributes())}")
 
     def __repr__(self) -> str:
-        at = ",".join(f"{k}={v}" for k, v in self.at.items())
+        at = assignments_text(self.at)
         return (f"<IrrationalAnalysis {clip(self.system, 80)} at {clip(at, 100)} in "
                 f"Q({clip(self.alpha, 50)}): {numbers_line(self.numbers)}>")
 
@@ -179,7 +180,7 @@ class IrrationalAnalysis(Displayable):
         model = self.model
         return {
             "system": self.system,
-            "configuration": ",".join(f"{k}={v}" for k, v in self.at.items()),
+            "configuration": assignments_text(self.at),
             "point": "irrational",
             "variables": list(self.variables),
             "joints": list(self.joints),

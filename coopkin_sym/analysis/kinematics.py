@@ -42,6 +42,7 @@ import sympy as sp
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.rationals import to_fmpq
 from coopkin_sym.exact.ring import Frac, Ring
 from coopkin_sym.exact.sympy_bridge import poly_from_sympy
 from coopkin_sym.model.configuration import Configuration
@@ -138,6 +139,8 @@ class _Builder:
 
     # exact numbers of the model, as fractions of the ring
     def num(self, expr) -> Frac:
+        if getattr(expr, "is_Rational", False) or type(expr) is int:
+            return self.ring.frac(to_fmpq(expr))        # a number: no polynomial to read
         e = exact_expr(expr, None, "value")
         e = e.subs(self.param_subs) if self.param_subs else e
         return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
@@ -161,8 +164,11 @@ class _Builder:
             k = ring.den_names.index(tangent_name(joint.name))
             c, s = ring.cos_of(k), ring.sin_of(k)
         else:
-            cv, sv = self.config.revolute.get(joint.name, (sp.Integer(1), sp.Integer(0)))
-            c, s = self.num(cv), self.num(sv)
+            angle = self.config.revolute.get(joint.name)
+            if angle is None:                                 # home: q = 0
+                c, s = one, zero
+            else:
+                c, s = (self.num(x) for x in angle.cos_sin)
         sk = skew(axis)
         sk2 = matmul(sk, sk)
         one_minus_c = one - c

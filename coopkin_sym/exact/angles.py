@@ -23,6 +23,7 @@ Example
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from fractions import Fraction
@@ -34,7 +35,7 @@ from mpmath.libmp import to_rational
 from sympy.polys.polyerrors import NotAlgebraic
 
 from coopkin_sym.errors import ArgumentError, NumberError
-from coopkin_sym.exact.parse import parse_angle, tangent_text
+from coopkin_sym.exact.parse import parse_angle, parse_number, tangent_text
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot
 
@@ -87,16 +88,40 @@ def joint_of(variable: str) -> str | None:
 class ExactAngle:
     """An angle with a rational (or infinite) tangent half-angle ``num/den``.
 
+    The pair is kept in lowest terms with ``den >= 0``, and ``q = pi`` is ``(1, 0)``,
+    so that equal angles are equal (and hash alike). This is the one type of an exact
+    joint angle: ``--at`` values, sweeps, witnesses and pictures all hold it.
+
     Example
     -------
     >>> ExactAngle.from_tangent(Fraction(-1)).text
     '-pi/2'
     >>> ExactAngle.from_cos_sin(-1, 0).text, ExactAngle.from_tangent(None).den
     ('pi', 0)
+    >>> ExactAngle(2, -6) == ExactAngle(-1, 3), ExactAngle(-5, 0)
+    (True, ExactAngle(num=1, den=0))
     """
 
     num: int
     den: int
+
+    def __post_init__(self) -> None:
+        num, den = self.num, self.den
+        if not (isinstance(num, int) and isinstance(den, int)) \
+                or isinstance(num, bool) or isinstance(den, bool):
+            raise ArgumentError(f"an exact angle is a pair of integers num/den = tan(q/2), "
+                                f"got {num!r}, {den!r}")
+        if den == 0:
+            if num == 0:
+                raise ArgumentError("an exact angle cannot be 0/0 (tan(q/2) = num/den)")
+            num = 1
+        else:
+            g = math.gcd(num, den) * (1 if den > 0 else -1)
+            num, den = int(num // g), int(den // g)
+        if (num, den) != (self.num, self.den) or type(self.num) is not int \
+                or type(self.den) is not int:
+            object.__setattr__(self, "num", num)
+            object.__setattr__(self, "den", den)
 
     @classmethod
     def from_tangent(cls, t: Fraction | int | None) -> ExactAngle:
@@ -107,17 +132,44 @@ class ExactAngle:
         return cls(t.numerator, t.denominator)
 
     @classmethod
-    def from_cos_sin(cls, cos, sin) -> ExactAngle:
-        """The angle with exact rational ``(cos q, sin q)``."""
-        c, s = Fraction(str(cos)), Fraction(str(sin))
-        return cls.from_tangent(None if c == -1 else s / (1 + c))
+    def from_cos_sin(cls, cos: object, sin: object) -> ExactAngle:
+        """The angle with exact rational ``(cos q, sin q)``.
+
+        Raises
+        ------
+        NumberError
+            If ``cos`` or ``sin`` is not an exact rational (a float is refused), or
+            ``cos^2 + sin^2 != 1``.
+
+        Example
+        -------
+        >>> import sympy as sp
+        >>> ExactAngle.from_cos_sin(sp.Rational(4, 5), sp.Rational(-3, 5)).text
+        '2*atan(-1/3)'
+        """
+        c = parse_number(cos, {}, "cos") if not isinstance(cos, float) else None
+        s = parse_number(sin, {}, "sin") if not isinstance(sin, float) else None
+        if c is None or s is None or not (c.is_Rational and s.is_Rational):
+            raise NumberError("angle", f"cos = {cos}, sin = {sin} must be exact rationals")
+        if c**2 + s**2 != 1:
+            raise NumberError("angle", f"cos = {c}, sin = {s} is not a point on the unit "
+                                       f"circle")
+        return cls._on_circle(c, s)
+
+    @classmethod
+    def _on_circle(cls, c: sp.Rational, s: sp.Rational) -> ExactAngle:
+        """The angle of a rational point ``(c, s)`` known to be on the unit circle."""
+        if c == -1:
+            return cls(1, 0)
+        # tan(q/2) = sin / (1 + cos)
+        return cls(int(s.p) * int((1 + c).q), int(s.q) * int((1 + c).p))
 
     @classmethod
     def parse(cls, text: object, where: str) -> ExactAngle:
         """An angle from ``--at`` text (``pi/2``, ``2*atan(1/3)``), through the one
         parser; an angle without a rational tangent half-angle is refused there, with
         the nearest exact ones named."""
-        return cls.from_cos_sin(*parse_angle(text, where))
+        return cls._on_circle(*parse_angle(text, where))
 
     @classmethod
     def snap(cls, q: float | Fraction, bound: float | Fraction  # float-ok
@@ -156,18 +208,26 @@ class ExactAngle:
         """``tan(q/2)``, None at ``q = pi``."""
         return None if self.den == 0 else Fraction(self.num, self.den)
 
-    @property
+    @functools.cached_property
     def cos_sin(self) -> tuple[sp.Rational, sp.Rational]:
-        """``(cos q, sin q)``, exact rationals."""
+        """``(cos q, sin q)``, exact rationals (computed once per angle)."""
         if self.den == 0:
             return sp.Integer(-1), sp.Integer(0)
-        t = sp.Rational(self.num, self.den)
-        return (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+        n2, d2 = self.num * self.num, self.den * self.den
+        return sp.Rational(d2 - n2, d2 + n2), sp.Rational(2 * self.num * self.den, d2 + n2)
 
-    @property
+    @functools.cached_property
     def text(self) -> str:
-        """The angle in ``--at`` syntax (``0``, ``pi/2``, ``-pi/2``, ``pi``,
-        ``2*atan(p/q)``), as :func:`~coopkin_sym.exact.parse.angle_text` writes it."""
+        """The angle in ``--at`` syntax, the way the package writes an exact angle
+        (:func:`~coopkin_sym.exact.parse.tangent_text`): ``0``, ``pi/2``, ``-pi/2``,
+        ``pi``, else ``2*atan(p/q)`` with ``p/q = tan(q/2)``, in ``(-pi, pi]``;
+        :meth:`parse` reads it back.
+
+        Example
+        -------
+        >>> [ExactAngle(n, d).text for n, d in ((0, 1), (1, 1), (-1, 1), (1, 0), (-1, 3))]
+        ['0', 'pi/2', '-pi/2', 'pi', '2*atan(-1/3)']
+        """
         return tangent_text(self.tangent)
 
     @property

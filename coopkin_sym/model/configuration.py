@@ -1,9 +1,10 @@
 """Where to analyze: exact values for some joint variables and parameters.
 
 A :class:`Configuration` says which joint variables stay symbolic (``free``) and gives
-every other joint an exact value: a revolute angle as its exact ``(cos q, sin q)``
-pair (rational tangent half-angle, or q = pi), a prismatic displacement as a
-rational or a polynomial in the parameters. Parameters without a value stay symbolic.
+every other joint an exact value: a revolute angle as an
+:class:`~coopkin_sym.exact.angles.ExactAngle` (rational tangent half-angle, or q = pi),
+a prismatic displacement as a rational or a polynomial in the parameters. Parameters
+without a value stay symbolic.
 Unset joints are at home (q = 0).
 
 Example
@@ -11,27 +12,20 @@ Example
 >>> from coopkin_sym.model.model import load_model
 >>> m = load_model("paper-case1-hard")
 >>> c = Configuration.parse(m, "q1=pi/2,L=2")
->>> c.revolute["q1"], c.parameters["L"]
-((0, 1), 2)
+>>> c.revolute["q1"], c.revolute["q1"].cos_sin, c.parameters["L"]
+(ExactAngle(num=1, den=1), (0, 1), 2)
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
-from fractions import Fraction
 
 import sympy as sp
 
 from coopkin_sym.errors import ConfigurationError
-from coopkin_sym.exact.parse import (
-    NumberError,
-    angle_text,
-    brief,
-    parse_angle,
-    parse_number,
-    tangent_text,
-)
+from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.model import Model
 
 
@@ -47,10 +41,16 @@ class Configuration:
     ('q1=pi/2,L=2', ['q2'])
     """
 
-    revolute: Mapping[str, tuple[sp.Rational, sp.Rational]] = field(default_factory=dict)
+    revolute: Mapping[str, ExactAngle] = field(default_factory=dict)
     prismatic: Mapping[str, sp.Expr] = field(default_factory=dict)
     parameters: Mapping[str, sp.Rational] = field(default_factory=dict)
     free: frozenset[str] = frozenset()
+
+    def __post_init__(self) -> None:
+        for name, angle in self.revolute.items():
+            if not isinstance(angle, ExactAngle):
+                raise ConfigurationError(f"{name}: a revolute value of a configuration is an "
+                                         f"ExactAngle, got {brief(repr(angle))}")
 
     @classmethod
     def parse(
@@ -62,8 +62,9 @@ class Configuration:
         """Read ``at`` (``"q1=pi/2,q2=2*atan(1/3),d4=1/2,L=1000"`` or a mapping) and
         the free joints (names, or ``"all"``) for ``model``.
 
-        Revolute values are angles in SymPy syntax, or ``(cos, sin)`` pairs; a joint
-        both given a value and declared free is an error.
+        Revolute values are angles in ``--at`` syntax, :class:`ExactAngle` values, or
+        exact ``(cos, sin)`` pairs; a joint both given a value and declared free is an
+        error.
         """
         items = _split_at(at)
         joints = {j.name: j for j in model.joints}
@@ -76,7 +77,7 @@ class Configuration:
         if unknown:
             raise ConfigurationError(
                 f"free: unknown joint {', '.join(unknown)} (joints: {', '.join(joints)})")
-        revolute: dict[str, tuple[sp.Rational, sp.Rational]] = {}
+        revolute: dict[str, ExactAngle] = {}
         prismatic: dict[str, sp.Expr] = {}
         values: dict[str, sp.Rational] = {}
         for name, value in items:
@@ -110,10 +111,9 @@ class Configuration:
 
     def at_text(self) -> str:
         """This configuration in ``--at`` syntax (free joints left out)."""
-        parts = [f"{n}={angle_text(c, s)}" for n, (c, s) in self.revolute.items()]
-        parts += [f"{n}={sp.sstr(v)}" for n, v in self.prismatic.items()]
-        parts += [f"{n}={sp.sstr(v)}" for n, v in self.parameters.items()]
-        return ",".join(parts)
+        return assignments_text({**{n: a.text for n, a in self.revolute.items()},
+                                 **{n: sp.sstr(v) for n, v in self.prismatic.items()},
+                                 **{n: sp.sstr(v) for n, v in self.parameters.items()}})
 
 
 class NotInPoint(KeyError, ConfigurationError):
@@ -137,43 +137,44 @@ class Point(Configuration, Mapping):
     Example
     -------
     >>> import sympy as sp
-    >>> p = Point.of({"q1": (sp.Integer(0), sp.Integer(1))}, parameters={"L": sp.Integer(1)})
+    >>> p = Point.of({"q1": ExactAngle(1, 1)}, parameters={"L": sp.Integer(1)})
     >>> dict(p), p == {"q1": "pi/2", "L": "1"}, p.at_text()
     ({'q1': 'pi/2', 'L': '1'}, True, 'q1=pi/2,L=1')
-    >>> p.moved("q1", (sp.Integer(-1), sp.Integer(0)))["q1"]
-    'pi'
+    >>> p.moved("q1", ExactAngle(1, 0))["q1"], p.moved("q1", (0, -1))["q1"]
+    ('pi', '-pi/2')
     """
 
     order: tuple[str, ...] = ()
 
     @classmethod
-    def of(cls, revolute: Mapping[str, tuple[sp.Rational, sp.Rational]] | None = None,
+    def of(cls, revolute: Mapping[str, ExactAngle | tuple] | None = None,
            prismatic: Mapping[str, sp.Expr] | None = None,
            parameters: Mapping[str, sp.Rational] | None = None,
            order: Iterable[str] | None = None) -> Point:
         """The point of these exact values, named in ``order`` (default: revolute,
-        prismatic, then parameters, each in the order given)."""
-        revolute, prismatic = dict(revolute or {}), dict(prismatic or {})
+        prismatic, then parameters, each in the order given); a revolute value is an
+        :class:`ExactAngle` or an exact ``(cos, sin)`` pair."""
+        revolute = {n: _angle(a, n) for n, a in (revolute or {}).items()}
+        prismatic = dict(prismatic or {})
         parameters = dict(parameters or {})
         names = tuple(order) if order is not None else (*revolute, *prismatic, *parameters)
         return cls(revolute, prismatic, parameters, frozenset(), names)
 
     def moved(self, name: str, value) -> Point:
-        """This point with ``name`` set to ``value`` (a ``(cos, sin)`` pair for a
-        revolute joint, an exact number otherwise): a new name goes last."""
+        """This point with ``name`` set to ``value`` (an :class:`ExactAngle` or an
+        exact ``(cos, sin)`` pair for a revolute joint, an exact number otherwise): a
+        new name goes last."""
         order = self.order if name in self.order else (*self.order, name)
         if name in self.revolute:
-            return replace(self, revolute={**self.revolute, name: value}, order=order)
+            return replace(self, revolute={**self.revolute, name: _angle(value, name)},
+                           order=order)
         if name in self.prismatic:
             return replace(self, prismatic={**self.prismatic, name: value}, order=order)
         return replace(self, parameters={**self.parameters, name: value}, order=order)
 
     def __getitem__(self, name: str) -> str:
         if name in self.revolute and name in self.order:
-            c, s = self.revolute[name]
-            return tangent_text(None if c == -1 else
-                                Fraction(int(s.p), int(s.q)) / Fraction(int((1 + c).p),
-                                                                        int((1 + c).q)))
+            return self.revolute[name].text
         for values in (self.prismatic, self.parameters):
             if name in values and name in self.order:
                 return sp.sstr(values[name])
@@ -198,7 +199,7 @@ class Point(Configuration, Mapping):
 
     def at_text(self) -> str:
         """The point in ``--at`` syntax, in its order."""
-        return ",".join(f"{k}={v}" for k, v in self.items())
+        return assignments_text(self)
 
 
 def _split_at(at) -> list[tuple[str, object]]:
@@ -228,6 +229,23 @@ def split_assignments(text, context: str) -> list[tuple[str, object]]:
     return items
 
 
+def assignments_text(values: Mapping[str, object] | Iterable[tuple[str, object]]) -> str:
+    """Names and their ``--at`` texts (a mapping, or ``(name, text)`` pairs) as one
+    ``--at`` text, ``"q1=pi/2,L=2"``: the one writer of a point, which
+    :func:`split_assignments` reads back. Each value is written by ``str`` (an angle
+    already as :attr:`~coopkin_sym.exact.angles.ExactAngle.text`).
+
+    Example
+    -------
+    >>> assignments_text({"q1": ExactAngle(1, 3).text, "L": 2})
+    'q1=2*atan(1/3),L=2'
+    >>> split_assignments(assignments_text([("q1", "pi"), ("d2", "1/2")]), "--at")
+    [('q1', 'pi'), ('d2', '1/2')]
+    """
+    items = values.items() if isinstance(values, Mapping) else values
+    return ",".join(f"{name}={text}" for name, text in items)
+
+
 def top_level_parts(text: str) -> list[str]:
     """``text`` split at the commas outside parentheses (``L=Rational(1, 3),q1=0``).
 
@@ -247,28 +265,22 @@ def top_level_parts(text: str) -> list[str]:
     return parts
 
 
-def _angle(value, where: str) -> tuple[sp.Rational, sp.Rational]:
-    if isinstance(value, tuple) and len(value) == 2:
-        try:
+def _angle(value, where: str) -> ExactAngle:
+    """A revolute value as the one exact-angle type: an :class:`ExactAngle` as it is,
+    an exact ``(cos, sin)`` pair on the unit circle, or an angle read by the one parser
+    (text, or an exact number of radians; a float angle is never exact but 0)."""
+    if isinstance(value, ExactAngle):
+        return value
+    try:
+        if isinstance(value, tuple) and len(value) == 2:
             c, s = (parse_number(v, {}, f"{where} (cos, sin)") for v in value)
-        except NumberError as exc:
-            raise ConfigurationError(str(exc)) from None
-        if c**2 + s**2 != 1:
-            raise ConfigurationError(f"{where}: (cos, sin) = ({c}, {s}) is not on the unit "
-                                     "circle")
-        return c, s
-    try:
-        return parse_angle(value if isinstance(value, str | sp.Basic | int) else
-                           _angle_text(value, where), where)
-    except NumberError as exc:
-        raise ConfigurationError(str(exc)) from None
-
-
-def _angle_text(value, where: str) -> str:
-    """A non-text angle value: exact numbers are read as numbers (radians), anything
-    else is refused (a float angle is never exact but 0)."""
-    try:
-        return sp.sstr(parse_number(value, {}, where))
+            if not (c.is_Rational and s.is_Rational) or c**2 + s**2 != 1:
+                raise ConfigurationError(f"{where}: (cos, sin) = ({c}, {s}) is not an "
+                                         "exact point on the unit circle")
+            return ExactAngle.from_cos_sin(c, s)
+        if not isinstance(value, str | sp.Basic | int):
+            value = sp.sstr(parse_number(value, {}, where))
+        return ExactAngle.parse(value, where)
     except NumberError as exc:
         raise ConfigurationError(str(exc)) from None
 

@@ -43,6 +43,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
 from coopkin_sym.analysis.renderers import clip, register
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.errors import BlockTooLarge
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.model.model import Model
 from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
@@ -307,7 +308,7 @@ def _analysis_pretty(a: Analysis) -> str:
 
 
 def _irrational_head(result: IrrationalAnalysis) -> tuple[str, str]:
-    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    at = assignments_text(result.at)
     tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
     field = (f"exact over Q(alpha), alpha = {result.alpha}, a root of "
              f"{result.minimal_polynomial}")

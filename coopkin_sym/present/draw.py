@@ -52,6 +52,7 @@ import numpy as np  # float-ok: drawing coordinates
 
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError, OutputSkipped
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.draw_inputs import (
     MOTION_KINDS,
     _analysis,
@@ -183,7 +184,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
     if isinstance(a, _AtIrrational):
-        where = ",".join(f"{k}={v}" for k, v in a.exact.at.items())
+        where = assignments_text(a.exact.at)
     else:
         where = a.configuration.at_text() or "home (all joints at 0)"
     n = a.numbers

@@ -47,6 +47,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import PlotError
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
 from coopkin_sym.present.conditions import condition_text
 
@@ -501,8 +502,7 @@ def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
         text = str(c.witness[j])
         try:
             if kinds.joints[j] == "revolute":
-                cos, sin = parse_angle(text, f"{j}={text}")
-                out.append(math.atan2(float(sin), float(cos)))  # float-ok
+                out.append(ExactAngle.parse(text, f"{j}={text}").radians())  # float-ok
             else:
                 out.append(float(parse_number(text, {}, f"{j}={text}")))  # float-ok
         except (NumberError, TypeError):

@@ -20,6 +20,7 @@ import sympy as sp
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.exact.parse import brief
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
 from coopkin_sym.present.sentences import irrational_sentences, sentences
@@ -325,7 +326,7 @@ def irrational_text(result: IrrationalAnalysis) -> str:
     >>> print(irrational_text(a).splitlines()[1])
     Configuration: q1=-pi/6,q2=pi/6
     """
-    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    at = assignments_text(result.at)
     tangents = ", ".join(f"tan({k}/2) = {v}" for k, v in result.tangents.items())
     lines = [f"System: {result.system}", f"Configuration: {at}",
              f"Irrational: {tangents}; exact over Q(alpha), alpha = {result.alpha}, a root "
@@ -352,7 +353,7 @@ def irrational_latex(result: IrrationalAnalysis) -> str:
     % paper case 1, hard/hard at q1=-pi/6,q2=pi/6
     $N_{m} = 3$, $N_{c} = 3$, $N_{i} = 3$, $N_{r} = 0$, $N_{g} = 3$, $N_{d} = 4$, $N_{h} = 1$
     """
-    at = ",".join(f"{k}={v}" for k, v in result.at.items())
+    at = assignments_text(result.at)
     head = f"{result.system} at {at}"
     out = [_latex_comment(head)]
     out.append(", ".join(f"$N_{{{k[1:]}}} = {v}$" for k, v in result.numbers.as_dict().items()))

@@ -16,6 +16,7 @@ from collections.abc import Mapping
 
 from coopkin_sym.analysis.locus.verify import Verification
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.remarks import remark_texts
 
 __all__ = ["summary_lines", "verification_json"]
@@ -64,7 +65,7 @@ def summary_lines(v: Verification) -> list[str]:
     for i, why in v.unread_witnesses.items():
         out.append(f"  witness of component {i + 1} not read here: {why}")
     for u in v.uncovered:
-        where = ",".join(f"{k}={x}" for k, x in u.point.items())
+        where = assignments_text(u.point)
         if u.kind == "root":
             where = (f"{where} (approximately; lam a root of {u.algebraic['root_of']} on "
                      f"the line {u.algebraic['line']})")
@@ -78,7 +79,7 @@ def summary_lines(v: Verification) -> list[str]:
     for issue in v.unsound:
         name = "the generic numbers" if issue.component < 0 else \
             f"component {issue.component + 1}"
-        where = ",".join(f"{k}={x}" for k, x in (issue.point or {}).items())
+        where = assignments_text(issue.point or {})
         out.append(f"  unsound: {name}: {_ISSUE_WORDS.get(issue.kind, issue.kind)}"
                    + (f" at {where}" if where else "")
                    + (f": {_numbers_text(issue.numbers)}" if issue.numbers else "")

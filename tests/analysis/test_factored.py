@@ -119,7 +119,8 @@ def test_at_takes_at_text_names_and_symbols_and_spans_the_point_analysis():
         values = dict(item.split("=") for item in text.split(","))
         assert f.at(values) == (u, qdot)                    # names as keys, text values
         point = system.configuration(text)
-        by_symbol = {symbols[f"t_{j}"]: s / (1 + c) for j, (c, s) in point.revolute.items()}
+        by_symbol = {symbols[f"t_{j}"]: sp.Rational(a.num, a.den)
+                     for j, a in point.revolute.items()}
         by_symbol[symbols["L"]] = point.parameters["L"]
         assert f.at(by_symbol) == (u, qdot)
     with pytest.raises(ConfigurationError, match="q = pi lies outside the t = tan"):

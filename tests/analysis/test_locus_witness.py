@@ -13,6 +13,7 @@ from coopkin_sym.analysis.floatcheck import float_numbers
 from coopkin_sym.analysis.locus import witness as witness_module
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.mobility import Analysis
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.model.configuration import Configuration, Point
 
 
@@ -26,7 +27,8 @@ def test_a_witness_is_an_exact_point(case1):
     _, locus = case1
     first = locus.components[0]
     assert isinstance(first.witness, Point)
-    assert first.witness.revolute["q1"] == (0, -1) == first.witness.revolute["q2"]
+    assert first.witness.revolute["q1"] == ExactAngle(-1, 1) == first.witness.revolute["q2"]
+    assert first.witness.revolute["q1"].cos_sin == (0, -1)
     assert first.witness.parameters == {"L": 1}
     assert first.witness == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
     assert first.to_json()["witness"] == {"q1": "-pi/2", "q2": "-pi/2", "L": "1"}
@@ -81,7 +83,7 @@ def test_float_checks_from_the_chains_equal_those_of_analyses(case1):
 
 
 def test_point_moved_and_compared():
-    p = Point.of({"q1": (sp.Integer(1), sp.Integer(0))}, {"d2": sp.Rational(1, 2)},
+    p = Point.of({"q1": ExactAngle(0, 1)}, {"d2": sp.Rational(1, 2)},
                  {"L": sp.Integer(2)})
     assert dict(p) == {"q1": "0", "d2": "1/2", "L": "2"}
     moved = p.moved("L", sp.Rational(1, 1000))

@@ -33,7 +33,8 @@ from coopkin_sym.analysis.sweep import (
 from coopkin_sym.cli import app
 from coopkin_sym.errors import MissingDependency
 from coopkin_sym.exact import modular
-from coopkin_sym.exact.parse import angle_text, parse_angle
+from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.parse import parse_angle
 
 CASE1 = coopkin_sym.load("paper-case1-hard")
 CASE2 = coopkin_sym.load("paper-case2-hard")
@@ -222,9 +223,9 @@ def test_value_text_is_the_canonical_angle_text():
         v = Value.from_tangent(t)
         t = sp.Rational(str(t))
         cos, sin = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
-        assert v.text == angle_text(cos, sin)
-        assert Value.from_cos_sin(cos, sin) == v
-    assert Value.from_tangent(None).text == angle_text(-1, 0) == "pi"
+        assert v.text == ExactAngle.from_cos_sin(cos, sin).text
+        assert Value.from_angle(ExactAngle.from_cos_sin(cos, sin)) == v
+    assert Value.from_tangent(None).text == ExactAngle.from_cos_sin(-1, 0).text == "pi"
 
 
 @pytest.mark.parametrize("spec, message", [
@@ -422,3 +423,13 @@ def test_to_pandas_without_pandas(monkeypatch):
     res = CASE1.sweep(["q1=pi/2"])
     with pytest.raises(MissingDependency, match="pip install pandas"):
         res.to_pandas()
+
+
+def test_a_swept_angle_may_be_given_as_text_an_exact_angle_or_a_pair():
+    c = compile_system(CASE1, ["q1", "q2"], "L=1")
+    by_text = c.numbers({"q1": "-pi/2", "q2": "-pi/2"})
+    by_angle = c.numbers({"q1": ExactAngle(-1, 1), "q2": ExactAngle(-2, 2)})
+    by_pair = c.numbers({"q1": (0, -1), "q2": (sp.Integer(0), sp.Integer(-1))})
+    assert by_text == by_angle == by_pair and by_text.Nm == 3
+    assert c.value("q1", ExactAngle(1, 0)) == Value("pi", 1, 0)
+    assert c.numbers({"q1": ExactAngle(1, 3)}) == c.numbers({"q1": "2*atan(1/3)"})

@@ -13,11 +13,11 @@ from hypothesis import strategies as st
 
 from coopkin_sym.exact.parse import (
     NumberError,
-    angle_text,
     parse_angle,
     parse_expression,
     parse_number,
     parse_polynomial,
+    tangent_text,
 )
 
 L = sp.Symbol("L", positive=True)
@@ -220,45 +220,30 @@ def test_parse_angle_errors(text, message):
         parse_angle(text, "q1")
 
 
-# -------------------------------------------------------------------------- angle_text
+# ------------------------------------------------------------------------ tangent_text
+# (the angle written from cos and sin, and its refusals: tests/exact/test_angles.py)
 
 
 @pytest.mark.parametrize(
-    ("cos", "sin", "text"),
-    [
-        (1, 0, "0"),
-        (0, 1, "pi/2"),
-        (0, -1, "-pi/2"),
-        (-1, 0, "pi"),
-        (R(4, 5), R(3, 5), "2*atan(1/3)"),
-        (R(4, 5), R(-3, 5), "2*atan(-1/3)"),
-        (R(-3, 5), R(4, 5), "2*atan(2)"),
-    ],
+    ("t", "text"),
+    [(Fraction(0), "0"), (Fraction(1), "pi/2"), (Fraction(-1), "-pi/2"), (None, "pi"),
+     (Fraction(1, 3), "2*atan(1/3)"), (Fraction(-1, 3), "2*atan(-1/3)"),
+     (Fraction(2), "2*atan(2)")],
 )
-def test_angle_text(cos, sin, text):
-    assert angle_text(R(cos), R(sin)) == text
-
-
-def test_angle_text_rejects_points_off_the_circle():
-    with pytest.raises(NumberError, match="not a point on the unit circle"):
-        angle_text(R(1, 2), R(1, 2))
-
-
-def test_angle_text_rejects_floats():
-    with pytest.raises(NumberError, match="exact rationals"):
-        angle_text(0.6, 0.8)
+def test_tangent_text(t, text):
+    assert tangent_text(t) == text
 
 
 @given(st.fractions(max_denominator=10**6))
 def test_angle_round_trip(t):
     t = R(t.numerator, t.denominator)
     cos, sin = (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
-    text = angle_text(cos, sin)
+    text = tangent_text(Fraction(int(t.p), int(t.q)))
     assert parse_angle(text, "q") == (cos, sin)
 
 
 def test_angle_round_trip_pi():
-    assert parse_angle(angle_text(sp.Integer(-1), sp.Integer(0)), "q") == (-1, 0)
+    assert parse_angle(tangent_text(None), "q") == (-1, 0)
 
 
 # -------------------------------------------------------------------- parse_polynomial

@@ -131,7 +131,7 @@ from coopkin_sym.analysis.locus.types import Certificate, Check, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.errors import CertifyError, TimeLimitReached
 from coopkin_sym.exact import deadline
-from coopkin_sym.exact.angles import cotangent_name
+from coopkin_sym.exact.angles import ExactAngle, cotangent_name
 from coopkin_sym.exact.groebner import (
     EXTRA_HINT,
     Verdict,
@@ -311,7 +311,7 @@ def _chart(setup: _Setup, pi_joints: tuple[str, ...]) -> _Chart:
     model, config = setup.model, setup.config
     revolute = dict(config.revolute)
     for j in pi_joints:
-        revolute[j] = (sp.Integer(-1), sp.Integer(0))
+        revolute[j] = ExactAngle(1, 0)
     conf = Configuration(revolute, config.prismatic, config.parameters,
                          config.free - set(pi_joints))
     kin = kinematics.build(model, conf)

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.renderers import action
 from coopkin_sym.errors import ArgumentError, MissingDependency
+from coopkin_sym.model.configuration import assignments_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from pathlib import Path
@@ -209,7 +210,7 @@ class LocusMethods:
                 "condition": c.condition.text, "kind": c.kind, "depth": c.depth,
                 **{n: c.numbers.get(n) for n in NUMBER_NAMES},
                 "changed": [n for n in NUMBER_NAMES if n in c.changes], "real": c.real,
-                "witness": ",".join(f"{j}={v}" for j, v in point.items()) if point
+                "witness": assignments_text(point) if point
                 else None})
         return rows
 

@@ -76,6 +76,7 @@ from coopkin_sym.analysis.locus.verify_witness import _check_witnesses
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.errors import VerifyError
 from coopkin_sym.exact.bounded import report, run_bounded
+from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.model.model import Model, model_of
 
 __all__ = ["DEFAULT_VALUES", "ComponentIssue", "DropPoint", "Verification", "VerifyError",
@@ -168,7 +169,7 @@ def _new_result(checker: _Checker, locus: Locus, used: list[list], reduced: bool
     """The result before any check: the locus, the value sets used, the notes."""
     return Verification(
         system=locus.system, variables=list(locus.variables),
-        fixed=",".join(f"{k}={v}" for k, v in checker.fixed_items),
+        fixed=assignments_text(checker.fixed_items),
         generic=checker.generic,
         values={v.name: [_tan_text(x) if v.kind == "revolute" else str(x) for x in xs]
                 for v, xs in zip(checker.free, used, strict=True)},

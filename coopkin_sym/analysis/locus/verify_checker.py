@@ -117,8 +117,8 @@ class _Checker:
     def _fixed_values(self, params) -> dict[str, object]:
         """The fixed joints and parameters: ``tan(q/2)`` (None for q = pi) or a value."""
         fixed_values: dict[str, object] = {}
-        for j, (c, s) in self.config.revolute.items():
-            fixed_values[j] = None if c == -1 else _frac(s) / (1 + _frac(c))
+        for j, angle in self.config.revolute.items():
+            fixed_values[j] = angle.tangent
         for j, d in self.config.prismatic.items():
             if not d.is_Rational:
                 raise VerifyError(f"the locus fixes {j} = {d}: not a number")

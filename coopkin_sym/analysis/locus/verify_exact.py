@@ -13,9 +13,8 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from coopkin_sym.analysis.sweep import Value
 from coopkin_sym.errors import VerifyError
-from coopkin_sym.exact.angles import cotangent_name, tangent_name
+from coopkin_sym.exact.angles import ExactAngle, cotangent_name, tangent_name
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.rationals import to_fmpq, to_fraction, to_sympy
 from coopkin_sym.model.model import Model
@@ -25,7 +24,7 @@ Tan = Fraction | None          # a revolute value: tan(q/2), None for q = pi
 
 @functools.lru_cache(maxsize=4096)
 def _angle_text(t: Tan) -> str:
-    return Value.from_tangent(t).text
+    return ExactAngle.from_tangent(t).text
 
 
 @dataclass(frozen=True)

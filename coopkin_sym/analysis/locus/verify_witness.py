@@ -15,10 +15,10 @@ from coopkin_sym.analysis.locus.verify_checker import _Checker, _on_curve, _Stat
 from coopkin_sym.analysis.locus.verify_exact import _fmpq, _frac, _Line
 from coopkin_sym.analysis.locus.verify_lines import _line_ranks, _line_rows, _to_mpoly
 from coopkin_sym.analysis.mobility import analyze
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import (
     NumberError,
     algebraic_half_angle,
-    parse_angle,
     parse_expression,
     parse_number,
 )
@@ -106,8 +106,7 @@ def _read_witness(checker: _Checker, witness: Mapping):
         try:
             if v.kind == "revolute":
                 try:
-                    c, s_ = parse_angle(text, where)
-                    values.append(None if c == -1 else _frac(s_) / (1 + _frac(c)))
+                    values.append(ExactAngle.parse(text, where).tangent)
                 except NumberError:
                     irrational[i] = algebraic_half_angle(text, where)
                     values.append(None)

@@ -35,7 +35,7 @@ from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
 from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import angle_text, parse_expression
+from coopkin_sym.exact.parse import parse_expression
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.quotient import Quotient, Tower
 from coopkin_sym.exact.rationals import to_fraction
@@ -130,7 +130,7 @@ def to_at(ctx: SearchContext, values: dict[str, Fraction]) -> Point | None:
             return None
         order.append(name)
         if kind == "revolute":
-            revolute[name] = ExactAngle.from_tangent(v).cos_sin
+            revolute[name] = ExactAngle.from_tangent(v)
         elif kind == "parameter":
             parameters[name] = sp.Rational(v.numerator, v.denominator)
         else:
@@ -288,7 +288,7 @@ def fixed_at(ctx: SearchContext) -> dict[str, str]:
     config = ctx.config
     for j in ctx.model.joints:
         if j.name in config.revolute:
-            out[j.name] = angle_text(*config.revolute[j.name])
+            out[j.name] = config.revolute[j.name].text
         elif j.name in config.prismatic:
             out[j.name] = sp.sstr(config.prismatic[j.name])
     for p, v in config.parameters.items():
@@ -410,9 +410,8 @@ class _FloatProbe:
         values = []
         for j in self.joints:
             if j.type == "revolute":
-                c, s = point.revolute.get(j.name, (sp.Integer(1), sp.Integer(0)))
-                t = None if c == -1 else sp.Rational(s) / (1 + c)
-                values.append((1, 0) if t is None else (int(t.p), int(t.q)))
+                angle = point.revolute.get(j.name, ExactAngle(0, 1))
+                values.append((angle.num, angle.den))
             else:
                 v = sp.Rational(point.prismatic.get(j.name, 0))
                 values.append((int(v.p), int(v.q)))
@@ -438,8 +437,8 @@ class _FloatProbe:
 
 
 def _nudged(point: Point, joint: str, distance: float):  # float-ok: chooses a point
-    """``(cos, sin)`` of an exact angle about ``distance`` above the joint's."""
-    return ExactAngle.from_cos_sin(*point.revolute[joint]).nudged(distance).cos_sin
+    """An exact angle about ``distance`` above the joint's."""
+    return point.revolute[joint].nudged(distance)
 
 
 def family_witness(ctx: SearchContext, comp: Component, f, x: str, inner: dict,

@@ -107,7 +107,8 @@ def chain_data(model: Model, base: Configuration, swept: Sequence[str]) -> dict:
             fixed: Any = None
             if joint.name not in position:
                 if joint.type == "revolute":
-                    c, s = base.revolute.get(joint.name, (1, 0))
+                    angle = base.revolute.get(joint.name)
+                    c, s = (1, 0) if angle is None else angle.cos_sin
                     fixed = (_terms(c, {}, free), _terms(s, {}, free))
                 else:
                     fixed = _terms(base.prismatic.get(joint.name, 0), subs, free)

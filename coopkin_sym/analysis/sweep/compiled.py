@@ -507,7 +507,7 @@ class Compiled:
 
     def _default(self, full: Configuration, joint: str) -> Value:
         if joint in full.revolute:
-            return Value.from_cos_sin(*full.revolute[joint])
+            return Value.from_angle(full.revolute[joint])
         if joint in full.prismatic:
             return self._rational(joint, full.prismatic[joint], joint)
         return Value.from_tangent(0) if self._kind(joint) == "revolute" else Value("0", 0, 1)
@@ -526,15 +526,16 @@ class Compiled:
         return numbers_from_ranks(self.m, self.r, rq, r6, rr, dim=self.dim)
 
     def value(self, joint: str, value) -> Value:
-        """The exact :class:`Value` of ``joint`` for ``value`` (an angle in SymPy syntax,
-        a ``(cos, sin)`` pair, a displacement, or a :class:`Value`)."""
+        """The exact :class:`Value` of ``joint`` for ``value`` (an angle in ``--at``
+        syntax, an :class:`~coopkin_sym.exact.angles.ExactAngle` or an exact
+        ``(cos, sin)`` pair, a displacement, or a :class:`Value`)."""
         if isinstance(value, Value):
             return value
         if joint not in self.joints:
             raise SweepError(f"{joint} is not a swept joint (swept: {', '.join(self.joints)})")
         if self._kind(joint) == "revolute":
             cfg = Configuration.parse(self.model, {joint: value})
-            return Value.from_cos_sin(*cfg.revolute[joint])
+            return Value.from_angle(cfg.revolute[joint])
         given = dict(self.base.parameters)
         cfg = Configuration.parse(self.model, {joint: value, **given})
         return self._rational(joint, cfg.prismatic[joint], value)
@@ -623,15 +624,6 @@ def _joints_of(model: Model) -> tuple[tuple[str, ...], tuple[str, ...]]:
     return hit[1], hit[2]
 
 
-def _ratio(x) -> tuple[int, int]:
-    """Numerator and denominator of an exact rational (SymPy or ``int``)."""
-    if isinstance(x, int):
-        return x, 1
-    if not getattr(x, "is_Rational", False):
-        x = sp.Rational(x)
-    return int(x.p), int(x.q)
-
-
 def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, int, int]] | None:
     """``m`` and the exact ranks of ``Q``, ``H G^T`` and ``H D`` at a configuration
     that gives every joint a value, on the compiled path: ``Q`` compiled once (all
@@ -659,11 +651,7 @@ def point_ranks(model: Model, config: Configuration) -> tuple[int, tuple[int, in
             if value is None:                         # home
                 pairs.append((0, 1))
                 continue
-            (cp, cq), (sp_, sq) = (_ratio(x) for x in value)
-            if cp == -cq:                             # q = pi
-                pairs.append((1, 0))
-            else:                                     # tan(q/2) = s / (1 + c)
-                pairs.append((sp_ * cq, sq * (cq + cp)))
+            pairs.append((value.num, value.den))      # tan(q/2); (1, 0) at q = pi
         else:
             d = prismatic.get(joint, 0)
             if isinstance(d, int):

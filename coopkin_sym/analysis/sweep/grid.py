@@ -18,7 +18,7 @@ from coopkin_sym import limits
 from coopkin_sym.analysis.sweep.values import SNAP_BOUND, Value, _pi_text, _tangent_of
 from coopkin_sym.errors import SweepError
 from coopkin_sym.exact.angles import ExactAngle
-from coopkin_sym.exact.parse import NumberError, brief, parse_angle, parse_expression
+from coopkin_sym.exact.parse import NumberError, brief, parse_expression
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.model.configuration import (
     ConfigurationError,
@@ -232,12 +232,11 @@ def _angle_levels(lo: sp.Expr, hi: sp.Expr, count: int, bound: float,  # float-o
                 yield _snapped(text, float(q), bound)  # float-ok
             continue
         try:
-            c, sn = parse_angle(q, where)
+            angle = ExactAngle.parse(q, where)
         except NumberError:
             yield _snapped(text, float(sp.N(q, 30)), bound)  # float-ok
             continue
-        v = Value.from_cos_sin(c, sn)
-        yield Value(text, v.num, v.den)
+        yield Value(text, angle.num, angle.den)
 
 
 def _snapped(requested: str, q: float, bound: float) -> Value:  # float-ok

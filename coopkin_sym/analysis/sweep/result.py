@@ -23,6 +23,7 @@ from coopkin_sym.analysis.sweep.saved import sweep_from_file, sweep_from_tree
 from coopkin_sym.analysis.sweep.saved_csv import metadata_path, sweep_from_csv_file
 from coopkin_sym.analysis.sweep.values import Value
 from coopkin_sym.errors import MissingDependency, SweepError
+from coopkin_sym.model.configuration import assignments_text
 
 
 @dataclass(eq=False)
@@ -144,8 +145,7 @@ class SweepResult(Displayable):
 
     def at_text(self, i: int) -> str:
         """Point ``i`` with the fixed values, for :meth:`System.analyze`."""
-        parts = [f"{j}={t}" for j, t in self.point(i).items()]
-        return ",".join(parts + ([self.at] if self.at else []))
+        return ",".join([assignments_text(self.point(i))] + ([self.at] if self.at else []))
 
     def numbers_at(self, i: int) -> Numbers:
         return Numbers(*(int(x) for x in self.numbers[i]))

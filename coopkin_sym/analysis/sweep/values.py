@@ -31,7 +31,7 @@ class Value:
     >>> v = Value.from_tangent(Fraction(1, 3))
     >>> v.text, v.num, v.den
     ('2*atan(1/3)', 1, 3)
-    >>> Value.from_cos_sin(-1, 0).text
+    >>> Value.from_angle(ExactAngle(1, 0)).text
     'pi'
     """
 
@@ -50,11 +50,6 @@ class Value:
     def from_tangent(cls, t: Fraction | int | None) -> Value:
         """The angle with ``tan(q/2) = t`` (``None``: ``q = pi``)."""
         return cls.from_angle(ExactAngle.from_tangent(t))
-
-    @classmethod
-    def from_cos_sin(cls, cos, sin) -> Value:
-        """The angle with exact rational ``(cos q, sin q)``."""
-        return cls.from_angle(ExactAngle.from_cos_sin(cos, sin))
 
     @property
     def snapped(self) -> bool:

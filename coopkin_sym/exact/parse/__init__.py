@@ -26,7 +26,8 @@ L/2 + 1/10
 t_q1**2 - 1
 >>> parse_angle("2*atan(1/3)", "q1")
 (4/5, 3/5)
->>> angle_text(sp.Rational(4, 5), sp.Rational(3, 5))
+>>> from fractions import Fraction
+>>> tangent_text(Fraction(1, 3))
 '2*atan(1/3)'
 """
 
@@ -35,7 +36,6 @@ from __future__ import annotations
 from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.parse.angle_reader import (
     algebraic_half_angle,
-    angle_text,
     parse_angle,
     tangent_text,
 )
@@ -43,6 +43,6 @@ from coopkin_sym.exact.parse.expressions import FUNCTIONS, parse_expression, par
 from coopkin_sym.exact.parse.messages import brief
 from coopkin_sym.exact.parse.values import exact_expr, parse_number
 
-__all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "angle_text", "brief",
+__all__ = ["FUNCTIONS", "NumberError", "algebraic_half_angle", "brief",
            "exact_expr", "parse_angle", "parse_expression", "parse_number",
            "parse_polynomial", "tangent_text"]

@@ -1,7 +1,8 @@
 """Exact angles from text, decided exactly from their parts (rational multiples of
 ``pi`` and of ``atan(p/q)``) with bounded work: :func:`parse_angle`,
-:func:`algebraic_half_angle`, and the texts written back (:func:`angle_text`,
-:func:`tangent_text`)."""
+:func:`algebraic_half_angle`, and the text written back (:func:`tangent_text`, the
+one writer of an exact angle, which :attr:`~coopkin_sym.exact.angles.ExactAngle.text`
+uses)."""
 
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ from coopkin_sym import limits
 from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.parse.messages import _show, _sympy_text
 from coopkin_sym.exact.parse.reader import _Sym
-from coopkin_sym.exact.parse.values import _INT, _value, parse_number
+from coopkin_sym.exact.parse.values import _INT, _value
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
 # ------------------------------------------------------------------------ angles
@@ -401,13 +402,8 @@ def _nearest_angles(q: sp.Expr) -> list[str]:
         else:
             inverse = Fraction(1 / t).limit_denominator(limit)  # float-ok
             approx = None if inverse == 0 else 1 / inverse
-        if approx is None:
-            cos, sin = sp.Integer(-1), sp.Integer(0)
-        else:
-            tr = to_sympy(approx)
-            cos, sin = (1 - tr**2) / (1 + tr**2), 2 * tr / (1 + tr**2)
-        text = angle_text(cos, sin)
-        angle = math.atan2(float(sin), float(cos))  # float-ok: shown to the user
+        text = tangent_text(approx)
+        angle = math.pi if approx is None else 2 * math.atan(approx)  # float-ok: shown
         entry = f"{text} ({angle:.6f})"
         if entry not in out:
             out.append(entry)
@@ -494,37 +490,11 @@ def algebraic_half_angle(text: str, where: str) -> sp.Expr:
     return sp.radsimp(t)
 
 
-def angle_text(cos: object, sin: object) -> str:
-    """The shortest exact text for the angle with rational ``(cos, sin)``.
-
-    ``"0"``, ``"pi/2"``, ``"-pi/2"``, ``"pi"``, else ``"2*atan(p/q)"`` with
-    ``p/q = sin/(1 + cos)``, in ``(-pi, pi]``. Inverse of :func:`parse_angle`.
-
-    Raises
-    ------
-    NumberError
-        If ``cos`` and ``sin`` are not rational or ``cos^2 + sin^2 != 1``.
-
-    Example
-    -------
-    >>> import sympy as sp
-    >>> angle_text(sp.Rational(4, 5), sp.Rational(-3, 5))
-    '2*atan(-1/3)'
-    """
-    c = parse_number(cos, {}, "cos") if not isinstance(cos, float) else None
-    s = parse_number(sin, {}, "sin") if not isinstance(sin, float) else None
-    if c is None or s is None or not (c.is_Rational and s.is_Rational):
-        raise NumberError("angle", f"cos = {cos}, sin = {sin} must be exact rationals")
-    if c**2 + s**2 != 1:
-        raise NumberError("angle", f"cos = {c}, sin = {s} is not a point on the unit "
-                                   f"circle")
-    return tangent_text(None if c == -1 else Fraction(int(s.p), int(s.q))
-                        / Fraction(int((1 + c).p), int((1 + c).q)))
-
-
 def tangent_text(t: Fraction | None) -> str:
-    """The angle with ``tan(q/2) = t`` (None: ``q = pi``) as :func:`angle_text` writes
-    it: ``"0"``, ``"pi/2"``, ``"-pi/2"``, ``"pi"``, else ``"2*atan(p/q)"``.
+    """The angle with ``tan(q/2) = t`` (None: ``q = pi``) in ``--at`` syntax, in
+    ``(-pi, pi]``: ``"0"``, ``"pi/2"``, ``"-pi/2"``, ``"pi"``, else ``"2*atan(p/q)"``.
+    The one writer of an exact angle (:func:`parse_angle` reads it back); elsewhere
+    an angle is written by :attr:`~coopkin_sym.exact.angles.ExactAngle.text`.
 
     Example
     -------

@@ -73,6 +73,7 @@ from coopkin_sym.analysis.locus.types import Locus, canonical_order, cut_short
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -196,7 +197,7 @@ def search_configuration(model: Model, at=None, free=None
     for j in model.joints:  # joints neither set nor free stay at home
         if j.name not in free_joints and j.name not in revolute | prismatic:
             if j.type == "revolute":
-                revolute[j.name] = (sp.Integer(1), sp.Integer(0))
+                revolute[j.name] = ExactAngle(0, 1)
             else:
                 prismatic[j.name] = sp.Integer(0)
     if not free_joints:

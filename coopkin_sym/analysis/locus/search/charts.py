@@ -23,7 +23,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose
-from coopkin_sym.exact.angles import cotangent_name, tangent_name
+from coopkin_sym.exact.angles import ExactAngle, cotangent_name, tangent_name
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
@@ -80,7 +80,7 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
             break
         revolute = dict(ctx.config.revolute)
         for n in subset:
-            revolute[n] = (sp.Integer(-1), sp.Integer(0))
+            revolute[n] = ExactAngle(1, 0)
         config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters,
                                ctx.config.free - set(subset))
         chart, rows = chart_of(ctx.model, config)
