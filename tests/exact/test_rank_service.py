@@ -11,6 +11,7 @@ joint columns) and through the arm-by-arm elimination.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -41,7 +42,7 @@ class Domain:
     domain: object
     values: dict                 # variable -> SymPy value (the map to the field)
     prime: int | None = None     # reference over GF(prime)
-    fractions: bool = False      # rows of Fractions (over Q)
+    fraction: Callable | None = None   # rows of halves of this type (over Q)
     batch: bool = False          # a NumPy batch over GF(prime)
 
 
@@ -50,7 +51,9 @@ def _domains() -> list[Domain]:
     x2, y2 = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex").gens()
     return [
         Domain("Z", (), RATIONALS, {}),
-        Domain("QQ", (), RATIONALS, {}, fractions=True),
+        Domain("QQ", (), RATIONALS, {}, fraction=Fraction),
+        Domain("QQ (flint)", (), RATIONALS, {}, fraction=flint.fmpq),
+        Domain("QQ (SymPy)", (), RATIONALS, {}, fraction=sp.Rational),
         Domain("GF(7)", (), PrimeField(7), {}, prime=7),
         Domain("GF(2^61-1)", (), PrimeField(2**61 - 1), {}, prime=2**61 - 1),
         Domain("GF(101) batch", (), PrimeField(101), {}, prime=101, batch=True),
@@ -130,9 +133,10 @@ def _rows(case: Domain, cells):
         theirs = [[_build(c, make_sympy, sp.Integer(1)) for c in r] for r in cells]
         return ours, theirs
     ours = [[_build(c, int, 1) for c in r] for r in cells]
-    if case.fractions:
-        ours = [[Fraction(e, 2) for e in r] for r in ours]
-    return ours, [[sp.Rational(e) for e in r] for r in ours]
+    if case.fraction is not None:
+        ours = [[case.fraction(e, 2) for e in r] for r in ours]
+    return ours, [[sp.Rational(int(e.numerator), int(e.denominator)) if case.fraction else
+                   sp.Rational(e) for e in r] for r in ours]
 
 
 def _reference(case: Domain, entries, ncols: int) -> int:
