@@ -54,10 +54,10 @@ def contact_points(analysis) -> list[tuple[sp.Expr, ...]]:
     >>> contact_points(load("five-bar").analyze("L=1"))
     [(0, 2, 0), (0, 2, 0)]
     """
-    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+    from coopkin_sym.exact.sympy_bridge import ratfunc_to_sympy
 
     kin = analysis.kinematics
-    return [tuple(frac_to_sympy(x, kin.symbols) for x in point) for point in kin.points]
+    return [tuple(ratfunc_to_sympy(x, kin.symbols) for x in point) for point in kin.points]
 
 
 __all__ = ["contact_points", "exact_rank", "same_span"]

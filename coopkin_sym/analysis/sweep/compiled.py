@@ -201,7 +201,7 @@ def _compile_rows(frac_rows, rows, ring, joints, kinds, var_of, param_vars, name
     njv = len(names) - nparams
     terms = []
     for i, (frac_row, row) in enumerate(zip(frac_rows, rows, strict=True)):
-        top = [max(es) for es in zip(*(f.den for f in frac_row), strict=True)]
+        top = [max(es) for es in zip(*(f.powers for f in frac_row), strict=True)]
         degree = []
         for j, kind in zip(joints, kinds, strict=True):
             v = var_of[j]
