@@ -13,10 +13,13 @@ from __future__ import annotations
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from coopkin_sym.exact.matrix import SYMPY, rank
+
 
 def exact_rank(matrix: sp.Matrix) -> int:
-    """The rank of ``matrix`` (rational or rational-function entries), exactly: by
-    elimination over the field its entries live in.
+    """The rank of ``matrix`` (rational or rational-function entries), exactly: over
+    the field its entries live in, by the rank service
+    (:data:`~coopkin_sym.exact.matrix.SYMPY`).
 
     Example
     -------
@@ -26,8 +29,7 @@ def exact_rank(matrix: sp.Matrix) -> int:
     """
     if 0 in matrix.shape:
         return 0
-    dm = DomainMatrix.from_Matrix(sp.Matrix(matrix))
-    return dm.convert_to(dm.domain.get_field()).rank()
+    return rank(DomainMatrix.from_Matrix(sp.Matrix(matrix)), None, SYMPY)
 
 
 def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
