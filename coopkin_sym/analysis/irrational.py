@@ -49,7 +49,7 @@ from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
 from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import substitute_rows
-from coopkin_sym.exact.sympy_bridge import frac_to_sympy, poly_to_sympy
+from coopkin_sym.exact.sympy_bridge import poly_to_sympy, ratfunc_to_sympy
 from coopkin_sym.model.configuration import (
     Configuration,
     ConfigurationError,
@@ -342,7 +342,7 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
     contacts: list[tuple[str, list[sp.Expr]]] = []
     joint_motions: list[list[sp.Expr]] = []
     if "Ni" in keys and numbers.Ni:
-        contacts = [(c.name, [exact(frac_to_sympy(v, kin.symbols)) for v in point])
+        contacts = [(c.name, [exact(ratfunc_to_sympy(v, kin.symbols)) for v in point])
                     for c, point in zip(model.contacts, kin.points, strict=True)]
         twists = vectors([r[:model.object_dim] for r in rows], model.object_dim)
     if "Nr" in keys and numbers.Nr:

@@ -42,15 +42,16 @@ import sympy as sp
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.parse import exact_expr
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_fmpq
-from coopkin_sym.exact.ring import Frac, Ring
+from coopkin_sym.exact.ring import Ring
 from coopkin_sym.exact.sympy_bridge import poly_from_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
 
-Vec = list[Frac]
-Mat = list[list[Frac]]
+Vec = list[RatFunc]
+Mat = list[list[RatFunc]]
 
 #: The columns of the spatial ``G^T`` a planar system keeps: ``v_x, v_y, w_z``.
 PLANAR_COLUMNS = (0, 1, 5)
@@ -69,7 +70,7 @@ class Kinematics:
         SymPy symbol of each ring variable (parameters are the model's symbols).
     GT, D, H, Q
         ``G^T`` (6n x 6), ``D`` (6n x r), ``H`` (m x 6n), ``Q`` (m x (6+r)), entries
-        :class:`~coopkin_sym.exact.ring.Frac` (3n, 3 and 3 + r for a planar system).
+        :class:`~coopkin_sym.exact.ratfunc.RatFunc` (3n, 3 and 3 + r for a planar system).
     row_labels
         What each row of ``H`` and ``Q`` constrains, e.g. ``"c1: v_x"``, ``"c2: w.n"``.
     row_contacts
@@ -137,13 +138,13 @@ class _Builder:
         self.param_subs = {p: config.parameters[p.name] for p in model.parameters
                            if p.name in config.parameters}
 
-    # exact numbers of the model, as fractions of the ring
-    def num(self, expr) -> Frac:
+    # exact numbers of the model, as rational functions of the ring
+    def num(self, expr) -> RatFunc:
         if getattr(expr, "is_Rational", False) or type(expr) is int:
-            return self.ring.frac(to_fmpq(expr))        # a number: no polynomial to read
+            return self.ring.ratfunc(to_fmpq(expr))     # a number: no polynomial to read
         e = exact_expr(expr, None, "value")
         e = e.subs(self.param_subs) if self.param_subs else e
-        return self.ring.frac(poly_from_sympy(e, self.ring, self.symbols))
+        return self.ring.ratfunc(poly_from_sympy(e, self.ring, self.symbols))
 
     def vec(self, v: Sequence) -> Vec:
         return [self.num(x) for x in v]
@@ -156,7 +157,7 @@ class _Builder:
         ident = [[one if i == k else zero for k in range(3)] for i in range(3)]
         if joint.type == "prismatic":
             if joint.name in self.config.free:
-                d = ring.frac(ring.qvar(joint.name))
+                d = ring.ratfunc(ring.qvar(joint.name))
             else:
                 d = self.num(self.config.prismatic.get(joint.name, 0))
             return ident, [d * a for a in axis]
@@ -341,10 +342,10 @@ def pick_rows(components: Sequence[str], linear: dict, angular: dict, along
 
 
 #: A row of H as its non-zero entries: (column, value) pairs.
-SparseRow = list[tuple[int, Frac]]
+SparseRow = list[tuple[int, RatFunc]]
 
 
-def _dense(rows: list[SparseRow], width: int, zero: Frac) -> Mat:
+def _dense(rows: list[SparseRow], width: int, zero: RatFunc) -> Mat:
     out = []
     for entries in rows:
         row = [zero] * width
@@ -354,7 +355,7 @@ def _dense(rows: list[SparseRow], width: int, zero: Frac) -> Mat:
     return out
 
 
-def _row_times(h: SparseRow, m: Mat, width: int, zero: Frac) -> list[Frac]:
+def _row_times(h: SparseRow, m: Mat, width: int, zero: RatFunc) -> list[RatFunc]:
     """The row ``h m`` (``m`` has ``width`` columns), over the few non-zero entries of
     ``h`` only: a row of H selects one to three rows of ``G^T -D``, so Q costs its size,
     not its size times the number of contacts."""
@@ -378,7 +379,7 @@ def build(model: Model, config: Configuration) -> Kinematics:
     return _Builder(model, config).build()
 
 
-# --- small exact 3-vector algebra on Frac ------------------------------------------
+# --- small exact 3-vector algebra on RatFunc ------------------------------------------
 def skew(v: Vec) -> Mat:
     """Cross-product matrix ``S(v)`` with ``S(v) x = v x x``."""
     z = v[0].ring.zero()

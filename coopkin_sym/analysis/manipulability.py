@@ -57,6 +57,7 @@ from sympy.polys.matrices import DomainMatrix
 from coopkin_sym.analysis.kinematics import PLANAR_COLUMNS, spatial_twist
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ManipulabilityError
+from coopkin_sym.exact import matrix as exact_matrix
 from coopkin_sym.exact.parse import NumberError, exact_expr
 
 
@@ -308,7 +309,7 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     index = sp.factor(field.to_sympy(shape_dm.det())) if len(rows) else sp.Integer(1)
     # A is positive definite, so E has the rank of the driven rows (exact, over the
     # field of rational functions of the symbols)
-    rank = driven.rank() if driven.shape[1] else 0
+    rank = exact_matrix.rank(driven, None, exact_matrix.SYMPY) if driven.shape[1] else 0
     return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
 
 

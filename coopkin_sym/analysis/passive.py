@@ -55,7 +55,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.matrix import POLYNOMIALS, rank
 
 #: The numbers of an analysis with passive joints, in the order tables use.
 PASSIVE_NUMBER_NAMES = ("Na", "Np", "Nco", "Nuo", "Npi", "Nar", "Nam")
@@ -205,14 +205,14 @@ def _extend(basis: list, candidates: list, n: int, zctx) -> list:
     """The candidates (in order) that each raise the rank of ``basis``: a basis of
     a complement of ``span(basis)`` in ``span(basis + candidates)``."""
     chosen: list = []
-    rank = PolyMatrix(basis, n, context=zctx).rank() if basis else 0
+    current = rank(basis, n, POLYNOMIALS, zctx)
     for v in candidates:
         if all(e.is_zero() for e in v):
             continue
-        trial = PolyMatrix(basis + chosen + [v], n, context=zctx).rank()
-        if trial > rank:
+        trial = rank(basis + chosen + [v], n, POLYNOMIALS, zctx)
+        if trial > current:
             chosen.append(v)
-            rank = trial
+            current = trial
     return chosen
 
 

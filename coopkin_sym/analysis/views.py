@@ -13,10 +13,13 @@ from __future__ import annotations
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from coopkin_sym.exact.matrix import SYMPY, rank
+
 
 def exact_rank(matrix: sp.Matrix) -> int:
-    """The rank of ``matrix`` (rational or rational-function entries), exactly: by
-    elimination over the field its entries live in.
+    """The rank of ``matrix`` (rational or rational-function entries), exactly: over
+    the field its entries live in, by the rank service
+    (:data:`~coopkin_sym.exact.matrix.SYMPY`).
 
     Example
     -------
@@ -26,8 +29,7 @@ def exact_rank(matrix: sp.Matrix) -> int:
     """
     if 0 in matrix.shape:
         return 0
-    dm = DomainMatrix.from_Matrix(sp.Matrix(matrix))
-    return dm.convert_to(dm.domain.get_field()).rank()
+    return rank(DomainMatrix.from_Matrix(sp.Matrix(matrix)), None, SYMPY)
 
 
 def same_span(a: sp.Matrix, b: sp.Matrix) -> bool:
@@ -54,10 +56,10 @@ def contact_points(analysis) -> list[tuple[sp.Expr, ...]]:
     >>> contact_points(load("five-bar").analyze("L=1"))
     [(0, 2, 0), (0, 2, 0)]
     """
-    from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+    from coopkin_sym.exact.sympy_bridge import ratfunc_to_sympy
 
     kin = analysis.kinematics
-    return [tuple(frac_to_sympy(x, kin.symbols) for x in point) for point in kin.points]
+    return [tuple(ratfunc_to_sympy(x, kin.symbols) for x in point) for point in kin.points]
 
 
 __all__ = ["contact_points", "exact_rank", "same_span"]

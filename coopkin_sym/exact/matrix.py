@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Sequence
+from math import lcm
 from typing import TYPE_CHECKING, Protocol
 
 import flint
@@ -52,9 +53,9 @@ if TYPE_CHECKING:  # pragma: no cover
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
 
-__all__ = ["POLYNOMIALS", "RATIONALS", "ArmBlock", "Domain", "PolyMatrix", "Polynomials",
-           "PrimeField", "Ranks", "Rationals", "arm_elimination", "batch_rank_profile",
-           "batch_ranks", "eliminate_arm", "rank", "rank_triple"]
+__all__ = ["POLYNOMIALS", "RATIONALS", "SYMPY", "ArmBlock", "Domain", "PolyMatrix",
+           "Polynomials", "PrimeField", "Ranks", "Rationals", "SympyEntries", "arm_elimination",
+           "batch_rank_profile", "batch_ranks", "eliminate_arm", "rank", "rank_triple"]
 
 
 class Domain(Protocol):
@@ -376,6 +377,72 @@ class PrimeField:
         return f"GF({self.p})"
 
 
+class SympyEntries:
+    """The field of a matrix of SymPy expressions (rows of expressions, or a SymPy
+    ``DomainMatrix``): rational functions over ``Q`` in the symbols (and other
+    generators, ``cos(x)`` as a variable) are ranked by flint over :data:`POLYNOMIALS`,
+    each row cleared of its denominators; entries of any other SymPy domain (radicals:
+    ``EX``) by SymPy's ``DomainMatrix`` over the field of that domain.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> t = sp.Symbol("t")
+    >>> rank([[t / (1 + t), 1], [t**2 / (1 + t), t]], 2, SYMPY), rank([[t, sp.sqrt(2)]], 2, SYMPY)
+    (1, 1)
+    """
+
+    def __repr__(self) -> str:
+        return "SymPy"
+
+
+#: SymPy expressions, ranked over the field they generate.
+SYMPY = SympyEntries()
+
+
+def _sympy_rank(rows, ncols: int | None) -> int:
+    """:func:`rank` over :data:`SYMPY`."""
+    from sympy.polys.matrices import DomainMatrix
+
+    if not isinstance(rows, DomainMatrix):
+        if not rows or not ncols:
+            return 0
+        rows = DomainMatrix.from_list_sympy(len(rows), ncols, [list(r) for r in rows])
+    if 0 in rows.shape:
+        return 0
+    field = rows.domain if rows.domain.is_Field else rows.domain.get_field()
+    matrix = rows.convert_to(field)
+    if field.is_QQ:
+        return rank(matrix.to_list(), matrix.shape[1], RATIONALS)
+    if not (getattr(field, "is_FractionField", False)
+            and (field.domain.is_ZZ or field.domain.is_QQ)):
+        return matrix.rank()
+    ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{i}" for i in range(len(field.symbols))),
+                                   "degrevlex")
+    return rank([_cleared_row(row, ctx) for row in matrix.to_list()], matrix.shape[1],
+                POLYNOMIALS, ctx)
+
+
+def _cleared_row(row, ctx) -> Row:
+    """A row of SymPy rational functions times one nonzero polynomial, over Z."""
+    nums, dens = [], []
+    scale = 1
+    for e in row:
+        for part, out in ((e.numer, nums), (e.denom, dens)):
+            terms = {m: _rational(c) for m, c in part.terms()}
+            d = functools.reduce(lcm, (int(c.q) for c in terms.values()), 1)
+            out.append((ctx.from_dict({m: int((c * d).p) for m, c in terms.items()}), d))
+    common = ctx.constant(1)
+    for den, _ in dens:
+        common = common * (den / common.gcd(den))
+    out = []
+    for (num, a), (den, b) in zip(nums, dens, strict=True):
+        # e = (num / a) / (den / b) = b num / (a den)
+        out.append((num * (common / den), flint.fmpq(b, a)))
+        scale = lcm(scale, a)
+    return [p * int((c * scale).p) for p, c in out]
+
+
 #: An arm block of ``Q``: the rows of the arm's contacts and its joint columns
 #: ``start:stop`` (the arm's rows are zero in every other joint column).
 ArmBlock = tuple[Sequence[int], int, int]
@@ -438,6 +505,8 @@ def rank(rows, ncols: int | None, domain: object = POLYNOMIALS, context=None):
     """
     if isinstance(domain, PrimeField) and getattr(rows, "ndim", 0) == 3:
         return batch_ranks(rows, domain.p)
+    if isinstance(domain, SympyEntries):
+        return _sympy_rank(rows, ncols)
     if ncols == 0 or len(rows) == 0:
         return 0
     if isinstance(domain, Rationals):
@@ -477,7 +546,7 @@ def rank_triple(rows, ncols: int, dim: int, domain: object = POLYNOMIALS,
     >>> rank_triple(rows, 4, 2, PrimeField(7), [([0, 2], 2, 3), ([1], 3, 4)])
     (2, 2, 1, (1, 0))
     """
-    if isinstance(domain, Rationals | PrimeField):
+    if isinstance(domain, Rationals | PrimeField | SympyEntries):
         return _direct_triple(rows, ncols, dim, domain, arms, context)
     if not rows:
         return Ranks(0, 0, 0, tuple(0 for _ in arms or ()))

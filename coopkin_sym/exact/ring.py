@@ -1,32 +1,33 @@
-"""Polynomial rings of one analysis and rational functions with known denominators.
+"""Polynomial rings of one analysis, and rows of rational functions cleared of their
+denominators.
 
 Every quantity of the kinematics is a rational function of the analysis variables
 (tangent half-angles ``t_<joint>``, free prismatic displacements, free parameters)
 whose denominator is a product of the factors ``1 + t_j**2``, one per free revolute
-joint. :class:`Frac` keeps the numerator as a python-flint ``fmpq_mpoly`` and the
-denominator as exponents of those known factors, so sums and products never need a
-polynomial gcd, and a row is cleared of denominators by multiplying with the highest
-power of each factor.
+joint. A :class:`Ring` makes them as :class:`~coopkin_sym.exact.ratfunc.RatFunc` over
+those known factors (numerator a python-flint ``fmpq_mpoly``, denominator the
+exponents of the factors), so sums and products never need a polynomial gcd, and a
+row is cleared of denominators by multiplying with the highest power of each factor.
 
 Example
 -------
 >>> ring = Ring(["t_q1", "L"], denominator_variables=["t_q1"])
 >>> t, L = ring.gens()
 >>> c = ring.cos_of(0)                       # (1 - t^2) / (1 + t^2)
->>> (c * L + L).den                          # denominators are exponents of 1 + t^2
+>>> (c * L + L).powers                       # denominators are exponents of 1 + t^2
 (1,)
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from fractions import Fraction
 from math import lcm
 
 import flint
 
 from coopkin_sym.exact import pickling  # noqa: F401 - flint polynomials pickle (copyreg)
+from coopkin_sym.exact.ratfunc import RatFunc
 
 ORDERING = "degrevlex"
 
@@ -59,6 +60,13 @@ class Ring:
         )
         self._no_den = (0,) * len(self.den_names)
 
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Ring) and (other.names, other.den_names) == (
+            self.names, self.den_names)
+
+    def __hash__(self) -> int:
+        return hash((self.names, self.den_names))
+
     @property
     def nvars(self) -> int:
         return len(self.names)
@@ -67,36 +75,38 @@ class Ring:
         """The variable ``name`` as an ``fmpq_mpoly``."""
         return self.qctx.gens()[self.names.index(name)]
 
-    def gens(self) -> list[Frac]:
-        """All variables as :class:`Frac`."""
-        return [self.frac(g) for g in self.qctx.gens()]
+    def gens(self) -> list[RatFunc]:
+        """All variables as :class:`~coopkin_sym.exact.ratfunc.RatFunc`."""
+        return [self.ratfunc(g) for g in self.qctx.gens()]
 
-    # --- constructing fractions -------------------------------------------------
-    def frac(self, num, den: tuple[int, ...] | None = None) -> Frac:
-        """A fraction with numerator ``num`` (fmpq_mpoly, int, Fraction or fmpq)."""
+    # --- constructing rational functions -------------------------------------------
+    def ratfunc(self, num, powers: tuple[int, ...] | None = None) -> RatFunc:
+        """``num / prod(den_factors[j] ** powers[j])`` (no denominator without
+        ``powers``), over the known factors; ``num`` an fmpq_mpoly, int, Fraction or
+        fmpq."""
         if not isinstance(num, flint.fmpq_mpoly):
             num = self.qctx.constant(_to_fmpq(num))
-        return Frac(self, num, self._no_den if den is None else den)
+        return RatFunc(num, None, self, self._no_den if powers is None else powers)
 
-    def zero(self) -> Frac:
-        return self.frac(0)
+    def zero(self) -> RatFunc:
+        return self.ratfunc(0)
 
-    def one(self) -> Frac:
-        return self.frac(1)
+    def one(self) -> RatFunc:
+        return self.ratfunc(1)
 
     def _den_of(self, name: str) -> tuple[int, ...]:
         k = self.den_names.index(name)
         return tuple(1 if i == k else 0 for i in range(len(self.den_names)))
 
-    def cos_of(self, k: int) -> Frac:
+    def cos_of(self, k: int) -> RatFunc:
         """``cos q = (1 - t^2)/(1 + t^2)`` for the ``k``-th denominator variable."""
         t = self.qvar(self.den_names[k])
-        return Frac(self, 1 - t**2, self._den_of(self.den_names[k]))
+        return RatFunc(1 - t**2, None, self, self._den_of(self.den_names[k]))
 
-    def sin_of(self, k: int) -> Frac:
+    def sin_of(self, k: int) -> RatFunc:
         """``sin q = 2 t/(1 + t^2)`` for the ``k``-th denominator variable."""
         t = self.qvar(self.den_names[k])
-        return Frac(self, 2 * t, self._den_of(self.den_names[k]))
+        return RatFunc(2 * t, None, self, self._den_of(self.den_names[k]))
 
     def den_poly(self, den: tuple[int, ...]) -> flint.fmpq_mpoly:
         """The denominator ``prod (1 + t_j^2)^e_j`` as a polynomial."""
@@ -113,7 +123,7 @@ class Ring:
         d = lcm(*(int(c.q) for c in terms.values())) if terms else 1
         return self.zctx.from_dict({m: int(c.p) * (d // int(c.q)) for m, c in terms.items()})
 
-    def clear_row(self, row: Sequence[Frac]) -> list[flint.fmpz_mpoly]:
+    def clear_row(self, row: Sequence[RatFunc]) -> list[flint.fmpz_mpoly]:
         """A row of fractions times one nonzero polynomial, as integer polynomials.
 
         Scaling a row of a matrix by a nonzero polynomial keeps its nullspace and rank,
@@ -122,11 +132,11 @@ class Ring:
         """
         if not row:
             return []
-        top = tuple(max(es) for es in zip(*(f.den for f in row), strict=True))
+        top = tuple(max(es) for es in zip(*(f.powers for f in row), strict=True))
         factors: dict[tuple[int, ...], flint.fmpq_mpoly] = {}
         nums = []
         for f in row:
-            missing = tuple(a - b for a, b in zip(top, f.den, strict=True))
+            missing = tuple(a - b for a, b in zip(top, f.powers, strict=True))
             if any(missing):
                 if missing not in factors:
                     factors[missing] = self.den_poly(missing)
@@ -148,7 +158,8 @@ class Ring:
 
 
 class ClearedRows(Sequence):
-    """The rows of a matrix of :class:`Frac`, each cleared to integer polynomials
+    """The rows of a matrix of :class:`~coopkin_sym.exact.ratfunc.RatFunc` (over the
+    known factors of ``ring``), each cleared to integer polynomials
     (:meth:`Ring.clear_row`) when first used; :meth:`values_at` gives the rows' values
     at an integer point (each row scaled to integers) without clearing any.
 
@@ -162,13 +173,13 @@ class ClearedRows(Sequence):
     ['-t_q1^2 + 1', '2*t_q1']
     """
 
-    def __init__(self, ring: Ring, rows: Sequence[Sequence[Frac]]) -> None:
+    def __init__(self, ring: Ring, rows: Sequence[Sequence[RatFunc]]) -> None:
         self.ring = ring
-        self.fracs = rows
+        self.entries = rows
         self._cleared: dict[int, list[flint.fmpz_mpoly]] = {}
 
     def __len__(self) -> int:
-        return len(self.fracs)
+        return len(self.entries)
 
     def __getitem__(self, i):
         if isinstance(i, slice):
@@ -176,13 +187,13 @@ class ClearedRows(Sequence):
         if i < 0:
             i += len(self)
         if i not in self._cleared:
-            self._cleared[i] = self.ring.clear_row(self.fracs[i])
+            self._cleared[i] = self.ring.clear_row(self.entries[i])
         return self._cleared[i]
 
     def block(self, rows: Sequence[int], cols: Sequence[int]) -> list[list[flint.fmpz_mpoly]]:
         """The block ``rows x cols``, each of its rows cleared on its own (the block's
         rank and nullspace, not the whole rows', are kept)."""
-        return [self.ring.clear_row([self.fracs[i][c] for c in cols]) for i in rows]
+        return [self.ring.clear_row([self.entries[i][c] for c in cols]) for i in rows]
 
     def values_at(self, point: Sequence[int]) -> list[list[int]]:
         """The rows at ``point`` (integers; the denominators ``1 + t^2`` never vanish
@@ -190,14 +201,14 @@ class ClearedRows(Sequence):
         the same rank as the matrix at the point, in any set of rows and columns."""
         out = []
         factor_values = [int(f(*point)) for f in self.ring.den_factors]
-        for row in self.fracs:
+        for row in self.entries:
             values = []
             for f in row:
                 if f.num.is_zero():
                     values.append(flint.fmpq(0))
                     continue
                 den = 1
-                for v, e in zip(factor_values, f.den, strict=True):
+                for v, e in zip(factor_values, f.powers, strict=True):
                     if e:
                         den *= v**e
                 values.append(f.num(*point) / den)
@@ -216,64 +227,3 @@ def _to_fmpq(x) -> flint.fmpq:
         return flint.fmpq(x)
     f = Fraction(x)
     return flint.fmpq(f.numerator, f.denominator)
-
-
-@dataclass(frozen=True, slots=True)
-class Frac:
-    """``num / prod(ring.den_factors[j] ** den[j])`` with ``num`` an ``fmpq_mpoly``.
-
-    Example
-    -------
-    >>> ring = Ring(["t_q1"], ["t_q1"])
-    >>> c = ring.cos_of(0)                                # cos q1 = (1 - t^2)/(1 + t^2)
-    >>> c.num, c.den
-    (-t_q1^2 + 1, (1,))
-    """
-
-    ring: Ring
-    num: flint.fmpq_mpoly
-    den: tuple[int, ...]
-
-    def is_zero(self) -> bool:
-        return self.num.is_zero()
-
-    def _lift(self, other) -> Frac:
-        return other if isinstance(other, Frac) else self.ring.frac(other)
-
-    def _common(self, other: Frac) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly, tuple]:
-        if self.den == other.den:
-            return self.num, other.num, self.den
-        top = tuple(max(a, b) for a, b in zip(self.den, other.den, strict=True))
-        dp = self.ring.den_poly
-        a = self.num * dp(tuple(t - e for t, e in zip(top, self.den, strict=True)))
-        b = other.num * dp(tuple(t - e for t, e in zip(top, other.den, strict=True)))
-        return a, b, top
-
-    def __add__(self, other) -> Frac:
-        other = self._lift(other)
-        if other.num.is_zero():
-            return self
-        if self.num.is_zero():
-            return other
-        a, b, den = self._common(other)
-        return Frac(self.ring, a + b, den)
-
-    __radd__ = __add__
-
-    def __neg__(self) -> Frac:
-        return Frac(self.ring, -self.num, self.den)
-
-    def __sub__(self, other) -> Frac:
-        return self + (-self._lift(other))
-
-    def __rsub__(self, other) -> Frac:
-        return self._lift(other) - self
-
-    def __mul__(self, other) -> Frac:
-        other = self._lift(other)
-        if self.num.is_zero() or other.num.is_zero():
-            return self.ring.zero()
-        den = tuple(a + b for a, b in zip(self.den, other.den, strict=True))
-        return Frac(self.ring, self.num * other.num, den)
-
-    __rmul__ = __mul__

@@ -25,8 +25,9 @@ from sympy.core.add import _addsort
 from sympy.core.mul import _mulsort
 
 from coopkin_sym.errors import ArgumentError
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_fmpq, to_sympy
-from coopkin_sym.exact.ring import Frac, Ring
+from coopkin_sym.exact.ring import Ring
 
 
 def rational_to_sympy(c) -> sp.Rational:
@@ -81,13 +82,31 @@ def poly_to_sympy(p, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
     return sp.Add._from_args(numbers + terms)
 
 
-def frac_to_sympy(f: Frac, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
-    """A :class:`Frac` as a SymPy expression ``num / den``."""
+def ratfunc_to_sympy(f: RatFunc, symbols: Mapping[str, sp.Symbol],
+                     ring: Ring | None = None) -> sp.Expr:
+    """A :class:`~coopkin_sym.exact.ratfunc.RatFunc` as a SymPy expression
+    ``num / den``: over known factors, the denominator as the product of its factors
+    ``(1 + t**2)**e``; a reduced one in lowest terms (its variables those of ``ring``).
+
+    Example
+    -------
+    >>> ring = Ring(("t_q1",), ("t_q1",))
+    >>> syms = {"t_q1": sp.Symbol("t_q1")}
+    >>> f = ring.cos_of(0) * ring.cos_of(0)
+    >>> ratfunc_to_sympy(f, syms)
+    (t_q1**4 - 2*t_q1**2 + 1)/(t_q1**2 + 1)**2
+    >>> ratfunc_to_sympy(f.reduced(), syms, ring)
+    (t_q1**4 - 2*t_q1**2 + 1)/(t_q1**4 + 2*t_q1**2 + 1)
+    """
+    if f.ring is None:
+        if ring is None:
+            raise ArgumentError("a reduced rational function needs its ring's names")
+        return ratio_to_sympy(f.num, f.den, ring, symbols)
     num = poly_to_sympy(f.num, f.ring, symbols)
-    if not any(f.den):
+    if not any(f.powers):
         return num
     den = sp.Mul(*[(1 + symbols[n] ** 2) ** e
-                   for n, e in zip(f.ring.den_names, f.den, strict=True) if e])
+                   for n, e in zip(f.ring.den_names, f.powers, strict=True) if e])
     return num / den
 
 
@@ -135,9 +154,11 @@ def ratio_to_sympy(num, den, ring: Ring, symbols: Mapping[str, sp.Symbol]) -> sp
 
 def matrix_to_sympy(rows, ring: Ring, symbols: Mapping[str, sp.Symbol],
                     shape: tuple[int, int] | None = None) -> sp.Matrix:
-    """A list of rows of polynomials or :class:`Frac` as an immutable SymPy matrix."""
+    """A list of rows of polynomials or
+    :class:`~coopkin_sym.exact.ratfunc.RatFunc` as an immutable SymPy matrix."""
     def conv(e):
-        return frac_to_sympy(e, symbols) if isinstance(e, Frac) else poly_to_sympy(e, ring, symbols)
+        return (ratfunc_to_sympy(e, symbols, ring) if isinstance(e, RatFunc)
+                else poly_to_sympy(e, ring, symbols))
     if not rows:
         return sp.ImmutableMatrix(sp.zeros(*(shape or (0, 0))))
     return sp.ImmutableMatrix([[conv(e) for e in r] for r in rows])

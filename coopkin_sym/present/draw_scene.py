@@ -26,7 +26,7 @@ from coopkin_sym import limits
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError
 from coopkin_sym.exact.angles import tangent_name
-from coopkin_sym.exact.ring import Frac
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import rational_to_sympy
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.present.draw_inputs import _AtIrrational
@@ -86,13 +86,14 @@ class _Values:
         syms = a.kinematics.symbols
         self.sympy = {syms[n]: value[n] for n in ring.names}
 
-    def exact(self, f: Frac) -> sp.Rational:
-        """A :class:`Frac` at the drawing values, exactly."""
+    def exact(self, f: RatFunc) -> sp.Rational:
+        """A :class:`~coopkin_sym.exact.ratfunc.RatFunc` of the kinematics (over the
+        known factors of its ring) at the drawing values, exactly."""
         num = f.num(*self.fmpq)
-        den = f.ring.den_poly(f.den)(*self.fmpq)
+        den = f.ring.den_poly(f.powers)(*self.fmpq)
         return rational_to_sympy(num / den)
 
-    def vec(self, v: Sequence[Frac] | None) -> list[float] | None:
+    def vec(self, v: Sequence[RatFunc] | None) -> list[float] | None:
         if v is None:
             return None
         out = []

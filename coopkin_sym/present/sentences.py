@@ -29,7 +29,7 @@ from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.entry_field import ExprArithmetic, field_of
 from coopkin_sym.exact.parse import exact_expr
-from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+from coopkin_sym.exact.sympy_bridge import ratfunc_to_sympy
 from coopkin_sym.model.contacts import contact_kind
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -125,7 +125,7 @@ def _direction(d: list, field: ExprArithmetic) -> str:
 
 def _contact_points(analysis: Analysis) -> list[tuple[str, list[sp.Expr]]]:
     kin = analysis.kinematics
-    return [(contact.name, [frac_to_sympy(x, kin.symbols) for x in point])
+    return [(contact.name, [ratfunc_to_sympy(x, kin.symbols) for x in point])
             for contact, point in zip(analysis.model.contacts, kin.points, strict=True)]
 
 

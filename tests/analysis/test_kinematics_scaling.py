@@ -9,7 +9,7 @@ from __future__ import annotations
 from large_systems import many_arms, many_contacts
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.exact.ring import Frac
+from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import load_model
 
@@ -17,14 +17,14 @@ from coopkin_sym.model.model import load_model
 def _entries_looked_at(model_dict, monkeypatch) -> int:
     model = load_model(model_dict)
     count = [0]
-    is_zero = Frac.is_zero
+    is_zero = RatFunc.is_zero
 
     def counted(self):
         count[0] += 1
         return is_zero(self)
 
     with monkeypatch.context() as patch:
-        patch.setattr(Frac, "is_zero", counted)
+        patch.setattr(RatFunc, "is_zero", counted)
         kinematics.build(model, Configuration.parse(model, None))
     return count[0]
 

@@ -11,6 +11,7 @@ joint columns) and through the arm-by-arm elimination.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -25,6 +26,7 @@ from sympy.polys.matrices import DomainMatrix
 from coopkin_sym.exact.matrix import (
     POLYNOMIALS,
     RATIONALS,
+    SYMPY,
     PrimeField,
     rank,
     rank_triple,
@@ -41,8 +43,9 @@ class Domain:
     domain: object
     values: dict                 # variable -> SymPy value (the map to the field)
     prime: int | None = None     # reference over GF(prime)
-    fractions: bool = False      # rows of Fractions (over Q)
+    fraction: Callable | None = None   # rows of halves of this type (over Q)
     batch: bool = False          # a NumPy batch over GF(prime)
+    sympy_entries: bool = False  # rows of SymPy expressions (the values substituted)
 
 
 def _domains() -> list[Domain]:
@@ -50,7 +53,9 @@ def _domains() -> list[Domain]:
     x2, y2 = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex").gens()
     return [
         Domain("Z", (), RATIONALS, {}),
-        Domain("QQ", (), RATIONALS, {}, fractions=True),
+        Domain("QQ", (), RATIONALS, {}, fraction=Fraction),
+        Domain("QQ (flint)", (), RATIONALS, {}, fraction=flint.fmpq),
+        Domain("QQ (SymPy)", (), RATIONALS, {}, fraction=sp.Rational),
         Domain("GF(7)", (), PrimeField(7), {}, prime=7),
         Domain("GF(2^61-1)", (), PrimeField(2**61 - 1), {}, prime=2**61 - 1),
         Domain("GF(101) batch", (), PrimeField(101), {}, prime=101, batch=True),
@@ -62,6 +67,12 @@ def _domains() -> list[Domain]:
         Domain("Z[x, y]/(x^2 - 2, y^2 - 3)", ("x", "y"),
                Tower([Quotient(x2**2 - 2, 0), Quotient(y2**2 - 3, 1)]),
                {"x": sp.sqrt(2), "y": sp.sqrt(3)}),
+        Domain("SymPy Q", (), SYMPY, {}, fraction=sp.Rational, sympy_entries=True),
+        Domain("SymPy Q(x, y)", ("x", "y"), SYMPY, {}, sympy_entries=True),
+        Domain("SymPy Q(x), y = 1/(1 + x)", ("x", "y"), SYMPY,
+               {"y": 1 / (1 + sp.Symbol("x"))}, sympy_entries=True),
+        Domain("SymPy Q(x, sqrt(2))", ("x", "y"), SYMPY, {"y": sp.sqrt(2)},
+               sympy_entries=True),
     ]
 
 
@@ -128,11 +139,15 @@ def _rows(case: Domain, cells):
 
         ours = [[_build(c, make, ctx.constant(1)) for c in r] for r in cells]
         theirs = [[_build(c, make_sympy, sp.Integer(1)) for c in r] for r in cells]
+        if case.sympy_entries:
+            values = {sp.Symbol(k): v for k, v in case.values.items()}
+            ours = [[sp.sympify(e).subs(values) for e in r] for r in theirs]
         return ours, theirs
     ours = [[_build(c, int, 1) for c in r] for r in cells]
-    if case.fractions:
-        ours = [[Fraction(e, 2) for e in r] for r in ours]
-    return ours, [[sp.Rational(e) for e in r] for r in ours]
+    if case.fraction is not None:
+        ours = [[case.fraction(e, 2) for e in r] for r in ours]
+    return ours, [[sp.Rational(int(e.numerator), int(e.denominator)) if case.fraction else
+                   sp.Rational(e) for e in r] for r in ours]
 
 
 def _reference(case: Domain, entries, ncols: int) -> int:
@@ -185,14 +200,46 @@ def test_rank_and_rank_triple_agree_with_sympy(case, data):
 
 def test_every_domain_of_the_facade_is_covered():
     kinds = {type(d.domain).__name__ for d in DOMAINS}
-    assert kinds == {"Rationals", "PrimeField", "Polynomials", "Quotient", "Tower"}
+    assert kinds == {"Rationals", "PrimeField", "Polynomials", "Quotient", "Tower",
+                     "SympyEntries"}
     assert any(d.batch for d in DOMAINS)
 
 
 def test_empty_matrices_have_rank_zero():
     ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
-    for domain in (RATIONALS, PrimeField(7), POLYNOMIALS):
+    for domain in (RATIONALS, PrimeField(7), POLYNOMIALS, SYMPY):
         assert rank([], 3, domain) == 0
         assert rank_triple([], 3, 2, domain, [([], 2, 3)]) == (0, 0, 0, (0,))
     assert rank([[ctx.constant(0)] * 2], 0) == 0
     assert rank(np.zeros((3, 2, 2), dtype=np.int64), None, PrimeField(5)).tolist() == [0] * 3
+
+
+_X, _Y = sp.symbols("x y")
+_DENOMINATORS = st.sampled_from([1, 1 + _X, 2 - _X * _Y, 1 + _X**2, 3 + _Y, _X])
+
+
+@st.composite
+def rational_function_matrices(draw):
+    """A product ``B C`` of matrices of rational functions in ``x, y`` (each entry of
+    ``B`` and ``C`` with its own denominator): the denominators of the product vary
+    from entry to entry, and its rank is at most the inner size."""
+    m, n, k = draw(st.integers(1, 4)), draw(st.integers(1, 4)), draw(st.integers(1, 4))
+
+    def entry():
+        terms = draw(st.dictionaries(st.tuples(st.integers(0, 2), st.integers(0, 2)),
+                                     _COEFF, max_size=2))
+        num = sp.Add(*[c * _X**a * _Y**b for (a, b), c in terms.items()])
+        return num / draw(_DENOMINATORS)
+
+    b = sp.Matrix(m, k, lambda i, j: entry())
+    c = sp.Matrix(k, n, lambda i, j: entry())
+    return (b * c).tolist(), n
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=rational_function_matrices())
+def test_sympy_rational_functions_are_ranked_with_their_denominators(case):
+    rows, n = case
+    expected = DomainMatrix.from_list_sympy(len(rows), n, rows).to_field().rank()
+    assert rank(rows, n, SYMPY) == expected
+    assert rank_triple(rows, n, 1, SYMPY).q == expected

@@ -14,7 +14,7 @@ from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.sweep import chains
 from coopkin_sym.analysis.sweep.compiled import compile_system
 from coopkin_sym.errors import ArgumentError, CoopkinError, ModelError
-from coopkin_sym.exact.sympy_bridge import frac_to_sympy, matrix_to_sympy
+from coopkin_sym.exact.sympy_bridge import matrix_to_sympy, ratfunc_to_sympy
 from coopkin_sym.model import contacts
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.contacts import REGISTRY, ContactKind, contact_kind, register
@@ -128,7 +128,7 @@ def test_a_new_model_has_its_rows_in_h(spinning):
     kin = kinematics.build(load_model(_tree()), Configuration())
     assert kin.row_labels == ["c1: v.n", "c2: v_x", "c2: v_y", "c2: v_z", "c1: w.n"]
     assert kin.row_contacts == [0, 1, 1, 1, 0]
-    h = [[str(frac_to_sympy(x, kin.symbols)) for x in row] for row in kin.H]
+    h = [[str(ratfunc_to_sympy(x, kin.symbols)) for x in row] for row in kin.H]
     assert h[0] == ["1", "0", "0", "0", "0", "0"] + ["0"] * 6
     assert h[4] == ["0"] * 6 + ["1", "0", "0", "0", "0", "0"]
     assert chains.row_contacts(load_model(_tree())) == [0, 1, 1, 1, 0]
@@ -139,7 +139,7 @@ def test_a_new_model_has_its_planar_rows(spinning):
     kin = kinematics.build(model, Configuration())
     assert kin.row_labels == ["c1: v.n", "c2: v_x", "c2: v_y", "c1: w_z"]
     assert kin.row_contacts == [0, 1, 1, 0]
-    h = [[str(frac_to_sympy(x, kin.symbols)) for x in row] for row in kin.H]
+    h = [[str(ratfunc_to_sympy(x, kin.symbols)) for x in row] for row in kin.H]
     assert h == [["1", "0", "0", "0", "0", "0"], ["0", "0", "1", "0", "0", "0"],
                  ["0", "0", "0", "1", "0", "0"], ["0", "0", "0", "0", "1", "0"]]
     assert chains.row_contacts(model) == [0, 1, 1, 0]

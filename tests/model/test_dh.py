@@ -15,7 +15,7 @@ from support import texts
 import coopkin_sym
 from coopkin_sym.analysis.kinematics import build
 from coopkin_sym.errors import ModelError
-from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+from coopkin_sym.exact.sympy_bridge import ratfunc_to_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.examples import example_path
 from coopkin_sym.model.trees import read_file
@@ -167,8 +167,8 @@ def random_at(model: dict, rng: random.Random) -> tuple[str, dict]:
 def engine_contacts(system, at: str) -> list:
     model = system.model
     kin = build(model, Configuration.parse(model, at))
-    return [(tuple(frac_to_sympy(x, kin.symbols) for x in p),
-             None if n is None else tuple(frac_to_sympy(x, kin.symbols) for x in n))
+    return [(tuple(ratfunc_to_sympy(x, kin.symbols) for x in p),
+             None if n is None else tuple(ratfunc_to_sympy(x, kin.symbols) for x in n))
             for p, n in zip(kin.points, kin.normals, strict=True)]
 
 

@@ -22,7 +22,7 @@ import coopkin_sym
 from coopkin_sym import limits
 from coopkin_sym.analysis.kinematics import build
 from coopkin_sym.errors import ModelError, UrdfError
-from coopkin_sym.exact.sympy_bridge import frac_to_sympy
+from coopkin_sym.exact.sympy_bridge import ratfunc_to_sympy
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.examples import example_path
 from coopkin_sym.model.urdf import read_urdf_text
@@ -113,8 +113,8 @@ def _write(tmp: Path, name: str, text: str) -> Path:
 
 def _contacts_points(system, at: str) -> list:
     kin = build(system.model, Configuration.parse(system.model, at))
-    return [(tuple(frac_to_sympy(x, kin.symbols) for x in p),
-             tuple(frac_to_sympy(x, kin.symbols) for x in n))
+    return [(tuple(ratfunc_to_sympy(x, kin.symbols) for x in p),
+             tuple(ratfunc_to_sympy(x, kin.symbols) for x in n))
             for p, n in zip(kin.points, kin.normals, strict=True)]
 
 

@@ -37,6 +37,7 @@ from coopkin_sym.analysis.finite.constraints import ConstraintMap
 from coopkin_sym.analysis.finite.forms import diagonal_form, quadratic_matrix, real_directions
 from coopkin_sym.analysis.finite.reduce import Reduced, reduce_map
 from coopkin_sym.analysis.finite.series import SeriesField
+from coopkin_sym.exact.matrix import RATIONALS, rank
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
@@ -142,7 +143,7 @@ def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
     base = [sp.Rational(str(x)) for x in points[0][0]]
     spread = [[sp.Rational(str(x)) - b for x, b in zip(pt, base, strict=True)]
               for pt, _ in points[1:]]
-    span = sp.Matrix(spread).rank() if spread else 0
+    span = rank(spread, 3, RATIONALS)
     if cmap.planar:
         axes = [(0, 0, 1)] if span == 0 else []
     elif span == 0:

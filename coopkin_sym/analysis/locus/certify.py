@@ -140,7 +140,7 @@ from coopkin_sym.exact.groebner import (
     msolve_path,
     singular_path,
 )
-from coopkin_sym.exact.matrix import PolyMatrix
+from coopkin_sym.exact.matrix import POLYNOMIALS, rank
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.model.configuration import Configuration
@@ -337,7 +337,7 @@ def _chart(setup: _Setup, pi_joints: tuple[str, ...]) -> _Chart:
 
 def _rank(rows) -> int:
     rows = [r for r in rows if not all(e.is_zero() for e in r)]
-    return PolyMatrix(rows, len(rows[0])).rank() if rows else 0
+    return rank(rows, len(rows[0]), POLYNOMIALS) if rows else 0
 
 
 def _numbers(m: int, r: int, rank_q: int, rank_gt: int, rank_dt: int,

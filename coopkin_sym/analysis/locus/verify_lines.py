@@ -102,7 +102,7 @@ def _line_rows(checker: _Checker, line: _Line) -> list[list[flint.fmpq_poly]]:
     var_den = [den_index.get(name) for name in ring.names]
     out = []
     for row in kin.Q:
-        top = [max(es) for es in zip(*(f.den for f in row), strict=True)] if ring.den_names \
+        top = [max(es) for es in zip(*(f.powers for f in row), strict=True)] if ring.den_names \
             else []
         new_row = []
         for f in row:
@@ -115,7 +115,7 @@ def _line_rows(checker: _Checker, line: _Line) -> list[list[flint.fmpq_poly]]:
                 for i, e in enumerate(monom):
                     d = var_den[i]
                     if d is not None and coords[i][0] == "s":
-                        top_e = 2 * f.den[d]
+                        top_e = 2 * f.powers[d]
                         if e > top_e:  # pragma: no cover - entries of Q are bounded
                             raise AssertionError("an entry of Q unbounded at q = pi")
                         term *= power(i, top_e - e)
@@ -123,8 +123,8 @@ def _line_rows(checker: _Checker, line: _Line) -> list[list[flint.fmpq_poly]]:
                         term *= power(i, e)
                 acc += term
             for i, d in enumerate(var_den):
-                if d is not None and top[d] - f.den[d]:
-                    acc *= wpower(i, top[d] - f.den[d])
+                if d is not None and top[d] - f.powers[d]:
+                    acc *= wpower(i, top[d] - f.powers[d])
             new_row.append(acc)
         denominators = [int(p.denom()) for p in new_row if not p.is_zero()]
         scale = math.lcm(*denominators) if denominators else 1

@@ -33,6 +33,7 @@ from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotio
 from coopkin_sym.analysis.mobility import Analysis, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
 from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
+from coopkin_sym.exact import matrix
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.parse import parse_expression
@@ -420,8 +421,8 @@ class _FloatProbe:
         m, r = len(rows), len(self.joints)
 
         def exact(cols: range) -> int:
-            return flint.fmpq_mat([[row[k] for k in cols] for row in rows]).rank() if (
-                m and len(cols)) else 0
+            return matrix.rank([[row[k] for k in cols] for row in rows], len(cols),
+                               matrix.RATIONALS)
 
         q = np.array([[int(x.p) / int(x.q) for x in row] for row in rows],  # float-ok
                      dtype=float).reshape(m, n)

@@ -37,7 +37,14 @@ from coopkin_sym.errors import ArgumentError, SweepError, TimeLimitReached
 from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import time_limit
-from coopkin_sym.exact.matrix import RATIONALS, PolyMatrix, PrimeField, rank_triple
+from coopkin_sym.exact.matrix import (
+    POLYNOMIALS,
+    RATIONALS,
+    PolyMatrix,
+    PrimeField,
+    rank,
+    rank_triple,
+)
 from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
@@ -194,7 +201,7 @@ def _compile_rows(frac_rows, rows, ring, joints, kinds, var_of, param_vars, name
     njv = len(names) - nparams
     terms = []
     for i, (frac_row, row) in enumerate(zip(frac_rows, rows, strict=True)):
-        top = [max(es) for es in zip(*(f.den for f in frac_row), strict=True)]
+        top = [max(es) for es in zip(*(f.powers for f in frac_row), strict=True)]
         degree = []
         for j, kind in zip(joints, kinds, strict=True):
             v = var_of[j]
@@ -405,7 +412,7 @@ class Compiled:
             lin_rows += picked[0]
             ang_rows += picked[1]
         rows = lin_rows + ang_rows
-        return PolyMatrix(rows, self.dim, context=ctx).rank() if rows else 0
+        return rank(rows, self.dim, POLYNOMIALS, ctx)
 
     def _sampled_generic(self) -> tuple[int, int, int] | None:
         """The generic ranks when ranks modulo :data:`POINT_PRIME` at random points
