@@ -136,8 +136,9 @@ class AnalyzeOptions:
     """
 
     at: Annotated[str | None, typer.Option(
-        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000; "
-                     "unset joints stay at home (q = 0), unset parameters symbolic.")] = None
+        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000 "
+                     "(angles in radians, or in degrees: q1=90deg); unset joints stay at "
+                     "home (q = 0), unset parameters symbolic.")] = None
     generic: Annotated[bool, typer.Option(
         "--generic", help="Keep every joint variable symbolic (t_q = tan(q/2)).")] = False
     free: Annotated[str | None, typer.Option(
