@@ -100,7 +100,35 @@ _RENAMED = {"draw": "draw_system", "examples": "list_examples"}
 _SUBPACKAGES = ("analysis", "exact", "model", "present", "system")
 
 
+def version() -> str:
+    """The version of the installed package, from its metadata.
+
+    Returns
+    -------
+    str
+        The version string of the distribution ``coopkin_sym`` (as ``pyproject.toml``
+        states it), or ``"unknown"`` when the package runs from a source tree that is
+        not installed.
+
+    Example
+    -------
+    >>> import coopkin_sym
+    >>> coopkin_sym.version() == coopkin_sym.__version__
+    True
+    """
+    from importlib.metadata import PackageNotFoundError
+    from importlib.metadata import version as distribution_version
+
+    try:
+        return distribution_version("coopkin_sym")
+    except PackageNotFoundError:  # pragma: no cover - a source tree not installed
+        return "unknown"
+
+
 def __getattr__(name: str) -> Any:
+    if name == "__version__":      # read from the metadata on first use
+        value = globals()["__version__"] = version()
+        return value
     if name in _SUBPACKAGES:
         return importlib.import_module(f"coopkin_sym.{name}")
     module = _LAZY.get(name)
@@ -160,5 +188,5 @@ __all__ = [
     "remark_texts",
     "same_span",
     "sentences",
+    "version",
 ]
-__version__ = "0.1.0"

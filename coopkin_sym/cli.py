@@ -46,6 +46,8 @@ import typer
 
 from coopkin_sym.cli_options import (
     AnalyzeOptions,
+    Command,
+    Group,
     LocusOptions,
     ManipulabilityOptions,
     ModelArg,
@@ -73,8 +75,26 @@ TIME_BOUND_EXIT = 3
 # Each command imports what it needs when it runs: the command line starts quickly,
 # and ``coopkin analyze`` does not pay for the locus, the reports or the pictures.
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
+app = typer.Typer(add_completion=False, no_args_is_help=True, cls=Group,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
+
+
+def _show_version(value: bool) -> None:
+    """``coopkin --version``: the installed package's version, then exit 0."""
+    if value:
+        from coopkin_sym import version
+
+        typer.echo(f"coopkin {version()}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main_options(
+    show_version: Annotated[bool, typer.Option(
+        "--version", callback=_show_version, is_eager=True,
+        help="Print the version and exit.")] = False,
+) -> None:
+    """Exact mobility and kinematic analysis of cooperating robot systems."""
 
 #: Every error the package raises on purpose (bad input, budgets, time bounds).
 USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, InfeasibleMotion)
@@ -221,7 +241,7 @@ class _PartPrinter:
         return left[0] if left else "the output"
 
 
-@app.command()
+@app.command(cls=Command)
 def examples() -> None:
     """List the shipped example systems."""
     from coopkin_sym.model.examples import describe_example, list_examples
@@ -230,7 +250,7 @@ def examples() -> None:
         typer.echo(f"{name:28s} {describe_example(name)}")
 
 
-@app.command()
+@app.command(cls=Command)
 def draw(
     model: ModelArg,
     output: Annotated[str, typer.Option(
@@ -297,7 +317,7 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     typer.echo(text)
 
 
-@app.command()
+@app.command(cls=Command)
 def sweep(
     model: ModelArg,
     grid_spec: Annotated[str, typer.Option(
@@ -551,7 +571,7 @@ def _echo_verification(checked) -> None:
         raise typer.Exit(1)
 
 
-@app.command("verify")
+@app.command("verify", cls=Command)
 def verify_report(
     model: ModelArg,
     report: Annotated[str, typer.Argument(help="A locus report in JSON (coopkin locus "

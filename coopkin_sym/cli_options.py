@@ -42,6 +42,38 @@ NoProgressOption = Annotated[bool, typer.Option(
                           "terminal, nor in the first second).")]
 
 
+class _PlainFlags:
+    """Shows an on/off option (``--json``, ``--help``) as a plain flag in the help,
+    without a value type: it takes no value."""
+
+    def get_params(self, ctx):
+        params = super().get_params(ctx)  # type: ignore[misc]
+        for param in params:
+            if getattr(param, "is_flag", False) and param.metavar is None:
+                param.metavar = ""
+        return params
+
+
+class Command(_PlainFlags, typer.core.TyperCommand):
+    """A ``coopkin`` command: its flags shown as plain flags in the help.
+
+    Example
+    -------
+    >>> from typer.testing import CliRunner
+    >>> app = typer.Typer()
+    >>> @app.command(cls=Command)
+    ... def hello(loud: Annotated[bool, typer.Option("--loud", help="Shout.")] = False):
+    ...     "Say hello."
+    >>> "<bool>" in CliRunner().invoke(app, ["--help"]).stdout
+    False
+    """
+
+
+class Group(_PlainFlags, typer.core.TyperGroup):
+    """The ``coopkin`` command line (its commands and options such as ``--version``),
+    its flags shown as plain flags in the help."""
+
+
 def options_command(app: typer.Typer, name: str, options: type
                     ) -> Callable[[Callable], Callable]:
     """Register ``run(model, options)`` as the command ``name`` of ``app``: typer sees
@@ -62,7 +94,7 @@ def options_command(app: typer.Typer, name: str, options: type
         command.__signature__ = inspect.Signature(params)  # type: ignore[attr-defined]
         command.__annotations__ = {p.name: p.annotation for p in params}
         command.__doc__, command.__name__ = run.__doc__, run.__name__
-        app.command(name)(command)
+        app.command(name, cls=Command)(command)
         return run
     return register
 
@@ -196,5 +228,6 @@ def _names(text: str | None) -> list[str] | None:
     return [f.strip() for f in text.split(",") if f.strip()] if text else None
 
 
-__all__ = ["LocusOptions", "ManipulabilityOptions", "ModelArg", "NoProgressOption",
+__all__ = ["Command", "Group", "LocusOptions", "ManipulabilityOptions", "ModelArg",
+           "NoProgressOption",
            "TimeoutOption", "options_command"]

@@ -138,3 +138,37 @@ def test_locus_free_keeps_the_other_joints_at_home(tmp_path):
     bad = runner.invoke(app, ["locus", "paper-case1-hard", "--free", "q9", "-o",
                               str(tmp_path / "x.json"), "--no-progress"])
     assert bad.exit_code != 0 and "q9" in bad.stderr
+
+
+def test_version_is_the_installed_packages():
+    from importlib.metadata import version
+
+    assert run_ok("--version") == f"coopkin {version('coopkin_sym')}\n"
+    import coopkin_sym
+    assert coopkin_sym.version() == coopkin_sym.__version__ == version("coopkin_sym")
+
+
+@pytest.mark.parametrize("command", ["analyze", "locus", "sweep", "draw", "verify",
+                                     "manipulability", "examples"])
+def test_flags_are_plain_flags_in_the_help(command):
+    out = run_ok(command, "--help")
+    assert "<bool>" not in out and "--help" in out
+    if command == "analyze":
+        lines = {line.split()[1]: line for line in out.splitlines()
+                 if line.startswith("│ --")}
+        for flag in ("--generic", "--json", "--latex", "--finite", "--no-progress"):
+            assert not lines[flag].split()[2].startswith("<"), lines[flag]  # no value
+        assert lines["--at"].split()[2] == "<str>"                  # options keep theirs
+        assert "q1=90deg" in out
+
+
+def test_at_in_degrees_is_the_exact_angle():
+    degrees = json.loads(run_ok("analyze", "paper-case1-hard", "--at", "q1=90deg,q2=-90*deg",
+                                "--json"))
+    radians = json.loads(run_ok("analyze", "paper-case1-hard", "--at", "q1=pi/2,q2=-pi/2",
+                                "--json"))
+    assert degrees["configuration"] == "q1=pi/2,q2=-pi/2"
+    assert degrees == radians
+    err = run_error("analyze", "paper-case1-hard", "--at", "q1=90degx")
+    assert err == ("coopkin: error: --at q1: '90degx' cannot be parsed (an angle in "
+                   "degrees is written 90deg or 90*deg)\n")
