@@ -43,7 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.sweep import SweepResult, grid
     from coopkin_sym.analysis.views import contact_points, same_span
     from coopkin_sym.model.configuration import Configuration
-    from coopkin_sym.model.examples import example_path
+    from coopkin_sym.model.examples import describe_example, example_path
     from coopkin_sym.model.examples import list_examples as examples
     from coopkin_sym.model.model import Model
     from coopkin_sym.present.blocks import named_latex
@@ -79,6 +79,7 @@ _LAZY = {
     "analyze_many": "coopkin_sym.system",
     "component_sentences": "coopkin_sym.present.sentences",
     "contact_points": "coopkin_sym.analysis.views",
+    "describe_example": "coopkin_sym.model.examples",
     "draw": "coopkin_sym.present.draw",
     "example_path": "coopkin_sym.model.examples",
     "examples": "coopkin_sym.model.examples",
@@ -177,6 +178,7 @@ __all__ = [
     "analyze_many",
     "component_sentences",
     "contact_points",
+    "describe_example",
     "draw",
     "example_path",
     "examples",

@@ -1,7 +1,8 @@
 """The ``coopkin`` command: a thin shell over the library.
 
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
-``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
+``coopkin examples [NAME [--show]]``,
+``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
 [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
 ``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``,
@@ -56,6 +57,7 @@ from coopkin_sym.cli_options import (
     options_command,
 )
 from coopkin_sym.errors import (
+    ArgumentError,
     ConfigurationError,
     CoopkinError,
     FiniteMobilityError,
@@ -242,12 +244,28 @@ class _PartPrinter:
 
 
 @app.command(cls=Command)
-def examples() -> None:
-    """List the shipped example systems."""
-    from coopkin_sym.model.examples import describe_example, list_examples
+def examples(
+    name: Annotated[str | None, typer.Argument(
+        help="One example: its line, or with --show its model file.")] = None,
+    show: Annotated[bool, typer.Option(
+        "--show", help="Print the example's model file (YAML), to start a model "
+                       "from.")] = False,
+) -> None:
+    """List the shipped example systems (the first sentence of each file's header), or
+    print one example's model file."""
+    from coopkin_sym import describe_example, example_path, examples
 
-    for name in list_examples():
-        typer.echo(f"{name:28s} {describe_example(name)}")
+    try:
+        if show and name is None:
+            raise ArgumentError("--show: name the example to show (see `coopkin "
+                                "examples`)")
+        if show:
+            typer.echo(example_path(name).read_text(encoding="utf-8"), nl=False)
+            return
+        for each in examples() if name is None else [name]:
+            typer.echo(f"{each:28s} {describe_example(each)}")
+    except USER_ERRORS as exc:
+        _fail(str(exc))
 
 
 @app.command(cls=Command)

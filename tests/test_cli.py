@@ -172,3 +172,39 @@ def test_at_in_degrees_is_the_exact_angle():
     err = run_error("analyze", "paper-case1-hard", "--at", "q1=90degx")
     assert err == ("coopkin: error: --at q1: '90degx' cannot be parsed (an angle in "
                    "degrees is written 90deg or 90*deg)\n")
+
+
+def test_examples_print_whole_first_sentences():
+    out = run_ok("examples")
+    lines = dict(line.split(None, 1) for line in out.splitlines())
+    assert lines["five-bar"].endswith("are pinned to the moving platform (the \"object\") at "
+                                      "one point.")
+    assert lines["four-bar"].endswith("hold the coupler (length 2) with pins (hard "
+                                      "contacts) at their tips.")
+    assert lines["paper-case1-hard"] == ("Paper case study 1 (fig. 2), both contacts hard "
+                                         "finger: two one-link arms hold an object.")
+    assert all(text.endswith(".") for text in lines.values()), lines
+    assert run_ok("examples", "four-bar") == out.splitlines()[3] + "\n"
+
+
+def test_examples_show_prints_the_model_file(tmp_path):
+    import coopkin_sym
+
+    text = run_ok("examples", "paper-case1-hard", "--show")
+    assert text == coopkin_sym.example_path("paper-case1-hard").read_text(encoding="utf-8")
+    copy = tmp_path / "mine.yaml"
+    copy.write_text(text)       # a model to start from: it loads and analyzes as the example
+    assert json.loads(run_ok("analyze", str(copy), "--json"))["numbers"] == json.loads(
+        run_ok("analyze", "paper-case1-hard", "--json"))["numbers"]
+    assert "unknown example 'nope'" in run_error("examples", "nope", "--show")
+    assert "--show: name the example" in run_error("examples", "--show")
+
+
+@pytest.mark.parametrize("args, line", [
+    ([], "Configuration: home (all joints at 0)"),
+    (["--generic"], "Configuration: generic: every joint symbolic (q1, q2)"),
+    (["--free", "q2"], "Configuration: q2 symbolic, the other joints at home (q1 = 0)"),
+    (["--free", "q2", "--at", "q1=pi/2"], "Configuration: q1=pi/2; q2 symbolic"),
+])
+def test_the_configuration_line_says_where_the_analysis_is(args, line):
+    assert run_ok("analyze", "paper-case1-hard", *args).splitlines()[1] == line
