@@ -208,3 +208,32 @@ def test_examples_show_prints_the_model_file(tmp_path):
 ])
 def test_the_configuration_line_says_where_the_analysis_is(args, line):
     assert run_ok("analyze", "paper-case1-hard", *args).splitlines()[1] == line
+
+
+def test_a_locus_cut_by_its_time_bound_exits_3_and_says_what_was_cut(tmp_path):
+    """The planar two-finger grasp's locus takes longer than its bound here."""
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+
+    report = tmp_path / "r.json"
+    result = runner.invoke(app, ["locus", "planar-two-fingers", "-o", str(report),
+                                 "--timeout", "1.5", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT == 3, result.output
+    assert result.stderr.startswith("coopkin: error: time bound of 1.5 s reached during ")
+    assert result.stderr.count("\n") == 1
+    if report.exists():      # cut after the generic numbers: the report says what was cut
+        assert result.stderr.endswith(f"the report says what was not explored; wrote "
+                                      f"{report}\n")
+        assert json.loads(report.read_text())["unexplored"]
+    else:
+        assert result.stderr.endswith("; nothing written\n")
+
+
+def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+
+    result = runner.invoke(app, ["manipulability", "planar-two-fingers", "--generic",
+                                 "--length", "L", "--timeout", "0.5", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT, result.output
+    assert result.stdout == ""
+    assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached during ")
+    assert result.stderr.endswith("; nothing shown\n")
