@@ -22,12 +22,21 @@ from typing import TYPE_CHECKING, Any
 
 from coopkin_sym.analysis.renderers import load_before_render
 from coopkin_sym.errors import (
+    ArgumentError,
     BlockTooLarge,
     ConfigurationError,
     CoopkinError,
+    DrawError,
+    FiniteMobilityError,
     InfeasibleMotion,
+    LocusError,
     ManipulabilityError,
     ModelError,
+    OutputSkipped,
+    ReportError,
+    SkippedForTime,
+    SweepError,
+    TimeLimitReached,
 )
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -153,6 +162,7 @@ load_before_render(_install_display)
 
 __all__ = [
     "Analysis",
+    "ArgumentError",
     "BatchResult",
     "BlockTooLarge",
     "Certificate",
@@ -160,9 +170,12 @@ __all__ = [
     "Configuration",
     "ConfigurationError",
     "CoopkinError",
+    "DrawError",
+    "FiniteMobilityError",
     "InfeasibleMotion",
     "IrrationalAnalysis",
     "Locus",
+    "LocusError",
     "Manipulability",
     "ManipulabilityError",
     "Model",
@@ -170,9 +183,14 @@ __all__ = [
     "Motion",
     "NUMBER_NAMES",
     "Numbers",
+    "OutputSkipped",
     "PASSIVE_NUMBER_NAMES",
     "PassiveNumbers",
+    "ReportError",
+    "SkippedForTime",
+    "SweepError",
     "SweepResult",
+    "TimeLimitReached",
     "System",
     "Verification",
     "analyze_many",

@@ -45,6 +45,16 @@ from typing import Annotated
 
 import typer
 
+from coopkin_sym import (
+    ArgumentError,
+    CoopkinError,
+    FiniteMobilityError,
+    ManipulabilityError,
+    OutputSkipped,
+    ReportError,
+    SkippedForTime,
+    TimeLimitReached,
+)
 from coopkin_sym.cli_options import (
     AnalyzeOptions,
     Command,
@@ -55,19 +65,6 @@ from coopkin_sym.cli_options import (
     NoProgressOption,
     TimeoutOption,
     options_command,
-)
-from coopkin_sym.errors import (
-    ArgumentError,
-    ConfigurationError,
-    CoopkinError,
-    FiniteMobilityError,
-    InfeasibleMotion,
-    ManipulabilityError,
-    ModelError,
-    NumberError,
-    OutputSkipped,
-    SkippedForTime,
-    TimeLimitReached,
 )
 
 #: Exit status of a run cut by ``--timeout`` (2 is bad input, 1 a failed verification,
@@ -98,8 +95,9 @@ def _main_options(
 ) -> None:
     """Exact mobility and kinematic analysis of cooperating robot systems."""
 
-#: Every error the package raises on purpose (bad input, budgets, time bounds).
-USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, InfeasibleMotion)
+#: Every error the package raises on purpose (bad input, budgets, time bounds): each is
+#: a :class:`~coopkin_sym.CoopkinError`.
+USER_ERRORS = (CoopkinError,)
 
 
 def _fail(message: str) -> None:
@@ -285,13 +283,12 @@ def draw(
                             "title).")] = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym.errors import DrawError
     from coopkin_sym.present.draw import save_picture
 
     try:
         with _notes():
             path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
-    except (*USER_ERRORS, DrawError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")
 
@@ -357,7 +354,7 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from coopkin_sym.errors import SweepError
+    from coopkin_sym import SweepError
     from coopkin_sym.present.files import check_output_path, write_files
 
     fmt = "json" if as_json else "csv"
@@ -367,7 +364,7 @@ def sweep(
             target, suffix = check_output_path(output, (".csv", ".json"), SweepError,
                                                "table (--output)")
             fmt = suffix.lstrip(".")
-    except (*USER_ERRORS, SweepError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
 
     def work():
@@ -389,7 +386,7 @@ def sweep(
             write_files({target: text.encode()}, SweepError)
     except TimeLimitReached as exc:
         _cut(exc, "nothing written")
-    except (*USER_ERRORS, SweepError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     if target is None:
         typer.echo(text, nl=False)
@@ -404,7 +401,6 @@ def sweep(
 def locus(model: str, options: LocusOptions) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from coopkin_sym.errors import LocusError, ReportError
     from coopkin_sym.present.report import check_target
 
     try:
@@ -417,7 +413,7 @@ def locus(model: str, options: LocusOptions) -> None:
                                                                       started)
     except TimeLimitReached as exc:
         _cut(_in_command_bound(exc, options.timeout), "nothing written")
-    except (*USER_ERRORS, LocusError, ReportError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     _echo_locus(result, written)
     if cut is not None:
@@ -524,12 +520,11 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     certificate and verification when asked, and the
     :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
     from coopkin_sym.analysis.locus.search import compute_locus
-    from coopkin_sym.analysis.locus.verify import verify_locus
 
     result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
                            progress=True, free=free_joints, pi_size=pi_size)
     cut = _time_cut(result, timeout)
-    locked = system.model.with_actuators_locked() if result.locked else None
+    locked = system.with_actuators_locked() if result.locked else None
     checked = checked_locked = None
     if cut is not None:      # the bound has passed: nothing more to run
         return result, checked, checked_locked, cut
@@ -539,15 +534,14 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
             report("the finite mobility at the witnesses")
             system.finite_locus(result)
         if certify:
-            from coopkin_sym.analysis.locus.certify import certify_locus
-            result.certificate = certify_locus(system, result, budget=certify_timeout)
+            result.certificate = system.certify_locus(result, budget=certify_timeout)
             if result.locked is not None:
-                result.locked.certificate = certify_locus(locked, result.locked,
-                                                          budget=certify_timeout)
+                result.locked.certificate = locked.certify_locus(result.locked,
+                                                                 budget=certify_timeout)
         if verify:
-            checked = verify_locus(system, result)
+            checked = system.verify_locus(result)
             if result.locked is not None:
-                checked_locked = verify_locus(locked, result.locked)
+                checked_locked = locked.verify_locus(result.locked)
     except TimeLimitReached as exc:  # the report is written without what was cut
         return result, None, None, exc
     return result, checked, checked_locked, None
@@ -608,7 +602,7 @@ def verify_report(
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
     from coopkin_sym import load
-    from coopkin_sym.errors import ReportError, TreeError
+    from coopkin_sym.errors import TreeError
     from coopkin_sym.model.input_files import read_input_text
     from coopkin_sym.present.report import locus_from_json
     from coopkin_sym.present.verification import verification_json
@@ -626,18 +620,15 @@ def verify_report(
             lines = [line if line.startswith(lead) else f"{lead}: {line}"
                      for line in (str(exc).splitlines() or [lead])]
             raise ReportError("\n".join(f"{report}: {line}" for line in lines)) from None
-    except (*USER_ERRORS, ReportError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
 
     def work():
-        from coopkin_sym.analysis.locus.verify import verify_locus
-
-        checked = verify_locus(system, locus, max_points=max_points, lines=lines,
-                               seed=seed)
+        checked = system.verify_locus(locus, max_points=max_points, lines=lines, seed=seed)
         locked = None
         if locus.locked is not None:  # where the passive-joint numbers change
-            locked = verify_locus(system.model.with_actuators_locked(), locus.locked,
-                                  max_points=max_points, lines=lines, seed=seed)
+            locked = system.with_actuators_locked().verify_locus(
+                locus.locked, max_points=max_points, lines=lines, seed=seed)
         return checked, locked
 
     try:

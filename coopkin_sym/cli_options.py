@@ -71,7 +71,21 @@ class Command(_PlainFlags, typer.core.TyperCommand):
 
 class Group(_PlainFlags, typer.core.TyperGroup):
     """The ``coopkin`` command line (its commands and options such as ``--version``),
-    its flags shown as plain flags in the help."""
+    its flags shown as plain flags in the help.
+
+    Example
+    -------
+    >>> from typer.testing import CliRunner
+    >>> app = typer.Typer(cls=Group)
+    >>> @app.callback()
+    ... def main(quiet: Annotated[bool, typer.Option("--quiet")] = False):
+    ...     "A tool."
+    >>> @app.command(cls=Command)
+    ... def hello():
+    ...     "Say hello."
+    >>> "<bool>" in CliRunner().invoke(app, ["--help"]).stdout
+    False
+    """
 
 
 def options_command(app: typer.Typer, name: str, options: type

@@ -1,5 +1,6 @@
-"""The notebooks use the public API only: ``coopkin_sym``'s top-level names and the
-methods of the objects they return; every public name resolves."""
+"""The notebooks and the command line use the public API only: ``coopkin_sym``'s
+top-level names and the methods of the objects they return; every public name
+resolves."""
 
 from __future__ import annotations
 
@@ -36,6 +37,59 @@ def _deep_uses(source: str) -> list[str]:
               and node.value.id == "coopkin_sym" and node.attr not in coopkin_sym.__all__):
             found.append(f"coopkin_sym.{node.attr}")
     return found
+
+
+def _imported_names(source: str) -> list[str]:
+    """Names imported from ``coopkin_sym`` itself that it does not make public."""
+    return [f"from coopkin_sym import {a.name}" for node in ast.walk(ast.parse(source))
+            if isinstance(node, ast.ImportFrom) and node.module == "coopkin_sym"
+            and not node.level for a in node.names
+            if a.name not in coopkin_sym.__all__ and a.name != "__version__"]
+
+
+PACKAGE = Path(coopkin_sym.__file__).resolve().parent
+
+#: What the command line still takes from below the facade, module by module: each
+#: entry is to be replaced by a public name or method. The list can only shrink: a new
+#: deep import fails the test, and so does an entry no longer used.
+CLI_NOT_YET_PUBLIC = {
+    "cli.py": {
+        "from coopkin_sym.exact.bounded import ...",
+        "from coopkin_sym.present.progress import ...",
+        "from coopkin_sym.present.text import ...",
+        "from coopkin_sym.present.finite import ...",
+        "from coopkin_sym.present.draw import ...",
+        "from coopkin_sym.present.manipulability import ...",
+        "from coopkin_sym.present.files import ...",
+        "from coopkin_sym.present.report import ...",
+        "from coopkin_sym.present.verification import ...",
+        "from coopkin_sym.present.certificate import ...",
+        "from coopkin_sym.analysis.locus.types import ...",
+        "from coopkin_sym.analysis.locus.search import ...",
+        "from coopkin_sym.errors import ...",
+        "from coopkin_sym.model.input_files import ...",
+        "from coopkin_sym.analysis.sweep import ...",
+    },
+    "cli_options.py": set(),
+}
+
+
+@pytest.mark.parametrize("name", sorted(CLI_NOT_YET_PUBLIC))
+def test_the_command_line_uses_only_the_public_api(name):
+    source = (PACKAGE / name).read_text(encoding="utf-8")
+    own = "from coopkin_sym.cli_options import ..."    # the command line's own options
+    deep = (set(_deep_uses(source)) | set(_imported_names(source))) - {own}
+    assert deep == CLI_NOT_YET_PUBLIC[name]
+
+
+def test_the_check_of_the_command_line_sees_a_deep_import():
+    """The check can fail: a deep import, a private name and a deep attribute are seen."""
+    source = ("from coopkin_sym.present.text import analysis_text\n"
+              "from coopkin_sym import load, _LAZY\n"
+              "import coopkin_sym\ncoopkin_sym.present\n")
+    assert _deep_uses(source) + _imported_names(source) == [
+        "from coopkin_sym.present.text import ...", "coopkin_sym.present",
+        "from coopkin_sym import _LAZY"]
 
 
 def test_the_notebooks_use_only_the_public_api():
