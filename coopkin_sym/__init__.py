@@ -56,13 +56,27 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.model.examples import list_examples as examples
     from coopkin_sym.model.model import Model
     from coopkin_sym.present.blocks import named_latex
+    from coopkin_sym.present.certificate import completeness_text
     from coopkin_sym.present.draw import draw_system as draw
+    from coopkin_sym.present.draw import save_picture
+    from coopkin_sym.present.finite import finite_latex, finite_lines
+    from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
     from coopkin_sym.present.remarks import remark_text, remark_texts
     from coopkin_sym.present.sentences import (
         component_sentences,
         irrational_sentences,
         sentences,
     )
+    from coopkin_sym.present.text import (
+        analysis_json,
+        analysis_latex,
+        analysis_parts,
+        analysis_text,
+        irrational_latex,
+        irrational_text,
+    )
+    from coopkin_sym.present.verification import summary_lines as verification_lines
+    from coopkin_sym.present.verification import verification_json
     from coopkin_sym.system import System, analyze_many, load
 
 #: Where each public name lives; its module is imported on first access (PEP 562), so
@@ -85,25 +99,40 @@ _LAZY = {
     "SweepResult": "coopkin_sym.analysis.sweep",
     "System": "coopkin_sym.system",
     "Verification": "coopkin_sym.analysis.locus.verify",
+    "analysis_json": "coopkin_sym.present.text",
+    "analysis_latex": "coopkin_sym.present.text",
+    "analysis_parts": "coopkin_sym.present.text",
+    "analysis_text": "coopkin_sym.present.text",
     "analyze_many": "coopkin_sym.system",
+    "completeness_text": "coopkin_sym.present.certificate",
     "component_sentences": "coopkin_sym.present.sentences",
     "contact_points": "coopkin_sym.analysis.views",
     "describe_example": "coopkin_sym.model.examples",
     "draw": "coopkin_sym.present.draw",
     "example_path": "coopkin_sym.model.examples",
     "examples": "coopkin_sym.model.examples",
+    "finite_latex": "coopkin_sym.present.finite",
+    "finite_lines": "coopkin_sym.present.finite",
     "grid": "coopkin_sym.analysis.sweep",
+    "irrational_latex": "coopkin_sym.present.text",
     "irrational_sentences": "coopkin_sym.present.sentences",
+    "irrational_text": "coopkin_sym.present.text",
     "load": "coopkin_sym.system",
+    "manipulability_json": "coopkin_sym.present.manipulability",
+    "manipulability_text": "coopkin_sym.present.manipulability",
     "named_latex": "coopkin_sym.present.blocks",
     "remark_text": "coopkin_sym.present.remarks",
     "remark_texts": "coopkin_sym.present.remarks",
     "same_span": "coopkin_sym.analysis.views",
+    "save_picture": "coopkin_sym.present.draw",
     "sentences": "coopkin_sym.present.sentences",
+    "verification_json": "coopkin_sym.present.verification",
+    "verification_lines": "coopkin_sym.present.verification",
 }
 
 #: Public names that are another name in their module.
-_RENAMED = {"draw": "draw_system", "examples": "list_examples"}
+_RENAMED = {"draw": "draw_system", "examples": "list_examples",
+            "verification_lines": "summary_lines"}
 
 
 #: The subpackages, also imported on first access (``coopkin_sym.model.examples``).
@@ -193,20 +222,34 @@ __all__ = [
     "TimeLimitReached",
     "System",
     "Verification",
+    "analysis_json",
+    "analysis_latex",
+    "analysis_parts",
+    "analysis_text",
     "analyze_many",
+    "completeness_text",
     "component_sentences",
     "contact_points",
     "describe_example",
     "draw",
     "example_path",
     "examples",
+    "finite_latex",
+    "finite_lines",
     "grid",
+    "irrational_latex",
     "irrational_sentences",
+    "irrational_text",
     "load",
+    "manipulability_json",
+    "manipulability_text",
     "named_latex",
     "remark_text",
     "remark_texts",
     "same_span",
+    "save_picture",
     "sentences",
+    "verification_json",
+    "verification_lines",
     "version",
 ]

@@ -172,14 +172,8 @@ def analyze(model: str, o: AnalyzeOptions) -> None:
 def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     """The work of ``coopkin analyze`` (in the bounded worker): the parts as they come,
     or the whole JSON or LaTeX text."""
-    from coopkin_sym import load
+    from coopkin_sym import analysis_json, analysis_latex, analysis_parts, analysis_text, load
     from coopkin_sym.exact.bounded import deliver, report
-    from coopkin_sym.present.text import (
-        analysis_json,
-        analysis_latex,
-        analysis_parts,
-        analysis_text,
-    )
 
     report("loading the model")
     system = load(model)
@@ -196,7 +190,7 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     if not (o.as_json or o.latex or _irrational(result)):
         parts = analysis_parts(result)
         if finite is not None:
-            from coopkin_sym.present.finite import finite_lines
+            from coopkin_sym import finite_lines
             parts.append(("finite mobility", lambda: finite_lines(finite)))
         deliver(("names", [name for name, _ in parts]))
         for name, part in parts:
@@ -209,11 +203,11 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     if not _irrational(result):
         text = analysis_latex(result) if o.latex else analysis_text(result)
         if finite is not None:
-            from coopkin_sym.present.finite import finite_latex, finite_lines
+            from coopkin_sym import finite_latex, finite_lines
             text += ("\n" + finite_latex(finite)) if o.latex else (
                 "\n" + "\n".join(finite_lines(finite)))
         return text
-    from coopkin_sym.present.text import irrational_latex, irrational_text
+    from coopkin_sym import irrational_latex, irrational_text
     return irrational_latex(result) if o.latex else irrational_text(result)
 
 
@@ -283,7 +277,7 @@ def draw(
                             "title).")] = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym.present.draw import save_picture
+    from coopkin_sym import save_picture
 
     try:
         with _notes():
@@ -300,12 +294,8 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     o = options
 
     def work() -> str:
-        from coopkin_sym import load
+        from coopkin_sym import load, manipulability_json, manipulability_text
         from coopkin_sym.exact.bounded import report
-        from coopkin_sym.present.manipulability import (
-            manipulability_json,
-            manipulability_text,
-        )
 
         report("loading the model")
         system = load(model)
@@ -431,9 +421,8 @@ def _locus_report(model: str, o: LocusOptions, started: float):
     and verification when asked, and its report written: ``(locus, verification,
     verification of the locked locus, the TimeLimitReached that cut it or None, the
     files written)``."""
-    from coopkin_sym import load
+    from coopkin_sym import load, verification_json
     from coopkin_sym.present.report import parse_pairs, write_report
-    from coopkin_sym.present.verification import verification_json
 
     def work():
         from coopkin_sym.exact.bounded import deliver, report
@@ -473,7 +462,7 @@ def _locus_report(model: str, o: LocusOptions, started: float):
 
 def _echo_locus(result, written) -> None:
     """The summary lines of ``coopkin locus``: components, completeness, files."""
-    from coopkin_sym.present.certificate import completeness_text
+    from coopkin_sym import completeness_text
 
     real = sum(1 for c in result.components if c.real)
     n, u = len(result.components), len(result.unexplored)
@@ -568,17 +557,17 @@ def _time_cut(locus, timeout: float | None):
 def _echo_locked(locked, checked) -> None:
     """The verification of the locked system's locus (where the passive-joint numbers
     change), indented; on failure the main one too, then exit 1."""
-    from coopkin_sym.present.verification import summary_lines
+    from coopkin_sym import verification_lines
     typer.echo("\n".join(["with the motors held still:"]
-                          + ["  " + x for x in summary_lines(locked)]))
+                          + ["  " + x for x in verification_lines(locked)]))
     if not locked.ok:
-        typer.echo("\n".join(summary_lines(checked)))
+        typer.echo("\n".join(verification_lines(checked)))
         raise typer.Exit(1)
 
 
 def _echo_verification(checked) -> None:
-    from coopkin_sym.present.verification import summary_lines
-    typer.echo("\n".join(summary_lines(checked)))
+    from coopkin_sym import verification_lines
+    typer.echo("\n".join(verification_lines(checked)))
     if not checked.ok:
         raise typer.Exit(1)
 
@@ -601,11 +590,10 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
-    from coopkin_sym import load
+    from coopkin_sym import load, verification_json
     from coopkin_sym.errors import TreeError
     from coopkin_sym.model.input_files import read_input_text
     from coopkin_sym.present.report import locus_from_json
-    from coopkin_sym.present.verification import verification_json
 
     try:
         system = load(model)

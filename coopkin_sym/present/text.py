@@ -29,6 +29,7 @@ from coopkin_sym.present.sentences import (
 )
 
 if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.finite import FiniteMobility
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
 
 __all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
@@ -445,7 +446,8 @@ def urdf_notes_json(model) -> dict[str, list[dict]]:
                          "mimics": i.mimics} for i in ignored]}
 
 
-def analysis_json(result: Analysis | IrrationalAnalysis, finite=None) -> str:
+def analysis_json(result: Analysis | IrrationalAnalysis,
+                  finite: FiniteMobility | None = None) -> str:
     """What ``coopkin analyze --json`` prints: :func:`analysis_document` as text (with
     the finite mobility ``finite`` when given: ``--finite``).
 
