@@ -51,6 +51,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveNumbers
     from coopkin_sym.analysis.sweep import SweepResult, grid
     from coopkin_sym.analysis.views import contact_points, same_span
+    from coopkin_sym.exact.bounded import deliver as deliver_part
+    from coopkin_sym.exact.bounded import report as report_step
     from coopkin_sym.model.configuration import Configuration
     from coopkin_sym.model.examples import describe_example, example_path
     from coopkin_sym.model.examples import list_examples as examples
@@ -62,6 +64,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.present.finite import finite_latex, finite_lines
     from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
     from coopkin_sym.present.remarks import remark_text, remark_texts
+    from coopkin_sym.present.report import check_target as check_report_target
+    from coopkin_sym.present.report import parse_pairs, write_report
     from coopkin_sym.present.sentences import (
         component_sentences,
         irrational_sentences,
@@ -77,7 +81,13 @@ if TYPE_CHECKING:  # pragma: no cover
     )
     from coopkin_sym.present.verification import summary_lines as verification_lines
     from coopkin_sym.present.verification import verification_json
-    from coopkin_sym.system import System, analyze_many, load
+    from coopkin_sym.system import (
+        System,
+        analyze_many,
+        load,
+        read_locus,
+        run_bounded,
+    )
 
 #: Where each public name lives; its module is imported on first access (PEP 562), so
 #: that ``import coopkin_sym`` and the ``coopkin`` command start quickly.
@@ -104,9 +114,11 @@ _LAZY = {
     "analysis_parts": "coopkin_sym.present.text",
     "analysis_text": "coopkin_sym.present.text",
     "analyze_many": "coopkin_sym.system",
+    "check_report_target": "coopkin_sym.present.report",
     "completeness_text": "coopkin_sym.present.certificate",
     "component_sentences": "coopkin_sym.present.sentences",
     "contact_points": "coopkin_sym.analysis.views",
+    "deliver_part": "coopkin_sym.exact.bounded",
     "describe_example": "coopkin_sym.model.examples",
     "draw": "coopkin_sym.present.draw",
     "example_path": "coopkin_sym.model.examples",
@@ -121,18 +133,24 @@ _LAZY = {
     "manipulability_json": "coopkin_sym.present.manipulability",
     "manipulability_text": "coopkin_sym.present.manipulability",
     "named_latex": "coopkin_sym.present.blocks",
+    "parse_pairs": "coopkin_sym.present.report",
+    "read_locus": "coopkin_sym.system",
     "remark_text": "coopkin_sym.present.remarks",
     "remark_texts": "coopkin_sym.present.remarks",
+    "report_step": "coopkin_sym.exact.bounded",
+    "run_bounded": "coopkin_sym.system",
     "same_span": "coopkin_sym.analysis.views",
     "save_picture": "coopkin_sym.present.draw",
     "sentences": "coopkin_sym.present.sentences",
     "verification_json": "coopkin_sym.present.verification",
     "verification_lines": "coopkin_sym.present.verification",
+    "write_report": "coopkin_sym.present.report",
 }
 
 #: Public names that are another name in their module.
-_RENAMED = {"draw": "draw_system", "examples": "list_examples",
-            "verification_lines": "summary_lines"}
+_RENAMED = {"check_report_target": "check_target", "deliver_part": "deliver",
+            "draw": "draw_system", "examples": "list_examples",
+            "report_step": "report", "verification_lines": "summary_lines"}
 
 
 #: The subpackages, also imported on first access (``coopkin_sym.model.examples``).
@@ -227,9 +245,11 @@ __all__ = [
     "analysis_parts",
     "analysis_text",
     "analyze_many",
+    "check_report_target",
     "completeness_text",
     "component_sentences",
     "contact_points",
+    "deliver_part",
     "describe_example",
     "draw",
     "example_path",
@@ -244,12 +264,17 @@ __all__ = [
     "manipulability_json",
     "manipulability_text",
     "named_latex",
+    "parse_pairs",
+    "read_locus",
     "remark_text",
     "remark_texts",
+    "report_step",
+    "run_bounded",
     "same_span",
     "save_picture",
     "sentences",
     "verification_json",
     "verification_lines",
     "version",
+    "write_report",
 ]

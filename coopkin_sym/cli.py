@@ -40,7 +40,6 @@ import sys
 import time
 import warnings
 from contextlib import contextmanager
-from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -117,14 +116,11 @@ def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=N
     :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs in a separate
     process even without a bound, so that the display keeps moving while a step
     holds the interpreter)."""
-    from coopkin_sym.exact.bounded import run_bounded
-    from coopkin_sym.present.progress import progress_display
+    from coopkin_sym import run_bounded
 
-    shown = not no_progress and sys.stderr.isatty()
-    with progress_display(shown, what, started=_STARTED[0]) as display:
-        # shown: the work runs apart, so that the display keeps moving
-        return run_bounded(work, timeout, owner=f"coopkin {what}", progress=display,
-                           output=output, separate=shown, started=_STARTED[0])
+    # shown, the work runs apart, so that the display keeps moving
+    return run_bounded(work, timeout, what=what, owner=f"coopkin {what}",
+                       progress=not no_progress, output=output, started=_STARTED[0])
 
 
 @contextmanager
@@ -173,7 +169,8 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     """The work of ``coopkin analyze`` (in the bounded worker): the parts as they come,
     or the whole JSON or LaTeX text."""
     from coopkin_sym import analysis_json, analysis_latex, analysis_parts, analysis_text, load
-    from coopkin_sym.exact.bounded import deliver, report
+    from coopkin_sym import deliver_part as deliver
+    from coopkin_sym import report_step as report
 
     report("loading the model")
     system = load(model)
@@ -295,7 +292,7 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
 
     def work() -> str:
         from coopkin_sym import load, manipulability_json, manipulability_text
-        from coopkin_sym.exact.bounded import report
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -359,7 +356,7 @@ def sweep(
 
     def work():
         from coopkin_sym import grid, load
-        from coopkin_sym.exact.bounded import report
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -391,10 +388,10 @@ def sweep(
 def locus(model: str, options: LocusOptions) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from coopkin_sym.present.report import check_target
+    from coopkin_sym import check_report_target
 
     try:
-        check_target(options.output)
+        check_report_target(options.output)
     except ReportError as exc:
         _fail(str(exc))
     started = _STARTED[0] if _STARTED[0] is not None else time.monotonic()
@@ -421,11 +418,11 @@ def _locus_report(model: str, o: LocusOptions, started: float):
     and verification when asked, and its report written: ``(locus, verification,
     verification of the locked locus, the TimeLimitReached that cut it or None, the
     files written)``."""
-    from coopkin_sym import load, verification_json
-    from coopkin_sym.present.report import parse_pairs, write_report
+    from coopkin_sym import load, parse_pairs, verification_json, write_report
 
     def work():
-        from coopkin_sym.exact.bounded import deliver, report
+        from coopkin_sym import deliver_part as deliver
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -519,7 +516,7 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
         return result, checked, checked_locked, cut
     try:
         if finite:
-            from coopkin_sym.exact.bounded import report
+            from coopkin_sym import report_step as report
             report("the finite mobility at the witnesses")
             system.finite_locus(result)
         if certify:
@@ -590,24 +587,11 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
-    from coopkin_sym import load, verification_json
-    from coopkin_sym.errors import TreeError
-    from coopkin_sym.model.input_files import read_input_text
-    from coopkin_sym.present.report import locus_from_json
+    from coopkin_sym import load, read_locus, verification_json
 
     try:
         system = load(model)
-        try:
-            text = read_input_text(Path(report))
-        except TreeError as exc:
-            raise ReportError(f"{report}: {exc}") from None
-        try:
-            locus = locus_from_json(text)
-        except ValueError as exc:   # one line per problem, each naming the file once
-            lead = "not a locus report"
-            lines = [line if line.startswith(lead) else f"{lead}: {line}"
-                     for line in (str(exc).splitlines() or [lead])]
-            raise ReportError("\n".join(f"{report}: {line}" for line in lines)) from None
+        locus = read_locus(report)
     except USER_ERRORS as exc:
         _fail(str(exc))
 
