@@ -43,13 +43,13 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.batch import BatchResult
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
     from coopkin_sym.analysis.locus.certify import Certificate
-    from coopkin_sym.analysis.locus.types import Component, Locus
+    from coopkin_sym.analysis.locus.types import Component, Locus, ended_at_bound
     from coopkin_sym.analysis.locus.verify import Verification
     from coopkin_sym.analysis.manipulability import Manipulability
     from coopkin_sym.analysis.mobility import Analysis, Motion
     from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
     from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveNumbers
-    from coopkin_sym.analysis.sweep import SweepResult, grid
+    from coopkin_sym.analysis.sweep import SweepResult, grid, sweep
     from coopkin_sym.analysis.views import contact_points, same_span
     from coopkin_sym.exact.bounded import deliver as deliver_part
     from coopkin_sym.exact.bounded import report as report_step
@@ -61,6 +61,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.present.certificate import completeness_text
     from coopkin_sym.present.draw import draw_system as draw
     from coopkin_sym.present.draw import save_picture
+    from coopkin_sym.present.files import check_output_path, write_files
     from coopkin_sym.present.finite import finite_latex, finite_lines
     from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
     from coopkin_sym.present.remarks import remark_text, remark_texts
@@ -114,6 +115,7 @@ _LAZY = {
     "analysis_parts": "coopkin_sym.present.text",
     "analysis_text": "coopkin_sym.present.text",
     "analyze_many": "coopkin_sym.system",
+    "check_output_path": "coopkin_sym.present.files",
     "check_report_target": "coopkin_sym.present.report",
     "completeness_text": "coopkin_sym.present.certificate",
     "component_sentences": "coopkin_sym.present.sentences",
@@ -121,6 +123,7 @@ _LAZY = {
     "deliver_part": "coopkin_sym.exact.bounded",
     "describe_example": "coopkin_sym.model.examples",
     "draw": "coopkin_sym.present.draw",
+    "ended_at_bound": "coopkin_sym.analysis.locus.types",
     "example_path": "coopkin_sym.model.examples",
     "examples": "coopkin_sym.model.examples",
     "finite_latex": "coopkin_sym.present.finite",
@@ -142,8 +145,10 @@ _LAZY = {
     "same_span": "coopkin_sym.analysis.views",
     "save_picture": "coopkin_sym.present.draw",
     "sentences": "coopkin_sym.present.sentences",
+    "sweep": "coopkin_sym.analysis.sweep",
     "verification_json": "coopkin_sym.present.verification",
     "verification_lines": "coopkin_sym.present.verification",
+    "write_files": "coopkin_sym.present.files",
     "write_report": "coopkin_sym.present.report",
 }
 
@@ -245,6 +250,7 @@ __all__ = [
     "analysis_parts",
     "analysis_text",
     "analyze_many",
+    "check_output_path",
     "check_report_target",
     "completeness_text",
     "component_sentences",
@@ -252,6 +258,7 @@ __all__ = [
     "deliver_part",
     "describe_example",
     "draw",
+    "ended_at_bound",
     "example_path",
     "examples",
     "finite_latex",
@@ -273,8 +280,10 @@ __all__ = [
     "same_span",
     "save_picture",
     "sentences",
+    "sweep",
     "verification_json",
     "verification_lines",
     "version",
+    "write_files",
     "write_report",
 ]

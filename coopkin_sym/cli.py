@@ -341,8 +341,7 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from coopkin_sym import SweepError
-    from coopkin_sym.present.files import check_output_path, write_files
+    from coopkin_sym import SweepError, check_output_path, write_files
 
     fmt = "json" if as_json else "csv"
     try:
@@ -492,7 +491,7 @@ def _ended_locus(exc: TimeLimitReached, loaded: list):
     """The locus of a run ended at its bound inside a step that cannot be interrupted:
     the last copy the search kept (as far as it got), with what was cut; or ``exc``
     again when there is none (before the generic numbers, or no copy yet)."""
-    from coopkin_sym.analysis.locus.types import ended_at_bound
+    from coopkin_sym import ended_at_bound
 
     locus = ended_at_bound(exc) if loaded else None
     if locus is None:
@@ -505,10 +504,8 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     """The computation of ``coopkin locus`` (run under its bound): the locus, its
     certificate and verification when asked, and the
     :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
-    from coopkin_sym.analysis.locus.search import compute_locus
-
-    result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
-                           progress=True, free=free_joints, pi_size=pi_size)
+    result = system.search_locus(at, max_depth=max_depth, timeout=timeout,
+                                 progress=True, free=free_joints, pi_size=pi_size)
     cut = _time_cut(result, timeout)
     locked = system.with_actuators_locked() if result.locked else None
     checked = checked_locked = None
@@ -651,7 +648,7 @@ def _sweep(system, points, at, workers: int):
     import concurrent.futures
     import multiprocessing
 
-    from coopkin_sym.analysis.sweep import sweep
+    from coopkin_sym import sweep
 
     n = len(points)
     count = worker_count(workers, n)

@@ -183,6 +183,28 @@ class System:
                 raise
             return self._known(locus)
 
+    def search_locus(self, at: str | Mapping | None = None, *, max_depth: int = 2,
+                     timeout: float | None = None, progress: bool = False,
+                     free: Iterable[str] | None = None,
+                     pi_size: int | None = None) -> Locus:
+        """The search of :meth:`locus` alone, here: no bound of its own (``timeout``
+        only stops it from exploring new components at its checks of the clock),
+        no certificate, no verification. For a caller that runs it under its own
+        bound (:func:`run_bounded`; ``coopkin locus`` does), where ``progress``
+        reports the steps to that bound's display (see
+        :func:`coopkin_sym.analysis.locus.search.compute_locus`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("paper-case1-hard").search_locus(max_depth=0)
+        >>> locus.generic["Nm"], len(locus.components) > 0
+        (2, True)
+        """
+        from coopkin_sym.analysis.locus.search import compute_locus
+        return compute_locus(self, at=at, max_depth=max_depth, timeout=timeout,
+                             progress=progress, free=free, pi_size=pi_size)
+
     def _known(self, locus: Locus) -> Locus:
         """``locus`` (and its locked locus) told which system it is about."""
         locus._system = self
