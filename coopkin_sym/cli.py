@@ -1,7 +1,7 @@
 """The ``coopkin`` command: a thin shell over the library.
 
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
-``coopkin examples [NAME [--show]]``,
+``coopkin examples [NAME [--show]]``, ``coopkin --version``,
 ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
 [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
