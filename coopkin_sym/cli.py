@@ -94,6 +94,7 @@ def _main_options(
 ) -> None:
     """Exact mobility and kinematic analysis of cooperating robot systems."""
 
+
 #: Every error the package raises on purpose (bad input, budgets, time bounds): each is
 #: a :class:`~coopkin_sym.CoopkinError`.
 USER_ERRORS = (CoopkinError,)
@@ -113,12 +114,11 @@ def _cut(exc: TimeLimitReached, outcome: str) -> None:
 def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=None):
     """``work()`` under the time bound, counted from the start of the command, its
     steps shown after a second when stderr is a terminal (see
-    :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs in a separate
-    process even without a bound, so that the display keeps moving while a step
-    holds the interpreter)."""
+    :func:`coopkin_sym.run_bounded`; the work then runs in a separate process even
+    without a bound, so that the display keeps moving while a step holds the
+    interpreter)."""
     from coopkin_sym import run_bounded
 
-    # shown, the work runs apart, so that the display keeps moving
     return run_bounded(work, timeout, what=what, owner=f"coopkin {what}",
                        progress=not no_progress, output=output, started=_STARTED[0])
 
