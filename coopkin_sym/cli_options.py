@@ -55,7 +55,9 @@ class _PlainFlags:
 
 
 class Command(_PlainFlags, typer.core.TyperCommand):
-    """A ``coopkin`` command: its flags shown as plain flags in the help.
+    """A ``coopkin`` command: its flags shown as plain flags in the help, and its line
+    in ``coopkin --help`` the first paragraph of its docstring as one paragraph (the
+    docstring's own line breaks left out).
 
     Example
     -------
@@ -66,7 +68,15 @@ class Command(_PlainFlags, typer.core.TyperCommand):
     ...     "Say hello."
     >>> "<bool>" in CliRunner().invoke(app, ["--help"]).stdout
     False
+    >>> Command("go", help="Go there,\\n  quickly.\\n\\nMore.").short_help
+    'Go there, quickly.'
     """
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        if self.short_help is None and self.help:
+            first = inspect.cleandoc(self.help).split("\n\n")[0]
+            self.short_help = " ".join(first.split())
 
 
 class Group(_PlainFlags, typer.core.TyperGroup):

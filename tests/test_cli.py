@@ -237,3 +237,15 @@ def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
     assert result.stdout == ""
     assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached during ")
     assert result.stderr.endswith("; nothing shown\n")
+
+
+def test_each_command_is_one_paragraph_in_the_command_list():
+    import typer
+
+    commands = typer.main.get_command(app).commands
+    assert commands["analyze"].short_help == (
+        "Mobility Nm, connectivity Nc, indeterminacy Ni, redundancy Nr (and Ng, Nd, Nh), "
+        "with the block decomposition of the paper, exactly; with --finite, whether the "
+        "first-order motions are finite ones.")
+    assert all("\n" not in c.short_help and "  " not in c.short_help
+               for c in commands.values())
