@@ -1,7 +1,8 @@
 """The ``coopkin`` command: a thin shell over the library.
 
 ``coopkin analyze MODEL [--at ...] [--generic] [--free q1,q2] [--json] [--latex]``,
-``coopkin examples``, ``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
+``coopkin examples [NAME [--show]]``, ``coopkin --version``,
+``coopkin sweep MODEL --grid q1=-pi..pi:181,q2=... [-o out.csv]``.
 ``coopkin locus MODEL -o report.{md,html,tex,json} [--at ...] [--max-depth N]
 [--pair q1,q2] [--verify] [--certify [--certify-timeout S]]``,
 ``coopkin verify MODEL REPORT.json [--max-points N] [--lines K] [--seed S]``,
@@ -39,31 +40,30 @@ import sys
 import time
 import warnings
 from contextlib import contextmanager
-from pathlib import Path
 from typing import Annotated
 
 import typer
 
+from coopkin_sym import (
+    ArgumentError,
+    CoopkinError,
+    FiniteMobilityError,
+    ManipulabilityError,
+    OutputSkipped,
+    ReportError,
+    SkippedForTime,
+    TimeLimitReached,
+)
 from coopkin_sym.cli_options import (
     AnalyzeOptions,
+    Command,
+    Group,
     LocusOptions,
     ManipulabilityOptions,
     ModelArg,
     NoProgressOption,
     TimeoutOption,
     options_command,
-)
-from coopkin_sym.errors import (
-    ConfigurationError,
-    CoopkinError,
-    FiniteMobilityError,
-    InfeasibleMotion,
-    ManipulabilityError,
-    ModelError,
-    NumberError,
-    OutputSkipped,
-    SkippedForTime,
-    TimeLimitReached,
 )
 
 #: Exit status of a run cut by ``--timeout`` (2 is bad input, 1 a failed verification,
@@ -73,11 +73,31 @@ TIME_BOUND_EXIT = 3
 # Each command imports what it needs when it runs: the command line starts quickly,
 # and ``coopkin analyze`` does not pay for the locus, the reports or the pictures.
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
+app = typer.Typer(add_completion=False, no_args_is_help=True, cls=Group,
                   help="Exact mobility and kinematic analysis of cooperating robot systems.")
 
-#: Every error the package raises on purpose (bad input, budgets, time bounds).
-USER_ERRORS = (CoopkinError, ModelError, ConfigurationError, NumberError, InfeasibleMotion)
+
+def _show_version(value: bool) -> None:
+    """``coopkin --version``: the installed package's version, then exit 0."""
+    if value:
+        from coopkin_sym import version
+
+        typer.echo(f"coopkin {version()}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main_options(
+    show_version: Annotated[bool, typer.Option(
+        "--version", callback=_show_version, is_eager=True,
+        help="Print the version and exit.")] = False,
+) -> None:
+    """Exact mobility and kinematic analysis of cooperating robot systems."""
+
+
+#: Every error the package raises on purpose (bad input, budgets, time bounds): each is
+#: a :class:`~coopkin_sym.CoopkinError`.
+USER_ERRORS = (CoopkinError,)
 
 
 def _fail(message: str) -> None:
@@ -94,17 +114,13 @@ def _cut(exc: TimeLimitReached, outcome: str) -> None:
 def _bounded(work, timeout: float | None, what: str, no_progress: bool, output=None):
     """``work()`` under the time bound, counted from the start of the command, its
     steps shown after a second when stderr is a terminal (see
-    :func:`coopkin_sym.exact.bounded.run_bounded`; the work then runs in a separate
-    process even without a bound, so that the display keeps moving while a step
-    holds the interpreter)."""
-    from coopkin_sym.exact.bounded import run_bounded
-    from coopkin_sym.present.progress import progress_display
+    :func:`coopkin_sym.run_bounded`; the work then runs in a separate process even
+    without a bound, so that the display keeps moving while a step holds the
+    interpreter)."""
+    from coopkin_sym import run_bounded
 
-    shown = not no_progress and sys.stderr.isatty()
-    with progress_display(shown, what, started=_STARTED[0]) as display:
-        # shown: the work runs apart, so that the display keeps moving
-        return run_bounded(work, timeout, owner=f"coopkin {what}", progress=display,
-                           output=output, separate=shown, started=_STARTED[0])
+    return run_bounded(work, timeout, what=what, owner=f"coopkin {what}",
+                       progress=not no_progress, output=output, started=_STARTED[0])
 
 
 @contextmanager
@@ -152,14 +168,9 @@ def analyze(model: str, o: AnalyzeOptions) -> None:
 def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     """The work of ``coopkin analyze`` (in the bounded worker): the parts as they come,
     or the whole JSON or LaTeX text."""
-    from coopkin_sym import load
-    from coopkin_sym.exact.bounded import deliver, report
-    from coopkin_sym.present.text import (
-        analysis_json,
-        analysis_latex,
-        analysis_parts,
-        analysis_text,
-    )
+    from coopkin_sym import analysis_json, analysis_latex, analysis_parts, analysis_text, load
+    from coopkin_sym import deliver_part as deliver
+    from coopkin_sym import report_step as report
 
     report("loading the model")
     system = load(model)
@@ -176,7 +187,7 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     if not (o.as_json or o.latex or _irrational(result)):
         parts = analysis_parts(result)
         if finite is not None:
-            from coopkin_sym.present.finite import finite_lines
+            from coopkin_sym import finite_lines
             parts.append(("finite mobility", lambda: finite_lines(finite)))
         deliver(("names", [name for name, _ in parts]))
         for name, part in parts:
@@ -189,11 +200,11 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     if not _irrational(result):
         text = analysis_latex(result) if o.latex else analysis_text(result)
         if finite is not None:
-            from coopkin_sym.present.finite import finite_latex, finite_lines
+            from coopkin_sym import finite_latex, finite_lines
             text += ("\n" + finite_latex(finite)) if o.latex else (
                 "\n" + "\n".join(finite_lines(finite)))
         return text
-    from coopkin_sym.present.text import irrational_latex, irrational_text
+    from coopkin_sym import irrational_latex, irrational_text
     return irrational_latex(result) if o.latex else irrational_text(result)
 
 
@@ -221,16 +232,32 @@ class _PartPrinter:
         return left[0] if left else "the output"
 
 
-@app.command()
-def examples() -> None:
-    """List the shipped example systems."""
-    from coopkin_sym.model.examples import describe_example, list_examples
+@app.command(cls=Command)
+def examples(
+    name: Annotated[str | None, typer.Argument(
+        help="One example: its line, or with --show its model file.")] = None,
+    show: Annotated[bool, typer.Option(
+        "--show", help="Print the example's model file (YAML), to start a model "
+                       "from.")] = False,
+) -> None:
+    """List the shipped example systems (the first sentence of each file's header), or
+    print one example's model file."""
+    from coopkin_sym import describe_example, example_path, examples
 
-    for name in list_examples():
-        typer.echo(f"{name:28s} {describe_example(name)}")
+    try:
+        if show and name is None:
+            raise ArgumentError("--show: name the example to show (see `coopkin "
+                                "examples`)")
+        if show:
+            typer.echo(example_path(name).read_text(encoding="utf-8"), nl=False)
+            return
+        for each in examples() if name is None else [name]:
+            typer.echo(f"{each:28s} {describe_example(each)}")
+    except USER_ERRORS as exc:
+        _fail(str(exc))
 
 
-@app.command()
+@app.command(cls=Command)
 def draw(
     model: ModelArg,
     output: Annotated[str, typer.Option(
@@ -247,13 +274,12 @@ def draw(
                             "title).")] = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym.errors import DrawError
-    from coopkin_sym.present.draw import save_picture
+    from coopkin_sym import save_picture
 
     try:
         with _notes():
             path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
-    except (*USER_ERRORS, DrawError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")
 
@@ -265,12 +291,8 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     o = options
 
     def work() -> str:
-        from coopkin_sym import load
-        from coopkin_sym.exact.bounded import report
-        from coopkin_sym.present.manipulability import (
-            manipulability_json,
-            manipulability_text,
-        )
+        from coopkin_sym import load, manipulability_json, manipulability_text
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -297,7 +319,7 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
     typer.echo(text)
 
 
-@app.command()
+@app.command(cls=Command)
 def sweep(
     model: ModelArg,
     grid_spec: Annotated[str, typer.Option(
@@ -320,8 +342,7 @@ def sweep(
 ) -> None:
     """Exact numbers at every point of a grid: ranks modulo a prime certify generic
     points, every other point is rechecked exactly over Q."""
-    from coopkin_sym.errors import SweepError
-    from coopkin_sym.present.files import check_output_path, write_files
+    from coopkin_sym import SweepError, SweepResult, check_output_path, write_files
 
     fmt = "json" if as_json else "csv"
     try:
@@ -331,18 +352,16 @@ def sweep(
                                                SweepError, "table (--output)")
             fmt = suffix.lstrip(".")
             if fmt == "parquet":
-                from coopkin_sym.analysis.sweep.result import need_parquet
-                need_parquet()
+                SweepResult.check_parquet()
             if fmt == "csv":            # its metadata file, noted as the table is
-                from coopkin_sym.analysis.sweep.saved_csv import metadata_path
-                check_output_path(metadata_path(target), (".json",), SweepError,
+                check_output_path(SweepResult.metadata_path(target), (".json",), SweepError,
                                   "table metadata (--output)")
-    except (*USER_ERRORS, SweepError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
 
     def work():
         from coopkin_sym import grid, load
-        from coopkin_sym.exact.bounded import report
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -361,7 +380,7 @@ def sweep(
             write_files(text, SweepError)
     except TimeLimitReached as exc:
         _cut(exc, "nothing written")
-    except (*USER_ERRORS, SweepError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     if target is None:
         typer.echo(text, nl=False)
@@ -377,11 +396,10 @@ def sweep(
 def locus(model: str, options: LocusOptions) -> None:
     """The singularity locus: every family of configurations where the numbers differ
     from the generic ones, decided exactly, as a report."""
-    from coopkin_sym.errors import LocusError, ReportError
-    from coopkin_sym.present.report import check_target
+    from coopkin_sym import check_report_target
 
     try:
-        check_target(options.output)
+        check_report_target(options.output)
     except ReportError as exc:
         _fail(str(exc))
     started = _STARTED[0] if _STARTED[0] is not None else time.monotonic()
@@ -390,7 +408,7 @@ def locus(model: str, options: LocusOptions) -> None:
                                                                       started)
     except TimeLimitReached as exc:
         _cut(_in_command_bound(exc, options.timeout), "nothing written")
-    except (*USER_ERRORS, LocusError, ReportError) as exc:
+    except USER_ERRORS as exc:
         _fail(str(exc))
     _echo_locus(result, written)
     if cut is not None:
@@ -408,12 +426,11 @@ def _locus_report(model: str, o: LocusOptions, started: float):
     and verification when asked, and its report written: ``(locus, verification,
     verification of the locked locus, the TimeLimitReached that cut it or None, the
     files written)``."""
-    from coopkin_sym import load
-    from coopkin_sym.present.report import parse_pairs, write_report
-    from coopkin_sym.present.verification import verification_json
+    from coopkin_sym import load, parse_pairs, verification_json, write_report
 
     def work():
-        from coopkin_sym.exact.bounded import deliver, report
+        from coopkin_sym import deliver_part as deliver
+        from coopkin_sym import report_step as report
 
         report("loading the model")
         system = load(model)
@@ -450,7 +467,7 @@ def _locus_report(model: str, o: LocusOptions, started: float):
 
 def _echo_locus(result, written) -> None:
     """The summary lines of ``coopkin locus``: components, completeness, files."""
-    from coopkin_sym.present.certificate import completeness_text
+    from coopkin_sym import completeness_text
 
     real = sum(1 for c in result.components if c.real)
     n, u = len(result.components), len(result.unexplored)
@@ -483,7 +500,7 @@ def _ended_locus(exc: TimeLimitReached, loaded: list):
     """The locus of a run ended at its bound inside a step that cannot be interrupted:
     the last copy the search kept (as far as it got), with what was cut; or ``exc``
     again when there is none (before the generic numbers, or no copy yet)."""
-    from coopkin_sym.analysis.locus.types import ended_at_bound
+    from coopkin_sym import ended_at_bound
 
     locus = ended_at_bound(exc) if loaded else None
     if locus is None:
@@ -496,31 +513,27 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     """The computation of ``coopkin locus`` (run under its bound): the locus, its
     certificate and verification when asked, and the
     :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
-    from coopkin_sym.analysis.locus.search import compute_locus
-    from coopkin_sym.analysis.locus.verify import verify_locus
-
-    result = compute_locus(system, at=at, max_depth=max_depth, timeout=timeout,
-                           progress=True, free=free_joints, pi_size=pi_size)
+    result = system.search_locus(at, max_depth=max_depth, timeout=timeout,
+                                 progress=True, free=free_joints, pi_size=pi_size)
     cut = _time_cut(result, timeout)
-    locked = system.model.with_actuators_locked() if result.locked else None
+    locked = system.with_actuators_locked() if result.locked else None
     checked = checked_locked = None
     if cut is not None:      # the bound has passed: nothing more to run
         return result, checked, checked_locked, cut
     try:
         if finite:
-            from coopkin_sym.exact.bounded import report
+            from coopkin_sym import report_step as report
             report("the finite mobility at the witnesses")
             system.finite_locus(result)
         if certify:
-            from coopkin_sym.analysis.locus.certify import certify_locus
-            result.certificate = certify_locus(system, result, budget=certify_timeout)
+            result.certificate = system.certify_locus(result, budget=certify_timeout)
             if result.locked is not None:
-                result.locked.certificate = certify_locus(locked, result.locked,
-                                                          budget=certify_timeout)
+                result.locked.certificate = locked.certify_locus(result.locked,
+                                                                 budget=certify_timeout)
         if verify:
-            checked = verify_locus(system, result)
+            checked = system.verify_locus(result)
             if result.locked is not None:
-                checked_locked = verify_locus(locked, result.locked)
+                checked_locked = locked.verify_locus(result.locked)
     except TimeLimitReached as exc:  # the report is written without what was cut
         return result, None, None, exc
     return result, checked, checked_locked, None
@@ -547,22 +560,22 @@ def _time_cut(locus, timeout: float | None):
 def _echo_locked(locked, checked) -> None:
     """The verification of the locked system's locus (where the passive-joint numbers
     change), indented; on failure the main one too, then exit 1."""
-    from coopkin_sym.present.verification import summary_lines
+    from coopkin_sym import verification_lines
     typer.echo("\n".join(["with the motors held still:"]
-                          + ["  " + x for x in summary_lines(locked)]))
+                          + ["  " + x for x in verification_lines(locked)]))
     if not locked.ok:
-        typer.echo("\n".join(summary_lines(checked)))
+        typer.echo("\n".join(verification_lines(checked)))
         raise typer.Exit(1)
 
 
 def _echo_verification(checked) -> None:
-    from coopkin_sym.present.verification import summary_lines
-    typer.echo("\n".join(summary_lines(checked)))
+    from coopkin_sym import verification_lines
+    typer.echo("\n".join(verification_lines(checked)))
     if not checked.ok:
         raise typer.Exit(1)
 
 
-@app.command("verify")
+@app.command("verify", cls=Command)
 def verify_report(
     model: ModelArg,
     report: Annotated[str, typer.Argument(help="A locus report in JSON (coopkin locus "
@@ -580,37 +593,20 @@ def verify_report(
     included) and at every drop point of random rational lines; every point with
     non-generic numbers must lie on a component with those numbers, and every witness
     must check. Exit 1 when something is uncovered or unsound."""
-    from coopkin_sym import load
-    from coopkin_sym.errors import ReportError, TreeError
-    from coopkin_sym.model.input_files import read_input_text
-    from coopkin_sym.present.report import locus_from_json
-    from coopkin_sym.present.verification import verification_json
+    from coopkin_sym import load, read_locus, verification_json
 
     try:
         system = load(model)
-        try:
-            text = read_input_text(Path(report))
-        except TreeError as exc:
-            raise ReportError(f"{report}: {exc}") from None
-        try:
-            locus = locus_from_json(text)
-        except ValueError as exc:   # one line per problem, each naming the file once
-            lead = "not a locus report"
-            lines = [line if line.startswith(lead) else f"{lead}: {line}"
-                     for line in (str(exc).splitlines() or [lead])]
-            raise ReportError("\n".join(f"{report}: {line}" for line in lines)) from None
-    except (*USER_ERRORS, ReportError) as exc:
+        locus = read_locus(report)
+    except USER_ERRORS as exc:
         _fail(str(exc))
 
     def work():
-        from coopkin_sym.analysis.locus.verify import verify_locus
-
-        checked = verify_locus(system, locus, max_points=max_points, lines=lines,
-                               seed=seed)
+        checked = system.verify_locus(locus, max_points=max_points, lines=lines, seed=seed)
         locked = None
         if locus.locked is not None:  # where the passive-joint numbers change
-            locked = verify_locus(system.model.with_actuators_locked(), locus.locked,
-                                  max_points=max_points, lines=lines, seed=seed)
+            locked = system.with_actuators_locked().verify_locus(
+                locus.locked, max_points=max_points, lines=lines, seed=seed)
         return checked, locked
 
     try:
@@ -661,7 +657,7 @@ def _sweep(system, points, at, workers: int):
     import concurrent.futures
     import multiprocessing
 
-    from coopkin_sym.analysis.sweep import sweep
+    from coopkin_sym import sweep
 
     n = len(points)
     count = worker_count(workers, n)

@@ -42,6 +42,62 @@ NoProgressOption = Annotated[bool, typer.Option(
                           "terminal, nor in the first second).")]
 
 
+class _PlainFlags:
+    """Shows an on/off option (``--json``, ``--help``) as a plain flag in the help,
+    without a value type: it takes no value."""
+
+    def get_params(self, ctx):
+        params = super().get_params(ctx)  # type: ignore[misc]
+        for param in params:
+            if getattr(param, "is_flag", False) and param.metavar is None:
+                param.metavar = ""
+        return params
+
+
+class Command(_PlainFlags, typer.core.TyperCommand):
+    """A ``coopkin`` command: its flags shown as plain flags in the help, and its line
+    in ``coopkin --help`` the first paragraph of its docstring as one paragraph (the
+    docstring's own line breaks left out).
+
+    Example
+    -------
+    >>> from typer.testing import CliRunner
+    >>> app = typer.Typer()
+    >>> @app.command(cls=Command)
+    ... def hello(loud: Annotated[bool, typer.Option("--loud", help="Shout.")] = False):
+    ...     "Say hello."
+    >>> "<bool>" in CliRunner().invoke(app, ["--help"]).stdout
+    False
+    >>> Command("go", help="Go there,\\n  quickly.\\n\\nMore.").short_help
+    'Go there, quickly.'
+    """
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        if self.short_help is None and self.help:
+            first = inspect.cleandoc(self.help).split("\n\n")[0]
+            self.short_help = " ".join(first.split())
+
+
+class Group(_PlainFlags, typer.core.TyperGroup):
+    """The ``coopkin`` command line (its commands and options such as ``--version``),
+    its flags shown as plain flags in the help.
+
+    Example
+    -------
+    >>> from typer.testing import CliRunner
+    >>> app = typer.Typer(cls=Group)
+    >>> @app.callback()
+    ... def main(quiet: Annotated[bool, typer.Option("--quiet")] = False):
+    ...     "A tool."
+    >>> @app.command(cls=Command)
+    ... def hello():
+    ...     "Say hello."
+    >>> "<bool>" in CliRunner().invoke(app, ["--help"]).stdout
+    False
+    """
+
+
 def options_command(app: typer.Typer, name: str, options: type
                     ) -> Callable[[Callable], Callable]:
     """Register ``run(model, options)`` as the command ``name`` of ``app``: typer sees
@@ -62,7 +118,7 @@ def options_command(app: typer.Typer, name: str, options: type
         command.__signature__ = inspect.Signature(params)  # type: ignore[attr-defined]
         command.__annotations__ = {p.name: p.annotation for p in params}
         command.__doc__, command.__name__ = run.__doc__, run.__name__
-        app.command(name)(command)
+        app.command(name, cls=Command)(command)
         return run
     return register
 
@@ -136,8 +192,9 @@ class AnalyzeOptions:
     """
 
     at: Annotated[str | None, typer.Option(
-        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000; "
-                     "unset joints stay at home (q = 0), unset parameters symbolic.")] = None
+        "--at", help="Joint values and parameters, e.g. q1=pi/2,q2=2*atan(1/3),L=1000 "
+                     "(angles in radians, or in degrees: q1=90deg); unset joints stay at "
+                     "home (q = 0), unset parameters symbolic.")] = None
     generic: Annotated[bool, typer.Option(
         "--generic", help="Keep every joint variable symbolic (t_q = tan(q/2)).")] = False
     free: Annotated[str | None, typer.Option(
@@ -195,5 +252,6 @@ def _names(text: str | None) -> list[str] | None:
     return [f.strip() for f in text.split(",") if f.strip()] if text else None
 
 
-__all__ = ["LocusOptions", "ManipulabilityOptions", "ModelArg", "NoProgressOption",
+__all__ = ["Command", "Group", "LocusOptions", "ManipulabilityOptions", "ModelArg",
+           "NoProgressOption",
            "TimeoutOption", "options_command"]

@@ -18,9 +18,9 @@ Example
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from concurrent.futures import Executor
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from coopkin_sym.analysis.mobility import Analysis, analyze
 from coopkin_sym.analysis.renderers import clip
@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     from coopkin_sym.analysis.locus.types import Locus
     from coopkin_sym.analysis.locus.verify import Verification
 
+T = TypeVar("T")
 
 
 class System:
@@ -181,6 +182,28 @@ class System:
             if locus is None:
                 raise
             return self._known(locus)
+
+    def search_locus(self, at: str | Mapping | None = None, *, max_depth: int = 2,
+                     timeout: float | None = None, progress: bool = False,
+                     free: Iterable[str] | None = None,
+                     pi_size: int | None = None) -> Locus:
+        """The search of :meth:`locus` alone, here: no bound of its own (``timeout``
+        only stops it from exploring new components at its checks of the clock),
+        no certificate, no verification. For a caller that runs it under its own
+        bound (:func:`run_bounded`; ``coopkin locus`` does), where ``progress``
+        reports the steps to that bound's display (see
+        :func:`coopkin_sym.analysis.locus.search.compute_locus`).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("paper-case1-hard").search_locus(max_depth=0)
+        >>> locus.generic["Nm"], len(locus.components) > 0
+        (2, True)
+        """
+        from coopkin_sym.analysis.locus.search import compute_locus
+        return compute_locus(self, at=at, max_depth=max_depth, timeout=timeout,
+                             progress=progress, free=free, pi_size=pi_size)
 
     def _known(self, locus: Locus) -> Locus:
         """``locus`` (and its locked locus) told which system it is about."""
@@ -361,6 +384,95 @@ def _bounded(work, timeout: float | None, what: str, progress: bool):
     from coopkin_sym.present.progress import progress_display
     with progress_display(sys.stderr.isatty(), what) as display:
         return run_bounded(work, timeout, owner=f"System.{what}", progress=display)
+
+
+def read_locus(path: str | os.PathLike) -> Locus:
+    """A locus back from its JSON report (``coopkin locus MODEL -o REPORT.json``),
+    validated like a model file: nothing in it is evaluated, every expression is read
+    by the package's parser.
+
+    Raises
+    ------
+    ReportError
+        When the file cannot be read or is not a locus report: one line per problem,
+        each naming the file.
+
+    Example
+    -------
+    >>> import pathlib, tempfile
+    >>> locus = load("paper-case1-hard").locus()
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "locus.json"
+    >>> _ = locus.write(path)
+    >>> [c.equations for c in read_locus(path).components] == [
+    ...     c.equations for c in locus.components]
+    True
+    """
+    from pathlib import Path
+
+    from coopkin_sym.errors import ReportError, TreeError
+    from coopkin_sym.model.input_files import read_input_text
+    from coopkin_sym.present.report import locus_from_json
+
+    try:
+        text = read_input_text(Path(path))
+    except TreeError as exc:
+        raise ReportError(f"{path}: {exc}") from None
+    try:
+        return locus_from_json(text)
+    except ValueError as exc:   # one line per problem, each naming the file once
+        lead = "not a locus report"
+        lines = [line if line.startswith(lead) else f"{lead}: {line}"
+                 for line in (str(exc).splitlines() or [lead])]
+        raise ReportError("\n".join(f"{path}: {line}" for line in lines)) from None
+
+
+def run_bounded(work: Callable[[], T], timeout: float | None, *, what: str = "run",
+                owner: str | None = None, progress: bool = False,
+                output: Callable[[Any], None] | None = None,
+                started: float | None = None) -> T:
+    """``work()`` under a wall-clock bound of ``timeout`` seconds (None: no bound),
+    held even inside steps that cannot be interrupted (see
+    :func:`coopkin_sym.exact.bounded.run_bounded`); past it,
+    :class:`~coopkin_sym.errors.TimeLimitReached`.
+
+    Parameters
+    ----------
+    work
+        The computation; it may say where it is with :func:`report_step` and hand
+        over finished parts of its output with :func:`deliver_part`.
+    timeout
+        The bound in seconds, counted from ``started`` (``time.monotonic()``;
+        default: now).
+    what
+        What is computed, for the progress display (``"locus"``).
+    owner
+        The name of the bound (default ``what``).
+    progress
+        Show the steps on standard error after a second, when it is a terminal (the
+        work then runs in a process of its own, so that the display keeps moving).
+    output
+        Called here with each part the work delivers, in order, as it comes.
+
+    Example
+    -------
+    >>> from coopkin_sym import deliver_part, report_step
+    >>> parts = []
+    >>> def work():
+    ...     report_step("the first part")
+    ...     deliver_part("part 1")
+    ...     return 42
+    >>> run_bounded(work, 60, output=parts.append), parts
+    (42, ['part 1'])
+    """
+    import sys
+
+    from coopkin_sym.exact.bounded import run_bounded as exact_run_bounded
+    from coopkin_sym.present.progress import progress_display
+
+    shown = progress and sys.stderr.isatty()
+    with progress_display(shown, what, started=started) as display:
+        return exact_run_bounded(work, timeout, owner=owner or what, progress=display,
+                                 output=output, separate=shown, started=started)
 
 
 def load(source: str | os.PathLike | Mapping) -> System:

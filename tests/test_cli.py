@@ -138,3 +138,114 @@ def test_locus_free_keeps_the_other_joints_at_home(tmp_path):
     bad = runner.invoke(app, ["locus", "paper-case1-hard", "--free", "q9", "-o",
                               str(tmp_path / "x.json"), "--no-progress"])
     assert bad.exit_code != 0 and "q9" in bad.stderr
+
+
+def test_version_is_the_installed_packages():
+    from importlib.metadata import version
+
+    assert run_ok("--version") == f"coopkin {version('coopkin_sym')}\n"
+    import coopkin_sym
+    assert coopkin_sym.version() == coopkin_sym.__version__ == version("coopkin_sym")
+
+
+@pytest.mark.parametrize("command", ["analyze", "locus", "sweep", "draw", "verify",
+                                     "manipulability", "examples"])
+def test_flags_are_plain_flags_in_the_help(command):
+    out = run_ok(command, "--help")
+    assert "<bool>" not in out and "--help" in out
+    if command == "analyze":
+        lines = {line.split()[1]: line for line in out.splitlines()
+                 if line.startswith("│ --")}
+        for flag in ("--generic", "--json", "--latex", "--finite", "--no-progress"):
+            assert not lines[flag].split()[2].startswith("<"), lines[flag]  # no value
+        assert lines["--at"].split()[2] == "<str>"                  # options keep theirs
+        assert "q1=90deg" in out
+
+
+def test_at_in_degrees_is_the_exact_angle():
+    degrees = json.loads(run_ok("analyze", "paper-case1-hard", "--at", "q1=90deg,q2=-90*deg",
+                                "--json"))
+    radians = json.loads(run_ok("analyze", "paper-case1-hard", "--at", "q1=pi/2,q2=-pi/2",
+                                "--json"))
+    assert degrees["configuration"] == "q1=pi/2,q2=-pi/2"
+    assert degrees == radians
+    err = run_error("analyze", "paper-case1-hard", "--at", "q1=90degx")
+    assert err == ("coopkin: error: --at q1: '90degx' cannot be parsed (an angle in "
+                   "degrees is written 90deg or 90*deg)\n")
+
+
+def test_examples_print_whole_first_sentences():
+    out = run_ok("examples")
+    lines = dict(line.split(None, 1) for line in out.splitlines())
+    assert lines["five-bar"].endswith("are pinned to the moving platform (the \"object\") at "
+                                      "one point.")
+    assert lines["four-bar"].endswith("hold the coupler (length 2) with pins (hard "
+                                      "contacts) at their tips.")
+    assert lines["paper-case1-hard"] == ("Paper case study 1 (fig. 2), both contacts hard "
+                                         "finger: two one-link arms hold an object.")
+    assert all(text.endswith(".") for text in lines.values()), lines
+    assert run_ok("examples", "four-bar") == out.splitlines()[3] + "\n"
+
+
+def test_examples_show_prints_the_model_file(tmp_path):
+    import coopkin_sym
+
+    text = run_ok("examples", "paper-case1-hard", "--show")
+    assert text == coopkin_sym.example_path("paper-case1-hard").read_text(encoding="utf-8")
+    copy = tmp_path / "mine.yaml"
+    copy.write_text(text)       # a model to start from: it loads and analyzes as the example
+    assert json.loads(run_ok("analyze", str(copy), "--json"))["numbers"] == json.loads(
+        run_ok("analyze", "paper-case1-hard", "--json"))["numbers"]
+    assert "unknown example 'nope'" in run_error("examples", "nope", "--show")
+    assert "--show: name the example" in run_error("examples", "--show")
+
+
+@pytest.mark.parametrize("args, line", [
+    ([], "Configuration: home (all joints at 0)"),
+    (["--generic"], "Configuration: generic: every joint symbolic (q1, q2)"),
+    (["--free", "q2"], "Configuration: q2 symbolic, the other joints at home (q1 = 0)"),
+    (["--free", "q2", "--at", "q1=pi/2"], "Configuration: q1=pi/2; q2 symbolic"),
+])
+def test_the_configuration_line_says_where_the_analysis_is(args, line):
+    assert run_ok("analyze", "paper-case1-hard", *args).splitlines()[1] == line
+
+
+def test_a_locus_cut_by_its_time_bound_exits_3_and_says_what_was_cut(tmp_path):
+    """The planar two-finger grasp's locus takes longer than its bound here."""
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+
+    report = tmp_path / "r.json"
+    result = runner.invoke(app, ["locus", "planar-two-fingers", "-o", str(report),
+                                 "--timeout", "1.5", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT == 3, result.output
+    assert result.stderr.startswith("coopkin: error: time bound of 1.5 s reached during ")
+    assert result.stderr.count("\n") == 1
+    if report.exists():      # cut after the generic numbers: the report says what was cut
+        assert result.stderr.endswith(f"the report says what was not explored; wrote "
+                                      f"{report}\n")
+        assert json.loads(report.read_text())["unexplored"]
+    else:
+        assert result.stderr.endswith("; nothing written\n")
+
+
+def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+
+    result = runner.invoke(app, ["manipulability", "planar-two-fingers", "--generic",
+                                 "--length", "L", "--timeout", "0.5", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT, result.output
+    assert result.stdout == ""
+    assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached during ")
+    assert result.stderr.endswith("; nothing shown\n")
+
+
+def test_each_command_is_one_paragraph_in_the_command_list():
+    import typer
+
+    commands = typer.main.get_command(app).commands
+    assert commands["analyze"].short_help == (
+        "Mobility Nm, connectivity Nc, indeterminacy Ni, redundancy Nr (and Ng, Nd, Nh), "
+        "with the block decomposition of the paper, exactly; with --finite, whether the "
+        "first-order motions are finite ones.")
+    assert all("\n" not in c.short_help and "  " not in c.short_help
+               for c in commands.values())

@@ -102,7 +102,17 @@ SNAPSHOT_SECONDS = 1.0
 
 def report(step: str, done: float | None = None) -> None:
     """Say that the computation is now at ``step`` (``done``: the share of the work
-    done, 0..1, when known)."""
+    done, 0..1, when known); nothing happens outside a :func:`run_bounded` that shows
+    progress.
+
+    Example
+    -------
+    >>> steps = []
+    >>> run_bounded(lambda: report("reading", 0.5), None,
+    ...             progress=lambda step, done: steps.append((step, done)))
+    >>> steps
+    [('reading', 0.5)]
+    """
     reporter = _REPORTER.get()
     if reporter is not None and reporter.progress is not None:
         reporter.progress(step, done)
@@ -110,7 +120,15 @@ def report(step: str, done: float | None = None) -> None:
 
 def deliver(item: Any) -> None:
     """Hand over a finished part of the output (shown at once by the caller, even when
-    the rest is then cut by the bound); ``item`` must pickle."""
+    the rest is then cut by the bound); ``item`` must pickle.
+
+    Example
+    -------
+    >>> parts = []
+    >>> run_bounded(lambda: deliver("the numbers"), None, output=parts.append)
+    >>> parts
+    ['the numbers']
+    """
     reporter = _REPORTER.get()
     if reporter is not None and reporter.output is not None:
         reporter.output(item)

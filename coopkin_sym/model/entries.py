@@ -38,7 +38,7 @@ _LINK_NAME = re.compile(r"(?!\d+$)[^/\s]+")
 
 #: Names a parameter or joint may not have: they mean something else in SymPy text.
 RESERVED_NAMES: frozenset[str] = frozenset(
-    {"pi", "E", "I", "oo", "nan", "zoo", "atan", "sqrt", "Rational", "Integer"}
+    {"pi", "deg", "E", "I", "oo", "nan", "zoo", "atan", "sqrt", "Rational", "Integer"}
 ) | frozenset(keyword.kwlist)
 
 

@@ -86,6 +86,7 @@ from coopkin_sym.present.draw_scene import (
     contact_marker,
 )
 from coopkin_sym.present.files import check_output_path, write_files
+from coopkin_sym.present.sentences import configuration_words
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -186,7 +187,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     if isinstance(a, _AtIrrational):
         where = assignments_text(a.exact.at)
     else:
-        where = a.configuration.at_text() or "home (all joints at 0)"
+        where = configuration_words(a)
     n = a.numbers
     line = f"at {where}   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}"
     if len(line) > 110:   # a long configuration: broken after its commas

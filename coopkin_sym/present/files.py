@@ -60,7 +60,16 @@ def check_output_path(path: str | os.PathLike, formats: Iterable[str],
     suffix is not one of ``formats``, its directory does not exist or cannot be
     written, or the target is a directory. Call it before any work; with ``note`` it
     also notes the target's state, so that :func:`write_files` can tell when another
-    run wrote it meanwhile."""
+    run wrote it meanwhile.
+
+    Example
+    -------
+    >>> import tempfile, pathlib
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> target, suffix = check_output_path(folder / "t.CSV", (".csv",), ValueError, "table")
+    >>> target.name, suffix
+    ('t.CSV', '.csv')
+    """
     target = Path(path)
     suffix = target.suffix.lower()
     formats = list(formats)
@@ -120,6 +129,13 @@ def write_files(files: Mapping[Path, Writer], error: type[Exception]) -> list[Pa
     -------
     list of Path
         The files written (the targets).
+
+    Example
+    -------
+    >>> import tempfile, pathlib
+    >>> target = pathlib.Path(tempfile.mkdtemp()) / "t.csv"
+    >>> [p.name for p in write_files({target: b"a,b\\n"}, ValueError)], target.read_text()
+    (['t.csv'], 'a,b\\n')
     """
     targets = [Path(p) for p in files]
     for target in targets:

@@ -132,7 +132,16 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
 
 
 def finite_latex(fm: FiniteMobility) -> str:
-    """A LaTeX paragraph: the finite mobility, its classification and its branches."""
+    """A LaTeX paragraph: the finite mobility, its classification and its branches
+    (what ``coopkin analyze --finite --latex`` adds).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> fm = load("shaky-pinned-bars").finite_mobility("q1=0,q2=0")
+    >>> finite_latex(fm).splitlines()[0][:50]
+    'Finite mobility $0$ (first-order motions: $1$): sh'
+    """
     value = r"\text{undecided}" if fm.dimension is None else str(fm.dimension)
     out = [f"Finite mobility ${value}$ (first-order motions: ${fm.first_order}$): "
            f"{classification_text(fm)}."]

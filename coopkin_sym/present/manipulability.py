@@ -19,6 +19,7 @@ import numpy as np
 import sympy as sp
 
 from coopkin_sym.analysis.manipulability import Manipulability
+from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import ManipulabilityError
 from coopkin_sym.exact.angles import ExactAngle
 
@@ -70,7 +71,7 @@ def _speed(analysis) -> str:
     return "motor" if analysis.model.passive_joints else "joint"
 
 
-def manipulability_text(m: Manipulability, analysis) -> str:
+def manipulability_text(m: Manipulability, analysis: Analysis) -> str:
     """The ellipsoid in a few lines: what it is of, ``E``, ``det E``, the rank, where it
     degenerates, and at a point the float semi-axes.
 
@@ -105,7 +106,7 @@ def manipulability_text(m: Manipulability, analysis) -> str:
     return "\n".join(lines)
 
 
-def manipulability_json(m: Manipulability, analysis) -> str:
+def manipulability_json(m: Manipulability, analysis: Analysis) -> str:
     """The ellipsoid as JSON: exact entries as strings, the float semi-axes (at a
     point) under ``"semi_axes_float"``.
 

@@ -349,6 +349,39 @@ def _force_sentences(n, r: int) -> list[str]:
     ]
 
 
+def configuration_words(analysis: Analysis) -> str:
+    """Where an analysis is: the values set, the joints at home, the symbolic joints.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> s = load("paper-case1-hard")
+    >>> configuration_words(s.analyze())
+    'home (all joints at 0)'
+    >>> configuration_words(s.analyze(generic=True))
+    'generic: every joint symbolic (q1, q2)'
+    >>> configuration_words(s.analyze(free=["q2"]))
+    'q2 symbolic, the other joints at home (q1 = 0)'
+    >>> configuration_words(s.analyze("q1=pi/2", free=["q2"]))
+    'q1=pi/2; q2 symbolic'
+    """
+    config = analysis.configuration
+    at = config.at_text()
+    free = sorted(config.free)
+    if not free:
+        return at or "home (all joints at 0)"
+    named = ", ".join(free)
+    home = [j for j in analysis.model.joint_names if j not in free
+            and j not in config.revolute and j not in config.prismatic]
+    if not home:
+        return (f"{at}; {named} symbolic" if at
+                else f"generic: every joint symbolic ({named})")
+    zeros = ", ".join(f"{j} = 0" for j in home)
+    if at:
+        return f"{at}; {named} symbolic, the other joints at home ({zeros})"
+    return f"{named} symbolic, the other joints at home ({zeros})"
+
+
 def sentences(analysis: Analysis) -> list[str]:
     """One plain sentence per number of ``analysis``, its motions told in words.
 

@@ -23,9 +23,14 @@ from coopkin_sym.exact.parse import brief
 from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines, passive_numbers_text
-from coopkin_sym.present.sentences import irrational_sentences, sentences
+from coopkin_sym.present.sentences import (
+    configuration_words,
+    irrational_sentences,
+    sentences,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
+    from coopkin_sym.analysis.finite import FiniteMobility
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
 
 __all__ = ["JSON_KEYS", "analysis_document", "analysis_json", "analysis_latex",
@@ -50,10 +55,7 @@ def analysis_parts(a: Analysis) -> list[tuple[str, Callable[[], list[str]]]]:
     """
     def head() -> list[str]:
         lines = [f"System: {a.model.name}"]
-        where = a.configuration.at_text() or "home (all joints at 0)"
-        if a.configuration.free:
-            where += f"; symbolic joints: {', '.join(sorted(a.configuration.free))}"
-        lines.append(f"Configuration: {where}")
+        lines.append(f"Configuration: {configuration_words(a)}")
         twist = "(v_x, v_y, w_z), planar" if a.model.planar else "(v, w)"
         lines.append(f"Object twist {twist}: {object_frame_text(a.model.object_frame)}")
         lines.extend(snapped_lines(a.model.snapped))
@@ -445,7 +447,8 @@ def urdf_notes_json(model) -> dict[str, list[dict]]:
                          "mimics": i.mimics} for i in ignored]}
 
 
-def analysis_json(result: Analysis | IrrationalAnalysis, finite=None) -> str:
+def analysis_json(result: Analysis | IrrationalAnalysis,
+                  finite: FiniteMobility | None = None) -> str:
     """What ``coopkin analyze --json`` prints: :func:`analysis_document` as text (with
     the finite mobility ``finite`` when given: ``--finite``).
 

@@ -305,3 +305,48 @@ def test_the_angles_suggested_for_a_large_angle_are_near_it(text):
         reduced = float(mpmath.atan2(mpmath.sin(exact), mpmath.cos(exact)))  # float-ok
     shown = [float(a) for a in re.findall(r"\((-?\d+\.\d+)\)", str(caught.value))]  # float-ok
     assert len(shown) >= 2 and all(abs(a - reduced) < 0.05 for a in shown), (shown, reduced)
+
+
+# ------------------------------------------------------------------------ degrees
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("90deg", sp.pi / 2), ("90*deg", sp.pi / 2), ("deg*90", sp.pi / 2),
+    ("-90deg", -sp.pi / 2), ("180deg", sp.pi), ("1.5e1deg", sp.pi / 12),
+    ("22.5deg", sp.pi / 8), ("45deg + 45*deg", sp.pi / 2), ("(360/7)*deg", 2 * sp.pi / 7),
+])
+def test_degrees_are_exact_multiples_of_pi(text, expected):
+    assert parse_expression(text, [], "q1") == expected
+
+
+@pytest.mark.parametrize(("degrees", "radians"), [
+    ("90deg", "pi/2"), ("90*deg", "pi/2"), ("-90deg", "-pi/2"), ("180deg", "pi"),
+    ("0deg", "0"),
+])
+def test_an_angle_in_degrees_is_the_same_exact_angle(degrees, radians):
+    assert parse_angle(degrees, "q1") == parse_angle(radians, "q1")
+
+
+def test_an_angle_in_degrees_with_an_irrational_tangent_names_the_nearest_exact_ones():
+    with pytest.raises(NumberError, match=r"'60deg' is not exact.*nearest exact angles"):
+        parse_angle("60deg", "q1")
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("90degx", "q1: '90degx' cannot be parsed (an angle in degrees is written 90deg or "
+               "90*deg)"),
+    ("90degrees", "an angle in degrees is written 90deg or 90*deg"),
+    ("2L", "q1: '2L' cannot be parsed (write 2*L for a product)"),
+    ("2x", "q1: '2x' cannot be parsed (write numbers in decimal, e.g. 3/5 or 0.6)"),
+])
+def test_a_number_run_into_a_name_gets_a_hint_that_works(text, message):
+    with pytest.raises(NumberError) as caught:
+        parse_number(text, PARAMS, "q1")
+    assert message in str(caught.value)
+    if "for a product" in message:   # the hint reads
+        assert parse_number(text.replace("2", "2*"), PARAMS, "q1") == 2 * L
+
+
+def test_a_declared_name_deg_is_that_name():
+    deg = sp.Symbol("deg")
+    assert parse_expression("2*deg", {"deg": deg}, "x") == 2 * deg

@@ -694,6 +694,8 @@ def test_a_failed_dh_arm_is_one_line_on_the_command_line(tmp_path):
               "not starting with a digit)"),
     (["pi"], "parameters[0]: 'pi' is reserved (it means something else in SymPy text); "
              "choose another name"),
+    (["deg"], "parameters[0]: 'deg' is reserved (it means something else in SymPy text); "
+              "choose another name"),
     ([5], "parameters[0]: expected a name, got 5"),
 ])
 def test_a_parameter_list_that_cannot_be_read_is_the_one_error_about_it(parameters,

@@ -348,6 +348,24 @@ class SweepResult(Displayable):
                              "the .json forms)")
         return sweep_from_file(path, cls)
 
+    @staticmethod
+    def metadata_path(path: str | os.PathLike) -> Path:
+        """Where :meth:`write` puts the metadata of the CSV ``path``.
+
+        Example
+        -------
+        >>> str(SweepResult.metadata_path("out/map.csv"))
+        'out/map.csv.json'
+        """
+        return metadata_path(path)
+
+    @staticmethod
+    def check_parquet() -> None:
+        """Nothing when a sweep can be written as Parquet (pandas and pyarrow are
+        installed), else the :class:`~coopkin_sym.errors.MissingDependency` naming what
+        to install; checked before a long sweep starts."""
+        need_parquet()
+
     def files(self, path: str | os.PathLike) -> dict[Path, bytes]:
         """What :meth:`write` writes for ``path``, by its suffix: ``.csv`` the table
         (:meth:`to_csv`) and its metadata ``<name>.csv.json``

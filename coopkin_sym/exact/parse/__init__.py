@@ -3,7 +3,8 @@
 Every text that becomes a number or an expression (model files, ``--at``, ``--grid``,
 arguments of the API, equations and witnesses of a report read back) passes through
 :func:`parse_expression`, and comes out exact. The parser is the package's own: a
-small recursive-descent reader of decimal numbers, declared names, ``pi``, the
+small recursive-descent reader of decimal numbers, declared names, ``pi``, degrees
+(``deg`` is ``pi/180``: ``90deg`` and ``90*deg`` are ``pi/2`` exactly), the
 functions ``atan``, ``sqrt``, ``Rational`` and ``Integer``, ``+ - * / ** ^``
 and parentheses. Nothing is handed to Python or to SymPy's parser, so no text can
 run code. A decimal such as ``0.1`` is the exact decimal ``1/10``, never a binary
@@ -26,6 +27,8 @@ L/2 + 1/10
 t_q1**2 - 1
 >>> parse_angle("2*atan(1/3)", "q1")
 (4/5, 3/5)
+>>> parse_angle("90deg", "q1") == parse_angle("pi/2", "q1")
+True
 >>> from fractions import Fraction
 >>> tangent_text(Fraction(1, 3))
 '2*atan(1/3)'

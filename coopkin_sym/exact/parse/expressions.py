@@ -1,6 +1,6 @@
 """The tokenizer and the recursive-descent reader of expressions: the whitelist
-(decimal numbers, declared names, ``pi``, ``atan``, ``sqrt``, ``Rational``, ``Integer``,
-``+ - * / ** ^`` and parentheses), :func:`parse_expression` and
+(decimal numbers, declared names, ``pi``, degrees (``deg``, ``90deg``), ``atan``,
+``sqrt``, ``Rational``, ``Integer``, ``+ - * / ** ^`` and parentheses), :func:`parse_expression` and
 :func:`parse_polynomial`. No text is handed to Python or to SymPy's parser."""
 
 from __future__ import annotations
@@ -44,15 +44,29 @@ def _tokens(text: str) -> list[tuple[str, str]]:
     return out
 
 
+#: The name of a degree, ``pi/180`` (``90*deg``; also written after a number, ``90deg``).
+DEGREE = "deg"
+
+
+def _number(token: str, reader: _Reader):
+    """The exact value of a number token: a decimal literal, or a decimal followed by
+    ``deg`` (``90deg``: ``90*pi/180``, exactly ``pi/2``)."""
+    if token.endswith(DEGREE) and _is_decimal(token[:-len(DEGREE)]):
+        return reader.v_mul(reader.constant(_decimal(token[:-len(DEGREE)], reader)),
+                            _Sym(sp.pi / 180))
+    return reader.constant(_decimal(token, reader))
+
+
+def _is_decimal(token: str) -> bool:
+    match = _DECIMAL.fullmatch(token)
+    return match is not None and bool(match.group(1) or match.group(2))
+
+
 def _decimal(token: str, reader: _Reader) -> Fraction:
     """The exact value of a decimal literal (``12``, ``0.5``, ``1e-3``)."""
     match = _DECIMAL.fullmatch(token)
     if match is None or not (match.group(1) or match.group(2)):
-        hint = "write numbers in decimal, e.g. 3/5 or 0.6"
-        head = re.match(r"[\d.]+", token)
-        if head and re.fullmatch(r"[A-Za-z]\w*", token[head.end():], re.ASCII):
-            hint = f"write {head.group()}*{token[head.end():]} for a product"
-        raise reader.fail(f"cannot be parsed ({hint})")
+        raise reader.fail(f"cannot be parsed ({_number_hint(token, reader)})")
     whole, frac, exp = match.group(1) or "", match.group(2) or "", match.group(3)
     if len(whole) > 1 and whole[0] == "0":
         raise reader.fail(f"has a number with a leading zero ({token}), which is "
@@ -69,6 +83,18 @@ def _decimal(token: str, reader: _Reader) -> Fraction:
     mantissa = int(digits) if digits else 0
     return Fraction(mantissa * 10**shift) if shift >= 0 else Fraction(mantissa,
                                                                       10**-shift)
+
+
+def _number_hint(token: str, reader: _Reader) -> str:
+    """How to write a token that starts with a digit but is no number: a product
+    (``2*L``) when what follows the digits is a name that can be read, else decimals."""
+    head = re.match(r"[\d.]+", token)
+    tail = token[head.end():] if head else ""
+    if head and tail.startswith(DEGREE) and tail != DEGREE:
+        return f"an angle in degrees is written {head.group()}deg or {head.group()}*deg"
+    if head and (tail in reader.symbols or tail in ("pi", DEGREE)):
+        return f"write {head.group()}*{tail} for a product"
+    return "write numbers in decimal, e.g. 3/5 or 0.6"
 
 
 class _Parser:
@@ -148,7 +174,7 @@ class _Parser:
             raise self.syntax()
         kind, text = self.take()
         if kind == "num":
-            return self.reader.constant(_decimal(text, self.reader))
+            return _number(text, self.reader)
         if kind == "name":
             if text == "CRootOf":
                 return self.root()
@@ -156,6 +182,8 @@ class _Parser:
                 return self.reader.call(text, self.arguments())
             if text == "pi":
                 return _Sym(sp.pi)
+            if text == DEGREE and text not in self.reader.symbols:
+                return _Sym(sp.pi / 180)
             return self.reader.symbol(text)
         if text == "(":
             value = self.sum()
@@ -174,7 +202,7 @@ class _Parser:
         names = {self.tokens[k][1] for k in span if self.tokens[k][0] == "name"
                  and self.tokens[k][1] not in self.reader.symbols
                  and self.tokens[k][1] not in FUNCTIONS
-                 and self.tokens[k][1] not in ("pi", "CRootOf")}
+                 and self.tokens[k][1] not in ("pi", DEGREE, "CRootOf")}
         outer = self.reader
         variable = next(iter(names), "x")
         inner = _Reader({variable: sp.Symbol(variable)}, outer.where, outer.shown,
@@ -252,7 +280,7 @@ def _check_tokens(tokens: list[tuple[str, str]], reader: _Reader) -> None:
             if text in FUNCTIONS or text == "CRootOf":
                 if following != "(":
                     raise reader.fail(f"cannot be parsed ({text} is a function)")
-            elif text in reader.symbols or text == "pi":
+            elif text in reader.symbols or text in ("pi", DEGREE):
                 continue
             elif following == "(":
                 raise reader.fail(f"uses unknown function {text} (allowed: atan, sqrt)")
@@ -286,7 +314,7 @@ def _bound_names(tokens: list[tuple[str, str]], reader: _Reader) -> set[int]:
         span = _root_argument(tokens, i + 1)
         names = {tokens[k][1] for k in span if tokens[k][0] == "name"
                  and tokens[k][1] not in reader.symbols and tokens[k][1] not in FUNCTIONS
-                 and tokens[k][1] not in ("pi", "CRootOf")}
+                 and tokens[k][1] not in ("pi", DEGREE, "CRootOf")}
         if len(names) > 1:
             raise reader.fail("cannot be parsed (CRootOf takes a polynomial in one "
                               "variable)")
@@ -328,8 +356,10 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     """Read an exact expression from text: the one parser of the package.
 
     Accepted: decimal numbers (``12``, ``0.5``, ``1e-3``, all exact), the names in
-    ``symbols``, ``pi``, ``atan(x)``, ``sqrt(x)``, ``Rational(p, q)``,
-    ``Integer(n)`` (exact: ``Integer(0.5)`` is an error), ``+ - * /``, ``**`` or
+    ``symbols``, ``pi``, ``deg`` (a degree, ``pi/180``: ``90deg`` and ``90*deg`` are
+    ``pi/2`` exactly; a declared name ``deg`` is that name), ``atan(x)``, ``sqrt(x)``,
+    ``Rational(p, q)``, ``Integer(n)`` (exact: ``Integer(0.5)`` is an error),
+    ``+ - * /``, ``**`` or
     ``^`` with an integer literal exponent, and parentheses. Nothing else is
     evaluated; no Python runs. Every step is checked against the budgets of
     :mod:`coopkin_sym.limits` before it is taken.
@@ -362,6 +392,8 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | Iterable[str]
     -------
     >>> parse_expression("(t_q1 + 1)**2 / 2", ["t_q1"], "equation")
     t_q1**2/2 + t_q1 + 1/2
+    >>> parse_expression("90deg", [], "q1"), parse_expression("-45*deg", [], "q1")
+    (pi/2, -pi/4)
     >>> parse_expression("exec(1)", [], "x")  # parse-ok: refused  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...

@@ -63,18 +63,46 @@ def example_path(name: str) -> Path:
 
 
 def describe_example(name: str) -> str:
-    """One line about the example: its first comment line, or else its name.
+    """One line about the example: the first sentence of its header comment (whole,
+    however many comment lines it takes), or else its name.
+
+    Raises
+    ------
+    ArgumentError
+        If there is no such example (the message lists the shipped ones).
 
     Example
     -------
     >>> describe_example("paper-case1-soft")[:20]
     'Paper case study 1 ('
+    >>> describe_example("four-bar")[-40:]
+    'with pins (hard contacts) at their tips.'
     """
-    path = example_path(name)
-    for line in path.read_text(encoding="utf-8").splitlines():
+    header = []
+    for line in example_path(name).read_text(encoding="utf-8").splitlines():
         text = line.strip()
-        if text.startswith("#") and text.lstrip("#").strip():
-            return text.lstrip("#").strip()
-        if text and not text.startswith("#"):
+        if not text.startswith("#"):
             break
-    return name
+        header.append(text.lstrip("#").strip())
+    return first_sentence(" ".join(w for w in header if w)) or name
+
+
+def first_sentence(text: str) -> str:
+    """The first sentence of ``text``: up to the first full stop outside parentheses
+    that ends the text or is followed by a space and a capital letter (``fig. 2``
+    does not end a sentence).
+
+    Example
+    -------
+    >>> first_sentence("Case 1 (fig. 2), two arms. At home q = 0.")
+    'Case 1 (fig. 2), two arms.'
+    """
+    depth = 0
+    for k, char in enumerate(text):
+        depth += (char == "(") - (char == ")")
+        if char != "." or depth > 0:
+            continue
+        rest = text[k + 1:]
+        if not rest.strip() or (rest[:1] == " " and rest.lstrip()[:1].isupper()):
+            return text[:k + 1]
+    return text.strip()
