@@ -87,7 +87,7 @@ def _chain(chain: tuple[Clause, ...], equations: Sequence[NamedPolynomial], shor
 
 
 def _long_value(clause: Value) -> bool:
-    text = sp.sstr(clause.value)
+    text = clause.value_text
     return len(text) > _LONG_VALUE or clause.value.has(sp.CRootOf)
 
 

@@ -12,7 +12,14 @@ from support import texts
 
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.remarks import Remark
-from coopkin_sym.analysis.locus.types import Component, Locus, _renumbered, canonical_order
+from coopkin_sym.analysis.locus.types import (
+    Component,
+    Locus,
+    _renumbered,
+    canonical_order,
+    ended_at_bound,
+)
+from coopkin_sym.errors import TimeLimitReached
 from coopkin_sym.present.report import render_json, render_markdown
 
 
@@ -71,3 +78,16 @@ def test_the_order_of_a_tree_and_its_remarks():
     assert [texts(c.equations) for c in shuffled.components] == [
         ["t_q1"], ["t_q1", "t_q2"], ["t_q1", "t_q2 - 1"], ["t_q2**2 + 4*t_q2 + 1"], ["s_q1"]]
     assert [c.parent for c in shuffled.components] == [None, 0, 0, None, None]
+
+
+def test_a_locus_cut_at_its_bound_comes_in_the_canonical_order_too():
+    for seed in range(3):
+        exc = TimeLimitReached(5.0, "a resultant", hard=True)
+        exc.kept = _shuffled(_tree(), seed)
+        cut = ended_at_bound(exc)
+        assert [texts(c.equations) for c in cut.components] == [
+            ["t_q1"], ["t_q1", "t_q2"], ["t_q1", "t_q2 - 1"], ["t_q2**2 + 4*t_q2 + 1"],
+            ["s_q1"]]
+        assert [c.parent for c in cut.components] == [None, 0, 0, None, None]
+        assert [r.kind for r in cut.unexplored] == ["deeper_not_explored", "pi_chart",
+                                                    "time_whole_run"]

@@ -24,11 +24,13 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Union
 
 import sympy as sp
 
 from coopkin_sym.errors import NumberError
+from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import brief, parse_expression
 from coopkin_sym.exact.polynomial import NamedPolynomial
 
@@ -46,6 +48,8 @@ class Value:
     -------
     >>> Value("d4", sp.Rational(1, 2), "prismatic").text
     'd4 = 1/2'
+    >>> Value("q1", -2 * sp.atan(sp.Rational(1, 3)), "revolute").text
+    'q1 = 2*atan(-1/3)'
     """
 
     name: str
@@ -54,7 +58,17 @@ class Value:
 
     @property
     def text(self) -> str:
-        return f"{self.name} = {sp.sstr(self.value)}"
+        return f"{self.name} = {self.value_text}"
+
+    @property
+    def value_text(self) -> str:
+        """The value as ``--at`` writes it: an angle with a rational tangent half-angle
+        as :class:`~coopkin_sym.exact.angles.ExactAngle` does (``2*atan(-1/3)``)."""
+        if self.kind == "revolute" and self.value.is_real is not False:
+            half = sp.tan(self.value / 2)
+            if half.is_Rational:
+                return ExactAngle.from_tangent(Fraction(int(half.p), int(half.q))).text
+        return sp.sstr(self.value)
 
     def approximation(self) -> float:  # float-ok: for display only
         """The value as a float (radians for an angle), for display only."""
@@ -238,7 +252,7 @@ def clause_json(clause: Clause) -> dict:
     {'related': ['q1', 'q2'], 'sign': -1, 'plus_pi': False}
     """
     if isinstance(clause, Value):
-        return {"value": clause.name, "equals": sp.sstr(clause.value), "kind": clause.kind}
+        return {"value": clause.name, "equals": clause.value_text, "kind": clause.kind}
     if isinstance(clause, Related):
         return {"related": [clause.left, clause.right], "sign": clause.sign,
                 "plus_pi": clause.plus_pi}

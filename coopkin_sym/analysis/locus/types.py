@@ -647,7 +647,8 @@ def cut_short(bound, exc: TimeLimitReached) -> Locus:
     locus was registered with): what was cut is said in :attr:`Locus.unexplored`.
 
     Raises ``exc`` again, saying so, when the bound ran out before the generic
-    numbers were known (there is no locus to report yet).
+    numbers were known (there is no locus to report yet). The components found are put
+    in their canonical order (:func:`canonical_order`), as for a whole search.
     """
     locus = bound.kept if bound is not None else None
     if not isinstance(locus, Locus):
@@ -657,6 +658,7 @@ def cut_short(bound, exc: TimeLimitReached) -> Locus:
     locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
                                       where=exc.where))
     locus.seconds = round(time.monotonic() - bound.started, 3)
+    canonical_order(locus)
     return locus
 
 
@@ -679,4 +681,5 @@ def ended_at_bound(exc: TimeLimitReached) -> Locus | None:
         return None
     locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
                                       where=exc.where))
+    canonical_order(locus)
     return locus
