@@ -409,14 +409,11 @@ def read_locus(path: str | os.PathLike) -> Locus:
     """
     from pathlib import Path
 
-    from coopkin_sym.errors import ReportError, TreeError
-    from coopkin_sym.model.input_files import read_input_text
+    from coopkin_sym.errors import ReportError
+    from coopkin_sym.model.input_files import read_text_file
     from coopkin_sym.present.report import locus_from_json
 
-    try:
-        text = read_input_text(Path(path))
-    except TreeError as exc:
-        raise ReportError(f"{path}: {exc}") from None
+    text = read_text_file(Path(path), ReportError)
     try:
         return locus_from_json(text)
     except ValueError as exc:   # one line per problem, each naming the file once

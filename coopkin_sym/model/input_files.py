@@ -30,7 +30,7 @@ import stat
 from coopkin_sym import limits
 from coopkin_sym.errors import TreeError
 
-__all__ = ["read_input_bytes", "read_input_text", "size_text"]
+__all__ = ["read_input_bytes", "read_input_text", "read_text_file", "size_text"]
 
 _KINDS = ((stat.S_ISFIFO, "a named pipe (FIFO)"), (stat.S_ISCHR, "a character device"),
           (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
@@ -140,3 +140,21 @@ def read_input_text(path: str | os.PathLike[str]) -> str:
         return data.decode("utf-8")
     except UnicodeDecodeError:
         raise TreeError("not a text file (UTF-8 expected)") from None
+
+
+def read_text_file(path: str | os.PathLike[str], error: type[Exception]) -> str:
+    """:func:`read_input_text`, a problem raised as ``error("<path>: <problem>")``: how
+    every reader of a file (URDF, MJCF, a report read back) names the file it refuses.
+
+    Example
+    -------
+    >>> from coopkin_sym.errors import UrdfError
+    >>> read_text_file("/no/such/file.urdf", UrdfError)
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.UrdfError: /no/such/file.urdf: no such file
+    """
+    try:
+        return read_input_text(path)
+    except TreeError as exc:
+        raise error(f"{path}: {exc}") from None

@@ -37,12 +37,12 @@ from pathlib import Path
 import mpmath
 import sympy as sp
 
-from coopkin_sym.errors import MjcfError, TreeError, UrdfError
+from coopkin_sym.errors import MjcfError, UrdfError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.axes import snap_axis
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then
-from coopkin_sym.model.input_files import read_input_text
+from coopkin_sym.model.input_files import read_text_file
 from coopkin_sym.model.urdf import (
     DEFAULT_BOUND,
     IgnoredJoint,
@@ -90,11 +90,7 @@ def read_mjcf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
         The file cannot be read or used; the message names the file and the element.
     """
     path = Path(path)
-    try:
-        text = read_input_text(path)
-    except TreeError as exc:
-        raise MjcfError(f"{path}: {exc}") from None
-    return read_mjcf_text(text, path.name, tip, base, bound)
+    return read_mjcf_text(read_text_file(path, MjcfError), path.name, tip, base, bound)
 
 
 def read_mjcf_text(text: str, source: str, tip: str | None = None,

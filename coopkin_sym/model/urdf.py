@@ -53,12 +53,12 @@ from pathlib import Path
 import sympy as sp
 
 from coopkin_sym import limits
-from coopkin_sym.errors import TreeError, UrdfError
+from coopkin_sym.errors import UrdfError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.axes import snap_axis
 from coopkin_sym.exact.parse import NumberError, brief, parse_number
 from coopkin_sym.model.dh import IDENTITY, DHJoint, Frame, frame_then, rotation_rpy
-from coopkin_sym.model.input_files import read_input_text, size_text
+from coopkin_sym.model.input_files import read_text_file, size_text
 
 __all__ = ["DEFAULT_BOUND", "IgnoredJoint", "Renamed", "Snapped", "UrdfArm", "UrdfError",
            "read_urdf", "read_urdf_text", "variable_names"]
@@ -156,11 +156,7 @@ def read_urdf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
         The file cannot be read or used; the message names the file and the element.
     """
     path = Path(path)
-    try:
-        text = read_input_text(path)
-    except TreeError as exc:
-        raise UrdfError(f"{path}: {exc}") from None
-    return read_urdf_text(text, path.name, tip, base, bound)
+    return read_urdf_text(read_text_file(path, UrdfError), path.name, tip, base, bound)
 
 
 def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame = IDENTITY,
