@@ -513,6 +513,8 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
     """The computation of ``coopkin locus`` (run under its bound): the locus, its
     certificate and verification when asked, and the
     :class:`~coopkin_sym.errors.TimeLimitReached` that cut it (None if none did)."""
+    if finite:              # said before the search, not after it
+        system.check_finite()
     result = system.search_locus(at, max_depth=max_depth, timeout=timeout,
                                  progress=True, free=free_joints, pi_size=pi_size)
     cut = _time_cut(result, timeout)

@@ -229,6 +229,24 @@ class System:
         from coopkin_sym.analysis.locus.certify import certify_locus
         return certify_locus(self, locus, timeout=timeout, budget=budget)
 
+    def check_finite(self) -> None:
+        """Nothing when the finite mobility is defined for this system (every contact
+        constrains positions), else the
+        :class:`~coopkin_sym.errors.FiniteMobilityError` saying which contact is not:
+        checked before a long locus search whose witnesses it would be asked at.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> load("four-bar").check_finite()
+        >>> load("paper-case1-soft").check_finite()
+        Traceback (most recent call last):
+        ...
+        coopkin_sym.errors.FiniteMobilityError: contact 1 is soft: ...
+        """
+        from coopkin_sym.analysis.finite.constraints import check_holonomic
+        check_holonomic(self.model)
+
     def finite_locus(self, locus: Locus, *, order: int | None = None) -> int:
         """The finite mobility at every rational witness of ``locus`` (a locus of this
         system), kept in each component's ``finite`` (see

@@ -127,7 +127,7 @@ def test_the_spin_about_the_contact_line_is_split_off_as_a_finite_motion():
     assert spin[3:6] != (0, 0, 0) and spin[6:] == (0, 0)
 
 
-def test_the_command_says_it_and_refuses_what_it_cannot_expand():
+def test_the_command_says_it_and_refuses_what_it_cannot_expand(monkeypatch, tmp_path):
     from typer.testing import CliRunner
 
     from coopkin_sym.cli import app
@@ -140,6 +140,18 @@ def test_the_command_says_it_and_refuses_what_it_cannot_expand():
     bad = runner.invoke(app, ["analyze", "paper-case1-soft", "--finite"])
     assert bad.exit_code == 2
     assert bad.stderr.startswith("coopkin: error: contact 1 is soft: its no-spin")
+    # the locus is not searched when its witnesses cannot be expanded: said first
+    import coopkin_sym.analysis.locus.search as search
+
+    def no_search(*args, **kwargs):
+        raise AssertionError("the locus was searched")
+    monkeypatch.setattr(search, "compute_locus", no_search)
+    out = tmp_path / "soft.md"
+    bad = runner.invoke(app, ["locus", "paper-case1-soft", "--finite", "--no-progress",
+                              "-o", str(out)])
+    assert bad.exit_code == 2, bad.output
+    assert bad.stderr.startswith("coopkin: error: contact 1 is soft: its no-spin")
+    assert not out.exists()                       # nothing half-written
     symbolic = runner.invoke(app, ["analyze", "four-bar", "--generic", "--finite"])
     assert symbolic.exit_code == 2 and "--finite needs every joint" in symbolic.stderr
     latex = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=pi/2,q2=pi/2",

@@ -88,6 +88,28 @@ def cayley(w: Sequence, f: SeriesField) -> list[list]:
              for j in range(3)] for i in range(3)]
 
 
+def check_holonomic(model: Model) -> None:
+    """Nothing when every contact of ``model`` constrains positions (finite mobility is
+    defined), else the :class:`~coopkin_sym.errors.FiniteMobilityError` naming the
+    first contact that does not.
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> check_holonomic(load_model("paper-case1-soft"))
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.FiniteMobilityError: contact 1 is soft: ...
+    """
+    for i, contact in enumerate(model.contacts):
+        kind = contact_kind(contact.model)
+        if not kind.position:
+            raise FiniteMobilityError(
+                f"contact {i + 1} is {contact.model}: {kind.not_holonomic}, so the "
+                f"system has no configuration space to expand; finite mobility is "
+                f"defined for {listed(holonomic_models(), 'and')} contacts")
+
+
 class ConstraintMap:
     """``F(z)`` of the closed system at ``config`` (every joint and parameter set),
     evaluated for coordinates given as series (:meth:`evaluate`).
@@ -106,13 +128,7 @@ class ConstraintMap:
 
     def __init__(self, model: Model, config: Configuration,
                  slice_rows: Sequence[Sequence] = ()):
-        for i, contact in enumerate(model.contacts):
-            kind = contact_kind(contact.model)
-            if not kind.position:
-                raise FiniteMobilityError(
-                    f"contact {i + 1} is {contact.model}: {kind.not_holonomic}, so the "
-                    f"system has no configuration space to expand; finite mobility is "
-                    f"defined for {listed(holonomic_models(), 'and')} contacts")
+        check_holonomic(model)
         unset = [p.name for p in model.parameters if p.name not in config.parameters]
         if unset:
             raise FiniteMobilityError(f"finite mobility needs a value for {', '.join(unset)}"
