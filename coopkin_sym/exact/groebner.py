@@ -681,8 +681,8 @@ def _serve(conn, parent_end, parent: int) -> None:  # pragma: no cover - in the 
     the parent's end it inherited (else that end would never close), and stops when the
     parent is gone, so that it never outlives it holding the parent's files."""
     parent_end.close()
-    children: dict[str, Callable] = {f.__name__: f for f in (_flint_unit_child,
-                                                            _sympy_unit_child)}
+    children: dict[str, Callable] = {f.__name__: f for f in (
+        _flint_unit_child, _sympy_unit_child, _flint_lex_basis_child)}
     while True:
         try:
             while not conn.poll(1.0):
@@ -703,6 +703,14 @@ def _flint_unit_child(polys: list[PolyDict], n: int) -> bool:
     vec = flint.fmpz_mpoly_vec([ctx.from_dict(p) for p in polys], ctx)
     basis = vec.buchberger_naive()
     return any(g.is_constant() and not g.is_zero() for g in basis)
+
+
+def _flint_lex_basis_child(polys: list[PolyDict], n: int) -> list[PolyDict]:
+    """The reduced Gröbner basis for the lexicographic order (variable 0 first): the
+    elements free of the first variables generate the elimination ideal."""
+    ctx = flint.fmpz_mpoly_ctx.get(tuple(f"x{i}" for i in range(max(n, 1))), "lex")
+    vec = flint.fmpz_mpoly_vec([ctx.from_dict(p) for p in polys], ctx)
+    return [_plain(g) for g in vec.buchberger_naive().autoreduction()]
 
 
 def _sympy_unit_child(polys: list[PolyDict], n: int) -> bool:

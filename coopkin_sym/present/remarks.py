@@ -214,6 +214,11 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"component #{f['component'] + 1}: a denominator of its parametrization may "
         "vanish on its equations (saturation is not computed here): the component is "
         "not used"),
+    "cert_denominator_residual": lambda f: (
+        f"the points of component #{f['component'] + 1} where a denominator of its "
+        f"parametrization vanishes ({f['polynomial']} = 0) are "
+        + ("not decided to" if f["undecided"] else "not proved to")
+        + " lie in the other components"),
     "cert_component_unreadable": lambda f: f"{f['error']}: the component is not used",
     "cert_numbers_unreadable": lambda f: (
         f"component #{f['component'] + 1}: its numbers cannot be read: the component is "

@@ -25,7 +25,7 @@ import random
 
 import flint
 import pytest
-from support import texts
+from support import shipped_locus, texts
 from typer.testing import CliRunner
 
 from coopkin_sym import load
@@ -624,3 +624,50 @@ def test_merged_hypersurfaces_stay_within_the_term_budget(monkeypatch):
     for g in singles:
         parts *= ctx.from_dict(g)
     assert parts == whole                                     # the same union
+
+
+# --- components found through a parametrization -------------------------------------
+def test_saturation_is_the_ideal_of_the_closure():
+    from coopkin_sym.exact.saturation import saturate
+
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    # V(x*y) minus V(x) is the line y = 0 (without the origin): its closure is y = 0
+    (ideal,), _ = gb.as_dicts([x * y])
+    assert saturate([ideal], gb.as_dicts([x])[0][0], 2, timeout=30) == [{(0, 1): 1}]
+    # a twisted cubic minus a point: the closure is the whole curve again
+    cubic = gb.as_dicts([y - x**2, x * (y - x**2)])[0]
+    assert saturate(cubic, gb.as_dicts([x])[0][0], 2, timeout=30) == [
+        {(2, 0): 1, (0, 1): -1}]
+    # the empty set: the unit ideal
+    assert saturate(gb.as_dicts([x])[0], gb.as_dicts([x])[0][0], 2, timeout=30) == [
+        {(0, 0): 1}]
+    assert saturate([ideal], gb.as_dicts([x])[0][0], 2, timeout=0) is None
+
+
+def _five_bar_depth0(monkeypatch=None):
+    system = load("five-bar")
+    cert = certify_locus(system, shipped_locus("five-bar"), timeout=60)
+    return [c for c in cert.checks if c.depth == 0 and c.inside is None]
+
+
+def test_five_bar_components_with_denominators_are_used_through_their_closure():
+    # component #3 is a family with a denominator in its parametrization; its closure
+    # (the saturation) takes part in the coverings: every depth-0 test is proved
+    depth0 = _five_bar_depth0()
+    assert depth0 and all(c.certified for c in depth0), [
+        (c.where(), c.why) for c in depth0 if not c.certified]
+
+
+@pytest.mark.slow
+def test_without_the_saturation_the_points_at_a_denominator_are_covered_apart(monkeypatch):
+    import coopkin_sym.analysis.locus.certify as certify
+
+    monkeypatch.setattr(certify, "SATURATION_SECONDS", 0.0)
+    failed = [c for c in _five_bar_depth0() if not c.certified]
+    # never certified on V(equations) alone: the points where the denominator vanishes
+    # must lie in the other components, and here they do not
+    assert failed and {c.why.kind for c in failed} <= {"cert_denominator_residual",
+                                                        "cert_undecided"}
+    assert any(c.why.kind == "cert_denominator_residual" and c.why["component"] == 2
+               for c in failed)

@@ -29,6 +29,15 @@ What is checked
   as a total over the arms, through the ideal
   ``sum over k_1 + ... + k_A = R of prod_a I_(k_a)(Dt_a)``.
 
+* **Components with denominators.** A component found through a parametrization is
+  the set where its equations hold and none of its ``outside`` polynomials vanishes;
+  its closure is the zero set of the saturation ``(equations) : o^oo``
+  (:func:`coopkin_sym.exact.saturation.saturate`), which the tests use in its place.
+  When a saturation is not computed within its bound, the component is the equations'
+  zero set minus ``V(o)``: the tests inside it leave ``V(o)`` out, and a covering that
+  uses it also proves the points of its equations where ``o`` vanishes covered by the
+  other components.
+
 Together: **every real configuration has the generic numbers or the numbers of some
 reported component that contains it.** (A point with other numbers lies in a component
 by the depth-0 tests; the last such component in the order has exactly its numbers, by
@@ -143,6 +152,7 @@ from coopkin_sym.exact.groebner import (
 from coopkin_sym.exact.matrix import POLYNOMIALS, rank
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.exact.polynomial import NamedPolynomial
+from coopkin_sym.exact.saturation import saturate
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -351,6 +361,14 @@ def _numbers_of(numbers) -> tuple[tuple[str, object], ...]:
 
 
 # --- reading the locus -------------------------------------------------------------------
+#: Seconds for one saturation of a component's equations by an outside polynomial.
+SATURATION_SECONDS = 10.0
+
+#: How deep the coverings of the points where a parametrization's denominator vanishes
+#: go (those points may lie in a component that has such points of its own).
+MAX_RESIDUAL_DEPTH = 3
+
+
 def _integer_terms(poly: NamedPolynomial, names: tuple[str, ...]) -> dict:
     """An exact polynomial as a primitive integer exponent map over ``names`` (rational
     coefficients are scaled to integers)."""
@@ -368,9 +386,10 @@ def _integer_polynomial(text: str, names: tuple[str, ...], where: str) -> dict:
 
 
 def _read_components(locus: Locus, names: tuple[str, ...], notes: list[Remark]
-                     ) -> list[tuple[list[dict], dict[str, int]] | None]:
-    """Each component's equations (exponent maps over ``names``) and ranks, or None
-    when it cannot be read (a note says why)."""
+                     ) -> list[tuple[list[dict], dict[str, int], list[dict]] | None]:
+    """Each component's equations (exponent maps over ``names``), ranks and the
+    outside polynomials that may vanish on its equations, or None when it cannot be
+    read (a note says why)."""
     out = []
     for i, comp in enumerate(locus.components):
         try:
@@ -379,15 +398,13 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[Remark]
                    for poly in comp.equation_polynomials(names, where)]
             outs = [_integer_terms(poly, names)
                     for poly in comp.outside_polynomials_of(names, where)]
-            # the component is the closure of V(equations) minus V(outside): it is
-            # V(equations) when no outside polynomial vanishes there (a unit ideal);
-            # otherwise it can be smaller, and reading it as V(equations) could prove a
-            # covering that is not there (its saturation is not computed here)
-            if outs and not all(is_unit_ideal([*eqs, o], timeout=10.0,
-                                              nvars=len(names)).proved for o in outs):
-                notes.append(Remark.of("cert_denominator_may_vanish", component=i))
-                out.append(None)
-                continue
+            # the component holds V(equations) minus V(outside); an outside polynomial
+            # that vanishes nowhere on V(equations) (a unit ideal with them) takes
+            # nothing away; where another may vanish, a covering that uses the
+            # component also proves those points covered by the others (_Runner.cover)
+            outs = [o for o in outs if not is_unit_ideal([*eqs, o], timeout=10.0,
+                                                         nvars=len(names)).proved]
+            eqs, outs = _closure(eqs, outs, len(names))
             numbers = {k: int(comp.numbers[k]) for k in ("Nm", "Ni", "Nr")}
         except NumberError as exc:
             notes.append(Remark.of("cert_component_unreadable", error=str(exc)))
@@ -397,8 +414,23 @@ def _read_components(locus: Locus, names: tuple[str, ...], notes: list[Remark]
             notes.append(Remark.of("cert_numbers_unreadable", component=i))
             out.append(None)
             continue
-        out.append((eqs, numbers))
+        out.append((eqs, numbers, outs))
     return out
+
+
+def _closure(eqs: list[dict], outs: list[dict], nvars: int) -> tuple[list[dict], list]:
+    """The equations of the closure of ``V(eqs)`` minus the zeros of ``outs``: the
+    saturation by each outside polynomial in turn (:func:`saturate`, bounded); the
+    outside polynomials whose saturation was not computed are kept (a covering that
+    uses the component then covers their zeros apart)."""
+    kept = []
+    for o in outs:
+        sat = saturate(eqs, o, nvars, timeout=SATURATION_SECONDS)
+        if sat is None:
+            kept.append(o)
+        else:
+            eqs = sat
+    return eqs, kept
 
 
 def _read_conditions(locus: Locus, names: tuple[str, ...], notes: list[Remark]
@@ -490,11 +522,17 @@ class _Runner:
         real = _RealZeros(chart, setup.parameters)
         cache: dict = {}
         here = {}
+        self.outs = {}
         for i, comp in enumerate(setup.components):
             if comp is not None:
                 eqs = _in_chart(setup, comp[0], chart)
-                if eqs is not None:
-                    here[i] = eqs
+                if eqs is None:
+                    continue
+                outs = [_in_chart(setup, [o], chart) for o in comp[2]]
+                if any(o == [] for o in outs):
+                    continue      # an outside polynomial vanishes on the whole slice
+                here[i] = eqs
+                self.outs[i] = [o[0] for o in outs if o]
         conditions = [p for p in (_in_chart(setup, [c], chart) for c in setup.conditions)
                       if p]
         everything = list(here.items())
@@ -578,8 +616,16 @@ class _Runner:
             return
         verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names),
-                         allowed=[[u] for u in chart.units] + conditions)
+                         allowed=[[u] for u in chart.units] + conditions
+                         + self._outside(check))
         self._record(check, verdict, "cert_larger_somewhere")
+
+    def _outside(self, check: Check) -> list[list]:
+        """The sets a test inside a component leaves out: where an outside polynomial
+        of the component vanishes (the component is the set where its equations hold
+        and none of them vanishes)."""
+        return [[o] for o in self.outs.get(check.inside, ())] if check.inside is not None \
+            else []
 
     def run(self, check: Check, chart: _Chart, own: list[Poly], gens, covering,
             conditions) -> None:
@@ -593,17 +639,55 @@ class _Runner:
             check.why = Remark.of("cert_never_drops")
             self._add(check)
             return
-        whole = next((i for i, p in covering if not p), None)
+        whole = next((i for i, p in covering if not p and not self.outs.get(i)), None)
         if whole is not None:
             check.certified, check.backend = True, "none"
             check.why = Remark.of("cert_whole_slice", component=whole)
             self._add(check)
             return
-        verdict = covers(list(own) + list(gens), [p for _, p in covering],
-                         timeout=seconds, backend=self.backend,
-                         nvars=len(chart.names),
-                         allowed=[[u] for u in chart.units] + conditions)
+        verdict, residual = self.cover(list(own) + list(gens), list(covering), seconds,
+                                       chart, conditions + self._outside(check))
+        if residual is not None and not verdict.proved:
+            self._residual_failed(check, verdict, residual)
+            return
         self._record(check, verdict, "cert_drops_elsewhere")
+
+    def cover(self, ideal: list, pieces: list, seconds: float, chart: _Chart,
+              conditions, depth: int = 0) -> tuple[Verdict, tuple | None]:
+        """Whether ``V(ideal)`` lies in the ``pieces`` ``(index, equations)``. A piece
+        is ``V(equations)`` minus where an outside polynomial ``o`` of its component
+        vanishes: the covering of ``V(equations)`` is proved, then for each such ``o``
+        that ``V(ideal + equations + o)`` lies in the other pieces (the same way, up
+        to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict and, when a residual
+        test is what failed, ``(component index, o)``."""
+        allowed = [[u] for u in chart.units] + conditions
+        verdict = covers(ideal, [p for _, p in pieces], timeout=seconds,
+                         backend=self.backend, nvars=len(chart.names), allowed=allowed)
+        if not verdict.proved:
+            return verdict, None
+        for i, eqs in pieces:
+            for o in self.outs.get(i, ()):
+                if depth >= MAX_RESIDUAL_DEPTH:
+                    return Verdict(None, False, verdict.backend, verdict.seconds,
+                                   "residual depth bound"), (i, o)
+                deadline.check("a covering of the points outside a parametrization")
+                rest = [(j, q) for j, q in pieces if j != i]
+                inner, _ = self.cover([*ideal, *eqs, o], rest, seconds, chart,
+                                      conditions, depth + 1)
+                if not inner.proved:
+                    return inner, (i, o)
+        return verdict, None
+
+    def _residual_failed(self, check: Check, verdict: Verdict, residual: tuple) -> None:
+        """A covering proved but for the points of a component where a denominator of
+        its parametrization vanishes."""
+        index, o = residual
+        check.backend, check.seconds = verdict.backend, round(verdict.seconds, 3)
+        check.why = Remark.of("cert_denominator_residual", component=index,
+                              polynomial=NamedPolynomial.from_flint(o, o.context().names()
+                                                                    ).text,
+                              undecided=verdict.holds is None)
+        self._add(check)
 
     def _record(self, check: Check, verdict: Verdict, failure: str) -> None:
         """Record a backend's verdict; ``failure`` is the kind of remark saying what

@@ -80,6 +80,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "cert_no_msolve": ("hint",),
     "cert_numbers_inconsistent": ("component", "given", "implied"),
     "cert_denominator_may_vanish": ("component",),
+    "cert_denominator_residual": ("component", "polynomial", "undecided"),
     "cert_component_unreadable": ("error",),
     "cert_numbers_unreadable": ("component",),
     "cert_condition_unreadable": ("error",),
