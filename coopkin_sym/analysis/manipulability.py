@@ -58,6 +58,7 @@ from coopkin_sym.analysis.kinematics import PLANAR_COLUMNS, spatial_twist
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ManipulabilityError
 from coopkin_sym.exact import matrix as exact_matrix
+from coopkin_sym.exact.field_matrix import FieldMatrix
 from coopkin_sym.exact.parse import NumberError, exact_expr
 
 
@@ -283,7 +284,12 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     rows = [names.index(c) for c in controlled]
     # all the arithmetic in one exact field of rational functions (DomainMatrix)
     mats = [c12, c11, weight] + (list(parts) if parts else [gram])
-    c12, c11, weight, *rest = _in_one_field(mats)
+    dms = _in_one_field(mats)
+    field = dms[0].domain
+    # over a field of rational functions, the products, inverses and the determinant
+    # are done with python-flint (SymPy's own gcds take minutes on these entries)
+    flint_field = bool(getattr(field, "is_FractionField", False))
+    c12, c11, weight, *rest = [FieldMatrix.of(d) for d in dms] if flint_field else dms
     if parts:
         c22, c23 = rest
         gram = c22.transpose() * c22
@@ -292,25 +298,42 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
             gram = gram - cross.transpose() * (c23.transpose() * c23).inv() * cross
     else:
         (gram,) = rest
-    field = gram.domain
     driven = weight * c12
     if c11.shape[1] and driven.shape[1]:
         # modulo the indeterminate motions: the part W-orthogonal to W C11
         free = weight * c11
         driven = driven - free * (free.transpose() * free).inv() * (
             free.transpose() * driven)
-    driven = driven.extract(rows, list(range(driven.shape[1])))
+    driven = _rows_of(driven, rows)
     if driven.shape[1]:
         shape_dm = driven * gram.inv() * driven.transpose()
     else:
+        shape_dm = None
+    det = None
+    if flint_field:
+        if len(rows) and shape_dm is not None:
+            det = shape_dm.det_element()
+        gram, driven = gram.to_domain_matrix(), driven.to_domain_matrix()
+        shape_dm = None if shape_dm is None else shape_dm.to_domain_matrix()
+    if shape_dm is None:
         shape_dm = DomainMatrix.zeros((len(rows), len(rows)), field)
+    if det is None and len(rows):
+        det = shape_dm.det()
     form = sp.ImmutableMatrix(gram.to_Matrix())
     shape = sp.ImmutableMatrix(shape_dm.to_Matrix())
-    index = sp.factor(field.to_sympy(shape_dm.det())) if len(rows) else sp.Integer(1)
+    index = sp.factor(field.to_sympy(det)) if len(rows) else sp.Integer(1)
     # A is positive definite, so E has the rank of the driven rows (exact, over the
     # field of rational functions of the symbols)
     rank = exact_matrix.rank(driven, None, exact_matrix.SYMPY) if driven.shape[1] else 0
     return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+
+
+def _rows_of(m, rows: list[int]):
+    """The rows ``rows`` of ``m`` (a :class:`DomainMatrix` or a :class:`FieldMatrix`)."""
+    if isinstance(m, FieldMatrix):
+        return FieldMatrix([m.rows[r] for r in rows], (len(rows), m.shape[1]), m.field,
+                           m.ctx)
+    return m.extract(rows, list(range(m.shape[1])))
 
 
 def _in_one_field(mats: Sequence[sp.Matrix]) -> list[DomainMatrix]:
