@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -71,3 +72,28 @@ def test_the_schemas_page_holds_every_schema(site):
 def test_the_notebooks_are_shown_with_their_outputs(site):
     text = (site / "notebooks" / "01_two_one_link_arms.html").read_text(encoding="utf-8")
     assert "cell_output" in text
+
+
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+WORDS = ("DE" + "SIGN",)   # a document that is not in the repository
+
+
+def _texts() -> list[Path]:
+    return [ROOT / "README.md", *sorted(DOCS.glob("*.md")), *sorted(DOCS.glob("api/*.md")),
+            *sorted((ROOT / "coopkin_sym").rglob("*.py")), *sorted((ROOT / "tests").rglob("*.py"))]
+
+
+def test_the_docs_and_the_code_cite_no_file_outside_the_repository():
+    for path in _texts():
+        text = path.read_text(encoding="utf-8")
+        for word in WORDS:
+            assert not re.search(rf"\b{word}\b", text), f"{path.relative_to(ROOT)}: {word}"
+
+
+def test_every_relative_link_of_the_docs_names_a_file_of_the_repository():
+    for path in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]:
+        for target in LINK.findall(path.read_text(encoding="utf-8")):
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                continue
+            file = (path.parent / target.split("#")[0]).resolve()
+            assert file.is_relative_to(ROOT) and file.exists(), f"{path.name}: {target}"
