@@ -37,12 +37,15 @@ exclude_patterns = ["_build", "notebooks/*.py", "**/.ipynb_checkpoints"]
 nb_execution_mode = "off"
 nb_output_stderr = "show"
 
+# options and file names are shown as written (--at, not an en dash)
+smartquotes = False
+
 myst_enable_extensions = ["dollarmath"]
 myst_heading_anchors = 3
 
 autodoc_member_order = "bysource"
 autodoc_typehints = "description"
-autodoc_default_options = {"members": True, "show-inheritance": False}
+autodoc_default_options = {"members": True}
 napoleon_numpy_docstring = True
 napoleon_google_docstring = False
 napoleon_use_rtype = False
@@ -50,3 +53,5 @@ napoleon_use_rtype = False
 html_theme = "alabaster"
 html_title = f"coopkin_sym {release}"
 html_static_path: list[str] = []
+# wide enough for the 100-column code of the pages and the notebooks
+html_theme_options = {"page_width": "1280px", "sidebar_width": "250px", "body_max_width": "none"}

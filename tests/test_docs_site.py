@@ -97,3 +97,12 @@ def test_every_relative_link_of_the_docs_names_a_file_of_the_repository():
                 continue
             file = (path.parent / target.split("#")[0]).resolve()
             assert file.is_relative_to(ROOT) and file.exists(), f"{path.name}: {target}"
+
+
+def test_the_schemas_page_lists_every_schema_as_it_is():
+    page = (DOCS / "schemas.md").read_text(encoding="utf-8")
+    for path in sorted(DOCS.glob("*.schema.json")):
+        schema = json.loads(path.read_text(encoding="utf-8"))
+        assert f"```{{literalinclude}} {path.name}\n" in page, path.name
+        assert f"**{schema['title']}**" in page, path.name
+        assert schema["description"] in page, path.name
