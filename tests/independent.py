@@ -376,7 +376,7 @@ def reference_analysis(
     Parameters
     ----------
     model : dict
-        Model in the DESIGN section 3 format (numbers: int, "p/q" strings or
+        Model in the model-file format (numbers: int, "p/q" strings or
         expressions in the declared parameters).
     at : dict, optional
         ``{joint: (cos, sin)}`` for revolute joints (a text angle such as ``"pi/2"`` is

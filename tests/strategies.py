@@ -1,4 +1,4 @@
-"""Hypothesis strategies for random, valid cooperating-robot models (DESIGN section 3).
+"""Hypothesis strategies for random, valid cooperating-robot models.
 
 Everything is exact: unit vectors come from stereographic projection of rational points
 (so they are exactly unit), angles from rational tangent half-angles.  Numbers in the
@@ -137,7 +137,7 @@ def random_systems(
     max_contacts: int = 4,
     with_parameter: bool = False,
 ) -> dict[str, Any]:
-    """Random valid model dicts (DESIGN section 3).
+    """Random valid model dicts.
 
     1..max_arms arms ``a1, a2, ...`` of 1..max_joints joints each (joint names ``q1, q2,
     ...`` in file order, revolute or prismatic, exact unit axes, small rational points;

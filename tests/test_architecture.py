@@ -1,6 +1,6 @@
 """The package's layers, checked on its source: imports only go down, and no cycle.
 
-DESIGN section 5: ``errors``/``limits`` (base) < ``exact`` < ``model`` < ``analysis`` <
+The layers: ``errors``/``limits`` (base) < ``exact`` < ``model`` < ``analysis`` <
 ``present`` < the public facade (``coopkin_sym``, ``system``, ``cli``). Every import of
 a package module counts, at the top of a file or inside a function, so that a
 dependency cannot hide.

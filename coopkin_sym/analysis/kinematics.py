@@ -7,7 +7,7 @@ angle enters through ``t = tan(q/2)``, so every entry is a rational function of 
 ring variables whose denominator is a product of ``1 + t_j**2``; a fixed angle enters
 through its exact cosine and sine (q = pi included).
 
-Conventions (DESIGN section 1): object twist ``u = (v, w)`` with the reference point
+Conventions: object twist ``u = (v, w)`` with the reference point
 at the base origin; contact velocities stacked all linear blocks first, then all
 angular; ``G^T`` maps ``u`` to the object's contact-frame velocities, ``D`` maps
 ``qdot`` to the links' ones, ``H`` keeps the components each contact model

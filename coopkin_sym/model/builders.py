@@ -1,4 +1,4 @@
-"""Scalable families of example systems, as model dicts (DESIGN section 3).
+"""Scalable families of example systems, as model dicts.
 
 Each function returns a plain dict that :func:`coopkin_sym.load` accepts, with exact
 numbers only (integers, ``"p/q"`` strings, ``"p/q*L"`` expressions in the one

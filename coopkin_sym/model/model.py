@@ -1,6 +1,6 @@
 """Validated, immutable description of a cooperating robot system.
 
-A model is what a model file (YAML, JSON or a Python dict, DESIGN section 3) says,
+A model is what a model file (YAML, JSON or a Python dict: docs/model-format.md) says,
 checked and with every number exact: a SymPy ``Rational`` or a polynomial with
 rational coefficients in the declared parameters (each a positive ``Symbol``).
 Nothing here computes kinematics; see :mod:`coopkin_sym.analysis.kinematics`.
@@ -155,7 +155,7 @@ def model_of(source: Any) -> Model:
 
 
 def load_model(source: str | os.PathLike[str] | Mapping[str, Any]) -> Model:
-    """Load and validate a model (DESIGN section 3).
+    """Load and validate a model (the format of docs/model-format.md).
 
     Parameters
     ----------

@@ -63,7 +63,7 @@ def test_case1_finds_exactly_the_five_isolated_families(case1):
                                   minimal_polynomial="alpha**2 + 4*alpha + 1")
     assert remark_text(c.decided) == ("exact over Q(alpha), alpha = t_q1 a root of "
                                       "alpha**2 + 4*alpha + 1 (every conjugate point at once)")
-    assert c.witness is None  # no rational point (DESIGN: witness only when rational)
+    assert c.witness is None  # no rational point (a witness only when rational)
     w = c.algebraic_witness
     assert w["point"] == {"L": "1", "q1": "-5*pi/6", "q2": "5*pi/6"}
     assert w["root"] == "-2 - sqrt(3)" and w["root_of"] == "alpha**2 + 4*alpha + 1"

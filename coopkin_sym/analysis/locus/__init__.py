@@ -1,6 +1,6 @@
 """The singularity locus: where in configuration space the numbers change.
 
-:mod:`~coopkin_sym.analysis.locus.search` runs the search of DESIGN section 6 and
+:mod:`~coopkin_sym.analysis.locus.search` runs the search and
 returns a :class:`~coopkin_sym.analysis.locus.types.Locus`;
 :mod:`~coopkin_sym.analysis.locus.algebra` and :mod:`~coopkin_sym.analysis.locus.witness`
 solve the families and find exact witnesses; :mod:`~coopkin_sym.analysis.locus.certify`

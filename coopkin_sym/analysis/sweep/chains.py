@@ -7,7 +7,7 @@ number or a polynomial in the parameters left symbolic) are read once into plain
 ``sin q = 2 a b/(a^2 + b^2)`` (``q = pi`` is ``(a, b) = (1, 0)``) and a prismatic one
 slides by ``a/b``. The link poses are composed along each chain, every prefix once,
 and the rows of ``Q = (H G^T | -H D)`` are built from the current contact points and
-normals and the current joint axes and points (DESIGN section 1, as
+normals and the current joint axes and points (as
 :mod:`coopkin_sym.analysis.kinematics` assembles them). The cost is linear in the
 joints of a chain for each contact.
 
