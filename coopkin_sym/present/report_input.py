@@ -249,6 +249,9 @@ _ComponentIn = _model_of(Component, _COMPONENT_TYPES,
                          "_ComponentIn", skip=("shown", "stated_meaning"))
 _LocusIn = _model_of(Locus, {**_LOCUS_TYPES, "components": list[_ComponentIn]},
                      {"float_summary": (dict[StrictStr, StrictInt] | None, None),
+                      # what an independent check found when the report was written
+                      # (coopkin locus --verify): a document, not read back
+                      "verification": (dict[StrictStr, Any] | None, None),
                       "generic_classes": (list[StrictStr], Field(default_factory=list)),
                       "completeness": (StrictStr | None, None)},
                      "_LocusIn")

@@ -332,6 +332,10 @@ def test_cli_locus_verify_adds_the_verification_to_the_json(tmp_path):
     assert data["verification"]["ok"] is True
     assert data["verification"]["grid_points"] == 100
     assert len(data["components"]) == 5
+    # the report it wrote reads back: coopkin verify checks it again
+    again = runner.invoke(app, ["verify", "paper-case1-hard", str(out), "--lines", "0"])
+    assert again.exit_code == 0, again.output
+    assert "Verification: passed" in again.stdout
 
 
 def test_cli_verify_reads_a_report_back_and_fails_on_a_planted_fault(tmp_path):
