@@ -252,6 +252,32 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
         An unknown component name, or a length that is not positive and exact.
     """
     names = analysis.model.twist_names
+    controlled, ell = _controlled_and_length(analysis, names, controlled, length)
+    if analysis.model.passive_joints:
+        c12, gram, c11 = _motor_parts(analysis)
+        parts = None
+    else:
+        c12, c11 = analysis.C12, analysis.C11
+        parts = (analysis.C22, analysis.C23)
+    if point is not None:
+        c12, c11 = (_at_point(analysis, c, point) for c in (c12, c11))
+    weight = sp.diag(*[sp.Integer(1) if n.startswith("v") else ell for n in names])
+    rows = [names.index(c) for c in controlled]
+    # all the arithmetic in one exact field of rational functions (DomainMatrix)
+    mats = [c12, c11, weight] + (list(parts) if parts else [gram])
+    gram, driven, shape_dm, det = _ellipsoid(_in_one_field(mats), bool(parts), rows)
+    field = gram.domain
+    form = sp.ImmutableMatrix(gram.to_Matrix())
+    shape = sp.ImmutableMatrix(shape_dm.to_Matrix())
+    index = sp.factor(field.to_sympy(det)) if len(rows) else sp.Integer(1)
+    # A is positive definite, so E has the rank of the driven rows (exact, over the
+    # field of rational functions of the symbols)
+    rank = exact_matrix.rank(driven, None, exact_matrix.SYMPY) if driven.shape[1] else 0
+    return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+
+
+def _controlled_and_length(analysis, names: Sequence[str], controlled, length):
+    """The controlled object motions (checked) and the exact positive length."""
     if isinstance(controlled, str):
         controlled = ()
     controlled = tuple(names if controlled is None else controlled)
@@ -272,25 +298,18 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     if ell.is_positive is not True:
         raise ManipulabilityError(f"length: expected a positive length (a number or a "
                                   f"parameter such as L), got {sp.sstr(ell)}")
-    if analysis.model.passive_joints:
-        c12, gram, c11 = _motor_parts(analysis)
-        parts = None
-    else:
-        c12, c11 = analysis.C12, analysis.C11
-        parts = (analysis.C22, analysis.C23)
-    if point is not None:
-        c12, c11 = (_at_point(analysis, c, point) for c in (c12, c11))
-    weight = sp.diag(*[sp.Integer(1) if n.startswith("v") else ell for n in names])
-    rows = [names.index(c) for c in controlled]
-    # all the arithmetic in one exact field of rational functions (DomainMatrix)
-    mats = [c12, c11, weight] + (list(parts) if parts else [gram])
-    dms = _in_one_field(mats)
+    return controlled, ell
+
+
+def _ellipsoid(dms: list[DomainMatrix], with_parts: bool, rows: list[int]):
+    """``(gram, driven, shape, det shape)`` from the matrices ``C12, C11, W`` and either
+    ``C22, C23`` or the motor Gram matrix, all over one field (DomainMatrix)."""
     field = dms[0].domain
     # over a field of rational functions, the products, inverses and the determinant
     # are done with python-flint (SymPy's own gcds take minutes on these entries)
     flint_field = bool(getattr(field, "is_FractionField", False))
     c12, c11, weight, *rest = [FieldMatrix.of(d) for d in dms] if flint_field else dms
-    if parts:
+    if with_parts:
         c22, c23 = rest
         gram = c22.transpose() * c22
         if c23.shape[1]:
@@ -319,13 +338,7 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
         shape_dm = DomainMatrix.zeros((len(rows), len(rows)), field)
     if det is None and len(rows):
         det = shape_dm.det()
-    form = sp.ImmutableMatrix(gram.to_Matrix())
-    shape = sp.ImmutableMatrix(shape_dm.to_Matrix())
-    index = sp.factor(field.to_sympy(det)) if len(rows) else sp.Integer(1)
-    # A is positive definite, so E has the rank of the driven rows (exact, over the
-    # field of rational functions of the symbols)
-    rank = exact_matrix.rank(driven, None, exact_matrix.SYMPY) if driven.shape[1] else 0
-    return Manipulability(controlled, ell, form, shape, index, rank, _degeneracy(index))
+    return gram, driven, shape_dm, det
 
 
 def _rows_of(m, rows: list[int]):

@@ -30,6 +30,7 @@ from math import lcm
 import flint
 from sympy.polys.matrices import DomainMatrix
 
+from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_fraction
 
@@ -39,7 +40,17 @@ __all__ = ["FieldMatrix"]
 class FieldMatrix:
     """A matrix of :class:`RatFunc` entries of one flint context, read from a
     ``DomainMatrix`` over a SymPy fraction field ``field`` (whose symbols are the
-    context's variables)."""
+    context's variables).
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from sympy.polys.matrices import DomainMatrix
+    >>> t = sp.Symbol("t")
+    >>> m = FieldMatrix.of(DomainMatrix.from_Matrix(sp.Matrix([[1 / (1 + t)]])).to_field())
+    >>> m.inv().to_domain_matrix().to_Matrix()
+    Matrix([[t + 1]])
+    """
 
     def __init__(self, rows: list[list[RatFunc]], shape: tuple[int, int], field, ctx):
         self.rows, self.shape, self.field, self.ctx = rows, shape, field, ctx
@@ -84,7 +95,8 @@ class FieldMatrix:
                           for r, s in zip(self.rows, other.rows, strict=True)])
 
     def inv(self) -> FieldMatrix:
-        """The inverse (Gauss-Jordan; every entry kept in lowest terms)."""
+        """The inverse (Gauss-Jordan; every entry kept in lowest terms); a
+        :class:`~coopkin_sym.errors.NumberError` when there is none."""
         n = self.shape[0]
         one, zero = RatFunc.poly(self.ctx.constant(1)), self._zero()
         work = [list(row) + [one if i == j else zero for j in range(n)]
@@ -92,7 +104,7 @@ class FieldMatrix:
         for c in range(n):
             p = next((r for r in range(c, n) if not work[r][c].is_zero()), None)
             if p is None:
-                raise ZeroDivisionError("the matrix is not invertible")
+                raise NumberError("matrix", "not invertible (its determinant is 0)")
             work[c], work[p] = work[p], work[c]
             pivot = work[c][c]
             work[c] = [e / pivot for e in work[c]]
