@@ -20,7 +20,7 @@ from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.conditions import short_condition
-from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts
 from coopkin_sym.present.report.blocks import Document, Figure, Paragraph, Table, _h, _t
 from coopkin_sym.present.report.completeness import _certificate_blocks, _completeness_line
 from coopkin_sym.present.report.components import _component_blocks, _components_table
@@ -123,12 +123,12 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
     out.append(_h(2, "Dropped factors (no real points)", "dropped"))
     out.extend(_list_or(remark_texts(locus.dropped), "None.", True))
     out.append(_h(2, "Not explored", "unexplored"))
-    out.extend(_list_or(remark_texts(locus.unexplored),
+    out.extend(_list_or(grouped_remark_texts(locus.unexplored),
                         "Nothing: the search finished within its bounds."))
     out.extend(_certificate_blocks(locus))
     if locus.notes:
         out.append(_h(2, "Notes", "notes"))
-        out.extend(_list_or(remark_texts(locus.notes), ""))
+        out.extend(_list_or(grouped_remark_texts(locus.notes), ""))
     return out
 
 

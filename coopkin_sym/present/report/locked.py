@@ -18,7 +18,7 @@ from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
 from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.conditions import condition_text
 from coopkin_sym.present.passive import PASSIVE_WORDS
-from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report.blocks import Paragraph, Table, _h, _t
 from coopkin_sym.present.report.formulas import _list_or
 from coopkin_sym.present.report.words import witness_text
@@ -85,5 +85,5 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
                                  f"{'it' if others == 1 else 'them'} under \"locked\").")]))
     if locked.unexplored:
         out.append(Paragraph([_t("Not explored in the locked system:")]))
-        out.extend(_list_or(remark_texts(locked.unexplored), ""))
+        out.extend(_list_or(grouped_remark_texts(locked.unexplored), ""))
     return out
