@@ -74,3 +74,57 @@ def test_the_json_keeps_every_remark():
     assert len(back.unexplored) == 73
     assert grouped_remark_texts(back.unexplored + back.unexplored[:1])[0] \
         == remark_texts([deeper(2)])[0] + " (2 times)"
+
+
+# --- named polynomials -----------------------------------------------------------------
+
+L1 = "3*t_q1**2*t_q2**2 + 8*t_q1*t_q2 + 3*t_q1**2 - 7*t_q2 + 1"
+L2 = "5*t_q1**3*t_q2 + 2*t_q1*t_q2**2 - 9*t_q1**2 + 4*t_q2**3 - 11"
+P1 = "3*t_q1**2*t_q2**2 + 3*t_q1**2 + 8*t_q1*t_q2 - 7*t_q2 + 1"   # L1 as written
+P2 = "5*t_q1**3*t_q2 - 9*t_q1**2 + 2*t_q1*t_q2**2 + 4*t_q2**3 - 11"
+
+
+def long_polynomials() -> Locus:
+    """L1 in #1 (its second equation) and #3 (its first), L2 in #2."""
+    nm3 = dict(GENERIC, Nm=3)
+    return Locus("planted", ["t_q1", "t_q2", "t_q3"], "", GENERIC, [
+        Component(["t_q3", L1], nm3, {"q1": "0"}, True, condition=f"q3 = 0, {L1} = 0"),
+        Component([L2], nm3, None, True),
+        Component([L1], nm3, None, True, condition=f"{L1} = 0")])
+
+
+def test_long_polynomials_are_named_once_across_the_report():
+    md = render_markdown(long_polynomials())
+    rows = [line for line in md.splitlines()
+            if line.startswith("| #") and " | where |" not in line]
+    assert [r.split(" | ")[1] for r in rows] == [
+        "`q3 = 0, P1(t_q1, t_q2) = 0`", "`P2(t_q1, t_q2) = 0`", "`P1(t_q1, t_q2) = 0`"]
+    # the details refer to the names; each polynomial is written once, in the appendix
+    assert "- **Equations:** `t_q3 = 0`, `P1(t_q1, t_q2) = 0`\n" in md
+    assert "- **Equations:** `P2(t_q1, t_q2) = 0`\n" in md
+    assert md.endswith("## Polynomials\n\nThe polynomials named in the tables and the "
+                       "components above, each written once.\n\n"
+                       f"- `P1 = {P1}`\n- `P2 = {P2}`\n")
+    assert md.count(P1) == 1 and md.count(P2) == 1
+    html = render_html(long_polynomials())
+    assert html.count(P1) == 1 and html.count(P2) == 1
+    assert (f'<h2 id="polynomials">Polynomials</h2>\n<p>The polynomials named in the '
+            f"tables and the components above, each written once.</p>\n<ul><li><code>P1 = "
+            f"{P1}</code></li><li><code>P2 = {P2}</code></li></ul>") in html
+    tex = render_latex(long_polynomials())
+    assert (r"\item $P_{1} = 3 t_{q1}^{2} t_{q2}^{2} + 3 t_{q1}^{2} + 8 t_{q1} t_{q2} "
+            r"- 7 t_{q2} + 1$") in tex
+    assert r"$q_{3} = 0$, $P_{1}(t_{q1}, t_{q2}) = 0$" in tex
+    assert "P_{3}" not in tex
+
+
+def test_short_polynomials_are_not_named():
+    md = render_markdown(many_remarks())
+    assert "## Polynomials" not in md and "P1" not in md
+
+
+def test_the_witness_column_wraps_and_wide_tables_scroll():
+    html = render_html(long_polynomials())
+    assert "table.components td code { word-break: break-all; }" in html
+    assert "div.table { overflow-x: auto; max-width: 100%; }" in html
+    assert html.count('<div class="table"><table') == html.count("<table")

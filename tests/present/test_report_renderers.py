@@ -58,9 +58,10 @@ EXPECTED = {
                       "<code>t_q1 + 1</code> <code>t_q2 = 0</code> <code>q1=pi/2</code> "
                       "<code>q1 = q2</code></p>"],
         "bullets": ["<ul><li>one</li><li><strong>two</strong></li></ul>"],
-        "table": ['<details><summary>the table</summary><table class="numbers"><thead><tr>'
-                  '<th>#</th><th class="c">value</th></tr></thead><tbody><tr><td>#1</td>'
-                  '<td class="c"><strong>3</strong></td></tr></tbody></table></details>'],
+        "table": ['<details><summary>the table</summary><div class="table"><table '
+                  'class="numbers"><thead><tr><th>#</th><th class="c">value</th></tr>'
+                  '</thead><tbody><tr><td>#1</td><td class="c"><strong>3</strong></td>'
+                  '</tr></tbody></table></div></details>'],
         "figure": ['<figure><img alt="Components in the (q1, q2) plane" src="r_q1_q2.png">'
                    "<figcaption>Components in the (q1, q2) plane</figcaption></figure>"],
     },
