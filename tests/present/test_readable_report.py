@@ -6,12 +6,26 @@ from __future__ import annotations
 
 import json
 
-from coopkin_sym.analysis.locus.remarks import Remark
-from coopkin_sym.analysis.locus.types import Component, Locus
-from coopkin_sym.present.display import locus_html, pretty_text
-from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts
-from coopkin_sym.present.report import render_html, render_latex, render_markdown
-from coopkin_sym.present.report.to_json import locus_from_json, render_json
+import matplotlib
+import pytest
+
+matplotlib.use("Agg")
+from matplotlib.colors import to_hex  # noqa: E402
+
+from coopkin_sym import load  # noqa: E402
+from coopkin_sym.analysis.locus.remarks import Remark  # noqa: E402
+from coopkin_sym.analysis.locus.types import Component, Locus  # noqa: E402
+from coopkin_sym.errors import PlotError  # noqa: E402
+from coopkin_sym.present.display import locus_html, pretty_text  # noqa: E402
+from coopkin_sym.present.locus_plot import (  # noqa: E402
+    default_pairs,
+    free_joints,
+    plot_components,
+)
+from coopkin_sym.present.plot_legend import LEGEND_ENTRIES  # noqa: E402
+from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts  # noqa: E402
+from coopkin_sym.present.report import render_html, render_latex, render_markdown  # noqa: E402
+from coopkin_sym.present.report.to_json import locus_from_json, render_json  # noqa: E402
 
 GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
 # the 72 components whose deeper drops were not explored: #3, #5, ..., #145
@@ -128,3 +142,48 @@ def test_the_witness_column_wraps_and_wide_tables_scroll():
     assert "table.components td code { word-break: break-all; }" in html
     assert "div.table { overflow-x: auto; max-width: 100%; }" in html
     assert html.count('<div class="table"><table') == html.count("<table")
+
+
+# --- plots ------------------------------------------------------------------------------
+
+
+def test_plots_take_only_free_joints_as_axes():
+    system = load("planar-two-fingers")
+    locus = system.locus(free=["q3", "q4"])
+    assert locus.fixed == "q1=0,q2=0,L=1" and free_joints(locus, system) == ["q3", "q4"]
+    # its components involve q4 alone: the other axis is the other free joint, not q1
+    assert default_pairs(locus, system) == [("q3", "q4")]
+    assert default_pairs(system.locus(free=["q2", "q3"]), system) == [("q2", "q3")]
+    with pytest.raises(PlotError, match=r"^pair \(q1, q4\): joint 'q1' is fixed in this "
+                                        r"locus, not an axis \(free joints: q3, q4\)$"):
+        plot_components(locus, system, ("q1", "q4"))
+    fig = plot_components(locus, system, ("q3", "q4"))
+    assert (fig.axes[0].get_xlabel(), fig.axes[0].get_ylabel()) == ("q3 (rad)", "q4 (rad)")
+
+
+def planted_lines(n: int) -> Locus:
+    """``n`` components q1 = constant (vertical lines in the (q1, q2) plane)."""
+    nm3 = dict(GENERIC, Nm=3)
+    return Locus("planted", ["t_q1", "t_q2"], "", GENERIC,
+                 [Component([f"{n + 1}*t_q1 - {2 * k - n}"], nm3, None, True)
+                  for k in range(n)])
+
+
+def _styles(lines) -> list[tuple[str, str]]:
+    return [(to_hex(h.get_color()), h.get_marker()) for h in lines]
+
+
+@pytest.mark.parametrize("n", [30, 102])
+def test_every_legend_entry_and_every_component_has_its_own_style(n):
+    fig = plot_components(planted_lines(n), None, ("q1", "q2"))
+    entries = [h for h in fig.legends[0].legend_handles if h.get_label().startswith("#")]
+    assert len(entries) == min(n, LEGEND_ENTRIES)
+    assert len(set(_styles(entries))) == len(entries)
+    marks = [a for a in fig.axes[0].get_lines() if (a.get_gid() or "").startswith("marks:")]
+    assert sorted(int(a.get_gid()[6:]) for a in marks) == list(range(1, n + 1))
+    assert len(set(_styles(marks))) == n
+    # the legend says what it left out
+    labels = [h.get_label() for h in fig.legends[0].legend_handles]
+    assert labels[-1] == "exact witness point"
+    assert (labels[-2] == f"\u2026 and {n - LEGEND_ENTRIES} more (see the report)") \
+        == (n > LEGEND_ENTRIES)
