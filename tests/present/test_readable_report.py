@@ -132,6 +132,18 @@ def test_long_polynomials_are_named_once_across_the_report():
     assert "P_{3}" not in tex
 
 
+def test_the_locked_system_names_polynomials_as_the_report_does():
+    locked_generic = dict(GENERIC, Nm=1, Nc=1)
+    locked = Locus("planted", ["t_q2"], "", locked_generic,
+                   [Component([L1], dict(locked_generic, Nm=2, Nc=2), None, True)],
+                   locked_joints=["q1"])
+    locus = Locus("planted", ["t_q1", "t_q2"], "", GENERIC,
+                  [Component([L1], dict(GENERIC, Nm=3), None, True)], locked=locked)
+    md = render_markdown(locus)
+    assert "| L1 | `P1(t_q1, t_q2) = 0` | **2** |" in md
+    assert md.count(P1) == 1 and md.endswith(f"- `P1 = {P1}`\n")
+
+
 def test_short_polynomials_are_not_named():
     md = render_markdown(many_remarks())
     assert "## Polynomials" not in md and "P1" not in md

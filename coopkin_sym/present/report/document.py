@@ -124,7 +124,7 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
         out.append(Paragraph([_t(classes_text(locus.generic) + ".")]))
     out += _all_component_blocks(locus, names)
     if locus.locked is not None:
-        out.extend(_passive_blocks(locus, locus.locked))
+        out.extend(_passive_blocks(locus, locus.locked, names))
     out.extend(_float_summary_blocks(locus, names))
     if with_plots:
         out += _plot_blocks(locus, plots, max_pictures)
