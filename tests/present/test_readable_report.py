@@ -16,6 +16,7 @@ from coopkin_sym import load  # noqa: E402
 from coopkin_sym.analysis.locus.remarks import Remark  # noqa: E402
 from coopkin_sym.analysis.locus.types import Component, Locus  # noqa: E402
 from coopkin_sym.errors import PlotError  # noqa: E402
+from coopkin_sym.present.certificate import CERTIFIED, CertificateRead  # noqa: E402
 from coopkin_sym.present.display import locus_html, pretty_text  # noqa: E402
 from coopkin_sym.present.locus_plot import (  # noqa: E402
     default_pairs,
@@ -199,3 +200,12 @@ def test_every_legend_entry_and_every_component_has_its_own_style(n):
     assert labels[-1] == "exact witness point"
     assert (labels[-2] == f"\u2026 and {n - LEGEND_ENTRIES} more (see the report)") \
         == (n > LEGEND_ENTRIES)
+
+
+def test_the_certificate_notes_are_said_once_with_their_count():
+    note = "Only depths up to 2 were tested."
+    locus = many_remarks()
+    locus.certificate = CertificateRead("planted", True, summary=CERTIFIED, tests=3,
+                                        backends={"flint": 3}, notes=[note] * 5)
+    md = render_markdown(locus)
+    assert md.count(note) == 1 and f"- {note} (5 times)\n" in md
