@@ -283,8 +283,10 @@ def remark_texts(remarks: Sequence[Remark | str]) -> list[str]:
 #: at pi): remarks that differ only in these are said once, with what varies listed.
 VARYING = ("component", "condition", "polynomial", "equations", "joints")
 
-#: Most places listed in a grouped remark (the JSON report lists every remark).
+#: Most places listed in a grouped remark, and the longest place shown whole (the
+#: JSON report lists every remark).
 MAX_LISTED = 12
+MAX_PLACE = 120
 
 # A grouped remark's sentence without the facts that vary.
 _GROUP_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
@@ -314,17 +316,18 @@ _GROUP_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
 
 def _place(facts: Mapping[str, Any]) -> str:
     """Where one remark of a group is: its component, else its polynomial, equations
-    or joints at pi."""
+    or joints at pi (cut at :data:`MAX_PLACE` characters)."""
     if facts.get("component") is not None:
         return f"#{facts['component'] + 1}"
     parts = []
     if facts.get("polynomial"):
         parts.append(f"{facts['polynomial']} = 0")
     if facts.get("equations"):
-        parts.append("; ".join(facts["equations"]))
+        parts.append(", ".join(facts["equations"]))
     if facts.get("joints"):
         parts.append(_at_pi(facts["joints"]))
-    return " inside ".join(parts) or "(no place)"
+    place = " inside ".join(parts) or "(no place)"
+    return place if len(place) <= MAX_PLACE else place[:MAX_PLACE - 4] + " ..."
 
 
 def _group_key(remark: Remark | str) -> tuple:

@@ -209,3 +209,13 @@ def test_the_certificate_notes_are_said_once_with_their_count():
                                         backends={"flint": 3}, notes=[note] * 5)
     md = render_markdown(locus)
     assert md.count(note) == 1 and f"- {note} (5 times)\n" in md
+
+
+def test_places_of_a_grouped_remark_are_told_apart_and_cut():
+    long = " + ".join(f"t_q1**{k}" for k in range(1, 40))
+    remarks = [Remark.of("enclosing_not_searched", equations=eqs,
+                         reason="no_parametrization", bound=None)
+               for eqs in (("t_q2", "t_q1 - 1"), ("t_q3",), (long,))]
+    assert grouped_remark_texts(remarks) == [
+        "deeper drops not searched (no rational parametrization; enclosing numbers "
+        "there), inside 3 places: t_q2, t_q1 - 1; t_q3; " + long[:116] + " ..."]
