@@ -58,7 +58,6 @@ from coopkin_sym.present.report.pictures import SYSTEM_PICTURE_DPI as SYSTEM_PIC
 from coopkin_sym.present.report.pictures import drawable_components as drawable_components
 from coopkin_sym.present.report.to_html import HtmlRenderer
 from coopkin_sym.present.report.to_json import locus_from_json, render_json
-from coopkin_sym.present.report.to_latex import LATEX_ROWS as LATEX_ROWS
 from coopkin_sym.present.report.to_latex import LatexRenderer
 from coopkin_sym.present.report.to_markdown import MarkdownRenderer
 from coopkin_sym.present.report.words import KIND_PLURALS as KIND_PLURALS
@@ -113,9 +112,9 @@ def render_html(locus: Locus, plots: Mapping[tuple[str, str], bytes] | None = No
 
 def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = None) -> str:
     """The report as a LaTeX appendix (``\\section*`` and ``tabular`` only: it
-    compiles with a plain ``article`` class; ``\\input`` it in a paper). ``plots``
-    maps joint pairs to PNG file names, listed in comments (``\\includegraphics``
-    needs graphicx).
+    compiles with a plain ``article`` class, and its tables break across pages;
+    ``\\input`` it in a paper). ``plots`` maps joint pairs to PNG file names, listed
+    in comments (``\\includegraphics`` needs graphicx).
 
     Example
     -------

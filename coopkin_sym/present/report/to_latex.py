@@ -37,9 +37,6 @@ from coopkin_sym.present.report.formulas import (
     _tex_escape,
 )
 
-# rows per LaTeX table: no bound since a table breaks between any two rows (kept for
-# callers that read it)
-LATEX_ROWS = None
 # the end of one row's tabular: the next one follows with no space between them
 _END_ROW = r"\end{tabular}\par\nointerlineskip"
 #: Widest column (em) whose width is taken from its entries; longer ones wrap.
