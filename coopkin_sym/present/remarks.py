@@ -339,8 +339,8 @@ def _group_key(remark: Remark | str) -> tuple:
 def _group_text(group: Sequence[Remark | str], max_listed: int) -> str:
     first = group[0]
     n = len(group)
-    if isinstance(first, str):
-        return f"{first} ({n} times)"
+    if isinstance(first, str) or all(r == first for r in group):
+        return f"{remark_text(first)} ({n} times)"
     facts = dict(first.facts)
     places = [_place(dict(r.facts)) for r in group]
     in_components = all(p.startswith("#") for p in places)
@@ -373,6 +373,8 @@ def grouped_remark_texts(remarks: Sequence[Remark | str],
     True
     >>> grouped_remark_texts(["read back", "read back"])
     ['read back (2 times)']
+    >>> grouped_remark_texts([Remark.of("pi_chart")] * 2)[0].endswith("chart. (2 times)")
+    True
     """
     groups: dict[tuple, list] = {}
     for r in remarks:
