@@ -356,11 +356,12 @@ def _group_text(group: Sequence[Remark | str], max_listed: int) -> str:
     return f"{words(facts)}, inside {n} {what}: {shown}"
 
 
-def grouped_remark_texts(remarks: Sequence[Remark | str],
-                         max_listed: int = MAX_LISTED) -> list[str]:
+def grouped_remark_texts(remarks: Sequence[Remark | str], max_listed: int = MAX_LISTED,
+                         names: Mapping[str, str] | None = None) -> list[str]:
     """The sentences of ``remarks`` with the remarks of one kind that differ only in
     where they are (:data:`VARYING`) said once: their count and their places (at most
-    ``max_listed``; the JSON report keeps every remark). Equal sentences read back
+    ``max_listed``; the JSON report keeps every remark); a polynomial by its name
+    when ``names`` maps its text to one (``P3``). Equal sentences read back
     from a report are said once with their count. In the order of first occurrence.
 
     Example
@@ -378,6 +379,20 @@ def grouped_remark_texts(remarks: Sequence[Remark | str],
     """
     groups: dict[tuple, list] = {}
     for r in remarks:
-        groups.setdefault(_group_key(r), []).append(r)
+        groups.setdefault(_group_key(r), []).append(_renamed(r, names or {}))
     return [remark_text(g[0]) if len(g) == 1 else _group_text(g, max_listed)
             for g in groups.values()]
+
+
+def _renamed(remark: Remark | str, names: Mapping[str, str]) -> Remark | str:
+    """``remark`` with its polynomials by their ``names`` where they have one."""
+    if isinstance(remark, str) or not names:
+        return remark
+    facts = []
+    for key, value in remark.facts:
+        if key == "polynomial" and isinstance(value, str):
+            value = names.get(value, value)
+        elif key == "equations":
+            value = tuple(names.get(e, e) for e in value)
+        facts.append((key, value))
+    return Remark(remark.kind, tuple(facts))

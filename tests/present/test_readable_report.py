@@ -219,3 +219,17 @@ def test_places_of_a_grouped_remark_are_told_apart_and_cut():
     assert grouped_remark_texts(remarks) == [
         "deeper drops not searched (no rational parametrization; enclosing numbers "
         "there), inside 3 places: t_q2, t_q1 - 1; t_q3; " + long[:116] + " ..."]
+
+
+def test_a_grouped_remark_names_the_polynomials_the_report_named():
+    locus = long_polynomials()
+    locus.unexplored = [Remark.of("time_depth", depth=2, equations=eqs)
+                        for eqs in (("t_q3", P1), (P2,), ("t_q1 - 1",))]
+    md = render_markdown(locus)
+    assert ("- depth 2: not explored, time bound reached, inside 3 places: t\\_q3, P1; P2; "
+            "t\\_q1 - 1\n") in md
+    assert md.count(P1) == 1
+    # a remark said alone names them too
+    locus.unexplored = [Remark.of("time_depth", depth=2, equations=("t_q3", P2))]
+    assert "- depth 2 inside t\\_q3; P2: not explored, time bound reached\n" \
+        in render_markdown(locus)

@@ -134,7 +134,8 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
     out.append(_h(2, "Dropped factors (no real points)", "dropped"))
     out.extend(_list_or(remark_texts(locus.dropped), "None.", True))
     out.append(_h(2, "Not explored", "unexplored"))
-    out.extend(_list_or(grouped_remark_texts(locus.unexplored),
+    named = {p.text: label for label, p in names.named()}
+    out.extend(_list_or(grouped_remark_texts(locus.unexplored, names=named),
                         "Nothing: the search finished within its bounds."))
     out.extend(_certificate_blocks(locus))
     if locus.notes:
