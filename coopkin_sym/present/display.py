@@ -48,7 +48,7 @@ from coopkin_sym.model.model import Model
 from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.conditions import short_condition
-from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
 from coopkin_sym.present.report import _changes as changes_of
 from coopkin_sym.present.sentences import (
@@ -422,7 +422,7 @@ def locus_html(locus: Locus) -> str:
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
-        parts += ["<p>Not explored:</p>", _list(remark_texts(locus.unexplored))]
+        parts += ["<p>Not explored:</p>", _list(grouped_remark_texts(locus.unexplored))]
     return _div(parts)
 
 
@@ -446,7 +446,8 @@ def _locus_pretty(locus: Locus) -> str:
                                  f"{_changes_text(c, locus.generic, '->')}", 160))
     if len(locus.components) > _MAX_LINES:
         lines.append(f"  ... and {len(locus.components) - _MAX_LINES} more components")
-    lines += ["  not explored: " + clip(t, 160) for t in remark_texts(locus.unexplored)]
+    lines += ["  not explored: " + clip(t, 160)
+              for t in grouped_remark_texts(locus.unexplored)]
     return "\n".join(lines)
 
 

@@ -37,7 +37,6 @@ from __future__ import annotations
 import functools
 import io
 import math
-import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -49,13 +48,24 @@ from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import PlotError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
-from coopkin_sym.present.conditions import condition_text
+from coopkin_sym.present.conditions import PolynomialNames, report_names, short_condition
+from coopkin_sym.present.plot_legend import (
+    LABEL_LINES,
+    LABEL_WIDTH,
+    OVERFLOW_STYLE,
+    TITLE_WIDTH,
+    _height,
+    _legend,
+    _wrapped,
+    style,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["PlotError", "components_on", "default_pairs", "plot_components", "plot_png"]
+__all__ = ["PlotError", "components_on", "default_pairs", "free_joints", "plot_components",
+           "plot_png"]
 
 #: Grid points per axis for the zero contours.
 GRID = 721
@@ -63,10 +73,7 @@ GRID = 721
 PRISMATIC_RANGE = (-2.0, 2.0)  # float-ok: plotting range
 #: Margin drawn beyond q = -pi and q = pi (radians).
 MARGIN = 0.2  # float-ok: plotting range
-COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:brown",
-          "tab:pink", "tab:olive", "tab:cyan", "tab:gray")
 INFINITY = "oo"  # a revolute joint at q = pi: t = tan(q/2) is infinite
-
 
 
 @functools.cache
@@ -171,13 +178,31 @@ def components_on(locus: Locus, system: Any, pair: Sequence[str]) -> list[int]:
     [0]
     """
     kinds = _kinds(locus, system)
-    _check_pair(kinds, pair)
+    _check_pair(kinds, pair, locus)
     names = _names(locus, kinds)
     return [k for k, c in enumerate(locus.components)
             if c.real and set(_joints_in(c, kinds, names)) & set(pair)]
 
 
-def _check_pair(kinds: _Kinds, pair: Sequence[str]) -> None:
+def _free_joints(locus: Locus, kinds: _Kinds) -> list[str]:
+    free = set(locus.variables)
+    return [j for j in kinds.joints if free.intersection(kinds.variables(j))]
+
+
+def free_joints(locus: Locus, system: Any) -> list[str]:
+    """The joints free in ``locus`` (a variable of theirs is one of its variables), in
+    the system's order: the only ones a plot takes as axes.
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.locus.types import Locus
+    >>> free_joints(Locus("demo", ["t_q2", "t_q3", "L"], "q1=0", {}), None)
+    ['q2', 'q3']
+    """
+    return _free_joints(locus, _kinds(locus, system))
+
+
+def _check_pair(kinds: _Kinds, pair: Sequence[str], locus: Locus | None = None) -> None:
     if len(pair) != 2:
         raise PlotError(f"pair: expected two joints, got {list(pair)!r}")
     for j in pair:
@@ -186,11 +211,17 @@ def _check_pair(kinds: _Kinds, pair: Sequence[str]) -> None:
             raise PlotError(f"pair: unknown joint {j!r} (joints: {known})")
     if pair[0] == pair[1]:
         raise PlotError(f"pair: the two joints must differ, got {pair[0]!r} twice")
+    free = _free_joints(locus, kinds) if locus is not None else list(kinds.joints)
+    for j in pair:
+        if j not in free:
+            raise PlotError(f"pair ({pair[0]}, {pair[1]}): joint {j!r} is fixed in this "
+                            f"locus, not an axis (free joints: {', '.join(free) or 'none'})")
 
 
 def default_pairs(locus: Locus, system: Any, limit: int = 6) -> list[tuple[str, str]]:
-    """The joint pairs worth plotting: those that appear together in the equations of
-    a real component (most often first), then pairs for joints that appear alone.
+    """The pairs of free joints worth plotting (:func:`free_joints`; a fixed joint is
+    never an axis): those that appear together in the equations of a real component
+    (most often first), then pairs for joints that appear alone.
 
     Example
     -------
@@ -201,13 +232,14 @@ def default_pairs(locus: Locus, system: Any, limit: int = 6) -> list[tuple[str, 
     """
     kinds = _kinds(locus, system)
     names = _names(locus, kinds)
-    order = list(kinds.joints)
+    order = _free_joints(locus, kinds)
     counts: dict[tuple[str, str], int] = {}
     alone: list[str] = []
     for c in locus.components:
         if not c.real:
             continue
-        joints = sorted(_joints_in(c, kinds, names), key=order.index)
+        joints = sorted((j for j in _joints_in(c, kinds, names) if j in order),
+                        key=order.index)
         for a in range(len(joints)):
             for b in range(a + 1, len(joints)):
                 key = (joints[a], joints[b])
@@ -461,23 +493,10 @@ def _ring_size(placed: dict, marks: list) -> float:  # float-ok: marker sizes
     return max(17.0 - 5.0 * count, 6.0)  # float-ok
 
 
-#: Characters per line of a legend entry, and lines per entry at most.
-LABEL_WIDTH = 64
-LABEL_LINES = 3
-#: Characters per title line.
-TITLE_WIDTH = 78
-
-
-def _wrapped(text: str, width: int, lines: int | None = None) -> str:
-    """``text`` broken into lines of at most ``width`` characters (``lines`` of them at
-    most, the last one ending in an ellipsis when text is left out)."""
-    out = textwrap.wrap(text, width, max_lines=lines, placeholder=" \u2026",
-                        break_on_hyphens=False)
-    return "\n".join(out)
-
-
-def _label(k: int, c: Component, width: int = LABEL_WIDTH) -> str:
-    """The legend entry of component ``k`` (from 0): its number and condition, wrapped.
+def _label(k: int, c: Component, width: int = LABEL_WIDTH,
+           names: PolynomialNames | None = None) -> str:
+    """The legend entry of component ``k`` (from 0): its number and condition (long
+    polynomials by their ``names`` in the report), wrapped.
 
     Example
     -------
@@ -485,7 +504,7 @@ def _label(k: int, c: Component, width: int = LABEL_WIDTH) -> str:
     >>> _label(0, c)
     '#1: q1 = 0'
     """
-    return _wrapped(f"#{k + 1}: {condition_text(c)}", width, LABEL_LINES)
+    return _wrapped(f"#{k + 1}: {short_condition(c, names)}", width, LABEL_LINES)
 
 
 def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
@@ -542,7 +561,7 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     """
     Figure, FigureCanvasAgg, Line2D = _mpl()
     kinds = _kinds(locus, system)
-    _check_pair(kinds, pair)
+    _check_pair(kinds, pair, locus)
     names = _names(locus, kinds)
     own = ax is None
     if own:
@@ -557,12 +576,13 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     grid_a = np.linspace(lo_a, hi_a, GRID)  # float-ok
     grid_b = np.linspace(lo_b, hi_b, GRID)  # float-ok
     A, B = np.meshgrid(grid_a, grid_b)  # float-ok
-    plane = _Plane(ax, locus, kinds, names, tuple(pair), rev, A, B, Line2D)
+    plane = _Plane(ax, locus, kinds, names, tuple(pair), rev, A, B, Line2D,
+                   report_names(locus.components))
     for n, k in enumerate(components_on(locus, system, pair)):
         _draw_component(plane, n, k)
     rows = 0.0  # float-ok: lines of the legend
-    if plane.handles:
-        rows = _legend(fig, ax, plane.handles, Line2D, own)
+    if plane.handles or plane.unlisted:
+        rows = _legend(fig, ax, plane.handles, Line2D, own, plane.unlisted)
     else:
         ax.text(0.5, 0.5, "no real component involves these joints", ha="center",  # float-ok
                 va="center", transform=ax.transAxes, color="0.4")
@@ -590,7 +610,9 @@ class _Plane:
     A: Any
     B: Any
     Line2D: Any
+    polynomials: PolynomialNames = field(default_factory=PolynomialNames)
     handles: list = field(default_factory=list)
+    unlisted: int = 0
     placed: dict[tuple[float, float], int] = field(default_factory=dict)  # float-ok
     notes: set[str] = field(default_factory=set)
     has_others: bool = False
@@ -602,7 +624,9 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
     ax, kinds, names, pair, rev, Line2D = (plane.ax, plane.kinds, plane.names, plane.pair,
                                            plane.rev, plane.Line2D)
     c = plane.locus.components[k]
-    color = COLORS[n % len(COLORS)]
+    color, marker = style(n)
+    listed = (color, marker) != OVERFLOW_STYLE
+    plane.unlisted += not listed
     gid = f"component:{k + 1}"
     used = _joints_in(c, kinds, names)
     axes = []
@@ -613,7 +637,8 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
     plane.notes.update(chosen)
     plane.has_others = plane.has_others or any(kinds.joint_of(v)[0] for v in values)
     drawn = _in_plane(c, values, axes[0], axes[1], names)
-    label = _label(k, c) + (" (the whole plane)" if drawn.whole else "")
+    label = _label(k, c, names=plane.polynomials) + (" (the whole plane)" if drawn.whole
+                                                     else "")
     marks = list(drawn.points)
     drawn_curve = False
     if drawn.curve is not None:
@@ -623,7 +648,11 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
                             linewidths=2.0)  # float-ok
             cs.set_gid(gid)
             drawn_curve = True
-            plane.handles.append(Line2D([], [], color=color, lw=2.0, label=label))  # float-ok
+            _mark_curve(ax, cs, color, marker, f"marks:{k + 1}")
+            if listed:
+                plane.handles.append(Line2D([], [], color=color, lw=2.0,  # float-ok
+                                            marker=marker, markeredgecolor="black",
+                                            label=label))
     where = _witness_xy(c, pair, kinds)
     if not drawn_curve and not marks and where is not None:
         marks = [where]   # the witness is the only point we can place
@@ -632,18 +661,32 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
         # points of several components at one place: concentric discs
         size = _ring_size(plane.placed, marks)
         xs, ys = zip(*marks, strict=True) if marks else ((), ())
-        ax.plot(xs, ys, linestyle="none", marker="o", markersize=size, color=color,
+        ax.plot(xs, ys, linestyle="none", marker=marker, markersize=size, color=color,
                 markeredgecolor="black", gid=gid, zorder=3 + n / 100)  # float-ok
-        plane.handles.append(Line2D([], [], linestyle="none", marker="o", markersize=11,
-                                    color=color, markeredgecolor="black", label=label))
+        if listed:
+            plane.handles.append(Line2D([], [], linestyle="none", marker=marker,
+                                        markersize=11, color=color, markeredgecolor="black",
+                                        label=label))
     elif marks:
         xs, ys = zip(*marks, strict=True)
-        ax.plot(xs, ys, linestyle="none", marker="o", markersize=7, color=color,
+        ax.plot(xs, ys, linestyle="none", marker=marker, markersize=7, color=color,
                 markeredgecolor="black", gid=f"points:{k + 1}", zorder=3)
     if where is not None:
         ax.plot([where[0]], [where[1]], linestyle="none", marker="*", markersize=10,
                 color="white", markeredgecolor="black", gid=f"witness:{k + 1}",
                 zorder=4)
+
+
+def _mark_curve(ax: Axes, contour: Any, color: str, marker: str, gid: str) -> None:
+    """The component's marker at a few places along its drawn curve (its legend entry
+    shows the same colour and marker)."""
+    points = [p.vertices for p in contour.get_paths() if len(p.vertices)]
+    if not points:
+        return
+    xy = np.concatenate(points)  # float-ok: plotting
+    at = np.linspace(0, len(xy) - 1, min(len(xy), 6)).astype(int)  # float-ok
+    ax.plot(xy[at, 0], xy[at, 1], linestyle="none", marker=marker, markersize=6,
+            color=color, markeredgecolor="black", gid=gid, zorder=3)  # float-ok
 
 
 def _finish_axes(ax: Axes, pair: Sequence[str], rev: tuple[bool, bool],
@@ -671,52 +714,6 @@ def _finish_axes(ax: Axes, pair: Sequence[str], rev: tuple[bool, bool],
 
 #: Width of a plot (inches); its height grows with the title and the legend.
 WIDTH = 7.0  # float-ok: inches
-#: Legend entries listed at most (every component is drawn; the rest are counted).
-LEGEND_ENTRIES = 24
-
-
-def _legend(fig, ax, handles: list, Line2D, own: bool) -> float:  # noqa: N803 - a class  # float-ok
-    """The legend below the axes, outside them: a figure legend that constrained
-    layout makes room for (on a figure of our own), else below the given axes. Long
-    lists are cut at :data:`LEGEND_ENTRIES` and the rest counted; more than eight
-    entries go in two narrower columns. Returns its height in lines of text."""
-    left = len(handles) - LEGEND_ENTRIES
-    if left > 0:
-        handles = handles[:LEGEND_ENTRIES]
-        handles.append(Line2D([], [], linestyle="none",
-                              label=f"\u2026 and {left} more (see the report)"))
-    handles.append(Line2D([], [], linestyle="none", marker="*", markersize=10,
-                          color="white", markeredgecolor="black",
-                          label="exact witness point"))
-    ncol = 1 if len(handles) <= 9 else 2
-    if ncol == 2:
-        for h in handles:
-            h.set_label(_wrapped(h.get_label().replace("\n", " "), LABEL_WIDTH // 2 + 4,
-                                 LABEL_LINES))
-    options = {"handles": handles, "ncol": ncol, "fontsize": 8, "frameon": False}
-    if own:
-        fig.legend(loc="outside lower center", **options)
-    else:
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), **options)  # float-ok
-    per = [h.get_label().count("\n") + 1 for h in handles]
-    # matplotlib fills the columns of a legend one after the other
-    tall = -(-len(per) // ncol)
-    columns = [per[i:i + tall] for i in range(0, len(per), tall)]
-    return max(sum(c) + 0.5 * len(c) for c in columns)  # float-ok: lines and gaps
-
-
-def _height(title: str, rows: float) -> float:  # float-ok: inches
-    """A figure height that keeps the axes about 5.5 inches tall under ``title``
-    and above a legend of ``rows`` lines (a line of 8-point text is about 0.15 inch).
-
-    Example
-    -------
-    >>> round(_height("one line", 0), 2)
-    6.59
-    """
-    return 6.4 + 0.19 * (title.count("\n") + 1) + 0.15 * rows  # float-ok: inches
-
-
 def _title(locus: Locus, pair: Sequence[str], notes: list[str], others: bool) -> str:
     lines = [f"{locus.system}: singular configurations in the ({pair[0]}, {pair[1]}) plane"]
     said = []

@@ -282,3 +282,122 @@ def remark_texts(remarks: Sequence[Remark | str]) -> list[str]:
     'read back'
     """
     return [remark_text(r) for r in remarks]
+
+
+#: The facts that locate a remark (which component, polynomial, equations or joints
+#: at pi): remarks that differ only in these are said once, with what varies listed.
+VARYING = ("component", "condition", "polynomial", "equations", "joints")
+
+#: Most places listed in a grouped remark, and the longest place shown whole (the
+#: JSON report lists every remark).
+MAX_LISTED = 12
+MAX_PLACE = 120
+
+# A grouped remark's sentence without the facts that vary.
+_GROUP_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
+    "deeper_not_explored": lambda f: f"deeper drops not explored ({_reason(f)})",
+    "time_depth": lambda f: f"depth {f['depth']}: not explored, time bound reached",
+    "time_component": lambda f: (f"components of depth {f['depth']} not decided, time "
+                                 "bound reached"),
+    "time_pi_set": lambda f: "sets of joints at pi not searched, time bound reached",
+    "outside_parametrization": lambda f: ("outside the parametrization of the enclosing "
+                                          "component"),
+    "enclosing_not_searched": lambda f: (f"deeper drops not searched ({_reason(f)}; "
+                                         "enclosing numbers there)"),
+    "too_many_variables": lambda f: (f"deeper drops not searched ({_NO_PARAMETRIZATION}, "
+                                     f"and {f['variables']} variables)"),
+    "divisors_only": lambda f: (
+        "only where a divisor of the rows vanishes was searched (drops cut out by minors "
+        "alone not searched: a family with no rational parametrization)"),
+    "common_root_not_searched": lambda f: (
+        f"{f['variable']} a common root of the minors (enclosing numbers there): deeper "
+        f"drops not searched ({_NO_PARAMETRIZATION})"),
+    "pi_deeper_not_explored": lambda f: f"deeper drops not explored (max depth {f['bound']})",
+    "pi_set_not_searched": lambda f: (
+        f"{'deeper ' if f['deeper'] else ''}drops not searched (sets of joints at pi are "
+        f"searched inside up to {f['bound']} at once: pi_size)"),
+}
+
+
+def _place(facts: Mapping[str, Any]) -> str:
+    """Where one remark of a group is: its component, else its polynomial, equations
+    or joints at pi (cut at :data:`MAX_PLACE` characters)."""
+    if facts.get("component") is not None:
+        return f"#{facts['component'] + 1}"
+    parts = []
+    if facts.get("polynomial"):
+        parts.append(f"{facts['polynomial']} = 0")
+    if facts.get("equations"):
+        parts.append(", ".join(facts["equations"]))
+    if facts.get("joints"):
+        parts.append(_at_pi(facts["joints"]))
+    place = " inside ".join(parts) or "(no place)"
+    return place if len(place) <= MAX_PLACE else place[:MAX_PLACE - 4] + " ..."
+
+
+def _group_key(remark: Remark | str) -> tuple:
+    if isinstance(remark, str):
+        return ("", remark)
+    return (remark.kind, tuple((k, v) for k, v in remark.facts if k not in VARYING))
+
+
+def _group_text(group: Sequence[Remark | str], max_listed: int) -> str:
+    first = group[0]
+    n = len(group)
+    if isinstance(first, str) or all(r == first for r in group):
+        return f"{remark_text(first)} ({n} times)"
+    facts = dict(first.facts)
+    places = [_place(dict(r.facts)) for r in group]
+    in_components = all(p.startswith("#") for p in places)
+    what = "components" if in_components else "places"
+    shown = ", ".join(places[:max_listed]) if in_components else "; ".join(places[:max_listed])
+    if n > max_listed:
+        shown += f", ... ({n - max_listed} more, all listed in the JSON report)"
+    words = _GROUP_WORDS.get(first.kind)
+    if words is None:
+        return f"{remark_text(first)}; the same in {n - 1} more {what}: " + ", ".join(
+            places[1:max_listed]) + (f", ... ({n - max_listed} more, all listed in the "
+                                     "JSON report)" if n > max_listed else "")
+    return f"{words(facts)}, inside {n} {what}: {shown}"
+
+
+def grouped_remark_texts(remarks: Sequence[Remark | str], max_listed: int = MAX_LISTED,
+                         names: Mapping[str, str] | None = None) -> list[str]:
+    """The sentences of ``remarks`` with the remarks of one kind that differ only in
+    where they are (:data:`VARYING`) said once: their count and their places (at most
+    ``max_listed``; the JSON report keeps every remark); a polynomial by its name
+    when ``names`` maps its text to one (``P3``). Equal sentences read back
+    from a report are said once with their count. In the order of first occurrence.
+
+    Example
+    -------
+    >>> same = [Remark.of("deeper_not_explored", component=k, condition="q1 = 0",
+    ...                   reason="max_depth", bound=2) for k in (2, 4, 6)]
+    >>> grouped_remark_texts(same + [Remark.of("pi_chart")])[0]
+    'deeper drops not explored (max depth 2), inside 3 components: #3, #5, #7'
+    >>> grouped_remark_texts(same[:1]) == remark_texts(same[:1])
+    True
+    >>> grouped_remark_texts(["read back", "read back"])
+    ['read back (2 times)']
+    >>> grouped_remark_texts([Remark.of("pi_chart")] * 2)[0].endswith("chart. (2 times)")
+    True
+    """
+    groups: dict[tuple, list] = {}
+    for r in remarks:
+        groups.setdefault(_group_key(r), []).append(_renamed(r, names or {}))
+    return [remark_text(g[0]) if len(g) == 1 else _group_text(g, max_listed)
+            for g in groups.values()]
+
+
+def _renamed(remark: Remark | str, names: Mapping[str, str]) -> Remark | str:
+    """``remark`` with its polynomials by their ``names`` where they have one."""
+    if isinstance(remark, str) or not names:
+        return remark
+    facts = []
+    for key, value in remark.facts:
+        if key == "polynomial" and isinstance(value, str):
+            value = names.get(value, value)
+        elif key == "equations":
+            value = tuple(names.get(e, e) for e in value)
+        facts.append((key, value))
+    return Remark(remark.kind, tuple(facts))

@@ -287,6 +287,39 @@ def test_latex_compiles_with_a_plain_article(tmp_path, case1):
         assert (tmp_path / f"doc_{name}.pdf").read_bytes()[:5] == b"%PDF-"
 
 
+def _pdflatex(tmp_path, name: str) -> subprocess.CompletedProcess:
+    (tmp_path / f"doc_{name}.tex").write_text(
+        "\\documentclass{article}\n\\begin{document}\n\\input{" + name
+        + ".tex}\n\\end{document}\n")
+    return subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                           f"doc_{name}.tex"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
+                    reason="pdflatex or pdftotext (poppler-utils) not installed")
+def test_latex_tables_lose_no_row_across_pages(tmp_path):
+    # the five-bar report: its tables run over several pages (one tabular per page
+    # lost every row past the foot of the page: L12 to L38 of the locked system)
+    done = CliRunner().invoke(app, ["locus", "five-bar", "-o", str(tmp_path / "r.tex")])
+    assert done.exit_code == 0, done.output
+    tex = (tmp_path / "r.tex").read_text()
+    rows = re.findall(r"^(?:\\raggedright )?(L\d+|\\#\d+)(?: \(in L\d+\))? &", tex,
+                      flags=re.MULTILINE)
+    labels = [r.replace("\\#", "#") for r in rows]
+    assert {"#1", "#17", "L1", "L24", "L38", "L44"} <= set(labels)
+    compiled = _pdflatex(tmp_path, "r")
+    assert compiled.returncode == 0, compiled.stdout[-2000:]
+    text = subprocess.run(["pdftotext", "doc_r.pdf", "-"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120, check=True).stdout
+    # every row of every table is in the PDF (the components' rows are #1..#17, the
+    # locked system's L1..: pdftotext writes each cell on its own line)
+    words = set(text.split())
+    assert [x for x in labels if x not in words] == []
+    assert int(re.search(r"Output written on doc_r.pdf \((\d+) pages",
+                         compiled.stdout).group(1)) > 10
+
+
 # --- JSON ------------------------------------------------------------------------------
 
 

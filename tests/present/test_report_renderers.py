@@ -58,9 +58,10 @@ EXPECTED = {
                       "<code>t_q1 + 1</code> <code>t_q2 = 0</code> <code>q1=pi/2</code> "
                       "<code>q1 = q2</code></p>"],
         "bullets": ["<ul><li>one</li><li><strong>two</strong></li></ul>"],
-        "table": ['<details><summary>the table</summary><table class="numbers"><thead><tr>'
-                  '<th>#</th><th class="c">value</th></tr></thead><tbody><tr><td>#1</td>'
-                  '<td class="c"><strong>3</strong></td></tr></tbody></table></details>'],
+        "table": ['<details><summary>the table</summary><div class="table"><table '
+                  'class="numbers"><thead><tr><th>#</th><th class="c">value</th></tr>'
+                  '</thead><tbody><tr><td>#1</td><td class="c"><strong>3</strong></td>'
+                  '</tr></tbody></table></div></details>'],
         "figure": ['<figure><img alt="Components in the (q1, q2) plane" src="r_q1_q2.png">'
                    "<figcaption>Components in the (q1, q2) plane</figcaption></figure>"],
     },
@@ -70,11 +71,15 @@ EXPECTED = {
                       r"$t_{q2} = 0$ $q_{1} = \frac{\pi}{2}$ $q_{1} = q_{2}$", ""],
         "bullets": [r"\begin{itemize}", r"\item one", r"\item \textbf{two}",
                     r"\end{itemize}"],
-        "table": [r"\begin{center}\footnotesize\setlength{\tabcolsep}{2pt}",
-                  r"\begin{tabular}{|p{1cm}|c|}", r"\hline",
+        # one tabular per row (a page breaks between rows), columns of fixed widths
+        "table": [r"\begin{center}\footnotesize\setlength{\tabcolsep}{2pt}"
+                  r"\setlength{\parskip}{0pt}",
+                  r"\begin{tabular}{|p{1cm}|p{3.7em}|}", r"\hline",
                   r"\textbf{\#} & \textbf{value} \tabularnewline \hline",
+                  r"\end{tabular}\par\nointerlineskip\nobreak",
+                  r"\begin{tabular}{|p{1cm}|p{3.7em}|}",
                   r"\raggedright \#1 & \textbf{3} \tabularnewline \hline",
-                  r"\end{tabular}", r"\end{center}"],
+                  r"\end{tabular}\par\nointerlineskip\penalty0", r"\end{center}"],
         "figure": [r"% \includegraphics[width=0.8\textwidth]{r_q1_q2.png}  "
                    r"% Components in the (q1, q2) plane"],
     },

@@ -71,11 +71,22 @@ def test_locus_json_has_no_plots_and_no_notes(tmp_path):
 
 
 def test_locus_with_plots_has_no_notes(tmp_path):
-    result = runner.invoke(app, ["locus", "paper-case1-hard", "--at", "q1=pi/2,L=1",
+    result = runner.invoke(app, ["locus", "planar-two-fingers", "--free", "q3,q4",
                                  "--max-depth", "0", "-o", str(tmp_path / "r.md")])
     assert result.exit_code == 0, result.output
     assert notes(result.stderr) == []
     assert len(list(tmp_path.glob("r_*.png"))) == 3     # a plot, the system at 2 components
+
+
+def test_a_locus_with_one_free_joint_is_not_plotted_on_a_fixed_one(tmp_path):
+    # q1 is fixed: the components are points of q2 alone, and q1 is no axis
+    result = runner.invoke(app, ["locus", "paper-case1-hard", "--at", "q1=pi/2,L=1",
+                                 "--max-depth", "0", "-o", str(tmp_path / "r.md")])
+    assert result.exit_code == 0, result.output
+    assert notes(result.stderr) == [
+        "coopkin: note: no plot of the components: a plot takes two free joints as its "
+        "axes, and the free joints are q2 (a fixed joint is never an axis)"]
+    assert len(list(tmp_path.glob("r_*.png"))) == 2     # the system at 2 components
 
 
 def test_write_report_warns_for_what_it_leaves_out(tmp_path):

@@ -42,7 +42,7 @@ from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.errors import ReportError, SkippedForTime
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.present.files import check_output_path, write_files
-from coopkin_sym.present.locus_plot import PlotError, default_pairs, plot_png
+from coopkin_sym.present.locus_plot import PlotError, default_pairs, free_joints, plot_png
 from coopkin_sym.present.report.blocks import Renderer, render
 from coopkin_sym.present.report.completeness import SHOWN_FAILURES as SHOWN_FAILURES
 from coopkin_sym.present.report.document import build_document
@@ -58,7 +58,6 @@ from coopkin_sym.present.report.pictures import SYSTEM_PICTURE_DPI as SYSTEM_PIC
 from coopkin_sym.present.report.pictures import drawable_components as drawable_components
 from coopkin_sym.present.report.to_html import HtmlRenderer
 from coopkin_sym.present.report.to_json import locus_from_json, render_json
-from coopkin_sym.present.report.to_latex import LATEX_ROWS as LATEX_ROWS
 from coopkin_sym.present.report.to_latex import LatexRenderer
 from coopkin_sym.present.report.to_markdown import MarkdownRenderer
 from coopkin_sym.present.report.words import KIND_PLURALS as KIND_PLURALS
@@ -113,9 +112,9 @@ def render_html(locus: Locus, plots: Mapping[tuple[str, str], bytes] | None = No
 
 def render_latex(locus: Locus, plots: Mapping[tuple[str, str], str] | None = None) -> str:
     """The report as a LaTeX appendix (``\\section*`` and ``tabular`` only: it
-    compiles with a plain ``article`` class; ``\\input`` it in a paper). ``plots``
-    maps joint pairs to PNG file names, listed in comments (``\\includegraphics``
-    needs graphicx).
+    compiles with a plain ``article`` class, and its tables break across pages;
+    ``\\input`` it in a paper). ``plots`` maps joint pairs to PNG file names, listed
+    in comments (``\\includegraphics`` needs graphicx).
 
     Example
     -------
@@ -176,12 +175,16 @@ def parse_pairs(pairs: Sequence[str | Sequence[str]] | None, system: Any = None
     return out
 
 
-def _no_pairs(locus: Locus) -> str:
+def _no_pairs(locus: Locus, system: Any = None) -> str:
     """Why no pair of joints is plotted by default."""
     if not locus.components:
         return "the locus has no component"
     if not any(c.real for c in locus.components):
         return "no component has real points"
+    free = free_joints(locus, system)
+    if len(free) < 2:
+        return (f"a plot takes two free joints as its axes, and the free joints are "
+                f"{', '.join(free) or 'none'} (a fixed joint is never an axis)")
     return "no real component involves a joint"
 
 
@@ -198,7 +201,7 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
     try:
         chosen = pairs if pairs is not None else default_pairs(locus, system)
         if not chosen:
-            _skipped(f"no plot of the components: {_no_pairs(locus)}")
+            _skipped(f"no plot of the components: {_no_pairs(locus, system)}")
         pngs = {}
         clock = _PictureClock(until)
         for k, p in enumerate(chosen):

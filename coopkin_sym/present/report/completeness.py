@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.present.certificate import certificate_json, completeness_text
+from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report.blocks import Bullets, Paragraph, _h, _t
 from coopkin_sym.present.report.formulas import _list_or
 
@@ -71,5 +72,5 @@ def _certificate_blocks(locus: Locus) -> list:
                                     if more > 0 else "") + "):")]))
         out.append(Bullets(shown))
     if cert.get("notes"):
-        out.extend(_list_or(cert["notes"], ""))
+        out.extend(_list_or(grouped_remark_texts(cert["notes"]), ""))
     return out

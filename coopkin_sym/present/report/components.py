@@ -19,7 +19,12 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.exact.angles import joint_of
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.classes import class_changes_text
-from coopkin_sym.present.conditions import condition_text, short_condition
+from coopkin_sym.present.conditions import (
+    PolynomialNames,
+    condition_text,
+    is_long,
+    short_condition,
+)
 from coopkin_sym.present.finite import finite_summary
 from coopkin_sym.present.formula import latex as _latex
 from coopkin_sym.present.remarks import remark_text
@@ -89,13 +94,14 @@ def _algebraic_witness_cell(w: Mapping, equations: Sequence[NamedPolynomial] = (
     return [_t("\u2248 "), ("at", witness_text(approx))]
 
 
-def _components_table(locus: Locus) -> Table:
+def _components_table(locus: Locus, names: PolynomialNames | None = None) -> Table:
+    """The table of the components (long polynomials by their ``names``)."""
     rows = []
     for k, c in enumerate(locus.components):
         name = _component_name(k)
         if c.parent is not None:
             name += f" (in #{c.parent + 1})"
-        where = [("cond", short_condition(c))]
+        where = [("cond", short_condition(c, names))]
         if not c.real:
             where.append(_t(" (real points: undecided)"))
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
@@ -111,12 +117,17 @@ def _components_table(locus: Locus) -> Table:
                  latex_skip=(2,))
 
 
-def _equation_parts(equations: Sequence[NamedPolynomial]) -> list[Span]:
+def _equation_parts(equations: Sequence[NamedPolynomial],
+                    names: PolynomialNames | None = None) -> list[Span]:
+    """The equations; with ``names``, a long one by its name (written out in the
+    appendix)."""
     parts: list[Span] = []
     for i, e in enumerate(equations):
         if i:
             parts.append(_t(", "))
-        if len(e.text) > MAX_EQUATION:
+        if names is not None and is_long(e):
+            parts.append(("code", f"{names.name(e)}({', '.join(sorted(e.variables))}) = 0"))
+        elif len(e.text) > MAX_EQUATION:
             parts.append(("code", e.text[:MAX_EQUATION] + " ..."))
             parts.append(_t(f" ({len(e.text)} characters; all of it in the JSON report) = 0"))
         else:
@@ -124,16 +135,19 @@ def _equation_parts(equations: Sequence[NamedPolynomial]) -> list[Span]:
     return parts
 
 
-def _component_blocks(locus: Locus, k: int, c: Component) -> list:
+def _component_blocks(locus: Locus, k: int, c: Component,
+                      names: PolynomialNames | None = None) -> list:
+    """One component's details (long polynomials by their ``names``)."""
     name = f"Component {_component_name(k)}: "
     out: list = [Heading(3, [_t(name), ("cond" if c.condition else "text",
-                                        short_condition(c))], f"component-{k + 1}")]
+                                        short_condition(c, names))], f"component-{k + 1}")]
     items: list[list[Span]] = []
-    items.append([("strong", "Equations:"), _t(" "), *_equation_parts(c.equations)])
+    items.append([("strong", "Equations:"), _t(" "), *_equation_parts(c.equations, names)])
     if c.condition:
-        items.append([("strong", "In angles:"), _t(" "), ("cond", condition_text(c))])
+        items.append([("strong", "In angles:"), _t(" "), ("cond", condition_text(c, names))])
     if c.outside:
-        items.append([("strong", "Except where:"), _t(" "), *_equation_parts(c.outside),
+        items.append([("strong", "Except where:"), _t(" "),
+                      *_equation_parts(c.outside, names),
                       _t(" (denominators of its parametrization; those points are "
                          "searched apart)")])
     kind = KIND_WORDS.get(c.kind, c.kind)

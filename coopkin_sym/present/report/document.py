@@ -19,12 +19,22 @@ from typing import Any
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.present.classes import classes_text
-from coopkin_sym.present.conditions import short_condition
-from coopkin_sym.present.remarks import remark_texts
-from coopkin_sym.present.report.blocks import Document, Figure, Paragraph, Table, _h, _t
+from coopkin_sym.present.conditions import PolynomialNames, report_names, short_condition
+from coopkin_sym.present.formula import Formula
+from coopkin_sym.present.formula import latex as _latex
+from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts
+from coopkin_sym.present.report.blocks import (
+    Bullets,
+    Document,
+    Figure,
+    Paragraph,
+    Table,
+    _h,
+    _t,
+)
 from coopkin_sym.present.report.completeness import _certificate_blocks, _completeness_line
 from coopkin_sym.present.report.components import _component_blocks, _components_table
-from coopkin_sym.present.report.formulas import _list_or
+from coopkin_sym.present.report.formulas import MAX_EQUATION, _list_or
 from coopkin_sym.present.report.locked import _passive_blocks
 from coopkin_sym.present.report.pictures import (
     MAX_SYSTEM_PICTURES,
@@ -73,7 +83,7 @@ def _generic_table(locus: Locus) -> Table:
                  css="numbers")
 
 
-def _float_summary_blocks(locus: Locus) -> list:
+def _float_summary_blocks(locus: Locus, names: PolynomialNames | None = None) -> list:
     s = locus.float_summary()
     total = sum(len(c.float_checks) for c in locus.components)
     out: list = [_h(2, "Float rank tests", "float-tests")]
@@ -94,7 +104,7 @@ def _float_summary_blocks(locus: Locus) -> list:
         if not c.float_checks:
             continue
         v = [_verdict(f, locus.generic) for f in c.float_checks]
-        rows.append([[_t(_component_name(k))], [("cond", short_condition(c))],
+        rows.append([[_t(_component_name(k))], [("cond", short_condition(c, names))],
                      [_t(str(len(v)))], [_t(str(v.count("agree")))],
                      [_t(str(v.count("missed")))], [_t(str(v.count("false")))]])
     out.append(Table(["#", "where", "tests", "agree", "missed singular",
@@ -106,15 +116,16 @@ def _float_summary_blocks(locus: Locus) -> list:
 def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
             with_plots: bool, max_pictures: int = MAX_SYSTEM_PICTURES) -> list:
     out: list = [_h(1, f"Singularity locus of {locus.system}")]
+    names = report_names(locus.components)
     out += _summary_blocks(locus)
     out.append(_h(2, "Generic numbers", "generic"))
     out.append(_generic_table(locus))
     if _has_classes(locus.generic):
         out.append(Paragraph([_t(classes_text(locus.generic) + ".")]))
-    out += _all_component_blocks(locus)
+    out += _all_component_blocks(locus, names)
     if locus.locked is not None:
-        out.extend(_passive_blocks(locus, locus.locked))
-    out.extend(_float_summary_blocks(locus))
+        out.extend(_passive_blocks(locus, locus.locked, names))
+    out.extend(_float_summary_blocks(locus, names))
     if with_plots:
         out += _plot_blocks(locus, plots, max_pictures)
     out.append(_h(2, "Parameter conditions", "parameters"))
@@ -123,13 +134,32 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
     out.append(_h(2, "Dropped factors (no real points)", "dropped"))
     out.extend(_list_or(remark_texts(locus.dropped), "None.", True))
     out.append(_h(2, "Not explored", "unexplored"))
-    out.extend(_list_or(remark_texts(locus.unexplored),
+    named = {p.text: label for label, p in names.named()}
+    out.extend(_list_or(grouped_remark_texts(locus.unexplored, names=named),
                         "Nothing: the search finished within its bounds."))
     out.extend(_certificate_blocks(locus))
     if locus.notes:
         out.append(_h(2, "Notes", "notes"))
-        out.extend(_list_or(remark_texts(locus.notes), ""))
+        out.extend(_list_or(grouped_remark_texts(locus.notes), ""))
+    out.extend(_polynomial_blocks(names))
     return out
+
+
+def _polynomial_blocks(names: PolynomialNames) -> list:
+    """The appendix: each long polynomial of the report written once, by its name."""
+    if not len(names):
+        return []
+    items = []
+    for label, p in names.named():
+        if len(p.text) > MAX_EQUATION:
+            items.append([("code", f"{label} = {p.text[:MAX_EQUATION]} ..."),
+                          _t(f" ({len(p.text)} characters; all of it in the JSON report)")])
+        else:
+            items.append([("eq", Formula(f"{label} = {p.text}",
+                                         f"P_{{{label[1:]}}} = {_latex(p.to_sympy())}"))])
+    return [_h(2, "Polynomials", "polynomials"),
+            Paragraph([_t("The polynomials named in the tables and the components above, "
+                          "each written once.")]), Bullets(items)]
 
 
 def _summary_blocks(locus: Locus) -> list:
@@ -170,16 +200,17 @@ def _summary_blocks(locus: Locus) -> list:
     return out
 
 
-def _all_component_blocks(locus: Locus) -> list:
-    """The components: their table, then each one."""
+def _all_component_blocks(locus: Locus, names: PolynomialNames | None = None) -> list:
+    """The components: their table, then each one (long polynomials by their
+    ``names``)."""
     out: list = [_h(2, "Components", "components")]
     if locus.components:
         out.append(Paragraph([_t("Numbers that differ from the generic ones are in bold. "
                                  "Witnesses are exact points, in the syntax of "),
                               ("code", "coopkin analyze --at"), _t(".")]))
-        out.append(_components_table(locus))
+        out.append(_components_table(locus, names))
         for k, c in enumerate(locus.components):
-            out.extend(_component_blocks(locus, k, c))
+            out.extend(_component_blocks(locus, k, c, names))
     else:
         out.append(Paragraph([_t("None: the numbers are the generic ones at every "
                                  "configuration explored.")]))

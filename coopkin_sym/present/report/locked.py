@@ -16,9 +16,9 @@ from collections.abc import Mapping
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, passive_numbers
 from coopkin_sym.present.certificate import completeness_text
-from coopkin_sym.present.conditions import condition_text
+from coopkin_sym.present.conditions import PolynomialNames, condition_text
 from coopkin_sym.present.passive import PASSIVE_WORDS
-from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report.blocks import Paragraph, Table, _h, _t
 from coopkin_sym.present.report.formulas import _list_or
 from coopkin_sym.present.report.words import witness_text
@@ -35,9 +35,11 @@ def _locked_numbers(locus: Locus, locked: Locus, numbers: Mapping[str, int]
     return p.as_dict()
 
 
-def _passive_blocks(locus: Locus, locked: Locus) -> list:
+def _passive_blocks(locus: Locus, locked: Locus, names: PolynomialNames | None = None
+                    ) -> list:
     """Where the passive-joint numbers change: the generic ones and the components of
-    the locus of the system with its motors held still."""
+    the locus of the system with its motors held still (long polynomials by their
+    ``names`` in the report)."""
     out: list = [_h(2, "Passive joints", "passive")]
     motors = ", ".join(locked.locked_joints) or "none"
     out.append(Paragraph([_t("Motors (actuated joints): "), ("code", motors),
@@ -70,7 +72,7 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
         witness = [("at", witness_text(c.witness))] if c.witness else [_t("none")]
         if not c.real:
             witness.append(_t(" (real points: undecided)"))
-        table.append([[_t(name)], [("cond", condition_text(c))], *cells, witness])
+        table.append([[_t(name)], [("cond", condition_text(c, names))], *cells, witness])
     others = len(locked.components) - len(table)
     if table:
         out.append(Table(["#", "where", "Nuo", "Npi", "witness (--at)"], table, "llccl",
@@ -85,5 +87,5 @@ def _passive_blocks(locus: Locus, locked: Locus) -> list:
                                  f"{'it' if others == 1 else 'them'} under \"locked\").")]))
     if locked.unexplored:
         out.append(Paragraph([_t("Not explored in the locked system:")]))
-        out.extend(_list_or(remark_texts(locked.unexplored), ""))
+        out.extend(_list_or(grouped_remark_texts(locked.unexplored), ""))
     return out

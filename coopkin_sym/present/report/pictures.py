@@ -21,7 +21,7 @@ from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError, OutputSkipped, SkippedForTime
 from coopkin_sym.model.configuration import Point
-from coopkin_sym.present.conditions import short_condition
+from coopkin_sym.present.conditions import report_names, short_condition
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
 
 # key of a picture of the system at a witness among the plots
@@ -80,7 +80,8 @@ def _counts_words(kind: str, here: Mapping, generic: Mapping) -> str:
 def _system_caption(locus: Locus, k: int, comp: Component, at: Mapping[str, str],
                     exact: bool, motion: tuple[str, int] | None) -> str:
     where = ", ".join(f"{n}={v}" for n, v in at.items())
-    head = f"Component {k + 1} ({short_condition(comp)}): the system at "
+    named = short_condition(comp, report_names(locus.components))
+    head = f"Component {k + 1} ({named}): the system at "
     head += f"its witness {where}" if exact else f"its algebraic witness {where}"
     if motion is None:
         changed = ", ".join(f"{n} {a} \u2192 {b}" for n, (a, b) in comp.changes.items())

@@ -55,6 +55,8 @@ details { margin: .3em 0 1em; }
 details summary { cursor: pointer; color: #0969da; }
 table.checks code { word-break: break-all; font-size: .85em; }
 table.components code, li code { overflow-wrap: anywhere; }
+table.components td code { word-break: break-all; }
+div.table { overflow-x: auto; max-width: 100%; }
 .nums { white-space: nowrap; }
 """
 
@@ -121,8 +123,9 @@ class HtmlRenderer:
         rows = "".join("<tr>" + "".join(f"<td{c}>{self.inline(cell)}</td>"
                                         for cell, c in zip(row, cls, strict=True))
                        + "</tr>" for row in block.rows)
-        table = (f"<table{_css(block.css)}><thead><tr>{head}</tr></thead>"
-                 f"<tbody>{rows}</tbody></table>")
+        # in a box that scrolls sideways: a wide table is never cut off
+        table = (f'<div class="table"><table{_css(block.css)}><thead><tr>{head}</tr>'
+                 f"</thead><tbody>{rows}</tbody></table></div>")
         if block.details:
             table = (f"<details><summary>{html.escape(block.details)}</summary>{table}"
                      f"</details>")

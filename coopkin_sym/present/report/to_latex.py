@@ -1,5 +1,6 @@
 """The LaTeX renderer of a report: an appendix to ``\\input`` in a paper
-(``\\section*`` and ``tabular`` only: it compiles with a plain ``article`` class).
+(``\\section*`` and ``tabular`` only: it compiles with a plain ``article`` class, and
+its tables break across pages between rows).
 Polynomials, points and conditions are written as mathematics (SymPy's LaTeX).
 
 Example
@@ -26,6 +27,7 @@ from coopkin_sym.present.report.blocks import (
     Paragraph,
     Span,
     Table,
+    text_of,
 )
 from coopkin_sym.present.report.formulas import (
     MAX_EQUATION,
@@ -35,8 +37,18 @@ from coopkin_sym.present.report.formulas import (
     _tex_escape,
 )
 
-# rows per LaTeX tabular
-LATEX_ROWS = 30
+# the end of one row's tabular: the next one follows with no space between them
+_END_ROW = r"\end{tabular}\par\nointerlineskip"
+#: Widest column (em) whose width is taken from its entries; longer ones wrap.
+LATEX_MAX_WIDTH = 14
+
+
+def _em(block: Table, column: int) -> str:
+    """A width for a column with none given: its longest entry (header included) at
+    about half an em per character of footnote size, at most LATEX_MAX_WIDTH em."""
+    longest = max([len(block.header[column]) + 1,
+                   *(len(text_of(row[column])) for row in block.rows)])
+    return f"{min(max(longest * 0.55 + 0.4, 1.2), LATEX_MAX_WIDTH):.1f}em"  # float-ok: width
 _HEADS = {1: "section*", 2: "subsection*", 3: "subsubsection*"}
 _TOP = Template("% Singularity-locus report of $subject (coopkin locus); \\input this "
                 "file in a document.")
@@ -116,27 +128,27 @@ class LatexRenderer:
                 r"\end{itemize}"]
 
     def table(self, block: Table) -> list[str]:
-        """A table as ``tabular`` environments of at most LATEX_ROWS rows each (a
-        ``tabular`` does not break across pages)."""
+        """A table as one ``tabular`` per row, stacked with no space between them: a
+        page may break between any two rows (one ``tabular`` never breaks: rows past
+        the foot of the page were lost), with no package needed (``longtable``). Every
+        column has a fixed width (given, else from its longest entry, at most
+        :data:`LATEX_MAX_WIDTH` em), so the rules of the rows line up; no break right
+        after the header."""
         keep = [i for i in range(len(block.header)) if i not in block.latex_skip]
         widths = block.latex_widths or {}
-        spec = "|" + "|".join(f"p{{{widths[i]}}}" if i in widths else block.align[i]
-                              for i in keep) + "|"
+        spec = "|" + "|".join(f"p{{{widths.get(i) or _em(block, i)}}}" for i in keep) + "|"
         head = " & ".join(r"\textbf{" + _tex_escape(block.header[i]) + "}" for i in keep)
-        out: list[str] = []
-        rows = block.rows
-        chunks = [rows[k:k + LATEX_ROWS] for k in range(0, len(rows), LATEX_ROWS)] or [[]]
-        for chunk in chunks:
-            out.append(r"\begin{center}\footnotesize\setlength{\tabcolsep}{2pt}")
+        out: list[str] = [r"\begin{center}\footnotesize\setlength{\tabcolsep}{2pt}"
+                          r"\setlength{\parskip}{0pt}",
+                          f"\\begin{{tabular}}{{{spec}}}", r"\hline",
+                          head + r" \tabularnewline \hline", _END_ROW + r"\nobreak"]
+        for row in block.rows:
+            cells = [(r"\raggedright " if i in widths else "") + self.inline(row[i])
+                     for i in keep]
             out.append(f"\\begin{{tabular}}{{{spec}}}")
-            out.append(r"\hline")
-            out.append(head + r" \tabularnewline \hline")
-            for row in chunk:
-                cells = [(r"\raggedright " if i in widths else "") + self.inline(row[i])
-                         for i in keep]
-                out.append(" & ".join(cells) + r" \tabularnewline \hline")
-            out.append(r"\end{tabular}")
-            out.append(r"\end{center}")
+            out.append(" & ".join(cells) + r" \tabularnewline \hline")
+            out.append(_END_ROW + r"\penalty0")
+        out.append(r"\end{center}")
         return out
 
     def figure(self, block: Figure) -> list[str]:
