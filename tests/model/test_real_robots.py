@@ -49,8 +49,8 @@ def test_two_pandas_have_the_numbers_of_two_redundant_arms_in_a_closed_chain():
 
 
 @pytest.mark.parametrize("at, numbers", [
-    # at home both arms stand straight up: joints 1, 3, 5 and 7 of each arm turn
-    # about one vertical line (two more self-motions per arm), the box loses a motion
+    # at home both arms stand straight up: joints 1, 3 and 5 of each arm turn about
+    # one vertical line (one more self-motion per arm), the box loses a motion
     ("", {"Nm": 9, "Nc": 5, "Ni": 0, "Nr": 4, "Ng": 6, "Nd": 2, "Nh": 1}),
     (PANDA_BENT, GENERIC),
     # joints 1 and 3 of the left arm in line (l2 = 0): the seventh joint makes up
@@ -108,6 +108,8 @@ def test_the_hand_at_exact_configurations_agrees_with_the_independent_analysis(
 @pytest.mark.parametrize("name, at", [("panda-two-arm-box", PANDA_BENT),
                                       ("allegro-hand-sphere", HAND_BENT)])
 def test_the_real_robots_are_drawn(name, at, tmp_path):
+    """The pictures (two arms reaching for the box between them; four curled
+    fingers) are written whole."""
     out = tmp_path / f"{name}.png"
     coopkin_sym.save_picture(coopkin_sym.load(name), out, at=at)
     assert out.stat().st_size > 10_000
@@ -170,3 +172,33 @@ def test_the_locus_of_the_index_finger_checked_at_its_witnesses():
         [{"Nm": (6, 7), "Nc": (3, 4), "Nh": (0, 1)}] * 3
         + [{"Nm": (6, 7), "Nr": (3, 4), "Nd": (3, 4), "Nh": (0, 1)}] * 2)
     _check_witnesses("allegro-hand-sphere", locus)
+
+
+
+def _readme_runs() -> list[list[str]]:
+    """The commands of the README's real-robot example, each with the lines shown."""
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    block = readme.split("## Real robots")[1].split("```console\n")[1].split("```")[0]
+    return [part.splitlines() for part in block.split("$ coopkin ")[1:]]
+
+
+def test_the_readme_shows_two_panda_commands():
+    assert [run[0] for run in _readme_runs()] == ["analyze panda-two-arm-box --generic",
+                                                 "analyze panda-two-arm-box"]
+
+
+@pytest.mark.parametrize("k", [pytest.param(0, marks=pytest.mark.slow),  # about 10 s
+                               1])
+def test_the_readme_shows_what_the_commands_print_for_the_pandas(k):
+    """The README's real-robot example: the command runs and prints the lines shown."""
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    command, *shown = _readme_runs()[k]
+    result = CliRunner().invoke(app, command.split())
+    assert result.exit_code == 0, result.output
+    assert shown and all(line in result.stdout.splitlines() for line in shown), (
+        command, shown)
