@@ -202,3 +202,64 @@ def test_the_readme_shows_what_the_commands_print_for_the_pandas(k):
     assert result.exit_code == 0, result.output
     assert shown and all(line in result.stdout.splitlines() for line in shown), (
         command, shown)
+
+
+def _robot_file(relative: str):
+    """A robot file of the optional ``example-robot-data`` package (the ``robots``
+    extra); the test is skipped without it."""
+    from importlib import metadata
+
+    try:
+        files = metadata.distribution("example-robot-data").files or []
+    except metadata.PackageNotFoundError:
+        pytest.skip("example-robot-data is not installed (pip install coopkin_sym[robots])")
+    found = [f for f in files if str(f).endswith(relative)]
+    if not found:
+        pytest.skip(f"example-robot-data has no {relative}")
+    return found[0].locate()
+
+
+#: the URDF Panda's joints for the DH model's
+_URDF_NAMES = {f"{side[0]}{k}": f"{side[0]}_panda_joint{k}" for side in ("left", "right")
+               for k in range(1, 8)}
+
+
+def _urdf_at(at: str) -> str:
+    out = []
+    for item in filter(None, at.split(",")):
+        name, value = item.split("=", 1)
+        out.append(f"{_URDF_NAMES[name]}={value}")
+    return ",".join(out)
+
+
+@pytest.mark.parametrize("at", [
+    "", PANDA_BENT,
+    "l1=2*atan(1/3),l2=2*atan(-1/2),l3=pi/2,l4=2*atan(-3),l5=2*atan(1/4),l6=pi,"
+    "r2=2*atan(1/5),r4=-pi/2,r6=2*atan(2)",
+    "l4=2*atan(-2),l6=2*atan(2),r2=2*atan(1/5),r4=2*atan(-2),r6=2*atan(2)",
+])
+def test_the_panda_urdf_of_example_robot_data_gives_the_dh_model(at, tmp_path):
+    """The Panda's URDF as example-robot-data ships it, read by ``urdf:`` up to its
+    flange (panda_link8) with the grasp point 0.1034 m beyond, gives exactly the
+    ``Q`` (and so every number) of the shipped DH model, its frames being Franka's."""
+    urdf = _robot_file("panda_description/urdf/panda.urdf")
+    path = tmp_path / "pandas.yaml"
+    path.write_text(f"""name: two Pandas from URDF
+arms:
+  - {{name: left, urdf: "{urdf}", tip: panda_link8, prefix: l_}}
+  - {{name: right, urdf: "{urdf}", tip: panda_link8, prefix: r_,
+     base: {{xyz: [1, 0, 0], rpy: [0, 0, pi]}}}}
+contacts:
+  - {{name: grip_left, link: left/panda_link8, frame: link, point: [0, 0, 0.1034],
+     model: complete}}
+  - {{name: grip_right, link: right/panda_link8, frame: link, point: [0, 0, 0.1034],
+     model: complete}}
+""")
+    from_urdf = coopkin_sym.load(str(path))
+    from_dh = coopkin_sym.load("panda-two-arm-box")
+    assert [j.name for j in from_urdf.model.joints] == list(_URDF_NAMES.values())
+    assert from_urdf.model.contacts == from_dh.model.contacts
+    ours, theirs = from_dh.analyze(at or None), from_urdf.analyze(_urdf_at(at) or None)
+    assert ours.Q == theirs.Q and ours.numbers == theirs.numbers
+    if not at:
+        assert from_urdf.analyze(generic=True).numbers.as_dict() == GENERIC
