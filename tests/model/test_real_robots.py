@@ -263,3 +263,41 @@ contacts:
     assert ours.Q == theirs.Q and ours.numbers == theirs.numbers
     if not at:
         assert from_urdf.analyze(generic=True).numbers.as_dict() == GENERIC
+
+
+#: the Allegro URDF's joints (joint_0.0 .. joint_15.0, made names) for the DH model's
+_HAND_NAMES = {f"{f[0]}{k}": f"{f[0]}_joint_{4 * i + k}_0"
+               for i, f in enumerate(("index", "middle", "ring", "thumb")) for k in range(4)}
+
+
+@pytest.mark.parametrize("at, numbers", [
+    ("", {"Nm": 12, "Nc": 1, "Ni": 0, "Nr": 11, "Ng": 10, "Nd": 11, "Nh": 6}),
+    (HAND_BENT, HAND_GENERIC),
+    (HAND_BENT.replace("i2=2*atan(1/3),i3=2*atan(1/3)", "i2=0,i3=0"),
+     {"Nm": 6, "Nc": 2, "Ni": 0, "Nr": 4, "Ng": 10, "Nd": 4, "Nh": 0}),
+])
+def test_the_allegro_urdf_of_example_robot_data_has_the_numbers_of_the_model(
+        at, numbers, tmp_path):
+    """The Allegro Hand's URDF as example-robot-data ships it (its 5 degree splay and
+    the thumb's mounting snapped within 1e-3 rad, where the shipped model takes
+    2*atan(1/23)), each finger read to its tip link, the soft contacts' normals on the
+    pads' side: the numbers of the shipped model, generic and at exact configurations."""
+    urdf = _robot_file("allegro_hand_description/urdf/allegro_right_hand.urdf")
+    arms = "".join(
+        f"  - {{name: {finger}, urdf: \"{urdf}\", tip: link_{tip}.0_tip, prefix: "
+        f"{finger[0]}_, snap: 1e-3}}\n"
+        for finger, tip in (("index", 3), ("middle", 7), ("ring", 11), ("thumb", 15)))
+    contacts = "".join(
+        f"  - {{name: tip_{finger}, link: {finger}/link_{tip}.0_tip, frame: link, "
+        f"point: [0, 0, 0], normal: [1, 0, 0], model: soft}}\n"
+        for finger, tip in (("index", 3), ("middle", 7), ("ring", 11), ("thumb", 15)))
+    path = tmp_path / "hand.yaml"
+    path.write_text(f"name: Allegro hand from URDF\narms:\n{arms}contacts:\n{contacts}")
+    hand = coopkin_sym.load(str(path))
+    assert [j.name for j in hand.model.joints] == list(_HAND_NAMES.values())
+    assert len(hand.model.snapped) == 4 and all(s.error < 1e-3 for s in hand.model.snapped)
+    names = dict(item.split("=", 1) for item in filter(None, at.split(",")))
+    ours = hand.analyze(",".join(f"{_HAND_NAMES[k]}={v}" for k, v in names.items())
+                        or None)
+    assert ours.numbers.as_dict() == numbers
+    assert hand.analyze(generic=True).numbers.as_dict() == HAND_GENERIC
