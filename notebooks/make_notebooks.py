@@ -1742,6 +1742,79 @@ NB06 = [
 ]
 
 
+NB07 = [
+    md("""
+    # Real robots: two Franka Panda arms holding a box, a four-finger hand
+
+    Two shipped examples are real robots at their published sizes, each arm a DH table
+    read exactly: `panda-two-arm-box` (Franka's modified DH table, 7 joints per arm,
+    each hand holding the box rigidly at its grasp point 0.2104 m beyond frame 7) and
+    `allegro-hand-sphere` (an Allegro-like hand: three fingers and a thumb of four
+    joints each, soft fingertips on a sphere).
+    """),
+    code("""
+    from coopkin_sym import load, sentences
+
+    cell = load("panda-two-arm-box")
+    bent = ("l2=2*atan(1/5),l4=2*atan(-2),l6=2*atan(2),l7=2*atan(2/5),"
+            "r2=2*atan(1/5),r4=2*atan(-2),r6=2*atan(2),r7=2*atan(2/5)")
+    generic, home, reach = (cell.analyze(generic=True), cell.analyze(), cell.analyze(bent))
+    for label, a in [("generic", generic), ("home", home), ("reaching", reach)]:
+        print(f"{label:9}", a.numbers.as_dict())
+    assert generic.numbers.as_dict() == reach.numbers.as_dict() == {
+        "Nm": 8, "Nc": 6, "Ni": 0, "Nr": 2, "Ng": 6, "Nd": 0, "Nh": 0}
+    assert home.numbers.as_dict() == {"Nm": 9, "Nc": 5, "Ni": 0, "Nr": 4, "Ng": 6,
+                                      "Nd": 2, "Nh": 1}
+    """),
+    md("""
+    Generically the box can move in every direction and each arm keeps one
+    self-motion (its seventh joint). At home each arm stands straight up with joints
+    1, 3 and 5 about one vertical line: each arm gains a self-motion and the box loses
+    a motion. The self-motions at home, in words:
+    """),
+    code("""
+    print([line for line in sentences(home) if line.startswith("Nr")][0])
+    cell.draw(bent, title="two Panda arms holding a box")
+    """),
+    md("""
+    ## Where the left arm's elbow and wrist are singular
+
+    A locus on a slice: every joint at an exact value but the left arm's `l4` (elbow)
+    and `l6` (wrist). Each component's witness is an exact point (here with quadratic
+    coordinates); the numbers there are those of the component.
+    """),
+    code("""
+    slice_ = ("l1=0,l2=2*atan(1/5),l3=0,l5=0,l7=2*atan(2/5),r1=0,r2=2*atan(1/5),r3=0,"
+              "r4=2*atan(-2),r5=0,r6=2*atan(2),r7=2*atan(2/5)")
+    locus = cell.locus(slice_, free=["l4", "l6"])
+    for c in locus.components:
+        print(c.kind, "|", c.condition.text, "|", c.changes)
+    assert all(c.witness_checked for c in locus.components)
+    assert any(c.kind == "hypersurface" and c.changes["Nc"] == (6, 5)
+               for c in locus.components)
+    """),
+    md("""
+    ## The four-finger hand
+
+    Each long finger has three parallel flexion joints: with its tip held on the
+    sphere, it can still roll the tip (a soft finger does not stop rolling), so the
+    hand has three self-motions and the sphere keeps three motions.
+    """),
+    code("""
+    hand = load("allegro-hand-sphere")
+    curled = ("i1=2*atan(1/2),i2=2*atan(1/3),i3=2*atan(1/3),m1=2*atan(1/2),"
+              "m2=2*atan(1/3),m3=2*atan(1/3),r1=2*atan(1/2),r2=2*atan(1/3),"
+              "r3=2*atan(1/3),t0=pi/2,t2=2*atan(1/3),t3=2*atan(1/3)")
+    for label, a in [("generic", hand.analyze(generic=True)), ("home", hand.analyze()),
+                     ("curled", hand.analyze(curled))]:
+        print(f"{label:8}", a.numbers.as_dict())
+    assert hand.analyze(curled).numbers.as_dict() == {"Nm": 6, "Nc": 3, "Ni": 0, "Nr": 3,
+                                                      "Ng": 10, "Nd": 3, "Nh": 0}
+    hand.draw(curled, title="an Allegro-like hand holding a sphere")
+    """),
+]
+
+
 NOTEBOOKS = {
     "01_two_one_link_arms.ipynb": NB01,
     "02_two_scara_robots.ipynb": NB02,
@@ -1749,6 +1822,7 @@ NOTEBOOKS = {
     "04_exact_vs_float.ipynb": NB04,
     "05_passive_joints_and_manipulability.ipynb": NB05,
     "06_finite_mobility.ipynb": NB06,
+    "07_real_robots.ipynb": NB07,
 }
 
 

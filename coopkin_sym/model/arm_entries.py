@@ -326,4 +326,14 @@ def _urdf_arm(arm: Any, path: str, parameters: dict[str, sp.Symbol], names: _Nam
         notes[0].append(Renamed(label, "link", given, name))
     links = tuple((link_safe.get(name, name), k, (sp.ImmutableMatrix(r), p))
                   for name, k, (r, p) in read.links)
-    return Arm(arm.name, tuple(joints), None, links)
+    sites = _sites(read, links, link_safe) if kind == "mjcf" else None
+    return Arm(arm.name, tuple(joints), None, links, sites)
+
+
+def _sites(read: Any, links: tuple, link_safe: Mapping[str, str]) -> tuple:
+    """The sites of an arm read from an MJCF file: name, moving joints up to the
+    site's body, position at home and the body's frame (base frame)."""
+    body_frames = {name: frame for name, _, frame in links}
+    return tuple((name, k, point, body_frames[link_safe.get(body, body)])
+                 for (name, k, point), body in zip(read.sites, read.site_bodies,
+                                                   strict=True))

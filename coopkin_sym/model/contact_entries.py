@@ -1,6 +1,7 @@
 """The contacts of a model file: each one's link (``ARM/K``, a URDF link by its name,
-or ``base``), point, normal, contact model (read from the registry,
-:mod:`coopkin_sym.model.contacts`) and frame, checked and read into a
+or ``base``) and point, or an MJCF site (``site: ARM/SITE``, which gives both),
+normal, contact model (read from the registry, :mod:`coopkin_sym.model.contacts`)
+and frame, checked and read into a
 :class:`~coopkin_sym.model.structure.Contact`; and what keeps a planar system in its
 plane.
 
@@ -177,6 +178,47 @@ def _contact_link(entry: Any, path: str, arm_joints: dict[str, tuple[int, int] |
                  on_failed_arm)
 
 
+def _site_link(entry: Any, path: str, arm_joints: dict[str, tuple[int, int] | None],
+               frames: Mapping[str, Arm], nameless_arm: bool, problems: list[str]
+               ) -> tuple[_Link, tuple, Frame] | None:
+    """The link, the point at home (base frame) and the body's frame of a contact
+    placed on an MJCF site (``site: ARM/SITE``); None when there is none (said in
+    ``problems``, unless the arm itself could not be read)."""
+    text = entry.site.strip()
+    match = re.fullmatch(r"([^/\s]+)\s*/\s*([^/\s]+)", text)
+    if entry.link is not None or entry.point is not None:
+        given = " and ".join(k for k in ("link", "point") if getattr(entry, k) is not None)
+        problems.append(f"{path}.site: a contact on a site takes its link and point from "
+                        f"the site; remove {given}")
+        return None
+    if match is None:
+        problems.append(f"{path}.site: expected ARM/SITE (a site of an arm read from an "
+                        f"MJCF file), got {brief(entry.site)}")
+        return None
+    arm_name, site_name = match.groups()
+    if arm_name not in arm_joints:
+        if not nameless_arm:
+            problems.append(f"{path}.site: unknown arm {brief(arm_name)} "
+                            f"(arms: {', '.join(arm_joints)})")
+        return None
+    if arm_joints[arm_name] is None or arm_name not in frames:
+        return None   # the arm's own entry says what is wrong
+    sites = frames[arm_name].sites
+    if sites is None:
+        problems.append(f"{path}.site: sites exist only on an arm read from an MJCF file "
+                        f"(mjcf:); arm {brief(arm_name)} is not")
+        return None
+    by_name = {name: (k, point, frame) for name, k, point, frame in sites}
+    if site_name not in by_name:
+        known = ", ".join(by_name) or "none"
+        problems.append(f"{path}.site: arm {brief(arm_name)} has no site "
+                        f"{brief(site_name)} on its chain (sites: {known})")
+        return None
+    k, point, frame = by_name[site_name]
+    arm_index = arm_joints[arm_name][0]  # type: ignore[index]
+    return _Link(arm_index, k, frame, arm_name, False), point, frame
+
+
 def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _Names,
              arm_joints: dict[str, tuple[int, int] | None],
              problems: list[str], frames: Mapping[str, Arm],
@@ -190,10 +232,23 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
         return None
     before = len(problems)
     names.add(entry.name, f"{path}.name", symbol=False)
-    where = _contact_link(entry, path, arm_joints, frames, nameless_arm, problems)
-    if where is None:
-        return None
-    point = _vector(entry.point, f"{path}.point", parameters, problems, rational=False)
+    site_frame = None
+    if entry.site is not None:
+        on_site = _site_link(entry, path, arm_joints, frames, nameless_arm, problems)
+        if on_site is None:
+            return None
+        where, point, site_frame = on_site
+    else:
+        for key in ("link", "point"):
+            if getattr(entry, key) is None:
+                problems.append(f"{path}: missing key '{key}'")
+        if entry.link is None:
+            return None
+        where = _contact_link(entry, path, arm_joints, frames, nameless_arm, problems)
+        if where is None or entry.point is None:
+            return None
+        point = _vector(entry.point, f"{path}.point", parameters, problems,
+                        rational=False)
     kind = contact_kind(entry.model)
     model = kind.name if kind is not None else entry.model
     if kind is None:
@@ -214,7 +269,9 @@ def _contact(raw: object, path: str, parameters: dict[str, sp.Symbol], names: _N
                         f"{brief(entry.frame)}")
     if len(problems) > before or bad or point is None or where.on_failed_arm:
         return None
-    if entry.frame == "link":
+    if site_frame is not None and entry.frame == "link":
+        normal = in_base(site_frame, (0, 0, 0), normal)[1]
+    elif entry.frame == "link":
         arm_name = where.arm_name
         if arm_name is not None and arm_name not in frames:
             return None   # the arm itself could not be read: its entry says why

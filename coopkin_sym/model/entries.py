@@ -108,8 +108,9 @@ class _JointIn(_Entry):
 
 class _ContactIn(_Entry):
     name: StrictStr
-    link: StrictStr
-    point: list[Any]
+    link: StrictStr | None = None
+    point: list[Any] | None = None
+    site: StrictStr | None = None
     normal: list[Any] | None = None
     model: StrictStr
     frame: StrictStr | None = None

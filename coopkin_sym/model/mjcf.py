@@ -61,8 +61,9 @@ _DEFAULTED = ("joint", "site")
 class MjcfArm:
     """One arm read from an MJCF file: its moving joints at home (base frame), the
     bodies on its chain (name, number of moving joints up to it, frame at home), its
-    sites (name, number of moving joints up to their body, position at home), what was
-    snapped, and the joints off the chain that were ignored.
+    sites (name, number of moving joints up to their body, position at home) and the
+    body of each site (``site_bodies``, in the same order), what was snapped, and the
+    joints off the chain that were ignored.
 
     Example
     -------
@@ -78,6 +79,7 @@ class MjcfArm:
     sites: tuple[tuple[str, int, tuple], ...]
     snapped: tuple[Snapped, ...]
     ignored: tuple[IgnoredJoint, ...] = ()
+    site_bodies: tuple[str, ...] = ()
 
 
 def read_mjcf(path: str | Path, tip: str | None = None, base: Frame = IDENTITY,
@@ -187,6 +189,7 @@ class _Reader:
         links = [("world", 0, frame)]
         joints: list[DHJoint] = []
         sites: list[tuple[str, int, tuple]] = []
+        bodies: list[str] = []
         childclass = None
         for body in chain:
             name = body.get("name") or f"body{len(links)}"
@@ -217,9 +220,10 @@ class _Reader:
                 at = self.vector(attrs.get("pos"), f"site {brief(attrs.get('name'))}", "pos")
                 place = tuple(sp.expand(x) for x in sp.Matrix(p) + r * sp.Matrix(at))
                 sites.append((attrs.get("name") or f"{name}_site{k + 1}", len(joints), place))
+                bodies.append(name)
         model = self.root.get("model") or self.source
         return MjcfArm(model, tuple(joints), tuple(links), tuple(sites),
-                       tuple(self.snapped), ignored)
+                       tuple(self.snapped), ignored, tuple(bodies))
 
     # --- numbers -------------------------------------------------------------------------
     def numbers(self, text: str | None, where: str, what: str, count: int) -> list[Fraction]:

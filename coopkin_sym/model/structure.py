@@ -64,7 +64,9 @@ class Arm:
     frames at home (``0`` the base placement, ``k`` the link moved by joint ``k``), in
     the base frame, for an arm given as a DH table; None otherwise. ``links`` names the
     links of an arm read from a URDF file: ``(name, k, frame)``, ``k`` the moving
-    joints up to it.
+    joints up to it. ``sites`` are the sites of an arm read from an MJCF file:
+    ``(name, k, point, frame)``, the point at home and the frame of the site's body
+    at home, both in the base frame; None for other arms.
 
     Example
     -------
@@ -78,6 +80,7 @@ class Arm:
     joints: tuple[Joint, ...]
     frames: tuple[Frame, ...] | None = None
     links: tuple[tuple[str, int, Frame], ...] | None = None
+    sites: tuple[tuple[str, int, Vector, Frame], ...] | None = None
 
 
 @dataclass(frozen=True)

@@ -218,11 +218,15 @@ def read_urdf_text(text: str, source: str, tip: str | None = None, base: Frame =
 
 
 def _refuse_xacro(source: str, text: str) -> None:
-    """Refuse a xacro file (a ``.xacro`` name, a ``xmlns:xacro`` declaration or a
-    ``<xacro:`` element): expanding one evaluates the Python expressions it holds,
-    which a model file never runs; ROS's ``xacro`` command writes the plain URDF."""
+    """Refuse a xacro file (a ``.xacro`` name, a ``<xacro:`` element, or a
+    ``xmlns:xacro`` declaration with ``${...}`` or ``$(...)`` in the text): expanding
+    one evaluates the Python expressions it holds, which a model file never runs;
+    ROS's ``xacro`` command writes the plain URDF. Its output keeps the declaration
+    alone, and is read."""
     marks = [m for m in ("xmlns:xacro", "<xacro:") if m in text]
-    if not marks and not source.lower().endswith(".xacro"):
+    expands = "<xacro:" in text or ("xmlns:xacro" in text and ("${" in text
+                                                               or "$(" in text))
+    if not expands and not source.lower().endswith(".xacro"):
         return
     why = f"it has {' and '.join(marks)}" if marks else "its name ends in .xacro"
     if source.lower().endswith(".xacro"):

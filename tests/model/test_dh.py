@@ -9,7 +9,7 @@ import random
 
 import pytest
 import sympy as sp
-from independent import reference_analysis
+from independent import angle_from_text, reference_analysis
 from support import texts
 
 import coopkin_sym
@@ -44,7 +44,8 @@ def _move(x, y, z) -> sp.Matrix:
 
 
 def _cs(text):
-    return ANGLES[str(text)]
+    """cos and sin of an exact angle: from the table, else by the independent module."""
+    return ANGLES[str(text)] if str(text) in ANGLES else angle_from_text(str(text))
 
 
 def _plus(a, b):

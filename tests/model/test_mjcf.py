@@ -139,3 +139,76 @@ def test_an_arm_reads_one_robot_file(tmp_path):
     with pytest.raises(ModelError, match="arms\\[0\\]: an arm is read from one robot "
                                          "file: urdf or mjcf"):
         load(str(tmp_path / "m.yaml"))
+
+
+def _cell(tmp_path, contacts: str) -> str:
+    """Two arms from the MJCF Panda holding an object, with the given contacts."""
+    (tmp_path / "arm7.xml").write_text(PANDA_MJCF)
+    (tmp_path / "arm7.urdf").write_text(PANDA_URDF)
+    path = tmp_path / "cell.yaml"
+    path.write_text(f"""name: two arms on sites
+arms:
+  - {{name: left, mjcf: arm7.xml, tip: link7, prefix: l_}}
+  - {{name: right, mjcf: arm7.xml, tip: link7, prefix: r_,
+     base: {{xyz: [1, 0, 0], rpy: [0, 0, pi]}}}}
+  - {{name: other, urdf: arm7.urdf, prefix: u_}}
+contacts:
+{contacts}""")
+    return str(path)
+
+
+def test_a_contact_on_an_mjcf_site_is_the_contact_at_the_site_written_out(tmp_path):
+    """``site: ARM/SITE`` gives the contact its link (the site's body) and its point
+    (the site's position), exactly as writing them out; ``frame: link`` gives the
+    normal in the frame of the site's body."""
+    from coopkin_sym import load
+
+    on_sites = load(_cell(tmp_path, """\
+  - {name: c1, site: left/flange, model: complete}
+  - {name: c2, site: right/flange, frame: link, normal: ["3/5", 0, "4/5"], model: soft}
+  - {name: c3, link: other/link7, point: [0, 0, 0], model: hard}
+"""))
+    written = load(_cell(tmp_path, """\
+  - {name: c1, link: left/link7, point: [0.088, 0, 0.926], model: complete}
+  - {name: c2, link: right/link7, frame: link, point: [0, 0, 0.107],
+     normal: ["3/5", 0, "4/5"], model: soft}
+  - {name: c3, link: other/link7, point: [0, 0, 0], model: hard}
+"""))
+    assert on_sites.model.contacts == written.model.contacts
+    c1, c2 = on_sites.model.contacts[:2]
+    assert (c1.arm, c1.link, c1.point) == (0, 7, (sp.Rational(88, 1000), 0,
+                                                   sp.Rational(926, 1000)))
+    # the right arm is turned by pi about z: its flange mirrors the left one; link 7
+    # points its z axis down at home (x kept, y and z reversed), then the arm's turn
+    assert c2.point == (1 - sp.Rational(88, 1000), 0, sp.Rational(926, 1000))
+    assert c2.normal == (sp.Rational(-3, 5), 0, sp.Rational(-4, 5))
+    at = "l_j2=2*atan(1/3),l_j4=-pi/2,r_j2=2*atan(1/2),r_j4=-pi/2,r_j6=pi/2"
+    a, b = on_sites.analyze(at), written.analyze(at)
+    assert a.Q == b.Q and a.numbers == b.numbers
+
+
+@pytest.mark.parametrize("contact, message", [
+    ("{name: c, site: left/wrist, model: hard}",
+     "contacts[0].site: arm 'left' has no site 'wrist' on its chain (sites: flange)"),
+    ("{name: c, site: other/flange, model: hard}",
+     "contacts[0].site: sites exist only on an arm read from an MJCF file (mjcf:); "
+     "arm 'other' is not"),
+    ("{name: c, site: hand/flange, model: hard}",
+     "contacts[0].site: unknown arm 'hand' (arms: left, right, other)"),
+    ("{name: c, site: flange, model: hard}",
+     "contacts[0].site: expected ARM/SITE (a site of an arm read from an MJCF file), "
+     "got 'flange'"),
+    ("{name: c, site: left/flange, point: [0, 0, 0], model: hard}",
+     "contacts[0].site: a contact on a site takes its link and point from the site; "
+     "remove point"),
+    ("{name: c, model: hard}",
+     "contacts[0]: missing key 'link'\n"),
+])
+def test_a_contact_on_a_site_that_cannot_be_is_one_clear_error(tmp_path, contact, message):
+    from coopkin_sym import load
+    from coopkin_sym.errors import ModelError
+
+    with pytest.raises(ModelError) as info:
+        load(_cell(tmp_path, f"  - {contact}\n"))
+    text = str(info.value) + "\n"
+    assert f": {message}" in text, text

@@ -23,10 +23,12 @@ L = sp.Symbol("L", positive=True)
 R = sp.Rational
 
 EXAMPLES = [
+    "allegro-hand-sphere",
     "dh-three-finger-hand",
     "dh-two-puma560-box",
     "five-bar",
     "four-bar",
+    "panda-two-arm-box",
     "paper-case1-complete-hard",
     "paper-case1-hard",
     "paper-case1-planar",
@@ -94,8 +96,10 @@ def test_example_path_and_unknown_example():
     path = example_path("paper-case1-hard")
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
     with pytest.raises(ArgumentError, match="unknown example 'x'; shipped examples: "
-                                         "dh-three-finger-hand, dh-two-puma560-box, "
-                                         "five-bar, four-bar, paper-case1-complete-hard, "):
+                                         "allegro-hand-sphere, dh-three-finger-hand, "
+                                         "dh-two-puma560-box, "
+                                         "five-bar, four-bar, panda-two-arm-box, "
+                                         "paper-case1-complete-hard, "):
         example_path("x")
 
 
@@ -110,7 +114,8 @@ def test_every_example_loads_with_paper_header(name):
     assert describe_example(name).startswith("Paper case study ")
 
 
-@pytest.mark.parametrize("name", [e for e in EXAMPLES if e.startswith("dh-")])
+@pytest.mark.parametrize("name", [e for e in EXAMPLES if e.startswith("dh-")]
+                         + ["allegro-hand-sphere", "panda-two-arm-box"])
 def test_every_dh_example_loads_and_says_where_it_comes_from(name):
     model = load_model(name)
     assert model == load_model(example_path(name))

@@ -8,6 +8,7 @@ finger with dotted joint names)."""
 from __future__ import annotations
 
 import json
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -215,6 +216,20 @@ def test_a_xacro_file_is_refused_with_a_pointer(tmp_path, name, text, message):
     with pytest.raises(ModelError) as info:
         coopkin_sym.load(_model(tmp_path, name, text, "a"))
     assert info.value.problems == [f"arms[0].urdf: {message}"]
+
+
+def test_the_output_of_xacro_is_read_though_it_declares_the_namespace():
+    """ROS's xacro command keeps ``xmlns:xacro`` on the URDF it writes (as the Panda
+    of example-robot-data has it): with nothing left to expand, the file is read; with
+    a ``${...}`` left in it, it is refused."""
+    text = ('<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/'
+            'xacro"><link name="a"/><link name="b"/><joint name="q" type="revolute">'
+            '<parent link="a"/><child link="b"/><origin xyz="0 0 0.333"/>'
+            '<axis xyz="0 0 1"/></joint></robot>')
+    arm = read_urdf_text(text, "arm.urdf")
+    assert [(j.name, j.point) for j in arm.joints] == [("q", (0, 0, Fraction(333, 1000)))]
+    with pytest.raises(UrdfError, match="a xacro file \\(it has xmlns:xacro\\)"):
+        read_urdf_text(text.replace('"0 0 0.333"', '"0 0 ${l}"'), "arm.urdf")
 
 
 AXIS = ('<robot name="r"><link name="a"/><link name="b"/><joint name="q" '

@@ -18,6 +18,8 @@ runner = CliRunner()
 
 # (example, mode) pairs that take over 10 s (urdf-two-fingers generic: about 45 s)
 SLOW = {("urdf-two-fingers", "generic")}
+# 10 to 20 s each (the generic blocks of 14 and 16 joints): run with the slow tests
+LONG = {("panda-two-arm-box", "generic"), ("allegro-hand-sphere", "generic")}
 
 # a modal verb followed by an article or a count instead of a verb, or a word twice
 BROKEN = [
@@ -47,7 +49,8 @@ def test_a_motion_too_large_for_words_is_a_verb_phrase():
 
 
 CASES = [pytest.param(name, mode, marks=pytest.mark.skip(reason="over 10 s")
-                      if (name, mode) in SLOW else ())
+                      if (name, mode) in SLOW
+                      else pytest.mark.slow if (name, mode) in LONG else ())
          for name in list_examples() for mode in ("home", "generic")]
 
 

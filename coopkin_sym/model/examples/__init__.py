@@ -5,6 +5,9 @@ arms, four contact-model combinations) and case study 2 (two SCARA-type robots,
 complete-constraint and hard-finger contacts). Each file's header comment cites the
 section and the numbers the paper states. The ``dh-`` examples give their arms as
 Denavit-Hartenberg tables: a three-finger hand and two PUMA 560 arms holding a box;
+``panda-two-arm-box`` (two Franka Panda arms holding a box) and ``allegro-hand-sphere``
+(an Allegro-like four-finger hand holding a sphere) are real robots at their
+published sizes, also given by DH tables;
 ``urdf-two-fingers`` reads its arms from a URDF file shipped beside it;
 ``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground;
 ``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``);
@@ -13,7 +16,7 @@ and no finite one) show finite mobility.
 
 Example
 -------
->>> list_examples()[4:6]
+>>> list_examples()[6:8]
 ['paper-case1-complete-hard', 'paper-case1-hard']
 >>> example_path("paper-case1-hard").name
 'paper-case1-hard.yaml'
