@@ -34,12 +34,14 @@ from typing import Any
 
 import sympy as sp
 
+from coopkin_sym.analysis.batch import BatchResult
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.manipulability import Manipulability
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
+from coopkin_sym.analysis.passive import PassiveAnalysis
 from coopkin_sym.analysis.renderers import clip, register
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.errors import BlockTooLarge
@@ -55,9 +57,18 @@ from coopkin_sym.present.html_parts import escape as _e
 from coopkin_sym.present.html_parts import numbers_table as _numbers_table
 from coopkin_sym.present.html_parts import table as _table
 from coopkin_sym.present.mathjax import fits_mathjax, latex_or_none, math_html
+from coopkin_sym.present.passive import passive_numbers_text
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
 from coopkin_sym.present.report import _changes as changes_of
+from coopkin_sym.present.result_display import (
+    analysis_passive,
+    batch_html,
+    batch_pretty,
+    passive_html,
+    passive_pretty,
+    passive_section,
+)
 from coopkin_sym.present.sentences import (
     component_sentences,
     count_sentences,
@@ -233,6 +244,11 @@ def analysis_latex(a: Analysis) -> str:
     """
     lines = [_tex_text("Analysis of " + _analysis_head(a)), _numbers_array(a.numbers),
              _tex_text(classes_text(a.numbers))]
+    passive = analysis_passive(a)
+    if passive is not None:
+        lines.append(_tex_text(passive if isinstance(passive, str) else
+                               "Passive-joint numbers: " + passive_numbers_text(
+                                   passive.numbers)))
     shown, missing = [], []
     for name, block in _small_blocks(a).items():
         label = f"C_{{{name[1:]}}}"
@@ -272,6 +288,10 @@ def analysis_html(a: Analysis) -> str:
     if doubt:
         parts.append(f"<p><em>{_e(doubt)}</em></p>")
     parts += [f"<p>{_e(classes_text(a.numbers))}</p>", _list(said)]
+    passive = analysis_passive(a)
+    if passive is not None:    # what coopkin analyze prints about passive joints
+        parts += ([f"<p>{_e(passive)}</p>"] if isinstance(passive, str)
+                  else passive_section(passive))
     shapes = _shapes(a)
     parts += [_block_html(name, blocks[name], shapes[name], labels[name])
               for name in _BLOCK_NAMES]
@@ -281,8 +301,12 @@ def analysis_html(a: Analysis) -> str:
 def _analysis_pretty(a: Analysis) -> str:
     shapes = _shapes(a)
     blocks = ", ".join(f"{n} ({r} x {c})" for n, (r, c) in shapes.items())
-    return "\n".join([repr(a), "  " + _numbers_spaced(a.numbers),
-                      "  " + classes_text(a.numbers), f"  Blocks: {blocks}"])
+    lines = [repr(a), "  " + _numbers_spaced(a.numbers), "  " + classes_text(a.numbers)]
+    passive = analysis_passive(a)
+    if passive is not None:
+        lines.append("  " + (passive if isinstance(passive, str) else
+                             "Passive: " + passive_numbers_text(passive.numbers)))
+    return "\n".join([*lines, f"  Blocks: {blocks}"])
 
 
 def _irrational_head(result: IrrationalAnalysis) -> tuple[str, str]:
@@ -603,7 +627,8 @@ def pretty_text(obj: Any) -> str:
 
 _PRETTY: dict[type, Callable[[Any], str]] = {
     Analysis: _analysis_pretty, IrrationalAnalysis: _irrational_pretty,
-    Locus: _locus_pretty, SweepResult: _sweep_pretty, FactoredMotions: factored_pretty}
+    Locus: _locus_pretty, SweepResult: _sweep_pretty, FactoredMotions: factored_pretty,
+    PassiveAnalysis: passive_pretty, BatchResult: batch_pretty}
 
 _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (Numbers, "latex", numbers_latex), (Numbers, "html", numbers_html),
@@ -613,6 +638,7 @@ _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (Locus, "html", locus_html), (Component, "html", component_html),
     (SweepResult, "html", sweep_html), (Manipulability, "latex", manipulability_latex),
     (FactoredMotions, "latex", factored_latex), (FactoredMotions, "html", factored_html),
+    (PassiveAnalysis, "html", passive_html), (BatchResult, "html", batch_html),
     *((cls, "pretty", render) for cls, render in _PRETTY.items())]
 
 
