@@ -294,9 +294,11 @@ class System:
         return finite_mobility(self.model, at, order)
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
-             title: str | None = None) -> Figure:
+             title: str | None = None, labels: bool | str = True) -> Figure:
         """A picture of the system at ``at`` (see
-        :func:`coopkin_sym.present.draw.draw_system`), with one of its motions.
+        :func:`coopkin_sym.present.draw.draw_system`), with one of its motions;
+        ``labels``: joint and contact names (long ones shortened), ``"short"`` (joint
+        numbers in their arm) or ``False`` (none).
 
         Example
         -------
@@ -306,7 +308,7 @@ class System:
         1
         """
         from coopkin_sym.present.draw import draw_system
-        return draw_system(self, at, motion=motion, title=title)
+        return draw_system(self, at, motion=motion, title=title, labels=labels)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
               progress: bool = False, chunk: int = 16384, timeout: float | None = None):
