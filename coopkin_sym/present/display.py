@@ -56,7 +56,7 @@ from coopkin_sym.present.html_parts import div as _div
 from coopkin_sym.present.html_parts import escape as _e
 from coopkin_sym.present.html_parts import numbers_table as _numbers_table
 from coopkin_sym.present.html_parts import table as _table
-from coopkin_sym.present.mathjax import fits_mathjax, latex_or_none, math_html
+from coopkin_sym.present.mathjax import latex_or_none, math_html, typesets
 from coopkin_sym.present.passive import passive_numbers_text
 from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
@@ -192,7 +192,7 @@ def _block_html(name: str, block: sp.Matrix | str, shape: tuple[int, int],
         return f"{title}: empty</p>"
     text = f"<pre>{_e(chr(10).join(block_table(block, list(labels))))}</pre>"
     tex = f"C_{{{name[1:]}}} = {sp.latex(block)}"
-    if not fits_mathjax(tex):
+    if not typesets(block, tex):
         return f"{title}</p>{text}"
     # typeset by the notebook's MathJax; the text too, for a viewer without it
     return (f"{title}</p>{math_html(tex)}<details><summary>as text (rows: "

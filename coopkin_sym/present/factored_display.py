@@ -20,7 +20,7 @@ import sympy as sp
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.renderers import clip
 from coopkin_sym.present.html_parts import div, escape, table
-from coopkin_sym.present.mathjax import fits_mathjax, latex_or_none, math_html
+from coopkin_sym.present.mathjax import latex_or_none, math_html, typesets
 from coopkin_sym.present.text import block_table, factored_lines
 
 __all__ = ["ENTRY_CHARACTERS", "factored_html", "factored_latex", "factored_pretty"]
@@ -57,24 +57,25 @@ def _entry(value: sp.Expr) -> str:
 
 
 def _map_html(f: FactoredMotions, arm, matrix: sp.Matrix) -> tuple[str, bool]:
-    """``K_arm`` as LaTeX when MathJax takes it, else as a table; whether an entry
-    was cut."""
+    """``K_arm`` as LaTeX when small, else its nonzero entries one per row; whether an
+    entry was cut."""
     arm_tex = r"\mathrm{" + arm.name.replace("_", r"\_") + "}"
     title = (f"<p><strong>K_{escape(arm.name)}</strong> (rows: joints "
-             f"{escape(', '.join(arm.joints))}; columns: {escape(', '.join(f.twist_names))})"
-             "</p>")
+             f"{escape(', '.join(arm.joints))}; columns: {escape(', '.join(f.twist_names))})")
     tex = rf"K_{{{arm_tex}}} = {sp.latex(matrix)}"
-    if matrix.rows and fits_mathjax(tex):
-        return title + math_html(tex), False
-    rows = [[escape(joint), *(_entry(matrix[i, j]) for j in range(matrix.cols))]
-            for i, joint in enumerate(arm.joints)]
+    if typesets(matrix, tex):
+        return title + "</p>" + math_html(tex), False
+    rows = [[escape(joint), escape(f.twist_names[j]), _entry(matrix[i, j])]
+            for i, joint in enumerate(arm.joints) for j in range(matrix.cols)
+            if matrix[i, j] != 0]
     cut = any(len(sp.sstr(e)) > ENTRY_CHARACTERS for e in matrix)
-    return title + table(["joint", *f.twist_names], rows), cut
+    return (title + ": the entries other than 0</p>"
+            + table(["joint", "column", "entry"], rows)), cut
 
 
 def _twists_html(f: FactoredMotions) -> str:
     tex = rf"C_{{12}} = {sp.latex(f.twists)}"
-    if f.twists.cols and fits_mathjax(tex):
+    if f.twists.cols and typesets(f.twists, tex):
         return math_html(tex)
     if not f.twists.cols:
         return "<p>C12 is empty: no coordinated motions.</p>"
@@ -90,8 +91,8 @@ def factored_html(f: FactoredMotions) -> str:
     Example
     -------
     >>> from coopkin_sym import load
-    >>> f = load("planar-two-fingers").analyze(generic=True).coordinated_factored()
-    >>> "$$K_{\\\\mathrm{left}} = " in factored_html(f)
+    >>> f = load("paper-case1-hard").analyze(generic=True).coordinated_factored()
+    >>> "$$K_{\\\\mathrm{a1}} = " in factored_html(f)
     True
     """
     parts = [f"<p><strong>Coordinated motions of {escape(_name(f))}, factored</strong>: "

@@ -23,12 +23,19 @@ from __future__ import annotations
 
 import html
 
-__all__ = ["MATHJAX_LATEX_LIMIT", "fits_mathjax", "latex_or_none", "math_html"]
+import sympy as sp
+
+__all__ = ["MATHJAX_LATEX_LIMIT", "TYPESET_ENTRY", "fits_mathjax", "latex_or_none",
+           "math_html", "typesets"]
 
 #: The longest LaTeX (in characters, ``$$`` included) a display gives: MathJax's TeX
 #: buffer holds 5 * 1024 characters (refused: 12,218); this leaves a fifth of it for
 #: the macros it expands.
 MATHJAX_LATEX_LIMIT = 4000
+
+#: A matrix is typeset inside an HTML view when each entry's LaTeX is at most this
+#: long (a wider matrix does not fit a notebook's width: it is shown as text).
+TYPESET_ENTRY = 80
 
 
 def fits_mathjax(tex: str | None) -> bool:
@@ -63,3 +70,17 @@ def math_html(tex: str) -> str:
     '$$a &lt; b$$'
     """
     return "$$" + html.escape(tex, quote=False) + "$$"
+
+
+def typesets(matrix: sp.MatrixBase, tex: str) -> bool:
+    """Whether ``matrix`` (written ``tex``) is typeset inside an HTML view: not empty,
+    MathJax takes it, and each entry fits (see :data:`TYPESET_ENTRY`).
+
+    Example
+    -------
+    >>> m = sp.Matrix([[1, sp.Symbol("L")]])
+    >>> typesets(m, sp.latex(m)), typesets(sp.Matrix([[sp.Symbol("x") ** 99 * 10**90]]), "")
+    (True, False)
+    """
+    return (0 not in matrix.shape and fits_mathjax(tex)
+            and all(len(sp.latex(e)) <= TYPESET_ENTRY for e in matrix))

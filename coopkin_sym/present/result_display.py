@@ -23,7 +23,7 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveAnalysis
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.html_parts import bullet_list, div, escape, numbers_table, table
-from coopkin_sym.present.mathjax import fits_mathjax, math_html
+from coopkin_sym.present.mathjax import math_html, typesets
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines
 
 __all__ = ["PASSIVE_JOINTS_SHOWN", "analysis_passive", "batch_html", "batch_pretty",
@@ -90,7 +90,7 @@ def _space_html(name: str, words: str, matrix: sp.Matrix) -> str:
     if matrix.cols == 0:
         return f"{title}: none</p>"
     tex = sp.latex(matrix)
-    if fits_mathjax(tex):
+    if typesets(matrix, tex):
         return f"{title}</p>{math_html(tex)}"
     return f"{title}</p><pre>{escape(sp.sstr(matrix))}</pre>"
 

@@ -13,6 +13,7 @@ import re
 from html.parser import HTMLParser
 
 import pytest
+import sympy as sp
 
 import coopkin_sym
 from coopkin_sym.analysis import renderers
@@ -424,12 +425,18 @@ def test_factored_motions_of_case2_show_as_html_with_the_named_factors():
                        ["d4", "t_q1**2 + 1"], ["d5", "t_q2**2 + 1"], ["d6", "t_q8**2 + 1"],
                        ["d7", "t_q7**2 + 1"], ["d8", "t_q6**2 + 1"],
                        ["d9", "t_q8**2 + 2*t_q8 - 1"]]
-    # K_s1 is small: typeset; K_s2 is not: entry by entry, the long ones cut
-    assert r"$$K_{\mathrm{s1}} = \left[\begin{matrix}" in page
-    s2 = [r for r in parsed.rows if r and r[0] in ("q5", "q6", "q7", "q8")]
-    assert [r[0] for r in s2] == ["q5", "q6", "q7", "q8"] and all(len(r) == 7 for r in s2)
-    assert s2[0][1:5] == ["1", "0", "0", "0"] and s2[1][1:] == ["0"] * 6
-    assert s2[2][5].endswith("...") and len(s2[2][5]) == 300
+    # C12 (zeros and ones) is typeset; the maps, too wide, are listed entry by entry
+    assert r"$$C_{12} = \left[\begin{matrix}0 &amp; 0 &amp; 0 &amp; 0 &amp; 0\\1 &amp; 0" in page
+    assert "$$K_" not in page
+    entries = [r for r in parsed.rows if len(r) == 3 and r[0].startswith("q")]
+    assert [r[:2] for r in entries if r[0] in ("q5", "q6")] == [
+        ["q5", "v_x"], ["q5", "w_y"], ["q5", "w_z"]]            # q6 moves with no twist
+    assert ["q5", "v_x", "1"] in entries and ["q4", "v_z", "1"] in entries
+    assert len(entries) == 13 + 13
+    (cut,) = [r[2] for r in entries if r[:2] == ["q7", "w_y"]]
+    assert cut.endswith("...") and len(cut) == 300
+    whole = sp.sstr(f.maps()["s2"][2, 4])
+    assert len(whole) == 1057 and cut[:297] == whole[:297]
     text = "".join(parsed.text)
     assert "Entries longer than 300 characters are cut here." in text
     assert "All of it: .latex() (LaTeX), .maps() (SymPy matrices" in text
