@@ -2,8 +2,9 @@
 place in a Jupyter kernel (no widget package, no warning), rich's line on a terminal,
 nothing when the output goes elsewhere.
 
-The Jupyter test runs a real kernel (nbclient) on a notebook built here and records
-every message the kernel sends for the cell.
+The Jupyter tests run a real kernel (nbclient) on a notebook built here and record
+every message the kernel sends for each cell: the bar, and the displays the kernel
+sends for results (HTML where MathJax would refuse the LaTeX).
 """
 
 from __future__ import annotations
@@ -101,34 +102,45 @@ def test_the_share_is_clipped_and_text_is_short():
     assert show.text() == "locus: step, 0%, 0:00"
 
 
-def test_a_real_kernel_shows_the_bar_and_no_widget_warning(tmp_path):
-    """``locus(progress=True)`` in a Jupyter kernel: a ``display_data`` with the bar,
-    ``update_display_data`` to its last state, nothing on stderr."""
+@pytest.fixture(scope="module")
+def kernel_messages(tmp_path_factory) -> dict[int, list[dict]]:
+    """Every message a real Jupyter kernel sends for each cell of a notebook built here
+    (the kernel imports this checkout)."""
     nbformat = pytest.importorskip("nbformat")
     nbclient = pytest.importorskip("nbclient")
     pytest.importorskip("ipykernel")
 
-    messages: list[dict] = []
+    messages: dict[int, list[dict]] = {}
 
     class Client(nbclient.NotebookClient):
         def process_message(self, msg, cell, cell_index):
-            if cell_index == 1:
-                messages.append(msg)
+            messages.setdefault(cell_index, []).append(msg)
             return super().process_message(msg, cell, cell_index)
 
     nb = nbformat.v4.new_notebook()
-    nb.cells = [
-        nbformat.v4.new_code_cell("import coopkin_sym.present.progress as p\n"
-                                  "p.DELAY = 0   # show it at once: the locus is quick\n"
-                                  "from coopkin_sym import load"),
-        nbformat.v4.new_code_cell("locus = load('paper-case1-hard').locus(progress=True)\n"
-                                  "len(locus.components)"),
-    ]
+    nb.cells = [nbformat.v4.new_code_cell(source) for source in (
+        "import coopkin_sym.present.progress as p\n"
+        "p.DELAY = 0   # show it at once: the locus is quick\n"
+        "from coopkin_sym import load",
+        "locus = load('paper-case1-hard').locus(progress=True)\nlen(locus.components)",
+        "load('paper-case2-hard').analyze(generic=True).coordinated_factored()",
+        "load('five-bar').analyze()")]
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(ROOT), *filter(None, [os.environ.get("PYTHONPATH")])]))
-    client = Client(nb, timeout=120, kernel_name="python3",
-                    resources={"metadata": {"path": str(tmp_path)}})
-    client.execute(env=env)            # the kernel imports this checkout
+    folder = tmp_path_factory.mktemp("kernel")
+    Client(nb, timeout=120, kernel_name="python3",
+           resources={"metadata": {"path": str(folder)}}).execute(env=env)
+    return messages
+
+
+def _results(messages: list[dict]) -> list[dict]:
+    return [m["content"]["data"] for m in messages if m["msg_type"] == "execute_result"]
+
+
+def test_a_real_kernel_shows_the_bar_and_no_widget_warning(kernel_messages):
+    """``locus(progress=True)`` in a Jupyter kernel: a ``display_data`` with the bar,
+    ``update_display_data`` to its last state, nothing on stderr."""
+    messages = kernel_messages[1]
     types = [m["msg_type"] for m in messages]
     assert "display_data" in types and "update_display_data" in types
     shown = [m["content"]["data"] for m in messages
@@ -139,6 +151,19 @@ def test_a_real_kernel_shows_the_bar_and_no_widget_warning(tmp_path):
     streams = [m["content"] for m in messages if m["msg_type"] == "stream"]
     assert [s for s in streams if s["name"] == "stderr"] == []
     assert not any("ipywidgets" in s["text"] for s in streams)
-    results = [m["content"]["data"]["text/plain"] for m in messages
-               if m["msg_type"] == "execute_result"]
-    assert results == ["5"]
+    assert [r["text/plain"] for r in _results(messages)] == ["5"]
+
+
+def test_a_real_kernel_gets_html_where_latex_would_be_refused(kernel_messages):
+    (factored,) = _results(kernel_messages[2])
+    assert "text/latex" not in factored                 # over what MathJax accepts
+    assert "<code>t_q8**2 + 2*t_q8 - 1</code>" in factored["text/html"]
+    assert factored["text/plain"].startswith("<FactoredMotions paper case 2")
+    (five_bar,) = _results(kernel_messages[3])
+    assert set(five_bar) == {"text/plain", "text/html", "text/latex"}
+    assert "Passive joints: q2, q4 (actuated: q1, q3)" in five_bar["text/html"]
+    assert ("  Passive: Na = 2  Np = 2  Nco = 2  Nuo = 1  Npi = 0  Nar = 0  Nam = 2"
+            in five_bar["text/plain"].splitlines())
+    assert all(len(m["content"]["data"].get("text/latex", "")) <= 4000
+               for cell in kernel_messages.values() for m in cell
+               if m["msg_type"] == "execute_result")
