@@ -277,12 +277,11 @@ def draw(
                          "numbers in their arm) or none.")] = "names",
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym import save_picture
+    from coopkin_sym import DrawError, save_picture
 
     styles = {"names": True, "short": "short", "none": False}
     try:
         if labels not in styles:
-            from coopkin_sym.errors import DrawError
             raise DrawError(f"--labels: names, short or none (not {labels!r})")
         with _notes():
             path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid,

@@ -37,7 +37,8 @@ import sympy as sp
 from coopkin_sym.analysis.batch import BatchResult
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
-from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.analysis.locus.types import Certificate, Component, Locus
+from coopkin_sym.analysis.locus.verify_results import Verification
 from coopkin_sym.analysis.manipulability import Manipulability
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
@@ -65,9 +66,13 @@ from coopkin_sym.present.result_display import (
     analysis_passive,
     batch_html,
     batch_pretty,
+    certificate_html,
+    certificate_pretty,
     passive_html,
     passive_pretty,
     passive_section,
+    verification_html,
+    verification_pretty,
 )
 from coopkin_sym.present.sentences import (
     component_sentences,
@@ -401,7 +406,8 @@ def locus_html(locus: Locus) -> str:
 
     Example
     -------
-    >>> from coopkin_sym.analysis.locus.types import Component, Locus
+    >>> from coopkin_sym.analysis.locus.types import Certificate, Component, Locus
+from coopkin_sym.analysis.locus.verify_results import Verification
     >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
     >>> locus = Locus("demo", ["t_q1"], "", generic, [Component(
     ...     ["t_q1 - 1"], dict(generic, Nm=3), {"q1": "pi/2"}, True, condition="q1 = pi/2")])
@@ -628,7 +634,8 @@ def pretty_text(obj: Any) -> str:
 _PRETTY: dict[type, Callable[[Any], str]] = {
     Analysis: _analysis_pretty, IrrationalAnalysis: _irrational_pretty,
     Locus: _locus_pretty, SweepResult: _sweep_pretty, FactoredMotions: factored_pretty,
-    PassiveAnalysis: passive_pretty, BatchResult: batch_pretty}
+    PassiveAnalysis: passive_pretty, BatchResult: batch_pretty,
+    Certificate: certificate_pretty, Verification: verification_pretty}
 
 _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (Numbers, "latex", numbers_latex), (Numbers, "html", numbers_html),
@@ -639,6 +646,7 @@ _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (SweepResult, "html", sweep_html), (Manipulability, "latex", manipulability_latex),
     (FactoredMotions, "latex", factored_latex), (FactoredMotions, "html", factored_html),
     (PassiveAnalysis, "html", passive_html), (BatchResult, "html", batch_html),
+    (Certificate, "html", certificate_html), (Verification, "html", verification_html),
     *((cls, "pretty", render) for cls, render in _PRETTY.items())]
 
 

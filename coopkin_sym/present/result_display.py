@@ -19,14 +19,20 @@ from typing import Any
 import sympy as sp
 
 from coopkin_sym.analysis.batch import BatchResult
+from coopkin_sym.analysis.locus.types import Certificate
+from coopkin_sym.analysis.locus.verify_results import Verification
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveAnalysis
+from coopkin_sym.present.certificate import certificate_summary, check_text
 from coopkin_sym.present.classes import classes_text
 from coopkin_sym.present.html_parts import bullet_list, div, escape, numbers_table, table
 from coopkin_sym.present.mathjax import math_html, typesets
 from coopkin_sym.present.passive import PASSIVE_WORDS, passive_lines
+from coopkin_sym.present.verification import summary_lines
 
 __all__ = ["PASSIVE_JOINTS_SHOWN", "analysis_passive", "batch_html", "batch_pretty",
+           "certificate_html", "certificate_pretty", "verification_html",
+           "verification_pretty",
            "passive_html", "passive_numbers_table", "passive_pretty", "passive_section"]
 
 #: An analysis shows its passive-joint numbers for up to this many joints (beyond,
@@ -166,3 +172,67 @@ def batch_pretty(r: BatchResult) -> str:
         lines += ["  " + "  ".join(f"{k} = {values[k]}" for k in NUMBER_NAMES),
                   "  " + classes_text(r.numbers)]
     return "\n".join(lines)
+
+
+def _certificate_rows(cert: Certificate) -> list[list[str]]:
+    rows = []
+    for kind, table_ in (("depth", cert.depths), ("chart", cert.charts)):
+        for name, entry in table_.items():
+            why = entry.get("why")
+            rows.append([escape(f"{kind} {name}"),
+                         "yes" if entry.get("certified") else "<strong>no</strong>",
+                         escape(entry.get("tests", 0)), escape(entry.get("failed", 0)),
+                         escape(check_text(why) if why is not None else "")])
+    return rows
+
+
+def certificate_html(cert: Certificate) -> str:
+    """A completeness certificate as HTML: its verdict, and depth by depth and chart by
+    chart whether it is certified, how many tests, how many failed, and why not.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> locus = load("paper-case1-hard").locus(certify=True)
+    >>> "hard/hard</strong>: complete (certified)</p>" in certificate_html(locus.certificate)
+    True
+    """
+    return div([f"<p><strong>Completeness of the locus of {escape(cert.system)}</strong>"
+                f": {escape(certificate_summary(cert))}</p>",
+                table(["where", "certified", "tests", "failed", "why not"],
+                      _certificate_rows(cert), centered=(1, 2, 3))])
+
+
+def certificate_pretty(cert: Certificate) -> str:
+    """The text IPython prints: the ``repr`` and the verdict.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> print(certificate_pretty(load("paper-case1-hard").locus(certify=True).certificate))
+    <Certificate paper case 1, hard/hard: certified; 46 tests, 0 not certified>
+      complete (certified)
+    """
+    return f"{repr(cert)}\n  {certificate_summary(cert)}"
+
+
+def verification_html(v: Verification) -> str:
+    """An independent check of a locus as HTML: the verdict and what was checked (the
+    lines ``coopkin locus --verify`` prints).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> v = load("paper-case1-hard").locus(verify=True).verification
+    >>> "Verification: passed (0 uncovered points, 0 unsound components)" in (
+    ...     verification_html(v))
+    True
+    """
+    lines = summary_lines(v)
+    return div([f"<p><strong>{escape(lines[0])}</strong> ({escape(v.system)})</p>",
+                bullet_list([line.strip() for line in lines[1:]])])
+
+
+def verification_pretty(v: Verification) -> str:
+    """The text IPython prints: the ``repr`` and what was checked."""
+    return "\n".join([repr(v), *summary_lines(v)[1:]])

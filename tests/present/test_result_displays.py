@@ -109,3 +109,27 @@ def test_batch_results_show_their_numbers_or_their_error():
     home = BatchResult(3, "x", None, Numbers(2, 2, 1, 0, 1, 4, 0), document={"a": 1})
     assert "Item 3: x at home" in home._repr_html_()
     assert "With its JSON document" in home._repr_html_()
+
+
+def test_certificate_and_verification_show_their_verdicts():
+    from IPython.lib.pretty import pretty
+
+    locus = coopkin_sym.load("paper-case1-hard").locus(certify=True, verify=True)
+    cert, check = locus.certificate, locus.verification
+    assert repr(cert) == ("<Certificate paper case 1, hard/hard: certified; 46 tests, "
+                          "0 not certified>")
+    assert pretty(cert) == repr(cert) + "\n  complete (certified)"
+    parsed = parse_html(cert._repr_html_())
+    assert parsed.rows[1:3] == [["depth 0", "yes", "31", "0", ""],
+                                ["depth 1", "yes", "15", "0", ""]]
+    assert ["chart q1 = pi", "yes", "4", "0", ""] in parsed.rows
+    assert repr(check) == ("<Verification paper case 1, hard/hard: passed (0 uncovered "
+                           "points, 0 unsound components)>")
+    text = "".join(parse_html(check._repr_html_()).text)
+    assert text.startswith("Verification: passed (0 uncovered points, 0 unsound "
+                           "components) (paper case 1, hard/hard)")
+    assert ("components: 5; witnesses checked: 5; with no witness and no point checked: 0"
+            in text)
+    assert pretty(check).splitlines()[3] == ("  components: 5; witnesses checked: 5; with "
+                                             "no witness and no point checked: 0")
+    assert cert._repr_latex_() is None and check._repr_latex_() is None
