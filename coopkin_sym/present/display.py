@@ -406,8 +406,7 @@ def locus_html(locus: Locus) -> str:
 
     Example
     -------
-    >>> from coopkin_sym.analysis.locus.types import Certificate, Component, Locus
-from coopkin_sym.analysis.locus.verify_results import Verification
+    >>> from coopkin_sym.analysis.locus.types import Component, Locus
     >>> generic = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
     >>> locus = Locus("demo", ["t_q1"], "", generic, [Component(
     ...     ["t_q1 - 1"], dict(generic, Nm=3), {"q1": "pi/2"}, True, condition="q1 = pi/2")])
