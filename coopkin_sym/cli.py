@@ -272,13 +272,20 @@ def draw(
         "--ellipsoid", help="Also draw the manipulability ellipsoid of the object's "
                             "translations at unit joint speed (scale stated in the "
                             "title).")] = False,
+    labels: Annotated[str, typer.Option(
+        "--labels", help="Name labels: names (long ones shortened), short (joint "
+                         "numbers in their arm) or none.")] = "names",
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym import save_picture
+    from coopkin_sym import DrawError, save_picture
 
+    styles = {"names": True, "short": "short", "none": False}
     try:
+        if labels not in styles:
+            raise DrawError(f"--labels: names, short or none (not {labels!r})")
         with _notes():
-            path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid)
+            path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid,
+                                labels=styles[labels])
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(f"wrote {path}")

@@ -151,7 +151,8 @@ class System:
         ended at the bound, as far as it was about a second before (see
         :func:`coopkin_sym.exact.bounded.run_bounded`); before the generic numbers
         it raises :class:`~coopkin_sym.errors.TimeLimitReached`. ``progress`` shows
-        the steps on standard error after a second, when it is a terminal.
+        the steps after a second: in a Jupyter cell, or on standard error when it is
+        a terminal (nowhere else).
 
         Example
         -------
@@ -311,9 +312,11 @@ class System:
         return finite_mobility(self.model, at, order)
 
     def draw(self, at: str | Mapping | None = None, motion: str | Sequence | None = None,
-             title: str | None = None) -> Figure:
+             title: str | None = None, labels: bool | str = True) -> Figure:
         """A picture of the system at ``at`` (see
-        :func:`coopkin_sym.present.draw.draw_system`), with one of its motions.
+        :func:`coopkin_sym.present.draw.draw_system`), with one of its motions;
+        ``labels``: joint and contact names (long ones shortened), ``"short"`` (joint
+        numbers in their arm) or ``False`` (none).
 
         Example
         -------
@@ -323,7 +326,7 @@ class System:
         1
         """
         from coopkin_sym.present.draw import draw_system
-        return draw_system(self, at, motion=motion, title=title)
+        return draw_system(self, at, motion=motion, title=title, labels=labels)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
               progress: bool = False, chunk: int = 16384, timeout: float | None = None):
@@ -332,7 +335,8 @@ class System:
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
         :class:`concurrent.futures.Executor` or a dask ``distributed.Client``;
-        ``progress`` shows a bar on standard error after a second; ``timeout`` is a
+        ``progress`` shows a bar after a second (in a Jupyter cell, or on
+        standard error when it is a terminal); ``timeout`` is a
         wall-clock bound in seconds (past it,
         :class:`~coopkin_sym.errors.TimeLimitReached`); the bounded sweep runs in a
         process of its own, which cannot use an executor made outside it: give one
@@ -393,14 +397,14 @@ class System:
 
 def _bounded(work, timeout: float | None, what: str, progress: bool):
     """``work()`` under ``timeout`` (see :func:`coopkin_sym.exact.bounded.run_bounded`),
-    its steps shown on a terminal after a second when ``progress``."""
+    its steps shown after a second when ``progress`` (in a Jupyter cell, or on a
+    terminal; see :func:`coopkin_sym.present.progress.progress_medium`)."""
     from coopkin_sym.exact.bounded import run_bounded
     if not progress:
         return run_bounded(work, timeout, owner=f"System.{what}")
-    import sys
 
     from coopkin_sym.present.progress import progress_display
-    with progress_display(sys.stderr.isatty(), what) as display:
+    with progress_display(True, what) as display:
         return run_bounded(work, timeout, owner=f"System.{what}", progress=display)
 
 
@@ -463,8 +467,9 @@ def run_bounded(work: Callable[[], T], timeout: float | None, *, what: str = "ru
     owner
         The name of the bound (default ``what``).
     progress
-        Show the steps on standard error after a second, when it is a terminal (the
-        work then runs in a process of its own, so that the display keeps moving).
+        Show the steps after a second: in a Jupyter cell, or on standard error when
+        it is a terminal (the work then runs in a process of its own, so that the
+        display keeps moving).
     output
         Called here with each part the work delivers, in order, as it comes.
 
@@ -479,15 +484,15 @@ def run_bounded(work: Callable[[], T], timeout: float | None, *, what: str = "ru
     >>> run_bounded(work, 60, output=parts.append), parts
     (42, ['part 1'])
     """
-    import sys
-
     from coopkin_sym.exact.bounded import run_bounded as exact_run_bounded
     from coopkin_sym.present.progress import progress_display
 
-    shown = progress and sys.stderr.isatty()
-    with progress_display(shown, what, started=started) as display:
+    with progress_display(progress, what, started=started) as display:
+        # on a terminal the work runs apart, so that the line keeps moving; a Jupyter
+        # kernel is not forked for it
+        apart = display.medium == "terminal"
         return exact_run_bounded(work, timeout, owner=owner or what, progress=display,
-                                 output=output, separate=shown, started=started)
+                                 output=output, separate=apart, started=started)
 
 
 def load(source: str | os.PathLike | Mapping) -> System:
@@ -517,7 +522,8 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         itself; None runs here. Anything else is an
         :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
-        Show a progress bar (on stderr, when it is a terminal, after a second).
+        Show a progress bar after a second (in a Jupyter cell, or on stderr when it
+        is a terminal).
     chunk
         Items per task (see :func:`coopkin_sym.analysis.batch.run_batch`).
 

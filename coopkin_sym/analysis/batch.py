@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
+from coopkin_sym.analysis.renderers import Displayable
 from coopkin_sym.analysis.tasks import Progress, run_tasks, task_executor
 from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.configuration import assignments_text
@@ -48,7 +49,7 @@ Compute = Callable[..., tuple[Numbers, dict | None]]
 
 
 @dataclass(frozen=True)
-class BatchResult:
+class BatchResult(Displayable):
     """The outcome of one item of a batch: its exact numbers (and JSON document when
     asked), or the error that stopped it.
 

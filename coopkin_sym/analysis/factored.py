@@ -31,6 +31,7 @@ from typing import Any
 
 import sympy as sp
 
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ArgumentTypeError, ConfigurationError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
 from coopkin_sym.exact.parse import brief
@@ -60,7 +61,7 @@ class ArmMap:
 
 
 @dataclass(frozen=True)
-class FactoredMotions:
+class FactoredMotions(Displayable):
     """The coordinated motions ``[C12; K C12]`` with ``K`` given arm by arm.
 
     Attributes
@@ -86,6 +87,9 @@ class FactoredMotions:
     Matrix([[0, (-t_q1**2/2 - 1/2)/(d1*d2), 0, 0, 0, 1]])
     >>> f.factors
     (('d1', L), ('d2', t_q1), ('d3', t_q2))
+    >>> f
+    <FactoredMotions paper case 1, hard/hard: 1 coordinated motions; arms a1 (1 joints), \
+a2 (1 joints); 3 named factors>
     """
 
     twists: sp.Matrix
@@ -139,8 +143,11 @@ class FactoredMotions:
             lines.append(rf"{sp.latex(sp.Symbol(fname))} = {sp.latex(poly)}")
         return "\n".join(lines)
 
-    def _repr_latex_(self) -> str:
-        return "$$" + r" \\ ".join(self.latex().splitlines()) + "$$"
+    def __repr__(self) -> str:
+        arms = ", ".join(f"{arm.name} ({len(arm.joints)} joints)" for arm in self.arms)
+        name = clip(getattr(self.model, "name", "") or "a system", 100)
+        return (f"<FactoredMotions {name}: {self.twists.cols} coordinated motions; "
+                f"arms {arms or 'none'}; {len(self.factors)} named factors>")
 
     def joint_motions(self) -> sp.Matrix:
         """``K C12`` expanded into rational functions (``C22`` up to the scale of each

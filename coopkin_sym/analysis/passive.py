@@ -55,6 +55,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.exact.matrix import POLYNOMIALS, rank
 
 #: The numbers of an analysis with passive joints, in the order tables use.
@@ -107,8 +108,8 @@ def passive_numbers(actuated: int, passive: int, numbers, locked) -> PassiveNumb
     return PassiveNumbers(actuated, passive, nco, nuo, npi, nar, nco + nar)
 
 
-@dataclass(frozen=True)
-class PassiveAnalysis:
+@dataclass(frozen=True, repr=False)
+class PassiveAnalysis(Displayable):
     """What the motors control and what the passive joints leave free, at one
     configuration (or generically), exact.
 
@@ -135,6 +136,8 @@ class PassiveAnalysis:
     >>> p = load("five-bar").analyze("L=1").passive
     >>> p.uncontrolled.T      # the spin about the pin at (0, 2)
     Matrix([[2, 0, 1]])
+    >>> p
+    <PassiveAnalysis passive q2, q4 (actuated q1, q3): Na=2 Np=2 Nco=2 Nuo=1 Npi=0 Nar=0 Nam=2>
     """
 
     actuated: tuple[str, ...]
@@ -144,6 +147,12 @@ class PassiveAnalysis:
     uncontrolled: sp.Matrix
     internal: sp.Matrix
     actuated_redundant: sp.Matrix
+
+    def __repr__(self) -> str:
+        numbers = " ".join(f"{k}={v}" for k, v in self.numbers.as_dict().items())
+        joints = (f"passive {clip(', '.join(self.passive) or 'none', 80)} (actuated "
+                  f"{clip(', '.join(self.actuated) or 'none', 80)})")
+        return f"<PassiveAnalysis {joints}: {numbers}>"
 
 
 def passive_analysis(analysis) -> PassiveAnalysis:

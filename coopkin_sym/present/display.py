@@ -27,7 +27,6 @@ Example
 
 from __future__ import annotations
 
-import html
 import re
 from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
@@ -35,11 +34,15 @@ from typing import Any
 
 import sympy as sp
 
+from coopkin_sym.analysis.batch import BatchResult
+from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
-from coopkin_sym.analysis.locus.types import Component, Locus
+from coopkin_sym.analysis.locus.types import Certificate, Component, Locus
+from coopkin_sym.analysis.locus.verify_results import Verification
 from coopkin_sym.analysis.manipulability import Manipulability
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
+from coopkin_sym.analysis.passive import PassiveAnalysis
 from coopkin_sym.analysis.renderers import clip, register
 from coopkin_sym.analysis.sweep.result import SweepResult
 from coopkin_sym.errors import BlockTooLarge
@@ -48,9 +51,29 @@ from coopkin_sym.model.model import Model
 from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.conditions import short_condition
+from coopkin_sym.present.factored_display import factored_html, factored_latex, factored_pretty
+from coopkin_sym.present.html_parts import bullet_list as _list
+from coopkin_sym.present.html_parts import div as _div
+from coopkin_sym.present.html_parts import escape as _e
+from coopkin_sym.present.html_parts import numbers_table as _numbers_table
+from coopkin_sym.present.html_parts import table as _table
+from coopkin_sym.present.mathjax import latex_or_none, math_html, typesets
+from coopkin_sym.present.passive import passive_numbers_text
 from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
 from coopkin_sym.present.report import _changes as changes_of
+from coopkin_sym.present.result_display import (
+    analysis_passive,
+    batch_html,
+    batch_pretty,
+    certificate_html,
+    certificate_pretty,
+    passive_html,
+    passive_pretty,
+    passive_section,
+    verification_html,
+    verification_pretty,
+)
 from coopkin_sym.present.sentences import (
     component_sentences,
     count_sentences,
@@ -76,8 +99,6 @@ _MAX_LINES = 12
 _MAX_LATEX = 2000
 
 _BLOCK_NAMES = ("C11", "C12", "C22", "C23")
-_CELL = ' style="text-align:left"'
-_CENTER = ' style="text-align:center"'
 
 
 # ------------------------------------------------------------------ small pieces
@@ -167,39 +188,6 @@ def _numbers_array(numbers: Numbers | Mapping[str, int]) -> str:
     return "\\begin{array}{ll}\n" + " \\\\\n".join(rows) + "\n\\end{array}"
 
 
-def _e(text: object) -> str:
-    return html.escape(str(text))
-
-
-def _table(header: Sequence[str], rows: Sequence[Sequence[str]],
-           centered: Sequence[int] = ()) -> str:
-    """An HTML table; cells are HTML already (escaped by the caller)."""
-    def cell(tag: str, k: int, body: str) -> str:
-        return f"<{tag}{_CENTER if k in centered else _CELL}>{body}</{tag}>"
-    head = "".join(cell("th", k, _e(h)) for k, h in enumerate(header))
-    body = "".join("<tr>" + "".join(cell("td", k, c) for k, c in enumerate(row)) + "</tr>"
-                   for row in rows)
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
-
-
-def _numbers_rows(numbers: Numbers | Mapping[str, int]) -> list[list[str]]:
-    get = numbers.get if isinstance(numbers, Mapping) else numbers.as_dict().get
-    return [[_e(k), _e(get(k, "?")), _e(NUMBER_WORDS[k])]
-            for k in NUMBER_NAMES]
-
-
-def _numbers_table(numbers: Numbers | Mapping[str, int]) -> str:
-    return _table(["number", "value", "meaning"], _numbers_rows(numbers), centered=(1,))
-
-
-def _div(parts: Sequence[str]) -> str:
-    return '<div class="coopkin">' + "\n".join(p for p in parts if p) + "</div>"
-
-
-def _list(items: Sequence[str]) -> str:
-    return "<ul>" + "".join(f"<li>{_e(s)}</li>" for s in items) + "</ul>" if items else ""
-
-
 def _block_html(name: str, block: sp.Matrix | str, shape: tuple[int, int],
                 labels: Sequence[str]) -> str:
     title = f"<p><strong>{name}</strong> ({shape[0]} x {shape[1]})"
@@ -207,7 +195,13 @@ def _block_html(name: str, block: sp.Matrix | str, shape: tuple[int, int],
         return f"{title}: {_e(block)}</p>"
     if block.cols == 0:
         return f"{title}: empty</p>"
-    return f"{title}</p><pre>{_e(chr(10).join(block_table(block, list(labels))))}</pre>"
+    text = f"<pre>{_e(chr(10).join(block_table(block, list(labels))))}</pre>"
+    tex = f"C_{{{name[1:]}}} = {sp.latex(block)}"
+    if not typesets(block, tex):
+        return f"{title}</p>{text}"
+    # typeset by the notebook's MathJax; the text too, for a viewer without it
+    return (f"{title}</p>{math_html(tex)}<details><summary>as text (rows: "
+            f"{_e(', '.join(labels))})</summary>{text}</details>")
 
 
 # ------------------------------------------------------------------ numbers
@@ -255,6 +249,11 @@ def analysis_latex(a: Analysis) -> str:
     """
     lines = [_tex_text("Analysis of " + _analysis_head(a)), _numbers_array(a.numbers),
              _tex_text(classes_text(a.numbers))]
+    passive = analysis_passive(a)
+    if passive is not None:
+        lines.append(_tex_text(passive if isinstance(passive, str) else
+                               "Passive-joint numbers: " + passive_numbers_text(
+                                   passive.numbers)))
     shown, missing = [], []
     for name, block in _small_blocks(a).items():
         label = f"C_{{{name[1:]}}}"
@@ -294,6 +293,10 @@ def analysis_html(a: Analysis) -> str:
     if doubt:
         parts.append(f"<p><em>{_e(doubt)}</em></p>")
     parts += [f"<p>{_e(classes_text(a.numbers))}</p>", _list(said)]
+    passive = analysis_passive(a)
+    if passive is not None:    # what coopkin analyze prints about passive joints
+        parts += ([f"<p>{_e(passive)}</p>"] if isinstance(passive, str)
+                  else passive_section(passive))
     shapes = _shapes(a)
     parts += [_block_html(name, blocks[name], shapes[name], labels[name])
               for name in _BLOCK_NAMES]
@@ -303,8 +306,12 @@ def analysis_html(a: Analysis) -> str:
 def _analysis_pretty(a: Analysis) -> str:
     shapes = _shapes(a)
     blocks = ", ".join(f"{n} ({r} x {c})" for n, (r, c) in shapes.items())
-    return "\n".join([repr(a), "  " + _numbers_spaced(a.numbers),
-                      "  " + classes_text(a.numbers), f"  Blocks: {blocks}"])
+    lines = [repr(a), "  " + _numbers_spaced(a.numbers), "  " + classes_text(a.numbers)]
+    passive = analysis_passive(a)
+    if passive is not None:
+        lines.append("  " + (passive if isinstance(passive, str) else
+                             "Passive: " + passive_numbers_text(passive.numbers)))
+    return "\n".join([*lines, f"  Blocks: {blocks}"])
 
 
 def _irrational_head(result: IrrationalAnalysis) -> tuple[str, str]:
@@ -626,7 +633,9 @@ def pretty_text(obj: Any) -> str:
 
 _PRETTY: dict[type, Callable[[Any], str]] = {
     Analysis: _analysis_pretty, IrrationalAnalysis: _irrational_pretty,
-    Locus: _locus_pretty, SweepResult: _sweep_pretty}
+    Locus: _locus_pretty, SweepResult: _sweep_pretty, FactoredMotions: factored_pretty,
+    PassiveAnalysis: passive_pretty, BatchResult: batch_pretty,
+    Certificate: certificate_pretty, Verification: verification_pretty}
 
 _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (Numbers, "latex", numbers_latex), (Numbers, "html", numbers_html),
@@ -635,11 +644,16 @@ _RENDERERS: list[tuple[type, str, Callable[[Any], str]]] = [
     (IrrationalAnalysis, "html", irrational_html),
     (Locus, "html", locus_html), (Component, "html", component_html),
     (SweepResult, "html", sweep_html), (Manipulability, "latex", manipulability_latex),
+    (FactoredMotions, "latex", factored_latex), (FactoredMotions, "html", factored_html),
+    (PassiveAnalysis, "html", passive_html), (BatchResult, "html", batch_html),
+    (Certificate, "html", certificate_html), (Verification, "html", verification_html),
     *((cls, "pretty", render) for cls, render in _PRETTY.items())]
 
 
 def install() -> None:
-    """Register this module's renderers (done when it is imported).
+    """Register this module's renderers (done when it is imported); LaTeX is given
+    only when MathJax accepts it (see :mod:`coopkin_sym.present.mathjax`), else the
+    HTML view shows.
 
     Example
     -------
@@ -649,7 +663,11 @@ def install() -> None:
     True
     """
     for cls, kind, renderer in _RENDERERS:
-        register(cls, kind, renderer)
+        register(cls, kind, _within_mathjax(renderer) if kind == "latex" else renderer)
+
+
+def _within_mathjax(renderer: Callable[[Any], str | None]) -> Callable[[Any], str | None]:
+    return lambda obj: latex_or_none(renderer(obj))
 
 
 install()

@@ -61,6 +61,7 @@ from coopkin_sym.present.draw_inputs import (
     motion_counts,
     parse_motion,
 )
+from coopkin_sym.present.draw_labels import check_labels, spread_labels
 from coopkin_sym.present.draw_motion import (
     SMALL_FRACTION,
     _draw_motion,
@@ -104,7 +105,8 @@ __all__ = ["ARM_COLORS", "JOINT_MOTION_COLOR", "MOTION_KINDS", "OBJECT_MOTION_CO
 
 def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
                 motion: str | Sequence | None = None, ax: Axes | None = None,
-                title: str | None = None, ellipsoid: bool = False) -> Figure:
+                title: str | None = None, ellipsoid: bool = False,
+                labels: bool | str = True) -> Figure:
     """Draw a system in 3D: arms, joint axes, contacts and normals, the object, the
     ground, and optionally one motion.
 
@@ -129,6 +131,11 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
         :mod:`coopkin_sym.analysis.manipulability`): the velocities of the object's
         reference point that unit joint speed gives, modulo the indeterminate motions;
         an ellipse in the plane for a planar system. Its scale is stated.
+    labels
+        The name labels of joints and contacts (see
+        :mod:`coopkin_sym.present.draw_labels`): ``True`` names, long ones shortened,
+        ``"short"`` joint numbers in their arm, ``False`` none; labels are moved apart
+        so that none covers another.
 
     Returns
     -------
@@ -137,7 +144,8 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
     Raises
     ------
     DrawError
-        A motion that does not exist, an ``ax`` that is not 3D, matplotlib missing.
+        A motion that does not exist, an ``ax`` that is not 3D, ``labels`` not one of
+        the three, matplotlib missing.
 
     Example
     -------
@@ -147,6 +155,7 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
     ...      if (a.get_gid() or "").startswith("contact:")])
     2
     """
+    labels = check_labels(labels)
     a = _analysis(analysis_or_system, at)
     request = parse_motion(motion, a)
     Figure, FigureCanvasAgg = _mpl()
@@ -158,21 +167,22 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
         raise DrawError("ax: a 3D axes is needed (add_subplot(projection='3d'))")
     fig = ax.figure
     try:
-        return _draw_into(fig, ax, a, request, title, ellipsoid)
+        return _draw_into(fig, ax, a, request, title, ellipsoid, labels)
     except (np.linalg.LinAlgError, OverflowError, FloatingPointError,
             ZeroDivisionError) as exc:
         raise DrawError(f"cannot draw this configuration ({type(exc).__name__}: "
                         f"{' '.join(str(exc).split())[:80]})") from None
 
 
-def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool = False):
+def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool = False,
+               labels: bool | str = True):
     values = _Values(a)
     scene = _Scene(a, values)
     legend: list = []
     _draw_ground(ax, a, scene, legend)
     _draw_object(ax, a, scene, legend)
-    _draw_arms(ax, a, scene, legend)
-    _draw_contacts(ax, a, scene, legend)
+    _draw_arms(ax, a, scene, legend, labels)
+    _draw_contacts(ax, a, scene, legend, labels)
     motion_line = ""
     if isinstance(a, _AtIrrational):
         motion_line = _not_drawn(request, ellipsoid)
@@ -211,6 +221,8 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
             unique.append(h)
     ax.legend(handles=unique, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
               frameon=False)
+    if labels:
+        spread_labels(ax)
     return fig
 
 
@@ -233,7 +245,8 @@ def _not_drawn(request: tuple[str, int] | None, ellipsoid: bool) -> str:
 
 def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
                  at: str | Mapping | None = None, motion: str | Sequence | None = None,
-                 title: str | None = None, dpi: int = 150, ellipsoid: bool = False) -> Path:
+                 title: str | None = None, dpi: int = 150, ellipsoid: bool = False,
+                 labels: bool | str = True) -> Path:
     """Draw (see :func:`draw_system`) and write the picture to ``path``.
 
     The format follows the suffix (``.png``, ``.pdf``, ``.svg``). The file is written
@@ -250,7 +263,7 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     """
     target, suffix = check_output_path(path, SAVE_FORMATS, DrawError, "picture")
     fig = draw_system(analysis_or_system, at=at, motion=motion, title=title,
-                      ellipsoid=ellipsoid)
+                      ellipsoid=ellipsoid, labels=labels)
 
     def save(tmp: str) -> None:
         fig.savefig(tmp, dpi=dpi, format=suffix[1:])

@@ -30,6 +30,7 @@ from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.sympy_bridge import rational_to_sympy
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.present.draw_inputs import _AtIrrational
+from coopkin_sym.present.draw_labels import arm_prefix, contact_label, joint_label
 from coopkin_sym.present.sentences import contact_phrase
 
 ARM_COLORS = ("tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:olive", "tab:cyan",
@@ -356,13 +357,14 @@ def _hull_faces(pts) -> list:
     return faces
 
 
-def _draw_arms(ax, a: Analysis, scene: _Scene, legend: list) -> None:
+def _draw_arms(ax, a: Analysis, scene: _Scene, legend: list,
+               labels: bool | str = True) -> None:
     from matplotlib.lines import Line2D
 
     model = a.model
     arrow = 0.16 * scene.size  # float-ok
     kinds = set()
-    labels: dict[tuple, list[str]] = {}
+    at_point: dict[tuple, list] = {}    # joints at one point: one label
     for i, arm in enumerate(model.arms):
         color = ARM_COLORS[i % len(ARM_COLORS)]
         legend.append(Line2D([], [], color=color, linewidth=3, label=f"arm {arm.name}"))
@@ -408,11 +410,15 @@ def _draw_arms(ax, a: Analysis, scene: _Scene, legend: list) -> None:
                                           + np.outer(e2, np.sin(phi))))  # float-ok
                 ax.plot(*ring, color=color, linewidth=1)
             key = tuple(np.round(o / scene.size, 6))  # float-ok: group coincident joints
-            labels.setdefault(key, [o, color, []])[2].append(joint.name)
-    for o, color, names in labels.values():
-        ax.text(*o, ", ".join(names), fontsize=8, color=color, fontweight="bold",
-                transform=_shift(ax, 7, -12), zorder=1000,
-                bbox=_LABEL_BOX)
+            prefix = arm_prefix([j.name for j in arm.joints])
+            at_point.setdefault(key, [o, color, [], [], prefix])[2].append(joint.name)
+            at_point[key][3].append(k + 1)
+    for o, color, names, numbers, prefix in at_point.values() if labels else ():
+        text = ax.text(*o, joint_label(names, numbers, labels, prefix), fontsize=8,
+                       color=color,
+                       fontweight="bold", transform=_shift(ax, 7, -12), zorder=1000,
+                       bbox=_LABEL_BOX)
+        text.set_gid("label:joint:" + ",".join(names))
     if "revolute" in kinds:
         legend.append(Line2D([], [], color="0.2", marker="o", markerfacecolor="white",
                              label="revolute joint (axis)"))
@@ -421,7 +427,8 @@ def _draw_arms(ax, a: Analysis, scene: _Scene, legend: list) -> None:
                              markerfacecolor="white", label="prismatic joint (axis)"))
 
 
-def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list) -> None:
+def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list,
+                   labels: bool | str = True) -> None:
     from matplotlib.lines import Line2D
 
     seen = set()
@@ -432,9 +439,11 @@ def _draw_contacts(ax, a: Analysis, scene: _Scene, legend: list) -> None:
                          markersize=10, markerfacecolor="gold", markeredgecolor="black",
                          zorder=900)
         dot.set_gid(f"contact:{c.name}")
-        ax.text(*p, c.name, fontsize=9, fontweight="bold", color="black",
-                transform=_shift(ax, 7, 8), ha="left", zorder=1000,
-                bbox=_LABEL_BOX)
+        if labels:
+            text = ax.text(*p, contact_label(c.name, labels), fontsize=9,
+                           fontweight="bold", color="black", transform=_shift(ax, 7, 8),
+                           ha="left", zorder=1000, bbox=_LABEL_BOX)
+            text.set_gid(f"label:contact:{c.name}")
         if c.model not in seen:
             seen.add(c.model)
             legend.append(Line2D([], [], linestyle="none", marker=marker, markersize=8,

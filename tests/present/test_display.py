@@ -13,6 +13,7 @@ import re
 from html.parser import HTMLParser
 
 import pytest
+import sympy as sp
 
 import coopkin_sym
 from coopkin_sym.analysis import renderers
@@ -20,7 +21,7 @@ from coopkin_sym.analysis.locus.certify import Certificate
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.numbers import NUMBER_NAMES, Numbers
 from coopkin_sym.analysis.sweep import grid
-from coopkin_sym.present import display
+from coopkin_sym.present import display, mathjax
 from coopkin_sym.present.report import NUMBER_WORDS
 
 GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}
@@ -370,6 +371,7 @@ def test_display_says_a_block_over_the_budget_is_too_large(monkeypatch):
     monkeypatch.setattr(display, "_ENTRY_TERMS", 10**6)
     monkeypatch.setattr(display, "_BLOCK_TERMS", 10**9)
     monkeypatch.setattr(display, "_MAX_LATEX", 10**9)
+    monkeypatch.setattr(mathjax, "MATHJAX_LATEX_LIMIT", 10**9)   # the whole in LaTeX
     page = a._repr_html_()
     parse_html(page)
     assert "<strong>C22</strong> (8 x 5): too large: C22: the coordinated joint motions" in page
@@ -389,3 +391,70 @@ def test_importing_the_package_installs_the_renderers():
     kinds = {(cls.__name__, kind) for cls, kind in renderers._RENDERERS}
     assert {("Analysis", "html"), ("Analysis", "latex"), ("Analysis", "pretty"),
             ("Numbers", "latex"), ("Locus", "html"), ("SweepResult", "html")} <= kinds
+
+
+# ------------------------------------------------------------------ what MathJax accepts
+
+
+def test_no_latex_over_what_mathjax_accepts(results, monkeypatch):
+    """MathJax refuses 12,218 characters (its TeX buffer holds 5 * 1024): a display
+    longer than the limit gives no LaTeX, and its HTML view remains."""
+    assert mathjax.MATHJAX_LATEX_LIMIT == 4000
+    for name in LATEX:
+        assert len(results[name]._repr_latex_()) <= mathjax.MATHJAX_LATEX_LIMIT, name
+    a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    a.term_budget = 10
+    monkeypatch.setattr(display, "_ENTRY_TERMS", 10**6)
+    monkeypatch.setattr(display, "_BLOCK_TERMS", 10**9)
+    monkeypatch.setattr(display, "_MAX_LATEX", 10**9)
+    assert a._repr_latex_() is None
+    page = a._repr_html_()
+    parse_html(page)
+    assert "<strong>C22</strong> (8 x 5): too large" in page
+
+
+def test_factored_motions_of_case2_show_as_html_with_the_named_factors():
+    f = coopkin_sym.load("paper-case2-hard").analyze(generic=True).coordinated_factored()
+    assert len("$$" + r" \\ ".join(f.latex().splitlines()) + "$$") == 12218
+    assert f._repr_latex_() is None
+    page = f._repr_html_()
+    assert len(page) < 12000
+    parsed = parse_html(page)
+    factors = [r for r in parsed.rows if len(r) == 2 and r[0].startswith("d")]
+    assert factors == [["d1", "L"], ["d2", "t_q2 - 1"], ["d3", "t_q2 + 1"],
+                       ["d4", "t_q1**2 + 1"], ["d5", "t_q2**2 + 1"], ["d6", "t_q8**2 + 1"],
+                       ["d7", "t_q7**2 + 1"], ["d8", "t_q6**2 + 1"],
+                       ["d9", "t_q8**2 + 2*t_q8 - 1"]]
+    # C12 (zeros and ones) is typeset; the maps, too wide, are listed entry by entry
+    assert r"$$C_{12} = \left[\begin{matrix}0 &amp; 0 &amp; 0 &amp; 0 &amp; 0\\1 &amp; 0" in page
+    assert "$$K_" not in page
+    entries = [r for r in parsed.rows if len(r) == 3 and r[0].startswith("q")]
+    assert [r[:2] for r in entries if r[0] in ("q5", "q6")] == [
+        ["q5", "v_x"], ["q5", "w_y"], ["q5", "w_z"]]            # q6 moves with no twist
+    assert ["q5", "v_x", "1"] in entries and ["q4", "v_z", "1"] in entries
+    assert len(entries) == 13 + 13
+    (cut,) = [r[2] for r in entries if r[:2] == ["q7", "w_y"]]
+    assert cut.endswith("...") and len(cut) == 300
+    whole = sp.sstr(f.maps()["s2"][2, 4])
+    assert len(whole) == 1057 and cut[:297] == whole[:297]
+    text = "".join(parsed.text)
+    assert "Entries longer than 300 characters are cut here." in text
+    assert "All of it: .latex() (LaTeX), .maps() (SymPy matrices" in text
+    assert repr(f) == ("<FactoredMotions paper case 2, two SCARA robots, hard/hard: 5 "
+                       "coordinated motions; arms s1 (4 joints), s2 (4 joints); 9 named factors>")
+
+
+def test_small_factored_motions_keep_their_latex():
+    f = coopkin_sym.load("paper-case1-hard").analyze(generic=True).coordinated_factored()
+    tex = f._repr_latex_()
+    assert tex == "$$" + r" \\ ".join(f.latex().splitlines()) + "$$"
+    assert tex.endswith(r"d_{1} = L \\ d_{2} = t_{q1} \\ d_{3} = t_{q2}$$")
+    check_latex(tex)
+    parse_html(f._repr_html_())
+
+
+def test_html_of_an_analysis_typesets_its_small_blocks(results):
+    page = results["case1 at a point"]._repr_html_()
+    assert (r"$$C_{11} = \left[\begin{matrix}0\\0\\0\\1\\0\\0\end{matrix}\right]$$"
+            in page)
+    assert "<details><summary>as text (rows: v_x, v_y, v_z, w_x, w_y, w_z)</summary>" in page

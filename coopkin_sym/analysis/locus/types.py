@@ -332,8 +332,8 @@ class Check:
 
 
 
-@dataclass
-class Certificate:
+@dataclass(repr=False)
+class Certificate(Displayable):
     """Whether a locus is proved complete, chart by chart and depth by depth.
 
     Attributes
@@ -367,6 +367,8 @@ class Certificate:
     >>> cert = certify_locus(system, system.locus(), timeout=60)
     >>> cert.certified, len(cert.checks), cert.depths[0]["failed"]
     (True, 46, 0)
+    >>> cert
+    <Certificate paper case 1, hard/hard: certified; 46 tests, 0 not certified>
     """
 
     system: str
@@ -378,6 +380,12 @@ class Certificate:
     notes: list[Remark | str] = field(default_factory=list)
     untested_beyond: int | None = None
     seconds: float = 0.0
+
+    def __repr__(self) -> str:
+        verdict = "certified" if self.certified else "not certified"
+        failing = sum(1 for c in self.checks if not getattr(c, "certified", True))
+        return (f"<Certificate {clip(self.system, 100)}: {verdict}; {len(self.checks)} "
+                f"tests, {failing} not certified>")
 
     def certified_by(self) -> dict[str, int]:
         """How many tests each backend certified.

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 
 from coopkin_sym.analysis.locus.remarks import Remark
+from coopkin_sym.analysis.renderers import Displayable, clip
 
 #: Uncovered points kept in the result (all are counted).
 MAX_LISTED = 200
@@ -68,8 +69,8 @@ class ComponentIssue:
     detail: str = ""
 
 
-@dataclass
-class Verification:
+@dataclass(repr=False)
+class Verification(Displayable):
     """The result of :func:`~coopkin_sym.analysis.locus.verify.verify_locus`, as plain
     exact data.
 
@@ -109,6 +110,8 @@ class Verification:
     >>> check = verify_locus(system, system.locus(), max_points=200)
     >>> check.ok, check.grid_points > 0
     (True, True)
+    >>> check
+    <Verification paper case 1, hard/hard: passed (0 uncovered points, 0 unsound components)>
     """
 
     system: str
@@ -144,6 +147,12 @@ class Verification:
     @property
     def unsound_components(self) -> list[int]:
         return sorted({i.component for i in self.unsound})
+
+    def __repr__(self) -> str:
+        n, m = self.uncovered_total, len(self.unsound_components)
+        return (f"<Verification {clip(self.system, 100)}: "
+                f"{'passed' if self.ok else 'FAILED'} ({n} uncovered point"
+                f"{'' if n == 1 else 's'}, {m} unsound component{'' if m == 1 else 's'})>")
 
     def to_json(self) -> dict:
         """Plain JSON data (notes as remark data: the presentation layer's
