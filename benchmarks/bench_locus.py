@@ -8,7 +8,9 @@ configuration singular when ``numpy.linalg.matrix_rank`` (default tolerance) of 
 ``H G^T`` or ``H D`` is below its generic value:
 
 * paper case 1 (two joints): a 1-degree grid over both angles (361 x 361 points);
-* larger systems: uniformly random configurations (as many as below).
+* larger systems (the five-bar, paper case 2 with its eight joints free, capped at
+  :data:`CASE2_CAP_S` seconds, and the planar hand of three 3-joint fingers): uniformly
+  random configurations (as many as below).
 
 Both columns are times; the note says what each found. ``ratio = baseline_s /
 ours_s``: above 1 means the exact report took less time than the float search.
@@ -31,6 +33,9 @@ import coopkin_sym
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.model.builders import planar_hand
 from coopkin_sym.present.report import write_report
+
+#: The time cap of the paper case 2 search with every joint free (seconds).
+CASE2_CAP_S = 900.0
 
 
 def _float_q(system):
@@ -59,9 +64,9 @@ def _generic_ranks(locus, m: int, r: int) -> tuple[int, int, int]:
     return 6 + r - g["Nm"], 6 - g["Ni"], r - g["Nr"]
 
 
-def _ours(system, max_depth: int):
+def _ours(system, max_depth: int, timeout: float | None = None):
     t0 = time.perf_counter()
-    locus = compute_locus(system, max_depth=max_depth)
+    locus = compute_locus(system, max_depth=max_depth, timeout=timeout)
     with tempfile.TemporaryDirectory() as tmp:
         write_report(locus, Path(tmp) / "report.html", system=system)
     return locus, time.perf_counter() - t0
@@ -99,8 +104,9 @@ def bench_grid_case1(step_deg: int) -> dict:
     }
 
 
-def bench_random(name: str, system, samples: int, max_depth: int) -> dict:
-    locus, ours = _ours(system, max_depth=max_depth)
+def bench_random(name: str, system, samples: int, max_depth: int,
+                 timeout: float | None = None) -> dict:
+    locus, ours = _ours(system, max_depth=max_depth, timeout=timeout)
     f, shape, names, r = _float_q(system)
     rng = np.random.default_rng(1992)
     t0 = time.perf_counter()
@@ -126,9 +132,13 @@ def run(quick: bool = False, log=print) -> list[dict]:
     log("  locus: paper case 1")
     rows.append(bench_grid_case1(4 if quick else 1))
     samples = 20_000 if quick else 200_000
+    log("  locus: five-bar")
+    rows.append(bench_random("five-bar", coopkin_sym.load("five-bar"), samples,
+                             max_depth=2))
     log("  locus: paper case 2, eight joints")
+    # capped: a cut search says what it left out (the note counts those items)
     rows.append(bench_random("paper-case2-hard", coopkin_sym.load("paper-case2-hard"),
-                             samples, max_depth=2))
+                             samples, max_depth=2, timeout=CASE2_CAP_S))
     log("  locus: planar three-finger hand")
     rows.append(bench_random("planar hand, 3 fingers x 3 joints",
                              coopkin_sym.load(planar_hand(3, 3)), samples, max_depth=1))

@@ -137,14 +137,19 @@ class _Builder:
         self.ring, self.symbols = ring_for(model, config)
         self.param_subs = {p: config.parameters[p.name] for p in model.parameters
                            if p.name in config.parameters}
+        self._numbers: dict = {}   # each model number read once (it recurs in every pose)
 
     # exact numbers of the model, as rational functions of the ring
     def num(self, expr) -> RatFunc:
         if getattr(expr, "is_Rational", False) or type(expr) is int:
             return self.ring.ratfunc(to_fmpq(expr))     # a number: no polynomial to read
-        e = exact_expr(expr, None, "value")
-        e = e.subs(self.param_subs) if self.param_subs else e
-        return self.ring.ratfunc(poly_from_sympy(e, self.ring, self.symbols))
+        value = self._numbers.get(expr)
+        if value is None:
+            e = exact_expr(expr, None, "value")
+            e = e.subs(self.param_subs) if self.param_subs else e
+            value = self._numbers[expr] = self.ring.ratfunc(
+                poly_from_sympy(e, self.ring, self.symbols))
+        return value
 
     def vec(self, v: Sequence) -> Vec:
         return [self.num(x) for x in v]

@@ -31,7 +31,7 @@ from coopkin_sym.errors import NumberError
 from coopkin_sym.exact.parse import brief, parse_polynomial
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 
-__all__ = ["NamedPolynomial"]
+__all__ = ["NamedPolynomial", "integer_text"]
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _RESERVED = frozenset({"pi", "E", "I", "oo", "sqrt", "sin", "cos", "tan", "atan", "asin",
@@ -147,6 +147,9 @@ class NamedPolynomial:
     @cached_property
     def text(self) -> str:
         """The polynomial as text (SymPy's printing), printed once."""
+        if all(c.denominator == 1 for _, c in self.terms):
+            return integer_text(self.variables,
+                                ((e, c.numerator) for e, c in self.terms))
         return sp.sstr(self._expression)
 
     def is_zero(self) -> bool:
@@ -174,3 +177,36 @@ class NamedPolynomial:
         """
         names = [n for n in dict.fromkeys(_NAME.findall(str(text))) if n not in _RESERVED]
         return cls.parse(text, names, where)
+
+
+def integer_text(names: Sequence[str], terms) -> str:
+    """The text SymPy prints (``sstr``) for the polynomial with integer coefficients
+    ``sum c * prod(names[i] ** e[i])`` over ``terms`` (pairs ``(exponents, c)``, distinct
+    exponents), written directly: the terms by decreasing lex order of their exponents
+    over the names sorted, each as its coefficient and its powers in that order.
+
+    Example
+    -------
+    >>> integer_text(("y", "x"), [((0, 0), 5), ((1, 2), -3), ((2, 0), 1)])
+    '-3*x**2*y + y**2 + 5'
+    """
+    order = sorted(range(len(names)), key=lambda k: names[k])
+    keyed = []
+    for exps, c in terms:
+        c = int(c)
+        if c:
+            keyed.append((tuple(int(exps[k]) for k in order), c))
+    if not keyed:
+        return "0"
+    keyed.sort(reverse=True)
+    if (len(keyed) == 2 and keyed[1][1] > 0 and not any(keyed[1][0]) and keyed[0][1] < 0
+            and sum(1 for e in keyed[0][0] if e) == 1):
+        keyed.reverse()  # SymPy's one exception: a positive number, then -c*x**e
+    out: list[str] = []
+    for exps, c in keyed:
+        powers = [names[k] if e == 1 else f"{names[k]}**{e}"
+                  for k, e in zip(order, exps, strict=True) if e]
+        body = "*".join(([str(abs(c))] if abs(c) != 1 or not powers else []) + powers)
+        out.append(("-" if c < 0 else "+") + body)
+    text = out[0][1:] if out[0][0] == "+" else out[0]
+    return " ".join([text] + [f"{t[0]} {t[1:]}" for t in out[1:]])

@@ -323,3 +323,29 @@ def _horner(coeffs: list[Fraction], lo: Fraction, hi: Fraction) -> tuple[Fractio
 
 
 __all__ = ["PI_DENOMINATOR", "RealRoot", "element_expression"]
+
+
+def real_root_count(p: flint.fmpq_poly) -> int:
+    """The number of distinct real roots of a nonzero ``fmpq_poly`` (Sturm's theorem:
+    the sign changes of its Sturm sequence at -oo minus those at +oo), exactly.
+
+    Example
+    -------
+    >>> real_root_count(flint.fmpq_poly([-2, 0, 1])), real_root_count(flint.fmpq_poly([1, 0, 1]))
+    (2, 0)
+    """
+    if p.degree() < 1:
+        return 0
+    chain = [p, p.derivative()]
+    while chain[-1].degree() > 0:
+        r = chain[-2] % chain[-1]
+        if r == 0:
+            break
+        chain.append(-r)
+    plus = [1 if q.coeffs()[-1] > 0 else -1 for q in chain]
+    minus = [s if q.degree() % 2 == 0 else -s for s, q in zip(plus, chain, strict=True)]
+    return _changes(minus) - _changes(plus)
+
+
+def _changes(signs: list[int]) -> int:
+    return sum(1 for a, b in zip(signs, signs[1:], strict=False) if a != b)

@@ -28,9 +28,9 @@ from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.polynomial import NamedPolynomial
+from coopkin_sym.exact.polynomial import NamedPolynomial, integer_text
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
-from coopkin_sym.exact.realroot import RealRoot
+from coopkin_sym.exact.realroot import RealRoot, real_root_count
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
@@ -53,7 +53,10 @@ def vars_of(ctx: SearchContext, f) -> list[str]:
 def poly_text(ctx: SearchContext, f) -> str:
     """``f`` as text; its reading in angles is kept in ``ctx.readings`` (when the
     context has one) so that conditions never parse text back."""
-    text = sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
+    if isinstance(f, flint.fmpz_mpoly):  # SymPy's printing, written directly
+        text = integer_text(ctx.ring.names, f.to_dict().items())
+    else:
+        text = sp.sstr(poly_to_sympy(f, ctx.ring, ctx.symbols))
     readings = getattr(ctx, "readings", None)
     if readings is not None and text not in readings:
         readings[text] = read_poly(ctx, f, text)
@@ -113,6 +116,43 @@ def has_real_point(ctx: SearchContext, f, names) -> bool | None:
     """True when a real point of ``f = 0`` is found (a real root of a restriction to
     rational values of the other variables), False when ``f`` is proved to have no real
     zero (:func:`no_real_zeros`), None when undecided."""
+    index = [ctx.ring_names.index(n) for n in names]
+    if not isinstance(f, flint.fmpz_mpoly) or set(vars_of(ctx, f)) - set(names):
+        return _has_real_point_sympy(ctx, f, names)
+    terms = [(tuple(int(e) for e in m), int(c)) for m, c in f.to_dict().items()]
+    for _ in range(12):
+        others = [Fraction(ctx.rng.randint(-9, 9), ctx.rng.randint(1, 5))
+                  for _ in names[1:]]
+        uni = _restriction(terms, index, others)
+        if uni.degree() > 0 and real_root_count(uni) > 0:
+            return True
+        if len(names) == 1:
+            return False
+    return False if no_real_zeros(f) else None
+
+
+def _restriction(terms, index: list[int], values: list[Fraction]) -> flint.fmpq_poly:
+    """The polynomial with ``terms`` in the variable ``index[0]`` once the variables
+    ``index[1:]`` take ``values``."""
+    xs = [flint.fmpq(v.numerator, v.denominator) for v in values]
+    powers: dict[tuple[int, int], flint.fmpq] = {}
+    coeffs: dict[int, flint.fmpq] = {}
+    for mon, c in terms:
+        v = flint.fmpq(c)
+        for j, k in enumerate(index[1:]):
+            e = mon[k]
+            if e:
+                power = powers.get((j, e))
+                if power is None:
+                    power = powers[(j, e)] = xs[j] ** e
+                v *= power
+        e = mon[index[0]]
+        coeffs[e] = coeffs[e] + v if e in coeffs else v
+    top = max(coeffs, default=0)
+    return flint.fmpq_poly([coeffs.get(e, flint.fmpq(0)) for e in range(top + 1)])
+
+
+def _has_real_point_sympy(ctx: SearchContext, f, names) -> bool | None:
     expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
     syms = [ctx.symbols[n] for n in names]
     for _ in range(12):
@@ -177,7 +217,7 @@ def _real_root_count(f, k: int) -> int:
     coeffs = [0] * (f.degrees()[k] + 1)
     for mon, c in f.to_dict().items():
         coeffs[int(mon[k])] = int(c)
-    return sp.Poly(coeffs[::-1], sp.Symbol("y")).count_roots()
+    return real_root_count(flint.fmpq_poly(coeffs))
 
 
 def rational_point(ctx: SearchContext, f, names) -> dict[str, Fraction] | None:

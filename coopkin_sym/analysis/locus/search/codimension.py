@@ -157,14 +157,18 @@ def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[
     """
     if any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
         return False
+    by_y: dict = {}   # the resultants in y do not depend on x: each computed once
     for x, y in itertools.permutations(names, 2):
         kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
         if any(p.degrees()[ky] == 0 for p in polys):
             continue
-        res = None
-        for p in polys[1:]:
-            r = polys[0].resultant(p, y)
-            res = r if res is None else res.gcd(r)
+        if y not in by_y:
+            res = None
+            for p in polys[1:]:
+                r = polys[0].resultant(p, y)
+                res = r if res is None else res.gcd(r)
+            by_y[y] = res
+        res = by_y[y]
         if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
             continue
         _, factors = factor(res)
