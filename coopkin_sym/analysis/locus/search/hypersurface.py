@@ -17,9 +17,9 @@ from coopkin_sym.analysis.locus.algebra import (
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.search.components import note
 from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact import matrix as exact_matrix
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import POLYNOMIALS, PolyMatrix
-from coopkin_sym.exact.matrix import rank as matrix_rank
 
 
 # --- candidate polynomials -------------------------------------------------------------
@@ -141,7 +141,7 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
         return []
     ncols = len(rows[0])
     zctx = ctx.ring.zctx
-    rank = matrix_rank(rows, ncols, POLYNOMIALS, zctx)
+    rank = exact_matrix.rank(rows, ncols, POLYNOMIALS, zctx)
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in vars_of(ctx, e)})
