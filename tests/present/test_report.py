@@ -296,6 +296,7 @@ def _pdflatex(tmp_path, name: str) -> subprocess.CompletedProcess:
                           text=True, timeout=300)
 
 
+@pytest.mark.slow   # a 33-page compile
 @pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
                     reason="pdflatex or pdftotext (poppler-utils) not installed")
 def test_latex_tables_lose_no_row_across_pages(tmp_path):
