@@ -671,3 +671,11 @@ def test_without_the_saturation_the_points_at_a_denominator_are_covered_apart(mo
                                                         "cert_undecided"}
     assert any(c.why.kind == "cert_denominator_residual" and c.why["component"] == 2
                for c in failed)
+
+
+@pytest.mark.parametrize("name", ["four-bar", "shaky-pinned-bars", "underactuated-finger"])
+def test_small_shipped_loci_are_certified_on_the_default_install(name):
+    # as docs/locus-report.md says: flint alone proves every test of these
+    system = load(name)
+    cert = certify_locus(system, shipped_locus(name), timeout=60, backend="flint")
+    assert cert.certified, [(c.where(), c.why) for c in cert.checks if not c.certified]
