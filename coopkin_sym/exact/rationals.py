@@ -26,7 +26,8 @@ __all__ = ["to_fmpq", "to_fraction", "to_sympy"]
 
 
 def _parts(x) -> tuple[int, int]:
-    """Numerator and denominator of an exact rational of any of the four types."""
+    """Numerator and denominator of an exact rational of any of the types the package
+    meets (int, Fraction, flint, SymPy, and SymPy's pure-Python QQ elements)."""
     if isinstance(x, bool):
         raise ArgumentTypeError("a boolean is not a rational")
     if isinstance(x, int):
@@ -39,6 +40,8 @@ def _parts(x) -> tuple[int, int]:
         return int(x.p), int(x.q)
     if isinstance(x, sp.Basic) and x.is_Rational:
         return int(x.p), int(x.q)
+    if type(x).__name__ == "PythonMPQ":   # SymPy's QQ under pure-Python ground types
+        return int(x.numerator), int(x.denominator)
     raise ArgumentTypeError(f"not an exact rational: {x!r}")
 
 

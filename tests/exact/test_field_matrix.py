@@ -59,3 +59,13 @@ def test_entries_come_back_as_sympy_writes_them():
     back = FieldMatrix.of(dm).to_domain_matrix()
     assert back.to_Matrix() == dm.to_Matrix() == sp.Matrix(
         [[X / (2 * X + 2 * Y), sp.Rational(1, 3)], [0, X + 1]])
+
+
+def test_rationals_of_sympys_pure_python_ground_types_are_read():
+    from fractions import Fraction
+
+    from sympy.external.pythonmpq import PythonMPQ
+
+    from coopkin_sym.exact.rationals import to_fraction
+
+    assert to_fraction(PythonMPQ(-3, 6)) == Fraction(-1, 2)
