@@ -177,6 +177,7 @@ def test_each_command_stops_at_its_bound_with_one_line(models, args, outcome):
     assert set(models.iterdir()) == before          # nothing written, nothing left
 
 
+@pytest.mark.slow
 def test_a_locus_cut_at_a_check_writes_its_report_and_says_so(tmp_path):
     # its generic numbers take 1 to 2 s (more on a loaded machine); the search has 0.8
     # of the bound and stops at checks of the clock within a tenth of a second of its
@@ -291,6 +292,7 @@ def test_progress_is_shown_on_a_terminal_after_a_second(models):
 # ------------------------------------------------------------------ the API
 
 
+@pytest.mark.slow
 def test_the_api_takes_the_same_bound():
     arms = load(many_arms(200, 6))
     hand = load(spatial_hand(10, 3))
@@ -401,6 +403,7 @@ def test_a_worker_that_dies_without_an_answer_is_a_package_error():
                                "(exit code 7)")
 
 
+@pytest.mark.slow
 def test_a_locus_report_draws_its_pictures_within_the_bound(tmp_path, monkeypatch):
     """The search has a share of the bound, the report the rest: its text first, then
     its pictures while time is left; the ones left out are said, and the run is cut."""

@@ -60,6 +60,7 @@ def test_factored_motions_of_random_systems(data):
     assert _check(a, data.draw(st.integers(0, 10**6)), compare_c22=True) > 0
 
 
+@pytest.mark.slow
 def test_factored_motions_of_a_hand():
     """planar_hand(4, 2): C22's entries run to 100,000 characters; the maps are small
     and name the finger singularities (t = 1, t = -1) once."""

@@ -31,6 +31,7 @@ def _decomposed(model, config):
 
 @settings(max_examples=60, **SETTINGS)
 @given(st.data())
+@pytest.mark.slow
 def test_point_numbers_compiled_agree_with_reference(data):
     """Every joint given: the compiled path (second and later points of a model) gives
     the reference's numbers, at generic-looking and special configurations."""

@@ -651,6 +651,7 @@ def _five_bar_depth0(monkeypatch=None):
     return [c for c in cert.checks if c.depth == 0 and c.inside is None]
 
 
+@pytest.mark.slow
 def test_five_bar_components_with_denominators_are_used_through_their_closure():
     # component #3 is a family with a denominator in its parametrization; its closure
     # (the saturation) takes part in the coverings: every depth-0 test is proved

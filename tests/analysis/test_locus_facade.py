@@ -61,6 +61,7 @@ def test_a_locus_read_back_is_given_its_system(system, locus, tmp_path):
     assert back.verify(system=system, max_points=200, lines=2).ok
 
 
+@pytest.mark.slow
 def test_write_every_format(locus, tmp_path):
     written = locus.write(tmp_path / "r.md")
     assert written[0].name == "r.md" and all(p.exists() for p in written)

@@ -206,7 +206,9 @@ SYSTEMS = {
 }
 
 
-@pytest.mark.parametrize("name", list(SYSTEMS))
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=[pytest.mark.slow] if n.startswith("two fingers") else [])
+    for n in SYSTEMS])
 def test_passive_numbers_change_exactly_on_the_locked_locus(name):
     """The locus of the locked system is verified independently (grid with q = pi,
     random lines), and at each of its witnesses the passive numbers are those its

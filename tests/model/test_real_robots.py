@@ -173,6 +173,7 @@ def test_the_locus_of_the_left_panda_elbow_and_wrists_checked_at_its_witnesses()
     _check_witnesses("panda-two-arm-box", locus)
 
 
+@pytest.mark.slow
 def test_the_locus_of_the_index_finger_checked_at_its_witnesses():
     system = coopkin_sym.load("allegro-hand-sphere")
     locus = system.locus(HAND_SLICE, free=["i1", "i2"])

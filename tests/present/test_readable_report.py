@@ -186,7 +186,7 @@ def _styles(lines) -> list[tuple[str, str]]:
     return [(to_hex(h.get_color()), h.get_marker()) for h in lines]
 
 
-@pytest.mark.parametrize("n", [30, 102])
+@pytest.mark.parametrize("n", [30, pytest.param(102, marks=pytest.mark.slow)])
 def test_every_legend_entry_and_every_component_has_its_own_style(n):
     fig = plot_components(planted_lines(n), None, ("q1", "q2"))
     entries = [h for h in fig.legends[0].legend_handles if h.get_label().startswith("#")]
