@@ -224,3 +224,19 @@ def test_a_numerical_projection_finds_a_curve_of_closed_configurations(name):
 
 def _bennett_loop_mp(x):
     return _bennett_loop(x, mp)
+
+
+def test_the_germ_proof_is_local_and_refuses_what_does_not_vanish():
+    """``y (y - 1) = 0`` is the line ``y = 0`` near the origin (and ``y = 1`` away):
+    ``x y`` vanishes on the germ though not on all of it, ``x^3`` does not, and a
+    dependent polynomial ``(y - x^2) (y - 1)`` of ``y - x^2`` does."""
+    import flint
+
+    from coopkin_sym.analysis.finite.closure import _germ_dimension
+
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    assert _germ_dimension([y * (y - 1), x * y], 2, 10) == 1
+    assert _germ_dimension([y * (y - 1), x ** 3], 2, 10) is None
+    assert _germ_dimension([y - x ** 2, (y - x ** 2) * (y - 1)], 2, 10) == 1
+    assert _germ_dimension([y - x ** 2, x * y], 2, 10) is None
