@@ -240,3 +240,17 @@ def test_the_germ_proof_is_local_and_refuses_what_does_not_vanish():
     assert _germ_dimension([y * (y - 1), x ** 3], 2, 10) is None
     assert _germ_dimension([y - x ** 2, (y - x ** 2) * (y - 1)], 2, 10) == 1
     assert _germ_dimension([y - x ** 2, x * y], 2, 10) is None
+
+
+def test_the_command_words_the_proof():
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    out = CliRunner().invoke(app, ["analyze", "bennett-linkage", "--finite"])
+    assert out.exit_code == 0, out.output
+    assert ("  Proof: the welded loop is overconstrained: its closure conditions that are "
+            "dependent here vanish, by exact ideal saturations,") in out.stdout
+    assert "(exact Gröbner bases)." in out.stdout
+    data = CliRunner().invoke(app, ["analyze", "bricard-linkage", "--finite", "--json"])
+    assert '"reason": "closure_saturation"' in data.stdout
