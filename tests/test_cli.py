@@ -185,6 +185,10 @@ def test_examples_print_whole_first_sentences():
                                       "contacts) at their tips.")
     assert lines["paper-case1-hard"] == ("Paper case study 1 (fig. 2), both contacts hard "
                                          "finger: two one-link arms hold an object.")
+    assert lines["bennett-linkage"].startswith("Bennett's linkage, a loop of four revolute")
+    assert lines["bricard-linkage"] == (
+        "A line-symmetric Bricard linkage, a movable loop of six revolute joints in "
+        "space, as two three-joint arms welded to one object.")
     assert all(text.endswith(".") for text in lines.values()), lines
     assert run_ok("examples", "four-bar") == out.splitlines()[6] + "\n"
 
