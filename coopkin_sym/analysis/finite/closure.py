@@ -21,7 +21,11 @@ generate holds a polynomial ``h`` with ``h(0) != 0`` (then ``h f^k`` lies in ``I
 ``M`` near the configuration: smooth, of dimension ``N - r``. The saturations are exact
 Gröbner bases (:func:`~coopkin_sym.exact.saturation.saturate`) with a time bound; a
 saturation not computed in time, or without such an ``h``, proves nothing, and the
-question stays open.
+question stays open. With one first-order motion whose joint components are equal up
+to sign in pairs (a symmetric linkage), the same proof is tried first on the subspace
+where the joints of each pair turn equally, in fewer variables: a smooth curve of
+closed configurations there lies in ``M`` (of dimension 1), so it is ``M`` near the
+configuration (:func:`welded_loop_dimension`).
 
 This is what decides Bennett's and Bricard's linkages, whose closure conditions are
 dependent at every configuration of their motion (overconstrained: the rank of ``Q``
