@@ -13,7 +13,8 @@ from coopkin_sym.cli import app
 
 runner = CliRunner()
 
-EXAMPLES = ["allegro-hand-sphere", "dh-three-finger-hand", "dh-two-puma560-box",
+EXAMPLES = ["allegro-hand-sphere", "bennett-linkage", "bricard-linkage",
+            "dh-three-finger-hand", "dh-two-puma560-box",
             "five-bar", "four-bar", "panda-two-arm-box", "paper-case1-complete-hard",
             "paper-case1-hard", "paper-case1-planar",
             "paper-case1-soft", "paper-case1-soft-hard", "paper-case2-complete",
@@ -184,8 +185,12 @@ def test_examples_print_whole_first_sentences():
                                       "contacts) at their tips.")
     assert lines["paper-case1-hard"] == ("Paper case study 1 (fig. 2), both contacts hard "
                                          "finger: two one-link arms hold an object.")
+    assert lines["bennett-linkage"].startswith("Bennett's linkage, a loop of four revolute")
+    assert lines["bricard-linkage"] == (
+        "A line-symmetric Bricard linkage, a movable loop of six revolute joints in "
+        "space, as two three-joint arms welded to one object.")
     assert all(text.endswith(".") for text in lines.values()), lines
-    assert run_ok("examples", "four-bar") == out.splitlines()[4] + "\n"
+    assert run_ok("examples", "four-bar") == out.splitlines()[6] + "\n"
 
 
 def test_examples_show_prints_the_model_file(tmp_path):

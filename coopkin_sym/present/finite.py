@@ -44,6 +44,11 @@ _REASON_WORDS = {
                            "theorem after a blow-up)",
     "binary_form_roots": "each simple real root of the reduced constraint's lowest "
                          "term is the tangent of one smooth branch",
+    "closure_saturation": "the welded loop is overconstrained: its closure conditions "
+                          "that are dependent here vanish, by exact ideal saturations, on "
+                          "the smooth set the independent ones cut out, so the "
+                          "configuration space is smooth here, of the dimension of the "
+                          "first-order motions",
     "no_first_order_motion": "there is no first-order motion",
 }
 
@@ -106,8 +111,9 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
     lines = [f"Finite mobility: {value} (first-order motions: {fm.first_order}) - "
              f"{classification_text(fm)}."]
     if fm.reason in _REASON_WORDS:
-        lines.append(f"  Proof: {_REASON_WORDS[fm.reason]} (expansion to order "
-                     f"{fm.order}).")
+        how = ("exact Gröbner bases" if fm.reason == "closure_saturation"
+               else f"expansion to order {fm.order}")
+        lines.append(f"  Proof: {_REASON_WORDS[fm.reason]} ({how}).")
     for k, branch in enumerate(fm.branches, 1):
         if branch.tangent is not None:
             span = ", ".join(_vector(v) for v in branch.tangent) or "{0}"

@@ -91,3 +91,12 @@ def test_random_systems_move_as_the_sampler_sees():
                 _check(system, at, samples=6)
                 checked += 1
     assert checked >= 8
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["bennett-linkage", "bricard-linkage"])
+def test_the_sampler_sees_the_overconstrained_loops_move_once(name):
+    """The closure saturation's finite mobility 1, and its branch tangent, are the
+    sampler's (Grübler-Kutzbach counts -2 and 0)."""
+    system = load(name)
+    _check(system, {j.name: "0" for j in system.model.joints}, samples=6)

@@ -62,7 +62,7 @@ def _items() -> list:
 
 BAD = {-4: "--at q1: angle '1' is not exact: tan(q/2) = tan(1/2) is irrational",
        -3: "no-such-example: no such file (nor a shipped example: allegro-hand-sphere, "
-           "dh-three-finger-hand",
+           "bennett-linkage, bricard-linkage, dh-three-finger-hand",
        -2: "expected a model source or a pair (source, at), got a sequence of 3"}
 
 

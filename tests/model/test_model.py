@@ -24,6 +24,8 @@ R = sp.Rational
 
 EXAMPLES = [
     "allegro-hand-sphere",
+    "bennett-linkage",
+    "bricard-linkage",
     "dh-three-finger-hand",
     "dh-two-puma560-box",
     "five-bar",
@@ -96,7 +98,8 @@ def test_example_path_and_unknown_example():
     path = example_path("paper-case1-hard")
     assert path.name == "paper-case1-hard.yaml" and path.is_file()
     with pytest.raises(ArgumentError, match="unknown example 'x'; shipped examples: "
-                                         "allegro-hand-sphere, dh-three-finger-hand, "
+                                         "allegro-hand-sphere, bennett-linkage, "
+                                         "bricard-linkage, dh-three-finger-hand, "
                                          "dh-two-puma560-box, "
                                          "five-bar, four-bar, panda-two-arm-box, "
                                          "paper-case1-complete-hard, "):

@@ -17,7 +17,12 @@ reduced to the first-order motions (:mod:`.reduce`), says whether they are finit
   theorem after a blow-up, real branches of dimension ``n - 1`` tangent to them (two
   hyperplanes: a bifurcation; an irreducible quadratic cone: a cone point); binary
   forms give one branch per simple real root. Anything else is undecided at the order
-  reached, with the bounds that are proved.
+  reached, with the bounds that are proved;
+* with complete contacts only (a welded loop), when the expansion stays undecided:
+  the closure conditions dependent here are proved, by exact saturations, to vanish on
+  the smooth set cut out by independent ones (:mod:`.closure`): the loop is
+  overconstrained, and ``V`` is smooth of dimension ``n`` (Bennett's and Bricard's
+  linkages).
 
 Example
 -------
@@ -33,6 +38,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from coopkin_sym.analysis.finite.closure import welded_loop_dimension
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
 from coopkin_sym.analysis.finite.forms import diagonal_form, quadratic_matrix, real_directions
 from coopkin_sym.analysis.finite.reduce import Reduced, reduce_map
@@ -83,7 +89,8 @@ class FiniteMobility:
         One of :data:`CLASSES`.
     reason
         How it was decided (``"submersion"``, ``"constant_rank"``, ``"real_cone_origin"``,
-        ``"cone_regular_points"``, ``"binary_form_roots"``), or why not.
+        ``"cone_regular_points"``, ``"binary_form_roots"``, ``"closure_saturation"``), or
+        why not.
     branches
         The motion branches through the point (when decided).
     orders
@@ -381,6 +388,14 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
     for k in orders:
         red = reduce_map(work, k)
         found = _decide_singular(work, red)
+        if found["dimension"] is None and k == orders[-1] and not extra:
+            proved = welded_loop_dimension(cmap, n)
+            if proved is not None:
+                basis = [_unit(n, i) for i in range(n)]
+                return FiniteMobility(n, (n, n), n, "kinematic_singularity"
+                                      if numbers_change else "regular", "closure_saturation",
+                                      (Branch(n, _kernel(cmap, first, basis)),),
+                                      ((1, n),), 1, notes)
         if found["dimension"] is not None or k == orders[-1]:
             lower, upper = found["bounds"]
             branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else

@@ -12,11 +12,14 @@ published sizes, also given by DH tables;
 ``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground;
 ``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``);
 ``four-bar`` (folded, it bifurcates) and ``shaky-pinned-bars`` (a first-order motion
-and no finite one) show finite mobility.
+and no finite one) show finite mobility, and ``bennett-linkage`` and
+``bricard-linkage`` (overconstrained loops of four and six revolute joints that move
+although the Grübler-Kutzbach count says they cannot) finite motions that no
+expansion decides.
 
 Example
 -------
->>> list_examples()[6:8]
+>>> list_examples()[8:10]
 ['paper-case1-complete-hard', 'paper-case1-hard']
 >>> example_path("paper-case1-hard").name
 'paper-case1-hard.yaml'
