@@ -64,7 +64,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.present.files import check_output_path, write_files
     from coopkin_sym.present.finite import finite_latex, finite_lines
     from coopkin_sym.present.manipulability import manipulability_json, manipulability_text
-    from coopkin_sym.present.remarks import remark_text, remark_texts
+    from coopkin_sym.present.remarks import grouped_remark_texts, remark_text, remark_texts
     from coopkin_sym.present.report import check_target as check_report_target
     from coopkin_sym.present.report import parse_pairs, write_report
     from coopkin_sym.present.sentences import (
@@ -138,6 +138,7 @@ _LAZY = {
     "named_latex": "coopkin_sym.present.blocks",
     "parse_pairs": "coopkin_sym.present.report",
     "read_locus": "coopkin_sym.system",
+    "grouped_remark_texts": "coopkin_sym.present.remarks",
     "remark_text": "coopkin_sym.present.remarks",
     "remark_texts": "coopkin_sym.present.remarks",
     "report_step": "coopkin_sym.exact.bounded",
@@ -273,6 +274,7 @@ __all__ = [
     "named_latex",
     "parse_pairs",
     "read_locus",
+    "grouped_remark_texts",
     "remark_text",
     "remark_texts",
     "report_step",

@@ -404,15 +404,25 @@ def test_a_worker_that_dies_without_an_answer_is_a_package_error():
 
 
 @pytest.mark.slow
-def test_a_locus_report_draws_its_pictures_within_the_bound(tmp_path, monkeypatch):
+@pytest.mark.parametrize("drawing", ["one by one", "side by side"])
+def test_a_locus_report_draws_its_pictures_within_the_bound(tmp_path, monkeypatch, drawing):
     """The search has a share of the bound, the report the rest: its text first, then
-    its pictures while time is left; the ones left out are said, and the run is cut."""
+    its pictures while time is left (one by one, or side by side in worker processes);
+    the ones left out are said, and the run is cut."""
     import coopkin_sym.present.report as report_module
+    import coopkin_sym.present.report.side_by_side as side_by_side
 
     drawn = report_module.plot_png
+    if drawing == "one by one":
+        monkeypatch.setattr(side_by_side, "MIN_PICTURES", 1000)
+    elif side_by_side.workers_for(4) == 0:
+        pytest.skip("this machine draws one by one (one core or no fork)")
+    # side by side, two plots take the time of one: each takes longer than the bound
+    # leaves
+    pause = 1.5 if drawing == "one by one" else 3.5
 
     def slow_plot(*args, **kwargs):
-        time.sleep(1.5)
+        time.sleep(pause)
         return drawn(*args, **kwargs)
 
     monkeypatch.setattr(report_module, "plot_png", slow_plot)

@@ -93,6 +93,10 @@ _BLOCK_TERMS = 400
 _ENTRY_TERMS = 40
 # rows of a table of components (or of numbers of a sweep) shown at most
 _MAX_ROWS = 200
+# rows of components shown open in the HTML form of a locus (the others folded)
+_OPEN_ROWS = 12
+# not-explored sentences shown open in the HTML form of a locus (the others folded)
+_OPEN_REMARKS = 6
 # lines of components in the text form of a locus
 _MAX_LINES = 12
 # the longest expression (in characters of its text) written in LaTeX
@@ -422,15 +426,27 @@ def locus_html(locus: Locus) -> str:
              "<p>Generic numbers:</p>", _numbers_table(locus.generic),
              f"<p>{_e(_classes(locus.generic))}</p>" if _classes(locus.generic) else ""]
     if locus.components:
+        header = ["#", "where", "kind", *NUMBER_NAMES, "what changes", "witness (at)"]
         rows = [_component_row(k, c, locus.generic)
                 for k, c in enumerate(locus.components[:_MAX_ROWS])]
-        parts.append(_table(["#", "where", "kind", *NUMBER_NAMES, "what changes",
-                             "witness (at)"], rows, centered=range(3, 10)))
+        parts.append(_table(header, rows[:_OPEN_ROWS], centered=range(3, 10)))
+        if len(rows) > _OPEN_ROWS:
+            parts.append(_folded(f"components #{_OPEN_ROWS + 1} to #{len(rows)}",
+                                 _table(header, rows[_OPEN_ROWS:], centered=range(3, 10))))
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
-        parts += ["<p>Not explored:</p>", _list(grouped_remark_texts(locus.unexplored))]
+        said = grouped_remark_texts(locus.unexplored)
+        parts += ["<p>Not explored:</p>", _list(said[:_OPEN_REMARKS])]
+        if len(said) > _OPEN_REMARKS:
+            parts.append(_folded(f"{len(said) - _OPEN_REMARKS} more",
+                                 _list(said[_OPEN_REMARKS:])))
     return _div(parts)
+
+
+def _folded(summary: str, body: str) -> str:
+    """``body`` folded under a line that says what it holds (HTML ``details``)."""
+    return f"<details><summary>{_e(summary)}</summary>{body}</details>"
 
 
 def _completeness(locus: Locus) -> str:

@@ -335,6 +335,12 @@ def test_html_of_a_locus_has_a_row_per_component(results):
     nasty = results["nasty locus"]._repr_html_()
     parsed = parse_html(nasty)
     assert "... and 50 more components." in "".join(parsed.text)
+    # twelve rows open, the others (up to 200) folded under one line that says so
+    opened, folded = nasty.split("<details><summary>components #13 to #200</summary>")
+    assert opened.count("<tr><td") == 7 + 12       # the generic numbers, then twelve
+    assert folded.count("<tr><td") == 188
+    listed = [r[0] for r in parsed.rows if r and r[0].startswith("#") and r[0] != "#"]
+    assert [x.split()[0] for x in listed] == [f"#{k}" for k in range(1, 201)]
     assert "Completeness: complete (certified)." in "".join(parsed.text)
 
 

@@ -34,7 +34,9 @@ from __future__ import annotations
 import dataclasses
 import os
 import re
+import warnings
 from collections.abc import Mapping, Sequence
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -49,13 +51,14 @@ from coopkin_sym.present.report.document import build_document
 from coopkin_sym.present.report.formulas import MAX_EQUATION as MAX_EQUATION
 from coopkin_sym.present.report.pictures import (
     MAX_SYSTEM_PICTURES,
-    _PictureClock,
     _skipped,
-    _system_pictures,
+    system_picture_failed,
+    system_picture_jobs,
 )
 from coopkin_sym.present.report.pictures import SYSTEM_PICTURE as SYSTEM_PICTURE
 from coopkin_sym.present.report.pictures import SYSTEM_PICTURE_DPI as SYSTEM_PICTURE_DPI
 from coopkin_sym.present.report.pictures import drawable_components as drawable_components
+from coopkin_sym.present.report.side_by_side import PictureFailed, draw_in_order
 from coopkin_sym.present.report.to_html import HtmlRenderer
 from coopkin_sym.present.report.to_json import locus_from_json, render_json
 from coopkin_sym.present.report.to_latex import LatexRenderer
@@ -202,15 +205,33 @@ def _plots(locus: Locus, system: Any, pairs: list[tuple[str, str]] | None,
         chosen = pairs if pairs is not None else default_pairs(locus, system)
         if not chosen:
             _skipped(f"no plot of the components: {_no_pairs(locus, system)}")
+        # the plots, then the pictures of the system, drawn side by side where the
+        # machine has the cores, and taken in order while time is left
+        plots = [(p, partial(plot_png, locus, system, p, dpi=dpi)) for p in chosen]
+        pictures = system_picture_jobs(locus, system, dpi, MAX_SYSTEM_PICTURES)
+        jobs = plots + pictures
         pngs = {}
-        clock = _PictureClock(until)
-        for k, p in enumerate(chosen):
-            if not clock.time_for_one_more():
-                _skipped(f"plots of {len(chosen) - k} more pairs of joints left out: the "
-                         f"time bound was reached", SkippedForTime)
-                break
-            pngs[p] = plot_png(locus, system, p, dpi=dpi)
-        pngs.update(_system_pictures(locus, system, dpi, clock, MAX_SYSTEM_PICTURES))
+        done = 0
+        for k, (value, said) in draw_in_order([job for _, job in jobs], until):
+            done = k + 1
+            for text, category in said:
+                warnings.warn(text, category, stacklevel=2)
+            key, job = jobs[k]
+            if isinstance(value, PictureFailed):
+                if key is not None:         # a plot: its error is the report's
+                    raise value.error
+                system_picture_failed(job, value.error)
+                continue
+            if key is None:                 # a picture of the system names itself
+                value, key = value
+            pngs[key] = value
+        if done < len(plots):
+            _skipped(f"plots of {len(plots) - done} more pairs of joints left out: the "
+                     f"time bound was reached", SkippedForTime)
+        if done < len(jobs) and pictures:
+            left = len(jobs) - max(done, len(plots))
+            _skipped(f"pictures of the system at {left} more components left out: the "
+                     f"time bound was reached", SkippedForTime)
         return pngs, None
     except PlotError as exc:
         if "matplotlib" in str(exc) and pairs is None:  # pragma: no cover

@@ -12,14 +12,13 @@ Example
 from __future__ import annotations
 
 import io
-import time
 import warnings
 from collections.abc import Mapping
 from typing import Any
 
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.analysis.mobility import Analysis
-from coopkin_sym.errors import DrawError, OutputSkipped, SkippedForTime
+from coopkin_sym.errors import DrawError, OutputSkipped
 from coopkin_sym.model.configuration import Point
 from coopkin_sym.present.conditions import report_names, short_condition
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
@@ -95,28 +94,34 @@ def _system_caption(locus: Locus, k: int, comp: Component, at: Mapping[str, str]
             f"there ({counts}).")
 
 
-def _system_pictures(locus: Locus, system: Any, dpi: int,
-                     clock: _PictureClock | None = None,
-                     limit: int = MAX_SYSTEM_PICTURES) -> dict[tuple[str, ...], bytes]:
-    """The system drawn at the witness of every real component (the first ``limit``),
-    each with a motion gained there (see
-    :func:`~coopkin_sym.present.draw.gained_motion`); a note
-    (:class:`~coopkin_sym.errors.OutputSkipped`) for each one that cannot be drawn."""
+def system_picture_jobs(locus: Locus, system: Any, dpi: int,
+                        limit: int = MAX_SYSTEM_PICTURES
+                        ) -> list[tuple[tuple[str, ...] | None, Any]]:
+    """The pictures of the system to draw at the witnesses of the real components (the
+    first ``limit``): ``(key, job)`` pairs, ``job()`` giving ``(png, key)`` with the
+    caption of what it drew (see :func:`~coopkin_sym.present.draw.gained_motion`);
+    a note (:class:`~coopkin_sym.errors.OutputSkipped`) for those left out. Nothing
+    is drawn here."""
     if system is None or not hasattr(system, "model"):
-        return {}
+        return []
     chosen = drawable_components(locus)
     if not chosen:
         _skipped("no picture of the system: no component has a real witness to draw it at")
-        return {}
+        return []
     if len(chosen) > limit:
         _skipped(f"pictures of the system at {len(chosen) - limit} more "
                  f"components left out (at most {limit})")
-    out: dict[tuple[str, ...], bytes] = {}
-    for drawn, k in enumerate(chosen[:limit]):
-        if clock is not None and not clock.time_for_one_more():
-            _skipped(f"pictures of the system at {len(chosen[:limit]) - drawn} "
-                     f"more components left out: the time bound was reached", SkippedForTime)
-            break
+    return [(None, _SystemPicture(locus, system, k, dpi)) for k in chosen[:limit]]
+
+
+class _SystemPicture:
+    """Drawing the system at the witness of component ``k`` (a job)."""
+
+    def __init__(self, locus: Locus, system: Any, k: int, dpi: int):
+        self.locus, self.system, self.k, self.dpi = locus, system, k, dpi
+
+    def __call__(self) -> tuple[bytes, tuple[str, ...]]:
+        locus, system, k = self.locus, self.system, self.k
         comp = locus.components[k]
         at, exact = _witness_point(comp)
         motion = gained_motion(comp.numbers, locus.generic)
@@ -125,42 +130,28 @@ def _system_pictures(locus: Locus, system: Any, dpi: int,
         held = _witness_analysis(system, comp) if exact else None
         drawn_at = (held, None) if held is not None else (system, at_text)
         try:
-            try:
-                fig = draw_system(*drawn_at, title=title,
-                                  motion=f"{motion[0]}:{motion[1]}" if motion and exact
-                                  else None)
-            except DrawError:   # the motion is not there after all: the system alone
-                if motion is None or not exact:
-                    raise
-                fig = draw_system(*drawn_at, title=title)
-                motion = None
-            buf = io.BytesIO()
-            fig.savefig(buf, format="png", dpi=min(dpi, SYSTEM_PICTURE_DPI))
-        except (ImportError, ValueError) as exc:  # the picture is optional here
-            _skipped(f"no picture of the system at component {k + 1}: "
-                     f"{' '.join(str(exc).split())}")
-            continue
+            fig = draw_system(*drawn_at, title=title,
+                              motion=f"{motion[0]}:{motion[1]}" if motion and exact
+                              else None)
+        except DrawError:   # the motion is not there after all: the system alone
+            if motion is None or not exact:
+                raise
+            fig = draw_system(*drawn_at, title=title)
+            motion = None
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=min(self.dpi, SYSTEM_PICTURE_DPI))
         caption = _system_caption(locus, k, comp, at, exact, motion)
-        out[(SYSTEM_PICTURE, f"component {k + 1}", caption)] = buf.getvalue()
-    return out
+        return buf.getvalue(), (SYSTEM_PICTURE, f"component {k + 1}", caption)
 
 
-class _PictureClock:
-    """Whether there is time for one more picture before ``until`` (a
-    ``time.monotonic()`` value; None: always): the next one is taken to last as long
-    as the longest drawn so far, so that the last one ends before the bound."""
-
-    def __init__(self, until: float | None):
-        self.until = until
-        self.longest = 0.0
-        self.started: float | None = None
-
-    def time_for_one_more(self) -> bool:
-        now = time.monotonic()
-        if self.started is not None:
-            self.longest = max(self.longest, now - self.started)
-        self.started = now
-        return self.until is None or now + self.longest < self.until
+def system_picture_failed(job: Any, error: BaseException) -> None:
+    """A picture of the system that could not be drawn: said (the picture is optional
+    in a report) when it is an :class:`ImportError` or :class:`ValueError`, else
+    ``error`` raised."""
+    if not isinstance(error, (ImportError, ValueError)):
+        raise error
+    _skipped(f"no picture of the system at component {job.k + 1}: "
+             f"{' '.join(str(error).split())}")
 
 
 def _skipped(text: str, kind: type[OutputSkipped] = OutputSkipped) -> None:
