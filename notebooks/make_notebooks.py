@@ -542,20 +542,30 @@ NB03 = [
 
     def recheck(system, locus):
         \"\"\"Each rational witness again, by a direct exact analysis; asserts the numbers
-        agree. Irrational witnesses were checked by the engine over Q(alpha).\"\"\"
-        for c, row in zip(locus.components, locus.table(), strict=True):
+        agree. Irrational witnesses were checked by the engine over Q(alpha). Prints
+        the first eight, then how many of each kind.\"\"\"
+        kinds = {"rechecked directly": 0, "irrational, checked over Q(alpha)": 0,
+                 "real points undecided": 0}
+        for k, (c, row) in enumerate(zip(locus.components, locus.table(), strict=True)):
             if c.real_points == "undecided":     # no real witness found: not called real
                 assert not c.real
-                print(f"{c.condition.text[:58]:58} real points: undecided")
-                continue
-            assert c.witness_checked, c.condition.text
-            if c.witness is None:
-                print(f"{row['witness']:58} irrational: checked over Q(alpha)")
-                continue
-            direct = system.analyze(c.witness).numbers.as_dict()
-            assert c.witness_checked and direct == c.numbers, c.condition.text
-            print(f"{row['witness']:58} Nm={direct['Nm']} Nc={direct['Nc']} "
-                  f"Nr={direct['Nr']}: as reported")
+                kinds["real points undecided"] += 1
+                line = f"{c.condition.text[:58]:58} real points: undecided"
+            elif c.witness is None:
+                assert c.witness_checked, c.condition.text
+                kinds["irrational, checked over Q(alpha)"] += 1
+                line = f"{row['witness'][:58]:58} irrational: checked over Q(alpha)"
+            else:
+                direct = system.analyze(c.witness).numbers.as_dict()
+                assert c.witness_checked and direct == c.numbers, c.condition.text
+                kinds["rechecked directly"] += 1
+                line = (f"{row['witness'][:58]:58} Nm={direct['Nm']} Nc={direct['Nc']} "
+                        f"Nr={direct['Nr']}: as reported")
+            if k < 8:
+                print(line)
+        if len(locus.components) > 8:
+            print(f"... all {len(locus.components)} agree: " + ", ".join(
+                f"{n} {what}" for what, n in kinds.items() if n))
     """),
     md("""
     ## 1. Paper case 1, both angles free

@@ -436,7 +436,7 @@ def locus_html(locus: Locus) -> str:
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
-        said = grouped_remark_texts(locus.unexplored)
+        said = [clip(t, 400) for t in grouped_remark_texts(locus.unexplored)]
         parts += ["<p>Not explored:</p>", _list(said[:_OPEN_REMARKS])]
         if len(said) > _OPEN_REMARKS:
             parts.append(_folded(f"{len(said) - _OPEN_REMARKS} more",
