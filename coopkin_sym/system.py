@@ -37,6 +37,7 @@ if TYPE_CHECKING:
     from coopkin_sym.analysis.locus.certify import Certificate
     from coopkin_sym.analysis.locus.types import Locus
     from coopkin_sym.analysis.locus.verify import Verification
+    from coopkin_sym.present.interactive import InteractiveView
 
 T = TypeVar("T")
 
@@ -327,6 +328,31 @@ class System:
         """
         from coopkin_sym.present.draw import draw_system
         return draw_system(self, at, motion=motion, title=title, labels=labels)
+
+    def interactive(self, joints: Iterable[str] | str | None = None, *, steps: int = 24,
+                    at: str | Mapping | None = None,
+                    values: Mapping[str, Sequence] | None = None) -> InteractiveView:
+        """A view for Jupyter: a slider per joint over exact values, the picture and the
+        exact numbers (as :meth:`analyze` gives them) at the values chosen, updated on
+        every change, each configuration analyzed once (see
+        :class:`~coopkin_sym.present.interactive.InteractiveView`).
+
+        ``steps`` values per revolute slider (the multiples of ``2*pi/steps`` in
+        ``(-pi, pi]``; 24: of ``pi/12``, analyzed exactly over the number field of
+        their tangents), ``at`` the other values (``"L=1"``), ``values`` the exact
+        values of some sliders (``{"q1": ["0", "pi/2", "2*atan(1/3)"]}``). Needs
+        ipywidgets (``pip install "coopkin_sym[notebook]"``).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> view = load("paper-case1-planar").interactive(steps=4, at="L=1")
+        >>> view.select("q1=pi/2,q2=pi/2").numbers.Nm, view.numbers == (
+        ...     load("paper-case1-planar").analyze("q1=pi/2,q2=pi/2,L=1").numbers)
+        (2, True)
+        """
+        from coopkin_sym.present.interactive import interactive
+        return interactive(self, joints, steps=steps, at=at, values=values)
 
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
               progress: bool = False, chunk: int = 16384, timeout: float | None = None):
