@@ -360,7 +360,8 @@ class System:
 
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
-        :class:`concurrent.futures.Executor` or a dask ``distributed.Client``;
+        :class:`concurrent.futures.Executor`, a dask ``distributed.Client`` or a pool
+        with ``apply_async`` (``ray.util.multiprocessing.Pool``, ``multiprocessing.Pool``);
         ``progress`` shows a bar after a second (in a Jupyter cell, or on
         standard error when it is a terminal); ``timeout`` is a
         wall-clock bound in seconds (past it,
@@ -544,8 +545,9 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         Also give each result the JSON document of ``coopkin analyze --json``.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool,
-        ``distributed.Client(...).get_executor()``) or a dask ``distributed.Client``
-        itself; None runs here. Anything else is an
+        ``distributed.Client(...).get_executor()``), a dask ``distributed.Client``
+        itself, or a pool with ``apply_async`` (``ray.util.multiprocessing.Pool``,
+        ``multiprocessing.Pool``); None runs here. Anything else is an
         :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
         Show a progress bar after a second (in a Jupyter cell, or on stderr when it
