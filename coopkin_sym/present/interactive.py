@@ -279,8 +279,13 @@ class InteractiveView:
 
     # ------------------------------------------------------------------ display
 
-    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
-        return self.widget._repr_mimebundle_(**kwargs)
+    def _repr_mimebundle_(self, **kwargs: Any) -> dict[str, Any]:
+        """The widget, with the numbers shown as HTML and text where no widget can be
+        shown (a notebook read without its kernel)."""
+        bundle = dict(self.widget._repr_mimebundle_(**kwargs) or {})
+        bundle["text/plain"] = repr(self)
+        bundle["text/html"] = f'<div class="coopkin">{self.table.value}</div>'
+        return bundle
 
     def __repr__(self) -> str:
         return f"<InteractiveView {self.system.model.name} at {self.at}: {self.numbers}>"

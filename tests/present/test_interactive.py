@@ -85,6 +85,16 @@ def test_select_moves_several_sliders_with_one_update(planar, monkeypatch):
     assert seen == ["q1=pi/2,q2=pi/2,L=1"]
 
 
+def test_it_shows_as_a_widget_with_the_numbers_where_no_widget_can_be(planar):
+    view = planar.interactive(steps=4, at="L=1").select("q1=pi/2,q2=pi/2")
+    bundle = view._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert bundle["text/plain"] == repr(view) == (
+        "<InteractiveView paper case 1, planar, hard/hard at q1=pi/2,q2=pi/2,L=1: "
+        "Numbers(Nm=2, Nc=2, Ni=0, Nr=0, Ng=1, Nd=2, Nh=1)>")
+    assert "at q1=pi/2,q2=pi/2,L=1" in bundle["text/html"]
+
+
 def test_given_values_and_a_subset_of_joints(planar):
     view = planar.interactive("q2", at="q1=pi/2,L=1",
                               values={"q2": ["0", "pi/2", "2*atan(1/3)"]})
