@@ -105,6 +105,20 @@ def test_given_values_and_a_subset_of_joints(planar):
     assert view.numbers == planar.analyze("q1=pi/2,q2=pi/2,L=1").numbers
 
 
+def test_a_prismatic_slider_and_exact_angles_as_values():
+    from coopkin_sym.exact.angles import ExactAngle
+
+    case2 = load("paper-case2-hard")
+    view = case2.interactive(["q4", "q1"], at="L=1",
+                             values={"q1": [ExactAngle(1, 3), "0", "pi/2"]})
+    assert view.sliders["q4"].options == ("-1", "-3/4", "-1/2", "-1/4", "0", "1/4", "1/2",
+                                          "3/4", "1")
+    assert view.sliders["q1"].options == ("2*atan(1/3)", "0", "pi/2")
+    view.select("q4=1/2,q1=2*atan(1/3)")
+    assert view.at == "q4=1/2,q1=2*atan(1/3),L=1"
+    assert view.numbers == case2.analyze("q1=2*atan(1/3),q4=1/2,L=1").numbers
+
+
 @pytest.mark.parametrize("kwargs, message", [
     ({"joints": ["q9"]}, "joints: unknown joint q9 (joints: q1, q2)"),
     ({"joints": []}, "joints: no joint to give a slider"),
