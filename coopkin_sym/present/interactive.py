@@ -152,6 +152,9 @@ class InteractiveView:
     def __init__(self, system: Any, joints: Iterable[str] | str | None = None,
                  steps: int = 24, at: str | Mapping | None = None,
                  values: Mapping[str, Sequence] | None = None):
+        if not (callable(getattr(system, "analyze", None)) and hasattr(system, "model")):
+            raise ArgumentTypeError(f"system: expected a System (coopkin_sym.load(...)), "
+                                    f"got {type(system).__name__}")
         widgets = _widgets()
         self.system = system
         model = system.model

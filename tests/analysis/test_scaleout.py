@@ -199,6 +199,17 @@ class _ClientLike:
         return "not an executor"
 
 
+class _ActorPoolLike:
+    """The interface of ``ray.util.ActorPool`` (``submit(fn, value)``, ``get_next``): not
+    an executor; the error says what to pass instead (its multiprocessing Pool)."""
+
+    def submit(self, fn, value):
+        raise AssertionError("never called")
+
+    def get_next(self):
+        raise AssertionError("never called")
+
+
 WHAT_TO_PASS = ("executor: expected a concurrent.futures.Executor (ProcessPoolExecutor, "
                 "ThreadPoolExecutor, a cluster's executor), a dask distributed.Client, "
                 "a pool with apply_async(fn, args, callback=, error_callback=) "
@@ -208,6 +219,7 @@ WHAT_TO_PASS = ("executor: expected a concurrent.futures.Executor (ProcessPoolEx
 
 @pytest.mark.parametrize(("executor", "name"), [(4, "int"), (object(), "object"),
                                                 (_ClientLike(), "_ClientLike"),
+                                                (_ActorPoolLike(), "_ActorPoolLike"),
                                                 (ProcessPoolExecutor, "type")])
 def test_any_other_executor_is_one_error_saying_what_to_pass(executor, name):
     message = WHAT_TO_PASS + name

@@ -136,6 +136,15 @@ def test_bad_input_is_one_clear_error_naming_the_entry(planar, kwargs, message):
     assert message in str(info.value)
 
 
+def test_the_view_of_something_else_than_a_system_is_refused():
+    from coopkin_sym.errors import ArgumentTypeError
+    from coopkin_sym.present.interactive import interactive
+
+    with pytest.raises(ArgumentTypeError, match=r"system: expected a System \(coopkin_sym"
+                                                r"\.load\(\.\.\.\)\), got str"):
+        interactive("paper-case1-planar")
+
+
 def test_select_refuses_a_value_off_its_slider(planar):
     view = planar.interactive(steps=4, at="L=1")
     with pytest.raises(ConfigurationError, match=r"select q1: pi/12 is not a value of its "
