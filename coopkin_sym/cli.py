@@ -46,6 +46,7 @@ import typer
 
 from coopkin_sym import (
     ArgumentError,
+    BlockTooLarge,
     CoopkinError,
     FiniteMobilityError,
     ManipulabilityError,
@@ -312,7 +313,8 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
         names = [c.strip() for c in o.controlled.split(",")] if o.controlled else None
         where = [c.strip() for c in o.point.split(",")] if o.point else None
         report("the ellipsoid")
-        m = result.manipulability(names, length=o.length, point=where)
+        budget = {} if o.max_terms is None else {"max_terms": o.max_terms}
+        m = result.manipulability(names, length=o.length, point=where, **budget)
         report("the text")
         return (manipulability_json(m, result) if o.as_json
                 else manipulability_text(m, result))
@@ -321,6 +323,9 @@ def manipulability_command(model: str, options: ManipulabilityOptions) -> None:
         text = _bounded(work, o.timeout, "manipulability", o.no_progress)
     except TimeLimitReached as exc:
         _cut(exc, "nothing shown")
+    except BlockTooLarge as exc:   # cut by the budget of terms, as by a time bound
+        typer.echo(f"coopkin: error: {exc}", err=True)
+        raise typer.Exit(TIME_BOUND_EXIT) from None
     except USER_ERRORS as exc:
         _fail(str(exc))
     typer.echo(text)

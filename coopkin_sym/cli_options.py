@@ -244,6 +244,11 @@ class ManipulabilityOptions:
         "--point", help="x,y,z: v is the velocity of this object point (base frame).")
     ] = None
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False
+    max_terms: Annotated[int | None, typer.Option(
+        "--max-terms", min=1,
+        help="The budget of terms of one symbolic entry on the way (numerator and "
+             "denominator; default 2000): past it the run stops, says where, and exits "
+             "with status 3.")] = None
     timeout: TimeoutOption = None
     no_progress: NoProgressOption = False
 

@@ -37,6 +37,7 @@ if TYPE_CHECKING:
     from coopkin_sym.analysis.locus.certify import Certificate
     from coopkin_sym.analysis.locus.types import Locus
     from coopkin_sym.analysis.locus.verify import Verification
+    from coopkin_sym.present.interactive import InteractiveView
 
 T = TypeVar("T")
 
@@ -328,13 +329,39 @@ class System:
         from coopkin_sym.present.draw import draw_system
         return draw_system(self, at, motion=motion, title=title, labels=labels)
 
+    def interactive(self, joints: Iterable[str] | str | None = None, *, steps: int = 24,
+                    at: str | Mapping | None = None,
+                    values: Mapping[str, Sequence] | None = None) -> InteractiveView:
+        """A view for Jupyter: a slider per joint over exact values, the picture and the
+        exact numbers (as :meth:`analyze` gives them) at the values chosen, updated on
+        every change, each configuration analyzed once (see
+        :class:`~coopkin_sym.present.interactive.InteractiveView`).
+
+        ``steps`` values per revolute slider (the multiples of ``2*pi/steps`` in
+        ``(-pi, pi]``; 24: of ``pi/12``, analyzed exactly over the number field of
+        their tangents), ``at`` the other values (``"L=1"``), ``values`` the exact
+        values of some sliders (``{"q1": ["0", "pi/2", "2*atan(1/3)"]}``). Needs
+        ipywidgets (``pip install "coopkin_sym[notebook]"``).
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> view = load("paper-case1-planar").interactive(steps=4, at="L=1")
+        >>> view.select("q1=pi/2,q2=pi/2").numbers.Nm, view.numbers == (
+        ...     load("paper-case1-planar").analyze("q1=pi/2,q2=pi/2,L=1").numbers)
+        (2, True)
+        """
+        from coopkin_sym.present.interactive import interactive
+        return interactive(self, joints, steps=steps, at=at, values=values)
+
     def sweep(self, points, *, at: str | Mapping | None = None, executor=None,
               progress: bool = False, chunk: int = 16384, timeout: float | None = None):
         """Exact numbers at many points, fast (see :func:`coopkin_sym.analysis.sweep.sweep`).
 
         ``points`` is a grid (:func:`coopkin_sym.analysis.sweep.grid`) or an iterable of points
         (``"q1=pi/2,q2=0"`` or mappings); ``executor`` any
-        :class:`concurrent.futures.Executor` or a dask ``distributed.Client``;
+        :class:`concurrent.futures.Executor`, a dask ``distributed.Client`` or a pool
+        with ``apply_async`` (``ray.util.multiprocessing.Pool``, ``multiprocessing.Pool``);
         ``progress`` shows a bar after a second (in a Jupyter cell, or on
         standard error when it is a terminal); ``timeout`` is a
         wall-clock bound in seconds (past it,
@@ -518,8 +545,9 @@ def analyze_many(items: Iterable[Any], *, generic: bool = False,
         Also give each result the JSON document of ``coopkin analyze --json``.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool,
-        ``distributed.Client(...).get_executor()``) or a dask ``distributed.Client``
-        itself; None runs here. Anything else is an
+        ``distributed.Client(...).get_executor()``), a dask ``distributed.Client``
+        itself, or a pool with ``apply_async`` (``ray.util.multiprocessing.Pool``,
+        ``multiprocessing.Pool``); None runs here. Anything else is an
         :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
         Show a progress bar after a second (in a Jupyter cell, or on stderr when it

@@ -345,6 +345,29 @@ NB01 = [
     assert certificate.certified_by() is not None and not certificate.failures()
     draw(planar.analyze("q1=pi/2,q2=pi/2"), motion=("coordinated", 2))
     """),
+    md("""
+    ## Moving the joints by hand
+
+    `interactive()` gives a slider per joint over exact values (here the multiples of
+    $\\pi/12$; `steps=` or `values=` choose others). Each change redraws the system and
+    shows its seven numbers, computed exactly at that configuration as `analyze` does
+    (an angle such as $\\pi/12$, whose $\\tan(q/2)$ is irrational, over the number field
+    of its tangent); a configuration already seen is not computed again. The view needs
+    ipywidgets (`pip install "coopkin_sym[notebook]"`), and its sliders can be set from
+    code too: below, first the regular home configuration, then the singular one where
+    both links line up with the contact line.
+    """),
+    code("""
+    view = planar.interactive(at="L=1")
+    print(view.at, view.numbers)
+    assert view.numbers == planar.analyze("q1=0,q2=0,L=1").numbers
+    view.select("q1=pi/2,q2=pi/2")
+    print(view.at, view.numbers)
+    assert view.numbers == planar.analyze("q1=pi/2,q2=pi/2,L=1").numbers
+    assert view.numbers.Nm == 2
+    display(draw(view.result))   # the picture the view shows there
+    view
+    """),
 ]
 
 

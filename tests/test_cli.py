@@ -238,11 +238,43 @@ def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
     from coopkin_sym.cli import TIME_BOUND_EXIT
 
     result = runner.invoke(app, ["manipulability", "planar-two-fingers", "--generic",
-                                 "--length", "L", "--timeout", "0.5", "--no-progress"])
+                                 "--length", "L", "--timeout", "0.5", "--no-progress",
+                                 "--max-terms", "1000000"])
     assert result.exit_code == TIME_BOUND_EXIT, result.output
     assert result.stdout == ""
     assert result.stderr.startswith("coopkin: error: time bound of 0.5 s reached during ")
     assert result.stderr.endswith("; nothing shown\n")
+
+
+def test_a_generic_manipulability_over_its_term_budget_exits_3():
+    """The default budget of terms stops the generic two-finger ellipsoid at once (its
+    inverse of A grows past 2,000 terms an entry), saying where; a larger one lets a
+    smaller case through, a smaller one cuts it."""
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+
+    result = runner.invoke(app, ["manipulability", "planar-two-fingers", "--generic",
+                                 "--length", "L", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT, result.output
+    assert result.stdout == ""
+    assert result.stderr.startswith("coopkin: error: manipulability: the inverse of A: an "
+                                    "entry of ")
+    assert result.stderr.endswith(" terms, over the budget of 2,000 (terms of its numerator "
+                                  "and denominator; max_terms= or --max-terms N raises "
+                                  "it); the ellipsoid is not computed\n")
+    assert len(result.stderr.splitlines()) == 1
+    small = ["manipulability", "planar-two-fingers", "--free", "q2", "--length", "L"]
+    assert "rank E = 3 of 3" in run_ok(*small, "--max-terms", "50")
+    cut = runner.invoke(app, [*small, "--max-terms", "3"])
+    assert cut.exit_code == TIME_BOUND_EXIT and "over the budget of 3 " in cut.stderr
+
+
+def test_the_help_of_max_terms_states_the_default_budget():
+    from coopkin_sym.analysis.manipulability import MAX_TERMS
+    from coopkin_sym.cli_options import ManipulabilityOptions
+
+    assert ManipulabilityOptions().max_terms is None
+    result = runner.invoke(app, ["manipulability", "--help"], env={"COLUMNS": "200"})
+    assert f"default {MAX_TERMS}" in " ".join(result.stdout.split())
 
 
 def test_each_command_is_one_paragraph_in_the_command_list():

@@ -112,9 +112,10 @@ def run_batch(compute: Compute, items: Iterable[Any], *, options: tuple = (),
     options
         Plain data passed to every call of ``compute``.
     executor
-        Any :class:`concurrent.futures.Executor` or a dask ``distributed.Client``
-        (see :func:`~coopkin_sym.analysis.tasks.task_executor`); None runs here, in
-        order.
+        Any :class:`concurrent.futures.Executor`, a dask ``distributed.Client`` or a
+        pool with ``apply_async`` (``multiprocessing.Pool``,
+        ``ray.util.multiprocessing.Pool``; see
+        :func:`~coopkin_sym.analysis.tasks.task_executor`); None runs here, in order.
     progress
         Report the items done (see :func:`coopkin_sym.exact.bounded.report`; the
         caller's display shows them).

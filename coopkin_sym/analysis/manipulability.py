@@ -36,6 +36,13 @@ joint variables and parameters, or rationals at a point). ``E`` loses rank where
 controlled direction cannot be driven any more: the numerator of ``det E``, factored,
 is its degeneracy locus in the chosen directions.
 
+Over rational functions every entry made on the way (of ``A``, ``A^-1``, the
+projected columns, ``E`` and ``det E``) is held to a budget of terms, ``max_terms``
+(numerator and denominator; default :data:`MAX_TERMS`): past it the computation stops
+at once with a :class:`~coopkin_sym.errors.BlockTooLarge` that names the step, the
+size reached and the budget (``coopkin manipulability --max-terms N``; it then exits
+with status 3, as a run cut by its time bound).
+
 Example
 -------
 >>> from coopkin_sym import load
@@ -56,10 +63,14 @@ from sympy.polys.matrices import DomainMatrix
 
 from coopkin_sym.analysis.kinematics import PLANAR_COLUMNS, spatial_twist
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.errors import ManipulabilityError
+from coopkin_sym.errors import BlockTooLarge, ManipulabilityError
 from coopkin_sym.exact import matrix as exact_matrix
 from coopkin_sym.exact.field_matrix import FieldMatrix
 from coopkin_sym.exact.parse import NumberError, exact_expr
+
+#: The default budget of terms of one entry of the ellipsoid's exact matrices (its
+#: numerator and denominator): a generic ellipsoid within it is computed in seconds.
+MAX_TERMS = 2000
 
 
 @dataclass(frozen=True)
@@ -238,19 +249,24 @@ def _from_tree(e, tree: Mapping) -> Manipulability:
 
 
 def manipulability(analysis, controlled: Sequence[str] | None = None,
-                   length=1, point: Sequence | None = None) -> Manipulability:
+                   length=1, point: Sequence | None = None, *,
+                   max_terms: int | None = MAX_TERMS) -> Manipulability:
     """The manipulability ellipsoid of ``analysis`` for the object-velocity components
     ``controlled`` (default: all of the model's twist), angular parts scaled by
     ``length`` (a positive exact number or a parameter of the model, e.g. ``"L"``).
     With ``point`` (exact base coordinates), ``v`` is the velocity of that point of
     the object, in base axes; else the twist is as the analysis writes it (its object
-    frame).
+    frame). ``max_terms``: the budget of terms of an entry on the way (None: none).
 
     Raises
     ------
     ManipulabilityError
-        An unknown component name, or a length that is not positive and exact.
+        An unknown component name, a length that is not positive and exact, or a
+        budget that is not a positive integer.
+    BlockTooLarge
+        An entry over the budget of terms: the step, the size and the budget named.
     """
+    max_terms = _checked_budget(max_terms)
     names = analysis.model.twist_names
     controlled, ell = _controlled_and_length(analysis, names, controlled, length)
     if analysis.model.passive_joints:
@@ -265,7 +281,8 @@ def manipulability(analysis, controlled: Sequence[str] | None = None,
     rows = [names.index(c) for c in controlled]
     # all the arithmetic in one exact field of rational functions (DomainMatrix)
     mats = [c12, c11, weight] + (list(parts) if parts else [gram])
-    gram, driven, shape_dm, det = _ellipsoid(_in_one_field(mats), bool(parts), rows)
+    gram, driven, shape_dm, det = _ellipsoid(_in_one_field(mats), bool(parts), rows,
+                                             max_terms)
     field = gram.domain
     form = sp.ImmutableMatrix(gram.to_Matrix())
     shape = sp.ImmutableMatrix(shape_dm.to_Matrix())
@@ -301,37 +318,68 @@ def _controlled_and_length(analysis, names: Sequence[str], controlled, length):
     return controlled, ell
 
 
-def _ellipsoid(dms: list[DomainMatrix], with_parts: bool, rows: list[int]):
+def _checked_budget(max_terms: object) -> int | None:
+    if max_terms is None:
+        return None
+    if isinstance(max_terms, bool) or not isinstance(max_terms, int) or max_terms < 1:
+        raise ManipulabilityError(f"max_terms: expected a positive integer (terms of an "
+                                  f"entry) or None, got {clip(repr(max_terms), 40)}")
+    return max_terms
+
+
+def _step(what: str, work):
+    """``work()``; an entry over the budget of terms is said to be of ``what``."""
+    try:
+        return work()
+    except BlockTooLarge as exc:
+        raise BlockTooLarge(f"manipulability: {what}: {exc} (terms of its numerator and "
+                            "denominator; max_terms= or --max-terms N raises it); the "
+                            "ellipsoid is not computed") from None
+
+
+def _ellipsoid(dms: list[DomainMatrix], with_parts: bool, rows: list[int],
+               max_terms: int | None = None):
     """``(gram, driven, shape, det shape)`` from the matrices ``C12, C11, W`` and either
-    ``C22, C23`` or the motor Gram matrix, all over one field (DomainMatrix)."""
+    ``C22, C23`` or the motor Gram matrix, all over one field (DomainMatrix); over
+    rational functions each entry made is held to ``max_terms``."""
     field = dms[0].domain
     # over a field of rational functions, the products, inverses and the determinant
     # are done with python-flint (SymPy's own gcds take minutes on these entries)
     flint_field = bool(getattr(field, "is_FractionField", False))
-    c12, c11, weight, *rest = [FieldMatrix.of(d) for d in dms] if flint_field else dms
+    if flint_field:
+        c12, c11, weight, *rest = _step("the blocks", lambda: [
+            FieldMatrix.of(d, max_terms) for d in dms])
+    else:
+        c12, c11, weight, *rest = dms
     if with_parts:
         c22, c23 = rest
-        gram = c22.transpose() * c22
-        if c23.shape[1]:
-            cross = c23.transpose() * c22
-            gram = gram - cross.transpose() * (c23.transpose() * c23).inv() * cross
+
+        def schur():
+            gram = c22.transpose() * c22
+            if c23.shape[1]:
+                cross = c23.transpose() * c22
+                gram = gram - cross.transpose() * (c23.transpose() * c23).inv() * cross
+            return gram
+        gram = _step("the Gram matrix A of the coordinated joint motions", schur)
     else:
         (gram,) = rest
     driven = weight * c12
     if c11.shape[1] and driven.shape[1]:
         # modulo the indeterminate motions: the part W-orthogonal to W C11
         free = weight * c11
-        driven = driven - free * (free.transpose() * free).inv() * (
-            free.transpose() * driven)
+        driven = _step("the driven object motions modulo the indeterminate ones",
+                       lambda: driven - free * (free.transpose() * free).inv() * (
+                           free.transpose() * driven))
     driven = _rows_of(driven, rows)
     if driven.shape[1]:
-        shape_dm = driven * gram.inv() * driven.transpose()
+        inverse = _step("the inverse of A", gram.inv)
+        shape_dm = _step("E", lambda: driven * inverse * driven.transpose())
     else:
         shape_dm = None
     det = None
     if flint_field:
         if len(rows) and shape_dm is not None:
-            det = shape_dm.det_element()
+            det = _step("det E", shape_dm.det_element)
         gram, driven = gram.to_domain_matrix(), driven.to_domain_matrix()
         shape_dm = None if shape_dm is None else shape_dm.to_domain_matrix()
     if shape_dm is None:
@@ -345,7 +393,7 @@ def _rows_of(m, rows: list[int]):
     """The rows ``rows`` of ``m`` (a :class:`DomainMatrix` or a :class:`FieldMatrix`)."""
     if isinstance(m, FieldMatrix):
         return FieldMatrix([m.rows[r] for r in rows], (len(rows), m.shape[1]), m.field,
-                           m.ctx)
+                           m.ctx, m.max_terms)
     return m.extract(rows, list(range(m.shape[1])))
 
 

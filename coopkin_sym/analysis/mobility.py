@@ -45,6 +45,7 @@ from coopkin_sym.analysis.decomposition import Decomposition, _ArmMap, decompose
 from coopkin_sym.analysis.decomposition import numbers_modulo as numbers_modulo
 from coopkin_sym.analysis.factored import FactoredMotions, factored_motions
 from coopkin_sym.analysis.generic import NumbersCertificate, RankBound, generic_numbers
+from coopkin_sym.analysis.manipulability import MAX_TERMS as MANIPULABILITY_TERMS
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import (
     Numbers,
@@ -516,13 +517,16 @@ class Analysis(Displayable):
         return sp.ImmutableMatrix(out.applyfunc(sp.factor))
 
     def manipulability(self, controlled: Sequence[str] | None = None, length=1,
-                       point: Sequence | None = None, *, timeout: float | None = None):
+                       point: Sequence | None = None, *, timeout: float | None = None,
+                       max_terms: int | None = MANIPULABILITY_TERMS):
         """The manipulability ellipsoid of the driven object motions (see
         :mod:`coopkin_sym.analysis.manipulability`): of the components ``controlled``
         (default: the whole twist), angular velocities scaled by ``length``, ``v`` of
         the object point ``point`` when given; ``timeout``: a wall-clock bound in
         seconds (see :func:`coopkin_sym.exact.bounded.run_bounded`; past it,
-        :class:`~coopkin_sym.errors.TimeLimitReached`).
+        :class:`~coopkin_sym.errors.TimeLimitReached`); ``max_terms``: the budget of
+        terms of an entry on the way, over rational functions (None: none; past it,
+        :class:`~coopkin_sym.errors.BlockTooLarge` names the step).
 
         Example
         -------
@@ -533,7 +537,8 @@ class Analysis(Displayable):
         [1/2, 0],
         [  0, 0]])
         """
-        return run_bounded(lambda: manipulability(self, controlled, length, point),
+        return run_bounded(lambda: manipulability(self, controlled, length, point,
+                                                  max_terms=max_terms),
                            timeout, owner="manipulability")
 
     def finite_mobility(self, order: int | None = None):

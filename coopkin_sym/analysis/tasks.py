@@ -4,12 +4,15 @@ The sweep (:mod:`coopkin_sym.analysis.sweep`) and the batches of analyses
 (:mod:`coopkin_sym.analysis.batch`) cut their work into tasks whose arguments and
 results are plain data (integers, numpy arrays, dicts, small frozen dataclasses), so
 they run in this process, in a process pool, or on a cluster
-(a dask ``distributed.Client``, or its ``get_executor()``) alike: :func:`task_executor`
-checks what was given (a client is asked for its executor; dask is never imported
-here). :func:`run_tasks` submits them and
-yields each result with the position of its task as it completes; the caller puts it
-in place, so the outcome never depends on the order of completion. When the caller
-stops early (an error, an interrupt), the tasks still pending are cancelled.
+(a dask ``distributed.Client``, or its ``get_executor()``, or a pool with the
+``apply_async`` of :class:`multiprocessing.pool.Pool`, as Ray's
+``ray.util.multiprocessing.Pool`` has) alike: :func:`task_executor` checks what was
+given (a client is asked for its executor, a pool is wrapped in a
+:class:`PoolExecutor`; neither dask nor Ray is ever imported here).
+:func:`run_tasks` submits them and yields each result with the position of its task
+as it completes; the caller puts it in place, so the outcome never depends on the
+order of completion. When the caller stops early (an error, an interrupt), the tasks
+still pending are cancelled (those a pool already holds run to their end).
 
 Example
 -------
@@ -25,22 +28,69 @@ Example
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import Executor, as_completed
+from concurrent.futures import Executor, Future, InvalidStateError, as_completed
 from typing import Any
 
 from coopkin_sym.errors import ArgumentTypeError
 from coopkin_sym.exact.bounded import report
 
 EXECUTORS = ("a concurrent.futures.Executor (ProcessPoolExecutor, ThreadPoolExecutor, "
-             "a cluster's executor), a dask distributed.Client, or None to run here")
+             "a cluster's executor), a dask distributed.Client, a pool with "
+             "apply_async(fn, args, callback=, error_callback=) (multiprocessing.Pool, "
+             "ray.util.multiprocessing.Pool), or None to run here")
+
+
+class PoolExecutor(Executor):
+    """A pool with the ``apply_async`` of :class:`multiprocessing.pool.Pool` (Ray's
+    ``ray.util.multiprocessing.Pool`` has the same) as a
+    :class:`concurrent.futures.Executor`: each ``submit`` is one ``apply_async``
+    whose callbacks complete a :class:`~concurrent.futures.Future`. The pool stays
+    the caller's (``shutdown`` leaves it open); a task already given to the pool
+    cannot be cancelled.
+
+    Example
+    -------
+    >>> from multiprocessing.pool import ThreadPool
+    >>> from operator import mul
+    >>> with ThreadPool(2) as pool:
+    ...     PoolExecutor(pool).submit(mul, 6, 7).result()
+    42
+    """
+
+    def __init__(self, pool: Any):
+        self.pool = pool
+
+    def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future:
+        future: Future = Future()
+        future.set_running_or_notify_cancel()   # given to the pool: no longer cancellable
+
+        def done(value: Any) -> None:
+            try:
+                future.set_result(value)
+            except InvalidStateError:  # pragma: no cover - a pool calling back twice
+                pass
+
+        def failed(exc: BaseException) -> None:
+            try:
+                future.set_exception(exc)
+            except InvalidStateError:  # pragma: no cover
+                pass
+
+        self.pool.apply_async(fn, args, kwargs, callback=done, error_callback=failed)
+        return future
+
+
+def _is_pool(executor: object) -> bool:
+    return callable(getattr(executor, "apply_async", None))
 
 
 def task_executor(executor: object, where: str = "executor") -> Executor | None:
     """The :class:`concurrent.futures.Executor` that runs the tasks given ``executor``:
-    itself, None (run here, in order), or the executor of a dask
+    itself, None (run here, in order), the executor of a dask
     ``distributed.Client`` (recognized by its ``get_executor`` and ``submit``; its
     own ``submit`` returns dask futures, which :func:`concurrent.futures.as_completed`
-    cannot wait on).
+    cannot wait on), or a :class:`PoolExecutor` around a pool with ``apply_async``
+    (:class:`multiprocessing.pool.Pool`, ``ray.util.multiprocessing.Pool``).
 
     Raises
     ------
@@ -62,6 +112,8 @@ def task_executor(executor: object, where: str = "executor") -> Executor | None:
     """
     if executor is None or isinstance(executor, Executor):
         return executor
+    if _is_pool(executor):
+        return PoolExecutor(executor)
     get = getattr(executor, "get_executor", None)
     if callable(get) and callable(getattr(executor, "submit", None)):
         pool = get()

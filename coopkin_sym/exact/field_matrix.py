@@ -6,7 +6,10 @@ with SymPy's own polynomials, whose gcds are slow once entries have a few dozen 
 holds the same entries as :class:`~coopkin_sym.exact.ratfunc.RatFunc` (python-flint
 numerators and denominators, in lowest terms), does the products, inverses and
 determinants there, and gives a ``DomainMatrix`` over the same field back: the entries
-come back exactly as SymPy writes them.
+come back exactly as SymPy writes them. With a budget ``max_terms``, an entry (its
+numerator and denominator) of more terms, read or made by a product, an inverse or a
+determinant, stops the computation at once: a
+:class:`~coopkin_sym.errors.BlockTooLarge` that says how large it grew.
 
 Example
 -------
@@ -30,7 +33,7 @@ from math import lcm
 import flint
 from sympy.polys.matrices import DomainMatrix
 
-from coopkin_sym.errors import NumberError
+from coopkin_sym.errors import BlockTooLarge, NumberError
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_fraction
 
@@ -50,35 +53,62 @@ class FieldMatrix:
     >>> m = FieldMatrix.of(DomainMatrix.from_Matrix(sp.Matrix([[1 / (1 + t)]])).to_field())
     >>> m.inv().to_domain_matrix().to_Matrix()
     Matrix([[t + 1]])
+    >>> FieldMatrix.of(DomainMatrix.from_Matrix(sp.Matrix([[1 + t + t**2]])).to_field(),
+    ...                max_terms=3)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    coopkin_sym.errors.BlockTooLarge: an entry of 4 terms, over the budget of 3
     """
 
-    def __init__(self, rows: list[list[RatFunc]], shape: tuple[int, int], field, ctx):
+    def __init__(self, rows: list[list[RatFunc]], shape: tuple[int, int], field, ctx,
+                 max_terms: int | None = None):
         self.rows, self.shape, self.field, self.ctx = rows, shape, field, ctx
+        self.max_terms = max_terms
 
     @classmethod
-    def of(cls, dm: DomainMatrix) -> FieldMatrix:
-        """The matrix ``dm`` (over a fraction field of polynomials)."""
+    def of(cls, dm: DomainMatrix, max_terms: int | None = None) -> FieldMatrix:
+        """The matrix ``dm`` (over a fraction field of polynomials); ``max_terms``: the
+        budget of terms of an entry (numerator and denominator), None for none."""
         field = dm.domain
         names = tuple(str(s) for s in field.symbols)
         ctx = flint.fmpz_mpoly_ctx.get(names, "degrevlex")
         rows = [[_from_element(e, ctx) for e in row] for row in dm.to_list()]
-        return cls(rows, dm.shape, field, ctx)
+        out = cls(rows, dm.shape, field, ctx, max_terms)
+        for row in rows:
+            for e in row:
+                out._check(e)
+        return out
+
+    def _check(self, e: RatFunc) -> RatFunc:
+        """``e``, when within the budget of terms."""
+        if self.max_terms is not None:
+            terms = len(e.num) + len(e.den)
+            if terms > self.max_terms:
+                raise BlockTooLarge(f"an entry of {terms:,} terms, over the budget of "
+                                    f"{self.max_terms:,}")
+        return e
+
+    def _budget(self, other: FieldMatrix | None = None) -> int | None:
+        budgets = [b for b in (self.max_terms, getattr(other, "max_terms", None))
+                   if b is not None]
+        return min(budgets) if budgets else None
 
     def _new(self, rows: list[list[RatFunc]]) -> FieldMatrix:
         return FieldMatrix(rows, (len(rows), len(rows[0]) if rows else self.shape[1]),
-                           self.field, self.ctx)
+                           self.field, self.ctx, self.max_terms)
 
     def _zero(self) -> RatFunc:
         return RatFunc.poly(self.ctx.constant(0))
 
     def transpose(self) -> FieldMatrix:
         if not self.rows:
-            return FieldMatrix([], (self.shape[1], 0), self.field, self.ctx)
+            return FieldMatrix([], (self.shape[1], 0), self.field, self.ctx, self.max_terms)
         return self._new([list(col) for col in zip(*self.rows, strict=True)])
 
     def __mul__(self, other: FieldMatrix) -> FieldMatrix:
         cols = list(zip(*other.rows, strict=True)) if other.rows else []
-        out = []
+        product = FieldMatrix([], (self.shape[0], other.shape[1]), self.field, self.ctx,
+                              self._budget(other))
         for row in self.rows:
             line = []
             for col in cols:
@@ -86,13 +116,18 @@ class FieldMatrix:
                 for a, b in zip(row, col, strict=True):
                     if not (a.is_zero() or b.is_zero()):
                         acc = acc + a * b
-                line.append(acc)
-            out.append(line)
-        return FieldMatrix(out, (self.shape[0], other.shape[1]), self.field, self.ctx)
+                line.append(product._check(acc))
+            product.rows.append(line)
+        return product
 
     def __sub__(self, other: FieldMatrix) -> FieldMatrix:
-        return self._new([[a - b for a, b in zip(r, s, strict=True)]
-                          for r, s in zip(self.rows, other.rows, strict=True)])
+        out = self._new([[a - b for a, b in zip(r, s, strict=True)]
+                         for r, s in zip(self.rows, other.rows, strict=True)])
+        out.max_terms = self._budget(other)
+        for row in out.rows:
+            for e in row:
+                out._check(e)
+        return out
 
     def inv(self) -> FieldMatrix:
         """The inverse (Gauss-Jordan; every entry kept in lowest terms); a
@@ -107,11 +142,12 @@ class FieldMatrix:
                 raise NumberError("matrix", "not invertible (its determinant is 0)")
             work[c], work[p] = work[p], work[c]
             pivot = work[c][c]
-            work[c] = [e / pivot for e in work[c]]
+            work[c] = [self._check(e / pivot) for e in work[c]]
             for r in range(n):
                 if r != c and not work[r][c].is_zero():
                     f = work[r][c]
-                    work[r] = [a - f * b for a, b in zip(work[r], work[c], strict=True)]
+                    work[r] = [self._check(a - f * b)
+                               for a, b in zip(work[r], work[c], strict=True)]
         return self._new([row[n:] for row in work])
 
     def det_element(self):
@@ -127,11 +163,12 @@ class FieldMatrix:
                 work[c], work[p] = work[p], work[c]
                 det = -det
             pivot = work[c][c]
-            det = det * pivot
+            det = self._check(det * pivot)
             for r in range(c + 1, n):
                 if not work[r][c].is_zero():
                     f = work[r][c] / pivot
-                    work[r] = [a - f * b for a, b in zip(work[r], work[c], strict=True)]
+                    work[r] = [self._check(a - f * b)
+                               for a, b in zip(work[r], work[c], strict=True)]
         return _to_element(det, self.field)
 
     def to_domain_matrix(self) -> DomainMatrix:

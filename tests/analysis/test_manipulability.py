@@ -151,3 +151,54 @@ def test_ellipsoid_is_drawn_with_its_scale(tmp_path):
     out = tmp_path / "e.png"
     fig.savefig(out)
     assert out.stat().st_size > 10_000
+
+
+# --- the budget of terms ---------------------------------------------------------------
+@pytest.mark.parametrize("name, kwargs", [
+    ("paper-case1-soft", {"generic": True}),
+    ("paper-case1-hard", {"generic": True}),
+    ("planar-two-fingers", {"free": ["q2"]}),
+    ("five-bar", {"at": "q1=2*atan(1/3)"}),
+])
+def test_the_budget_leaves_small_results_unchanged(name, kwargs):
+    from coopkin_sym.analysis.manipulability import MAX_TERMS
+
+    a = coopkin_sym.load(name).analyze(**kwargs)
+    unbounded = a.manipulability(length="L", max_terms=None)
+    assert MAX_TERMS == 2000
+    for m in (a.manipulability(length="L"), a.manipulability(length="L", max_terms=2000)):
+        assert (m.shape, m.form, m.index, m.rank, m.degeneracy) == (
+            unbounded.shape, unbounded.form, unbounded.index, unbounded.rank,
+            unbounded.degeneracy)
+
+
+def test_an_entry_over_the_budget_stops_the_ellipsoid_naming_the_step():
+    from coopkin_sym.errors import BlockTooLarge
+
+    a = coopkin_sym.load("planar-two-fingers").analyze(free=["q2"])
+    with pytest.raises(BlockTooLarge) as info:
+        a.manipulability(length="L", max_terms=3)
+    message = str(info.value)
+    assert message.startswith("manipulability: the ")
+    assert "over the budget of 3 (terms of its numerator and denominator; max_terms= or " \
+           "--max-terms N raises it); the ellipsoid is not computed" in message
+
+
+def test_the_generic_two_fingers_stop_quickly_at_the_default_budget():
+    import time
+
+    from coopkin_sym.errors import BlockTooLarge
+
+    a = coopkin_sym.load("planar-two-fingers").analyze(generic=True)
+    start = time.monotonic()
+    with pytest.raises(BlockTooLarge, match=r"^manipulability: the inverse of A: an entry "
+                                            r"of [\d,]+ terms, over the budget of 2,000 "):
+        a.manipulability(length="L")
+    assert time.monotonic() - start < 5
+
+
+@pytest.mark.parametrize("budget", [0, -3, 2.5, True, "100"])
+def test_a_bad_budget_is_refused(budget):
+    a = coopkin_sym.load("paper-case1-hard").analyze("L=1")
+    with pytest.raises(ManipulabilityError, match="max_terms: expected a positive integer"):
+        a.manipulability(max_terms=budget)

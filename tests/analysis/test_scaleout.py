@@ -199,13 +199,27 @@ class _ClientLike:
         return "not an executor"
 
 
+class _ActorPoolLike:
+    """The interface of ``ray.util.ActorPool`` (``submit(fn, value)``, ``get_next``): not
+    an executor; the error says what to pass instead (its multiprocessing Pool)."""
+
+    def submit(self, fn, value):
+        raise AssertionError("never called")
+
+    def get_next(self):
+        raise AssertionError("never called")
+
+
 WHAT_TO_PASS = ("executor: expected a concurrent.futures.Executor (ProcessPoolExecutor, "
                 "ThreadPoolExecutor, a cluster's executor), a dask distributed.Client, "
+                "a pool with apply_async(fn, args, callback=, error_callback=) "
+                "(multiprocessing.Pool, ray.util.multiprocessing.Pool), "
                 "or None to run here; got ")
 
 
 @pytest.mark.parametrize(("executor", "name"), [(4, "int"), (object(), "object"),
                                                 (_ClientLike(), "_ClientLike"),
+                                                (_ActorPoolLike(), "_ActorPoolLike"),
                                                 (ProcessPoolExecutor, "type")])
 def test_any_other_executor_is_one_error_saying_what_to_pass(executor, name):
     message = WHAT_TO_PASS + name
@@ -216,3 +230,61 @@ def test_any_other_executor_is_one_error_saying_what_to_pass(executor, name):
         with pytest.raises(ArgumentTypeError) as info:
             call()
         assert str(info.value) == message
+
+
+# --- a pool with apply_async: multiprocessing.Pool, ray.util.multiprocessing.Pool --------
+class _RayLikePool:
+    """The interface of ``ray.util.multiprocessing.Pool`` that the tasks use:
+    ``apply_async(func, args=None, kwargs=None, callback=None, error_callback=None)``,
+    the calls run on threads of its own (ray itself is not needed)."""
+
+    def __init__(self):
+        from multiprocessing.pool import ThreadPool
+        self._threads = ThreadPool(2)
+        self.calls = 0
+
+    def apply_async(self, func, args=None, kwargs=None, callback=None,
+                    error_callback=None):
+        self.calls += 1
+        return self._threads.apply_async(func, args or (), kwargs or {},
+                                         callback=callback, error_callback=error_callback)
+
+    def close(self):
+        self._threads.close()
+        self._threads.join()
+
+
+def test_a_ray_like_pool_is_taken_as_executor():
+    pool = _RayLikePool()
+    try:
+        g = grid(CASE1, "q1=-pi/2..pi/2:5,q2=-pi/2..pi/2:5")
+        items = [("paper-case1-hard", "q1=pi/2,q2=pi/2"), "five-bar", ("five-bar", "q1=1")]
+        spread = CASE1.sweep(g, at="L=1", executor=pool, chunk=4)
+        batch = coopkin_sym.analyze_many(items, executor=pool, chunk=1)
+        points = CASE1.analyze_many(["q1=pi/2,q2=pi/2", "q1=0"], executor=pool)
+    finally:
+        pool.close()
+    assert pool.calls >= 7 + 3 + 1
+    assert spread == CASE1.sweep(g, at="L=1")
+    assert batch == coopkin_sym.analyze_many(items)
+    assert [r.numbers.Nm if r.ok else None for r in batch] == [3, 3, None]
+    assert [r.numbers.Nm for r in points] == [3, 2]
+
+
+def test_a_multiprocessing_pool_is_the_serial_batch():
+    items = [("paper-case1-hard", "q1=pi/2,q2=pi/2"), "five-bar"]
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        spread = coopkin_sym.analyze_many(items, executor=pool, chunk=1)
+    assert spread == coopkin_sym.analyze_many(items)
+
+
+class _FailingPool:
+    """A pool whose every task fails outside the computation (a lost worker)."""
+
+    def apply_async(self, func, args=(), kwargs=None, callback=None, error_callback=None):
+        error_callback(RuntimeError("worker lost"))
+
+
+def test_a_task_the_pool_loses_is_the_error_of_its_items():
+    results = run_batch(_numbers, ["five-bar", ("five-bar", 3)], executor=_FailingPool())
+    assert results[0].error == "the task running this item failed: RuntimeError: worker lost"

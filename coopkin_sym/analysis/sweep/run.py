@@ -100,9 +100,10 @@ def sweep(system: Model | Any, points: Grid | Iterable[str | Mapping], *,
         Values of the other joints and of parameters.
     executor
         Any :class:`concurrent.futures.Executor` (a process pool, a cluster's
-        executor such as ``distributed.Client(...).get_executor()``) or a dask
-        ``distributed.Client`` itself: chunks of points are mapped over it as plain
-        data; the result is the serial one. Anything else is an
+        executor such as ``distributed.Client(...).get_executor()``), a dask
+        ``distributed.Client`` itself, or a pool with ``apply_async``
+        (``ray.util.multiprocessing.Pool``, ``multiprocessing.Pool``): chunks of points
+        are mapped over it as plain data; the result is the serial one. Anything else is an
         :class:`~coopkin_sym.errors.ArgumentTypeError` saying what to pass.
     progress
         Report the points done (see :func:`coopkin_sym.exact.bounded.report`; the
