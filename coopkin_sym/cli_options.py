@@ -247,7 +247,7 @@ class ManipulabilityOptions:
     max_terms: Annotated[int | None, typer.Option(
         "--max-terms", min=1,
         help="The budget of terms of one symbolic entry on the way (numerator and "
-             "denominator; default 2000): past it the run stops, says where, and exits "
+             "denominator; default 10000): past it the run stops, says where, and exits "
              "with status 3.")] = None
     timeout: TimeoutOption = None
     no_progress: NoProgressOption = False

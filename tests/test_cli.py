@@ -217,11 +217,11 @@ def test_the_configuration_line_says_where_the_analysis_is(args, line):
 
 
 def test_a_locus_cut_by_its_time_bound_exits_3_and_says_what_was_cut(tmp_path):
-    """The planar two-finger grasp's locus takes longer than its bound here."""
+    """Paper case 2's locus (all eight joints free) takes far longer than its bound."""
     from coopkin_sym.cli import TIME_BOUND_EXIT
 
     report = tmp_path / "r.json"
-    result = runner.invoke(app, ["locus", "planar-two-fingers", "-o", str(report),
+    result = runner.invoke(app, ["locus", "paper-case2-hard", "-o", str(report),
                                  "--timeout", "1.5", "--no-progress"])
     assert result.exit_code == TIME_BOUND_EXIT == 3, result.output
     assert result.stderr.startswith("coopkin: error: time bound of 1.5 s reached during ")
@@ -247,13 +247,13 @@ def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
 
 
 def test_a_generic_manipulability_over_its_term_budget_exits_3():
-    """The default budget of terms stops the generic two-finger ellipsoid at once (its
-    inverse of A grows past 2,000 terms an entry), saying where; a larger one lets a
-    smaller case through, a smaller one cuts it."""
+    """A budget of 2,000 terms stops the generic two-finger ellipsoid at once (its
+    inverse of A grows past it), saying where; a larger one lets a smaller case
+    through, a smaller one cuts it."""
     from coopkin_sym.cli import TIME_BOUND_EXIT
 
     result = runner.invoke(app, ["manipulability", "planar-two-fingers", "--generic",
-                                 "--length", "L", "--no-progress"])
+                                 "--length", "L", "--no-progress", "--max-terms", "2000"])
     assert result.exit_code == TIME_BOUND_EXIT, result.output
     assert result.stdout == ""
     assert result.stderr.startswith("coopkin: error: manipulability: the inverse of A: an "

@@ -70,7 +70,7 @@ from coopkin_sym.exact.parse import NumberError, exact_expr
 
 #: The default budget of terms of one entry of the ellipsoid's exact matrices (its
 #: numerator and denominator): a generic ellipsoid within it is computed in seconds.
-MAX_TERMS = 2000
+MAX_TERMS = 10_000
 
 
 @dataclass(frozen=True)

@@ -165,7 +165,7 @@ def test_the_budget_leaves_small_results_unchanged(name, kwargs):
 
     a = coopkin_sym.load(name).analyze(**kwargs)
     unbounded = a.manipulability(length="L", max_terms=None)
-    assert MAX_TERMS == 2000
+    assert MAX_TERMS == 10_000
     for m in (a.manipulability(length="L"), a.manipulability(length="L", max_terms=2000)):
         assert (m.shape, m.form, m.index, m.rank, m.degeneracy) == (
             unbounded.shape, unbounded.form, unbounded.index, unbounded.rank,
@@ -184,7 +184,7 @@ def test_an_entry_over_the_budget_stops_the_ellipsoid_naming_the_step():
            "--max-terms N raises it); the ellipsoid is not computed" in message
 
 
-def test_the_generic_two_fingers_stop_quickly_at_the_default_budget():
+def test_the_generic_two_fingers_stop_quickly_at_a_small_budget():
     import time
 
     from coopkin_sym.errors import BlockTooLarge
@@ -193,7 +193,7 @@ def test_the_generic_two_fingers_stop_quickly_at_the_default_budget():
     start = time.monotonic()
     with pytest.raises(BlockTooLarge, match=r"^manipulability: the inverse of A: an entry "
                                             r"of [\d,]+ terms, over the budget of 2,000 "):
-        a.manipulability(length="L")
+        a.manipulability(length="L", max_terms=2000)
     assert time.monotonic() - start < 5
 
 
