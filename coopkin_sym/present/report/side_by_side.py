@@ -32,7 +32,15 @@ _JOBS: Sequence[Callable[[], Any]] = ()
 
 
 class PictureFailed(Exception):
-    """A picture that could not be drawn: ``error`` is what its job raised."""
+    """A picture that could not be drawn: ``error`` is what its job raised (kept
+    whole when it comes back from a worker process).
+
+    Example
+    -------
+    >>> import pickle
+    >>> pickle.loads(pickle.dumps(PictureFailed(ValueError("no witness")))).error
+    ValueError('no witness')
+    """
 
     def __init__(self, error: BaseException):
         super().__init__(str(error))
