@@ -51,6 +51,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.passive import PASSIVE_NUMBER_NAMES, PassiveNumbers
     from coopkin_sym.analysis.sweep import SweepResult, grid, sweep
     from coopkin_sym.analysis.views import contact_points, same_span
+    from coopkin_sym.exact.bounded import checkpoint as keep_result
     from coopkin_sym.exact.bounded import deliver as deliver_part
     from coopkin_sym.exact.bounded import report as report_step
     from coopkin_sym.model.configuration import Configuration
@@ -121,6 +122,7 @@ _LAZY = {
     "component_sentences": "coopkin_sym.present.sentences",
     "contact_points": "coopkin_sym.analysis.views",
     "deliver_part": "coopkin_sym.exact.bounded",
+    "keep_result": "coopkin_sym.exact.bounded",
     "describe_example": "coopkin_sym.model.examples",
     "draw": "coopkin_sym.present.draw",
     "ended_at_bound": "coopkin_sym.analysis.locus.types",
@@ -155,6 +157,7 @@ _LAZY = {
 
 #: Public names that are another name in their module.
 _RENAMED = {"check_report_target": "check_target", "deliver_part": "deliver",
+            "keep_result": "checkpoint",
             "draw": "draw_system", "examples": "list_examples",
             "report_step": "report", "verification_lines": "summary_lines"}
 
@@ -268,6 +271,7 @@ __all__ = [
     "irrational_latex",
     "irrational_sentences",
     "irrational_text",
+    "keep_result",
     "load",
     "manipulability_json",
     "manipulability_text",

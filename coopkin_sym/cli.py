@@ -494,6 +494,9 @@ def _echo_locus(result, written) -> None:
                    f"; {completeness_text(lk)}")
 
 
+#: What the work of ``coopkin locus`` delivers once its search is whole.
+SEARCH_DONE = "the search is complete"
+
 #: The share of ``coopkin locus --timeout`` given to the search (and its certificate and
 #: verification); the report has the rest.
 SEARCH_SHARE = 0.8
@@ -514,7 +517,8 @@ def _ended_locus(exc: TimeLimitReached, loaded: list):
     again when there is none (before the generic numbers, or no copy yet)."""
     from coopkin_sym import ended_at_bound
 
-    locus = ended_at_bound(exc) if loaded else None
+    # after the whole search, the work delivers SEARCH_DONE (its copy is then whole)
+    locus = ended_at_bound(exc, SEARCH_DONE in loaded) if loaded else None
     if locus is None:
         raise exc
     return locus
@@ -529,26 +533,50 @@ def _locus_work(system, at, max_depth, timeout, free_joints, pi_size, certify,
         system.check_finite()
     result = system.search_locus(at, max_depth=max_depth, timeout=timeout,
                                  progress=True, free=free_joints, pi_size=pi_size)
+    from coopkin_sym import Certificate, keep_result
+    from coopkin_sym import deliver_part as deliver
+    from coopkin_sym import report_step as report
+
     cut = _time_cut(result, timeout)
     locked = system.with_actuators_locked() if result.locked else None
     checked = checked_locked = None
     if cut is not None:      # the bound has passed: nothing more to run
         return result, checked, checked_locked, cut
+    parts = [result] + ([result.locked] if result.locked is not None else [])
+    if certify:              # until it is made, the certificate says the bound ended it
+        for part in parts:
+            part.certificate = Certificate.cut_at_bound(part.system, timeout,
+                                                        "the completeness certificate")
+    keep_result(result)      # a run ended at its bound from here on has the whole search
+    deliver(SEARCH_DONE)
+    stage = ""
     try:
         if finite:
-            from coopkin_sym import report_step as report
-            report("the finite mobility at the witnesses")
+            stage = "the finite mobility at the witnesses"
+            report(stage)
             system.finite_locus(result)
         if certify:
+            stage = "the completeness certificate"
+            report(stage)
             result.certificate = system.certify_locus(result, budget=certify_timeout)
             if result.locked is not None:
                 result.locked.certificate = locked.certify_locus(result.locked,
                                                                  budget=certify_timeout)
+            keep_result(result)
         if verify:
+            stage = "the verification"
+            report(stage)
             checked = system.verify_locus(result)
             if result.locked is not None:
                 checked_locked = locked.verify_locus(result.locked)
     except TimeLimitReached as exc:  # the report is written without what was cut
+        for part in parts:
+            if getattr(getattr(part.certificate, "refused", None), "kind",
+                       None) == "cert_time_bound":
+                part.certificate = Certificate.cut_at_bound(
+                    part.system, timeout, "the completeness certificate")
+        if not exc.where:
+            exc = TimeLimitReached(exc.seconds, stage, hard=exc.hard)
         return result, None, None, exc
     return result, checked, checked_locked, None
 

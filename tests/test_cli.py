@@ -234,6 +234,43 @@ def test_a_locus_cut_by_its_time_bound_exits_3_and_says_what_was_cut(tmp_path):
         assert result.stderr.endswith("; nothing written\n")
 
 
+@pytest.mark.parametrize("certify_sleeps", [pytest.param("at a step", marks=pytest.mark.slow),
+                                            "inside one call"])
+def test_a_certificate_cut_by_the_bound_keeps_the_whole_search(tmp_path, monkeypatch,
+                                                               certify_sleeps):
+    """The search ends, then the certificate is ended by the bound (between its steps,
+    or inside a call that cannot be interrupted): the report has every component the
+    search found, and says the certificate was cut, not that it was not asked for."""
+    import time
+
+    from coopkin_sym.cli import TIME_BOUND_EXIT
+    from coopkin_sym.exact import deadline
+    from coopkin_sym.system import System
+
+    def slow_certificate(self, locus, **kwargs):
+        for _ in range(100):
+            time.sleep(0.1)
+            if certify_sleeps == "at a step":
+                deadline.check()
+        raise AssertionError("not ended by the bound")
+
+    monkeypatch.setattr(System, "certify_locus", slow_certificate)
+    report = tmp_path / "r.json"
+    result = runner.invoke(app, ["locus", "paper-case1-hard", "-o", str(report),
+                                 "--certify", "--timeout", "4", "--no-progress"])
+    assert result.exit_code == TIME_BOUND_EXIT, result.output
+    assert result.stdout.startswith("5 components (5 real); not certified: time bound of "
+                                    "4")
+    assert "s reached during the completeness certificate, before every test was run; " \
+           "wrote " in result.stdout
+    assert result.stderr.startswith("coopkin: error: time bound of 4 s reached during the "
+                                    "completeness certificate")
+    data = json.loads(report.read_text())
+    assert len(data["components"]) == 5
+    assert not any("the rest of the search was not explored" in str(u)
+                   for u in data["unexplored"])
+
+
 def test_a_generic_manipulability_cut_by_its_time_bound_exits_3():
     from coopkin_sym.cli import TIME_BOUND_EXIT
 

@@ -61,7 +61,7 @@ from typing import Any, TypeVar
 from coopkin_sym.errors import TimeLimitReached, WorkerFailed
 from coopkin_sym.exact import deadline
 
-__all__ = ["Reporter", "TimeLimitReached", "deliver", "report", "reporting",
+__all__ = ["Reporter", "TimeLimitReached", "checkpoint", "deliver", "report", "reporting",
            "run_bounded", "cooperative_seconds"]
 
 T = TypeVar("T")
@@ -71,8 +71,8 @@ ProgressCallback = Callable[[str, "float | None"], None]
 
 
 class Reporter:
-    """Where :func:`report` and :func:`deliver` go: a progress callback and an output
-    callback (either may be None).
+    """Where :func:`report`, :func:`deliver` and :func:`checkpoint` go: a progress
+    callback, an output callback and a snapshot callback (any may be None).
 
     Example
     -------
@@ -84,9 +84,11 @@ class Reporter:
     """
 
     def __init__(self, progress: ProgressCallback | None = None,
-                 output: Callable[[Any], None] | None = None):
+                 output: Callable[[Any], None] | None = None,
+                 snapshot: Callable[[], None] | None = None):
         self.progress = progress
         self.output = output
+        self.snapshot = snapshot
 
 
 _REPORTER: contextvars.ContextVar[Reporter | None] = contextvars.ContextVar(
@@ -132,6 +134,29 @@ def deliver(item: Any) -> None:
     reporter = _REPORTER.get()
     if reporter is not None and reporter.output is not None:
         reporter.output(item)
+
+
+def checkpoint(value: Any) -> None:
+    """Keep ``value`` (a result complete so far) with the current bound and hand a copy
+    of it to the caller now, so that a run ended at its bound inside a step that cannot
+    be interrupted (:attr:`~coopkin_sym.errors.TimeLimitReached.kept`) ends with this
+    copy, not an older one; ``value`` must pickle.
+
+    Example
+    -------
+    >>> def work():
+    ...     checkpoint({"found": 3})
+    ...     import time; time.sleep(5)
+    >>> try:
+    ...     run_bounded(work, 1.0, separate=True)
+    ... except TimeLimitReached as exc:
+    ...     print(exc.kept)
+    {'found': 3}
+    """
+    deadline.keep(value)
+    reporter = _REPORTER.get()
+    if reporter is not None and reporter.snapshot is not None:
+        reporter.snapshot()
 
 
 @contextmanager
@@ -331,10 +356,14 @@ def _child(work, seconds: float | None, owner: str, send, started: float,
     def item(value) -> None:
         send.send(("output", value))
 
+    def snapshot() -> None:
+        last[2] = time.monotonic()
+        send.send(("kept", pickle.dumps(deadline.kept())))
+
     # the cooperative bound ends cooperative_seconds after ``started``
     margin = 0.0 if seconds is None else (seconds - cooperative_seconds(seconds)
                                           + time.monotonic() - started)
-    with reporting(Reporter(step, item)):
+    with reporting(Reporter(step, item, snapshot)):
         try:
             with deadline.time_limit(seconds, owner, margin=margin):
                 result = work()

@@ -251,6 +251,8 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "cert_not_tested": lambda f: "not tested (max_depth)",
     "cert_nothing_to_test": lambda f: "nothing to test",
     "cert_depths_untested": lambda f: f"depths beyond {f['depth']} were not tested",
+    "cert_time_bound": lambda f: (
+        f"{TimeLimitReached(f['seconds'], f['where'])}, before every test was run"),
     "verify_other_system": lambda f: (
         f"the locus is about {f['locus_system']!r}, the model is {f['model_system']!r}"),
     "verify_parameter_unset": lambda f: (

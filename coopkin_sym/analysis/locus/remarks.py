@@ -97,6 +97,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "cert_not_tested": (),
     "cert_nothing_to_test": (),
     "cert_depths_untested": ("depth",),
+    "cert_time_bound": ("seconds", "where"),
     # a verification: what it could not use
     "verify_other_system": ("locus_system", "model_system"),
     "verify_parameter_unset": ("parameter",),

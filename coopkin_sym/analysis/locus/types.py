@@ -387,6 +387,19 @@ class Certificate(Displayable):
         return (f"<Certificate {clip(self.system, 100)}: {verdict}; {len(self.checks)} "
                 f"tests, {failing} not certified>")
 
+    @classmethod
+    def cut_at_bound(cls, system: str, seconds: float | None, where: str) -> Certificate:
+        """The certificate of a locus whose certification the time bound of ``seconds``
+        ended (``where``: the step): not certified, and it says why.
+
+        Example
+        -------
+        >>> Certificate.cut_at_bound("demo", 20, "the completeness certificate").refused.kind
+        'cert_time_bound'
+        """
+        return cls(system, refused=Remark.of("cert_time_bound", seconds=seconds,
+                                             where=where))
+
     def certified_by(self) -> dict[str, int]:
         """How many tests each backend certified.
 
@@ -670,11 +683,12 @@ def cut_short(bound, exc: TimeLimitReached) -> Locus:
     return locus
 
 
-def ended_at_bound(exc: TimeLimitReached) -> Locus | None:
+def ended_at_bound(exc: TimeLimitReached, whole_search: bool = False) -> Locus | None:
     """The locus of a search ended at its bound inside a step that cannot be
     interrupted (``exc.hard``; see :func:`coopkin_sym.exact.bounded.run_bounded`): the
-    last copy of it the search kept, with the cut said in :attr:`Locus.unexplored`;
-    None when there is none (the bound came before the generic numbers).
+    last copy of it the search kept, with the cut said in :attr:`Locus.unexplored`
+    (not with ``whole_search``: the run was ended after the search, whose copy is
+    whole); None when there is none (the bound came before the generic numbers).
 
     Example
     -------
@@ -687,6 +701,8 @@ def ended_at_bound(exc: TimeLimitReached) -> Locus | None:
     locus = getattr(exc, "kept", None)
     if not (exc.hard and isinstance(locus, Locus)):
         return None
+    if whole_search:
+        return locus
     locus.unexplored.append(Remark.of("time_whole_run", seconds=exc.seconds,
                                       where=exc.where))
     canonical_order(locus)
