@@ -267,6 +267,8 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
             z[p] = sp.simplify(y[k]) if cmap.point is None else sp.radsimp(y[k])
     scale = cmap.scale
     velocity = [scale[k] * z[name] for k, name in enumerate(names)]
+    if cmap.point is not None:          # radicals written out simply
+        velocity = [sp.radsimp(sp.expand(sp.sqrtdenest(sp.sympify(v)))) for v in velocity]
     nobj = 3 if cmap.planar else 6
     out = velocity[:nobj]
     moving = iter(velocity[nobj:])
