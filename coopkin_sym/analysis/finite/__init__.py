@@ -214,9 +214,9 @@ def _generic_rank(model: Model, config: Configuration,
         here = decompose([kin.ring.clear_row(r) for r in kin.Q], model, kin.row_contacts,
                          kin.ring.zctx).numbers
     else:
-        from coopkin_sym.analysis.irrational import analyze_irrational
+        from coopkin_sym.analysis.field_rows import field_rows, numbers_at
 
-        here = analyze_irrational(model, point.at).numbers
+        here = numbers_at(field_rows(model, point.at))
     everywhere = Configuration({}, {}, dict(config.parameters),
                                frozenset(j.name for j in model.joints))
     gkin = kinematics.build(model, everywhere)

@@ -42,7 +42,15 @@ class AlgebraicPoint:
     (joint -> ``(cos q, sin q)`` as ``fmpq_poly`` in ``alpha``, modulo its minimal
     polynomial), the field with its real embedding, ``alpha`` and its minimal
     polynomial as text, each ``tan(q/2)`` (``tangents``), and the assignments as given
-    (``at``: name -> text)."""
+    (``at``: name -> text).
+
+    Example
+    -------
+    >>> from coopkin_sym.model.model import load_model
+    >>> _, point = algebraic_point(load_model("four-bar"), "q1=pi/4,q2=0")
+    >>> point.as_json()["minimal_polynomial"], point.tangents
+    ('alpha**2 + 2*alpha - 1', {'q1': '-1 + sqrt(2)'})
+    """
 
     field: RealNumberField
     cos_sin: dict
@@ -70,7 +78,7 @@ def algebraic_point(model: Model, at) -> tuple[Configuration, AlgebraicPoint] | 
     """The configuration ``at`` (``--at`` text or mapping) with its joints of
     irrational ``tan(q/2)`` left free, and their values over the number field
     (:class:`AlgebraicPoint`); None when every value is rational."""
-    from coopkin_sym.analysis.irrational import irrational_values
+    from coopkin_sym.analysis.field_rows import irrational_values
     from coopkin_sym.model.configuration import split_assignments
 
     if isinstance(at, Configuration) or at is None:
