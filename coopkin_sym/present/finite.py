@@ -88,7 +88,9 @@ def finite_summary(data: dict) -> str:
     value = "undecided" if data["dimension"] is None else str(data["dimension"])
     words = _classification_words(data["classification"], data["dimension"],
                                   list(data["branches"]), data["order"], data["bounds"])
-    return f"{value} (first-order motions: {data['first_order']}): {words}"
+    field = data.get("field")
+    over = (f" (exact over Q(alpha), alpha = {field['alpha']})" if field else "")
+    return f"{value} (first-order motions: {data['first_order']}): {words}{over}"
 
 
 def _vector(v) -> str:

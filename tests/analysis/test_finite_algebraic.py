@@ -146,3 +146,37 @@ def test_analyze_finite_at_an_irrational_angle_on_the_command_line():
 def test_a_transcendental_angle_is_still_refused():
     with pytest.raises(CoopkinError, match="not an algebraic number|not exact"):
         finite_mobility(load("four-bar").model, "q1=1,q2=0")
+
+
+def test_signs_in_the_number_field_are_exact_near_zero():
+    """577/408 - sqrt(2) is about 2e-6 > 0, and 1393/985 - sqrt(2) about -4e-7 < 0:
+    decided on refined rational intervals, not in floating point."""
+    import flint
+
+    from coopkin_sym.exact.numberfield import RealNumberField
+    from coopkin_sym.exact.realroot import RealRoot
+
+    root = [r for r in RealRoot.all_of([-2, 0, 1]) if r.lo >= 0][0]
+    k = RealNumberField(flint.fmpq_poly([-2, 0, 1]), root)
+    s = k.number([0, 1])
+    assert (flint.fmpq(577, 408) - s).sign() == 1
+    assert (flint.fmpq(1393, 985) - s).sign() == -1
+    assert (s * s - 2).sign() == 0
+    tiny = s - 1
+    for _ in range(6):                 # (sqrt(2) - 1)^64: about 3e-25, positive
+        tiny = tiny * tiny
+    assert tiny > 0 and -tiny < 0
+
+
+def test_the_locus_report_with_an_algebraic_finite_mobility_reads_back(tmp_path):
+    from coopkin_sym.present.report_input import validate_report
+
+    runner = CliRunner()
+    out = tmp_path / "case1.json"
+    done = runner.invoke(app, ["locus", "paper-case1-hard", "--finite", "-o", str(out)])
+    assert done.exit_code == 0, done.output
+    data = json.loads(out.read_text())
+    fields = [c["finite"].get("field") for c in data["components"] if c["finite"]]
+    assert any(f and f["alpha"] == "-2 - sqrt(3)" for f in fields)
+    back = validate_report(out.read_text())
+    assert any(c.finite and "field" in c.finite for c in back.components)
