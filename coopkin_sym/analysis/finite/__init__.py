@@ -18,6 +18,9 @@ reduced to the first-order motions (:mod:`.reduce`), says whether they are finit
   hyperplanes: a bifurcation; an irreducible quadratic cone: a cone point); binary
   forms give one branch per simple real root. Anything else is undecided at the order
   reached, with the bounds that are proved;
+* at a joint angle with an irrational ``tan(q/2)`` (``pi/3``), all of this runs over
+  the number field of the configuration, every sign decided exactly
+  (:mod:`.algebraic`), but for the closure saturation below;
 * with complete contacts only (a welded loop), when the expansion stays undecided:
   the closure conditions dependent here are proved, by exact saturations, to vanish on
   the smooth set cut out by independent ones (:mod:`.closure`): the loop is
@@ -407,8 +410,10 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                     numbers_change: bool | None = None) -> FiniteMobility:
     """The finite mobility of ``model`` at the configuration ``at`` (``--at`` syntax or
     a :class:`~coopkin_sym.model.configuration.Configuration`; every joint at a
-    rational ``tan(q/2)``, ``q = pi`` included, and every parameter set, a single
-    length set to 1 when left free), exact to ``order`` (default: 2, 3, ... up to
+    rational ``tan(q/2)``, ``q = pi`` included, or an algebraic one such as ``pi/3``
+    given as text, computed then over its number field (:mod:`.algebraic`), and every
+    parameter set, a single length set to 1 when left free), exact to ``order``
+    (default: 2, 3, ... up to
     :data:`DEFAULT_ORDER`, until decided). ``generic_rank`` is the rank of ``Q`` over
     the joint variables (computed when not given); ``numbers_change`` whether the
     seven numbers here differ from the generic ones (for the words "regular" and

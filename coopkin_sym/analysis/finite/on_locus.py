@@ -26,6 +26,7 @@ from __future__ import annotations
 from coopkin_sym.analysis.finite import FiniteMobility, finite_mobility
 from coopkin_sym.analysis.finite.constraints import check_holonomic
 from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
@@ -62,6 +63,15 @@ def finite_at_witnesses(locus: Locus, model: Model, order: int | None = None) ->
             point = (component.algebraic_witness or {}).get("point")
             if not point:
                 continue
+            try:
+                found = finite_mobility(model, dict(point), order)
+            except CoopkinError:
+                # a witness whose values this expansion cannot take (an angle in a
+                # root of a quintic, a field over the degree limit): not computed
+                continue
+            component.finite = finite_data(found)
+            done += 1
+            continue
         component.finite = finite_data(finite_mobility(model, point, order))
         done += 1
     return done
