@@ -137,9 +137,12 @@ class RealNumberField(NumberField):
     (1, -1)
     """
 
-    def __init__(self, g: flint.fmpq_poly, root):
+    def __init__(self, g: flint.fmpq_poly, root, expression=None):
         super().__init__(g)
         self.root = root
+        #: ``alpha`` written exactly (a SymPy expression in radicals), when known:
+        #: elements are written with it (else with ``root.expression()``).
+        self.expression = expression
 
     def sign(self, a) -> int:
         """The sign of ``a`` at the real embedding: -1, 0 or 1, exactly."""

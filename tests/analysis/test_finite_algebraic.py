@@ -180,3 +180,23 @@ def test_the_locus_report_with_an_algebraic_finite_mobility_reads_back(tmp_path)
     assert any(f and f["alpha"] == "-2 - sqrt(3)" for f in fields)
     back = validate_report(out.read_text())
     assert any(c.finite and "field" in c.finite for c in back.components)
+
+
+def test_tangents_over_a_field_of_degree_four_are_first_order_motions():
+    """q1 = pi/3, q2 = pi/4 need Q(sqrt 2, sqrt 3): each branch vector, scaled back to
+    the coordinates (``z = v / S``), is in the kernel of the exact linear part J."""
+    from coopkin_sym.analysis.finite import _sym
+    from coopkin_sym.analysis.finite.algebraic import algebraic_point
+    from coopkin_sym.analysis.finite.constraints import ConstraintMap
+
+    model = load("paper-case1-hard").model
+    fm = finite_mobility(model, "q1=pi/3,q2=pi/4")
+    assert (fm.dimension, fm.reason) == (2, "submersion")
+    assert sp.degree(sp.sympify(fm.field["minimal_polynomial"]), sp.Symbol("alpha")) == 4
+    config, point = algebraic_point(model, "q1=pi/3,q2=pi/4,L=1")
+    cmap = ConstraintMap(model, config, point=point)
+    jac = sp.Matrix([[_sym(x) for x in row] for row in cmap.linear()])
+    for v in fm.branches[0].tangent:
+        z = sp.Matrix([x / s for x, s in zip(v, cmap.scale, strict=True)])
+        assert all(sp.simplify(e) == 0 for e in jac * z)
+    assert sp.Matrix(fm.branches[0].tangent).rank(simplify=True) == 2

@@ -51,6 +51,7 @@ from coopkin_sym.analysis.finite.forms import (
     real_directions,
 )
 from coopkin_sym.analysis.finite.reduce import Reduced, echelon, reduce_map
+from coopkin_sym.analysis.finite.reduce import inverse as _field_inverse
 from coopkin_sym.exact.matrix import RATIONALS, rank
 from coopkin_sym.exact.realroot import element_expression
 from coopkin_sym.model.configuration import Configuration
@@ -142,7 +143,8 @@ class FiniteMobility:
 def _sym(x) -> sp.Expr:
     """An exact number (``fmpq``, ``Fraction``, a number-field element) in SymPy."""
     if hasattr(x, "field") and hasattr(x, "value"):
-        return element_expression(x.value, x.field.root)
+        root = x.field.expression if x.field.expression is not None else x.field.root
+        return element_expression(x.value, root)
     if isinstance(x, sp.Basic):
         return x
     return sp.Rational(str(x))
@@ -259,7 +261,19 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
     z = {name: sp.Rational(0) for name in names}
     for name, value in zip(red.free, x, strict=True):
         z[name] = sp.nsimplify(value) if not isinstance(value, sp.Basic) else value
-    if red.pivots:
+    if red.pivots and cmap.point is not None:
+        # y = -(A^-1 B) x with A^-1 B computed over the number field, then written
+        # in radicals once (x may hold a square root outside the field)
+        piv = [names.index(p) for p in red.pivots]
+        rows = list(red.rows)
+        frees = [names.index(f) for f in red.free]
+        inv = _field_inverse([[jac[i][j] for j in piv] for i in rows])
+        for k, p in enumerate(red.pivots):
+            coeffs = [sum((inv[k][r] * jac[i][j] for r, i in enumerate(rows)),
+                          cmap.point.field.number(0)) for j in frees]
+            z[p] = -sum((_sym(c) * z[f] for c, f in zip(coeffs, red.free, strict=True)
+                         if c), sp.Integer(0))
+    elif red.pivots:
         piv = [names.index(p) for p in red.pivots]
         rows = list(red.rows)
         a = sp.Matrix([[_sym(jac[i][j]) for j in piv] for i in rows])
@@ -271,7 +285,8 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
     scale = cmap.scale
     velocity = [scale[k] * z[name] for k, name in enumerate(names)]
     if cmap.point is not None:          # radicals written out simply
-        velocity = [sp.radsimp(sp.expand(sp.sqrtdenest(sp.sympify(v)))) for v in velocity]
+        velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) else v
+                    for v in velocity]
     nobj = 3 if cmap.planar else 6
     out = velocity[:nobj]
     moving = iter(velocity[nobj:])

@@ -101,7 +101,7 @@ def algebraic_point(model: Model, at) -> tuple[Configuration, AlgebraicPoint] | 
     ints = [int(c) for c in poly.all_coeffs()[::-1]]
     g = flint.fmpq_poly(ints)
     (root,) = [r for r in RealRoot.all_of(ints) if r.contains(alpha)]
-    k = RealNumberField(g, root)
+    k = RealNumberField(g, root, alpha)
     cos_sin = {}
     for n, rep in zip(names, reps, strict=True):
         t = k.element(_fmpq_poly([sp.Rational(c) for c in rep][::-1]))

@@ -100,7 +100,7 @@ def echelon(matrix: list[list]) -> tuple[int, list[int], list[list]]:
     return r, pivots, a
 
 
-def _inverse(a: list[list]) -> list[list]:
+def inverse(a: list[list]) -> list[list]:
     """The inverse of an invertible square matrix (elements as in :func:`echelon`)."""
     n = len(a)
     one, zero = a[0][0] * 0 + 1, a[0][0] * 0
@@ -132,7 +132,7 @@ def reduce_map(cmap: ConstraintMap, order: int) -> Reduced:
         a_inv = [[inv[i, j] for j in range(rank)] for i in range(rank)]
     elif rank:
         a_inv = [[field.lift(c) for c in row] for row in
-                 _inverse([[jac[i][j] for j in pivot_cols] for i in rows])]
+                 inverse([[jac[i][j] for j in pivot_cols] for i in rows])]
     y = {k: field.zero for k in pivot_cols}
     for _ in range(order):
         z = [x[k] if k in x else y[k] for k in range(len(names))]
