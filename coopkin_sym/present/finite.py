@@ -56,6 +56,10 @@ _ASSUMPTION_WORDS = {
     "unit_length": "the one length parameter was set to 1 (scaling changes no dimension)",
     "frictionless_flat_face": "each frictionless contact is read as the link's point "
                               "kept on a flat face of the object",
+    "no_closure_saturation_over_field": "not tried: the welded-loop closure saturation "
+                                        "(it is not computed over a number field yet, so "
+                                        "the expansion's bounds are all that is proved "
+                                        "here)",
 }
 
 

@@ -475,6 +475,10 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                                       if numbers_change else "regular", "closure_saturation",
                                       (Branch(n, _kernel(cmap, first, basis)),),
                                       ((1, n),), 1, notes)
+        if (found["dimension"] is None and k == orders[-1] and not extra
+                and point is not None and len(cmap.positions) > 1
+                and all(x == "weld" for x in cmap.positions)):
+            notes = notes + ("no_closure_saturation_over_field",)
         if found["dimension"] is not None or k == orders[-1]:
             lower, upper = found["bounds"]
             branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else
