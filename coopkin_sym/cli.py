@@ -179,12 +179,14 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     result = system.analyze(o.at, generic=o.generic, free=o.free_joints)
     finite = None
     if o.finite:
-        if o.generic or o.free_joints or _irrational(result):
-            raise FiniteMobilityError("--finite needs every joint at an exact angle with a "
-                                      "rational tan(q/2) (not --generic, --free or an "
-                                      "irrational angle)")
+        if o.generic or o.free_joints:
+            raise FiniteMobilityError("--finite needs every joint at an exact angle (a "
+                                      "rational or algebraic tan(q/2); not --generic or "
+                                      "--free)")
         report("the finite mobility")
-        finite = system.finite_mobility(result.configuration, order=o.order)
+        # at irrational angles, over the number field of the configuration
+        finite = system.finite_mobility(o.at if _irrational(result) else
+                                        result.configuration, order=o.order)
     if not (o.as_json or o.latex or _irrational(result)):
         parts = analysis_parts(result)
         if finite is not None:
@@ -205,8 +207,12 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
             text += ("\n" + finite_latex(finite)) if o.latex else (
                 "\n" + "\n".join(finite_lines(finite)))
         return text
-    from coopkin_sym import irrational_latex, irrational_text
-    return irrational_latex(result) if o.latex else irrational_text(result)
+    from coopkin_sym import finite_latex, finite_lines, irrational_latex, irrational_text
+    text = irrational_latex(result) if o.latex else irrational_text(result)
+    if finite is not None:
+        text += ("\n" + finite_latex(finite)) if o.latex else (
+            "\n" + "\n".join(finite_lines(finite)))
+    return text
 
 
 class _PartPrinter:

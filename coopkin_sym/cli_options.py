@@ -170,7 +170,8 @@ class LocusOptions:
         "--certify-timeout", min=0, help="Wall-clock bound in seconds for the whole "
                                          "certificate (each test at most 30 s).")] = 300.0
     finite: Annotated[bool, typer.Option(
-        "--finite", help="Also the finite mobility at each component's rational witness: "
+        "--finite", help="Also the finite mobility at each component's witness (rational, "
+                         "else algebraic, over its number field): "
                          "which singular families are bifurcations, which are shaky, "
                          "which only change the first-order numbers (hard, complete and "
                          "frictionless contacts).")] = False

@@ -250,8 +250,8 @@ class System:
         check_holonomic(self.model)
 
     def finite_locus(self, locus: Locus, *, order: int | None = None) -> int:
-        """The finite mobility at every rational witness of ``locus`` (a locus of this
-        system), kept in each component's ``finite`` (see
+        """The finite mobility at every witness (rational, else algebraic) of ``locus``
+        (a locus of this system), kept in each component's ``finite`` (see
         :func:`coopkin_sym.analysis.finite.on_locus.finite_at_witnesses`); how many
         were computed. :meth:`Locus.finite_mobility
         <coopkin_sym.analysis.locus.facade.LocusMethods.finite_mobility>` calls it.
@@ -300,7 +300,8 @@ class System:
         """The finite mobility at ``at``: the local dimension of the closed system's
         configuration space, its branches and classification, exactly (see
         :func:`coopkin_sym.analysis.finite.finite_mobility`; every joint at a rational
-        ``tan(q/2)``, hard, complete or frictionless contacts).
+        ``tan(q/2)``, or an algebraic one such as ``pi/3`` (over its number field);
+        hard, complete or frictionless contacts).
 
         Example
         -------

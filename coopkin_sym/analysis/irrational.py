@@ -26,15 +26,14 @@ Example
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import sympy as sp
-from sympy.polys.numberfields.subfield import primitive_element
 
-from coopkin_sym import limits
 from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.classes import grasp_classes
+from coopkin_sym.analysis.field_rows import field_rows, irrational_values
 from coopkin_sym.analysis.mobility import frame_json, numbers_modulo, snapped_json
 from coopkin_sym.analysis.numbers import Numbers, numbers_line
 from coopkin_sym.analysis.passive import (
@@ -43,16 +42,13 @@ from coopkin_sym.analysis.passive import (
     passive_numbers,
 )
 from coopkin_sym.analysis.renderers import Displayable, clip
-from coopkin_sym.errors import ArgumentError, NotAvailable, NotIrrational
+from coopkin_sym.errors import NotAvailable, NotIrrational
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
-from coopkin_sym.exact.parse import NumberError, algebraic_half_angle, exact_expr, parse_angle
+from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.quotient import Quotient
-from coopkin_sym.exact.substitution import substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy, ratfunc_to_sympy
 from coopkin_sym.model.configuration import (
-    Configuration,
-    ConfigurationError,
     assignments_text,
     split_assignments,
 )
@@ -221,67 +217,16 @@ def available_attributes() -> list[str]:
     return sorted(n for n in names if not n.startswith("_"))
 
 
-def irrational_values(model: Model, at) -> tuple[list[tuple[str, object]], dict[str, sp.Expr]]:
-    """The ``--at`` items split into the rational ones and the revolute joints whose
-    ``tan(q/2)`` is irrational but algebraic (joint -> exact tangent). Values that are
-    neither (``q1=1``: ``tan(1/2)`` is transcendental) raise the usual error."""
-    joints = {j.name: j for j in model.joints}
-    rational, irrational = [], {}
-    for name, value in split_assignments(at, "--at"):
-        joint = joints.get(name)
-        if joint is None or joint.type != "revolute" or isinstance(value, tuple):
-            rational.append((name, value))
-            continue
-        text = value if not isinstance(value, sp.Basic) else sp.sstr(value)
-        try:
-            parse_angle(str(text), f"--at {name}")
-            rational.append((name, value))
-        except NumberError as exc:
-            try:
-                irrational[name] = algebraic_half_angle(str(text), f"--at {name}")
-            except NumberError:
-                raise ConfigurationError(str(exc)) from None
-    return rational, irrational
-
-
 def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
     """The numbers of ``model`` at ``at``, where some angles have an irrational (but
     algebraic) ``tan(q/2)``, exactly over the number field they generate.
 
     Raises :class:`NotIrrational` when every value is rational.
     """
-    rational, irrational = irrational_values(model, at)
-    if not irrational:
-        raise NotIrrational("every value is rational")
-    config = Configuration.parse(model, dict(rational), free=list(irrational))
-    kin = kinematics.build(model, config)
-    rows = [kin.ring.clear_row(r) for r in kin.Q]
-    names = list(irrational)
-    degree = 1
-    for n in names:
-        degree *= sp.degree(sp.minimal_polynomial(irrational[n], _ALPHA), _ALPHA)
-    if degree > limits.MAX_FIELD_DEGREE:
-        raise ConfigurationError(
-            f"--at: the irrational values ({', '.join(names)}) may generate a number "
-            f"field of degree up to {degree}, over the limit of {limits.MAX_FIELD_DEGREE}")
-    minimal, coeffs, reps = primitive_element([irrational[n] for n in names], _ALPHA,
-                                              ex=True)
-    alpha = sp.radsimp(sum(c * irrational[n] for c, n in zip(coeffs, names, strict=True)))
-    x = tangent_name(names[0])
-    kx = kin.ring.names.index(x)
-    coeffs_g = [sp.Rational(c) for c in sp.Poly(minimal, _ALPHA).all_coeffs()[::-1]]
-    scale = sp.ilcm(*[c.q for c in coeffs_g])
-    g = _in_slot(kin.ring.zctx, [c * scale for c in coeffs_g], kx)
-    # alpha lives in the slot of the first irrational joint: that joint's own value goes
-    # first, then the others (polynomials in alpha) are put in
-    order = sorted(range(len(names)), key=lambda i: i != 0)
-    for i in order:
-        k = kin.ring.names.index(tangent_name(names[i]))
-        rep = [sp.Rational(c) for c in reps[i]][::-1]
-        den = sp.ilcm(*[c.q for c in rep]) if rep else 1
-        num = _in_slot(kin.ring.zctx, [c * den for c in rep], kx)
-        rows = substitute_rows(rows, k, -num, kin.ring.zctx.constant(int(den)))
-    quotient = Quotient(g, kx)
+    rows_at = field_rows(model, at)
+    rational, irrational, names = rows_at.rational, rows_at.irrational, rows_at.names
+    kin, rows, quotient, minimal = rows_at.kin, rows_at.rows, rows_at.quotient, rows_at.minimal
+    alpha = rows_at.alpha
     numbers = numbers_modulo(rows, model, kin.row_contacts, quotient)
     passive = None
     if model.passive_joints and not model.locked:
@@ -303,21 +248,6 @@ def analyze_irrational(model: Model, at) -> IrrationalAnalysis:
         passive=passive, model=model,
         variables=tuple(n for n in kin.ring.names if n not in
                         {tangent_name(x) for x in names}))
-
-
-def _in_slot(zctx, coeffs: Sequence, k: int):
-    """The integer polynomial ``sum c_i x_k^i`` (``coeffs`` lowest degree first)."""
-    n = len(zctx.gens())
-    terms = {}
-    for i, c in enumerate(coeffs):
-        c = sp.Rational(c)
-        if c:
-            if c.q != 1:
-                raise ArgumentError("integer coefficients expected")
-            mon = [0] * n
-            mon[k] = i
-            terms[tuple(mon)] = int(c)
-    return zctx.from_dict(terms)
 
 
 def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,

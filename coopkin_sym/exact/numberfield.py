@@ -120,4 +120,145 @@ class NumberField:
         return [self.element(c * inv) for c in g]
 
 
-__all__ = ["NumberField"]
+class RealNumberField(NumberField):
+    """``Q(alpha)`` with ``alpha`` a chosen real root of ``g`` (a
+    :class:`~coopkin_sym.exact.realroot.RealRoot`, the real embedding): the sign of an
+    element is decided exactly, by evaluating it on rational isolating intervals of
+    ``alpha``, refined until the enclosure excludes 0 (it does, the element being
+    nonzero at a root of an irreducible ``g`` only when it is not a multiple of ``g``).
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.realroot import RealRoot
+    >>> root = RealRoot.all_of([-3, 0, 1])[1]              # sqrt(3)
+    >>> k = RealNumberField(flint.fmpq_poly([-3, 0, 1]), root)
+    >>> k.sign(k.element([-17, 10])), k.sign(k.element([-18, 10]))   # 10 sqrt 3 - 17
+    (1, -1)
+    """
+
+    def __init__(self, g: flint.fmpq_poly, root, expression=None):
+        super().__init__(g)
+        self.root = root
+        #: ``alpha`` written exactly (a SymPy expression in radicals), when known:
+        #: elements are written with it (else with ``root.expression()``).
+        self.expression = expression
+
+    def sign(self, a) -> int:
+        """The sign of ``a`` at the real embedding: -1, 0 or 1, exactly."""
+        from coopkin_sym.exact.realroot import _horner
+
+        a = self.element(a)
+        if a.is_zero():
+            return 0
+        coeffs = [Fraction(int(c.p), int(c.q)) for c in a.coeffs()]
+        width = Fraction(1, 16)
+        while True:
+            lo, hi = self.root.refine(width)
+            low, high = _horner(coeffs, lo, hi)
+            if low > 0:
+                return 1
+            if high < 0:
+                return -1
+            width /= 2**20
+
+    def number(self, a) -> Number:
+        """``a`` as a :class:`Number` of this field."""
+        return Number(self, self.element(a))
+
+
+class Number:
+    """An element of a :class:`RealNumberField`, with ``+ - * /``, equality and the
+    order of the reals (exact signs), so that elimination written for fractions runs
+    over ``Q(alpha)`` unchanged.
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.realroot import RealRoot
+    >>> k = RealNumberField(flint.fmpq_poly([-2, 0, 1]), RealRoot.all_of([-2, 0, 1])[0])
+    >>> a = k.number([0, 1])                                # -sqrt(2)
+    >>> a * a == 2, a < 0, str(1 / a)
+    (True, True, '1/2*x')
+    """
+
+    __slots__ = ("field", "value")
+
+    def __init__(self, field: RealNumberField, value: Element):
+        self.field = field
+        self.value = value
+
+    def _of(self, other) -> Element | None:
+        if isinstance(other, Number):
+            return other.value
+        if isinstance(other, int | Fraction | flint.fmpq | flint.fmpz | flint.fmpq_poly):
+            return self.field.element(other)
+        return None
+
+    def _make(self, value: Element) -> Number:
+        return Number(self.field, self.field.element(value))
+
+    def __add__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(self.value + o)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(self.value - o)
+
+    def __rsub__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(o - self.value)
+
+    def __mul__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(self.value * o)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(self.value *
+                                                           self.field.inverse(o))
+
+    def __rtruediv__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else self._make(o * self.field.inverse(self.value))
+
+    def __neg__(self):
+        return Number(self.field, -self.value)
+
+    def __eq__(self, other):
+        o = self._of(other)
+        return NotImplemented if o is None else (self.value - o) % self.field.g == 0
+
+    def __hash__(self):
+        return hash(str(self.value))
+
+    def __bool__(self) -> bool:
+        return not self.value.is_zero()
+
+    def sign(self) -> int:
+        return self.field.sign(self.value)
+
+    def __lt__(self, other):
+        return (self - other).sign() < 0
+
+    def __gt__(self, other):
+        return (self - other).sign() > 0
+
+    def __le__(self, other):
+        return (self - other).sign() <= 0
+
+    def __ge__(self, other):
+        return (self - other).sign() >= 0
+
+    def __str__(self) -> str:
+        return str(self.value)
+
+    __repr__ = __str__
+
+
+__all__ = ["Number", "NumberField", "RealNumberField"]

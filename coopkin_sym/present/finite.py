@@ -56,6 +56,10 @@ _ASSUMPTION_WORDS = {
     "unit_length": "the one length parameter was set to 1 (scaling changes no dimension)",
     "frictionless_flat_face": "each frictionless contact is read as the link's point "
                               "kept on a flat face of the object",
+    "no_closure_saturation_over_field": "not tried: the welded-loop closure saturation "
+                                        "(it is not computed over a number field yet, so "
+                                        "the expansion's bounds are all that is proved "
+                                        "here)",
 }
 
 
@@ -88,11 +92,24 @@ def finite_summary(data: dict) -> str:
     value = "undecided" if data["dimension"] is None else str(data["dimension"])
     words = _classification_words(data["classification"], data["dimension"],
                                   list(data["branches"]), data["order"], data["bounds"])
-    return f"{value} (first-order motions: {data['first_order']}): {words}"
+    field = data.get("field")
+    over = (f" (exact over Q(alpha), alpha = {field['alpha']})" if field else "")
+    return f"{value} (first-order motions: {data['first_order']}): {words}{over}"
 
 
 def _vector(v) -> str:
-    return "(" + ", ".join(str(sp.nsimplify(x)) for x in v) + ")"
+    return "(" + ", ".join(str(x if isinstance(x, sp.Basic) and not x.is_Rational
+                               else sp.nsimplify(x)) for x in v) + ")"
+
+
+def _field_words(fm: FiniteMobility) -> str | None:
+    """The number field of an irrational configuration, in words (None at a rational
+    one)."""
+    if fm.field is None:
+        return None
+    return (f"exactly over the number field Q(alpha), alpha = {fm.field['alpha']} (a root "
+            f"of {fm.field['minimal_polynomial']}; every sign decided on rational "
+            f"isolating intervals of alpha)")
 
 
 def finite_lines(fm: FiniteMobility) -> list[str]:
@@ -120,6 +137,10 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
             lines.append(f"  Branch {k}: {branch.dimension} motion"
                          f"{'' if branch.dimension == 1 else 's'}, tangent to the span of "
                          f"{span} in (u, qdot)")
+        elif branch.cone is None:
+            lines.append(f"  Branch {k}: {branch.dimension} motion, tangent to a simple "
+                         f"real root of the lowest term (counted exactly; its direction "
+                         f"is not written over the number field)")
         else:
             lines.append(f"  Branch {k}: {branch.dimension} motions, tangent to the cone "
                          f"{branch.cone} = 0 (in the first-order motions)")
@@ -134,6 +155,8 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
             lines.append(f"  Reduced constraints (to order {fm.order}): "
                          + "; ".join(f"{e} = 0" for e in fm.equations))
     lines += [f"  Assumed: {_ASSUMPTION_WORDS[a]}." for a in fm.assumptions]
+    if fm.field is not None:
+        lines.append(f"  Computed {_field_words(fm)}.")
     return lines
 
 
@@ -157,6 +180,11 @@ def finite_latex(fm: FiniteMobility) -> str:
             out.append(f"Branch {k}: tangent to $\\operatorname{{span}}\\{{{span}\\}}$.")
         elif branch.cone is not None:
             out.append(f"Branch {k}: tangent to the cone ${sp.latex(branch.cone)} = 0$.")
+    if fm.field is not None:
+        alpha = sp.latex(sp.sympify(fm.field["alpha"]))
+        poly = sp.latex(sp.sympify(fm.field["minimal_polynomial"]))
+        out.append(f"Computed exactly over $\\mathbb{{Q}}(\\alpha)$, $\\alpha = {alpha}$, "
+                   f"a root of ${poly}$.")
     return "\n".join(out) + "\n"
 
 
@@ -186,6 +214,7 @@ def finite_json(fm: FiniteMobility) -> dict:
         "orders": [{"order": i, "dimension": m} for i, m in fm.orders],
         "order": fm.order,
         "assumptions": list(fm.assumptions),
+        "field": None if fm.field is None else dict(fm.field),
         "reduced_constraints": list(fm.equations),
         "group_motions": [[str(x) for x in v] for v in fm.group_motions],
     }

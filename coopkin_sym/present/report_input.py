@@ -116,6 +116,14 @@ class _ClauseIn(_In):
     vanishes: StrictStr | None = None
 
 
+class _FieldIn(_In):
+    """The number field of an algebraic witness's finite mobility."""
+
+    alpha: StrictStr
+    minimal_polynomial: StrictStr
+    tangents: Names = Field(default_factory=dict)
+
+
 class _FiniteIn(_In):
     """The finite mobility at a component's witness (``coopkin locus --finite``)."""
 
@@ -127,6 +135,7 @@ class _FiniteIn(_In):
     reason: StrictStr
     order: StrictInt
     branches: list[StrictInt]
+    field: _FieldIn | None = None
 
 
 class _CheckIn(_In):
@@ -664,7 +673,9 @@ def _to_locus(parsed, checker: _Checker) -> Locus:
         if c.algebraic_witness is not None:
             values["algebraic_witness"] = c.algebraic_witness.model_dump(exclude_unset=True)
         if c.finite is not None:
-            values["finite"] = dict(c.finite.model_dump(), bounds=list(c.finite.bounds))
+            values["finite"] = dict(c.finite.model_dump(exclude_none=True),
+                                    dimension=c.finite.dimension,
+                                    bounds=list(c.finite.bounds))
         comps.append(Component(**values))
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps

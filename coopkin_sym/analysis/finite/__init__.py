@@ -18,6 +18,9 @@ reduced to the first-order motions (:mod:`.reduce`), says whether they are finit
   hyperplanes: a bifurcation; an irreducible quadratic cone: a cone point); binary
   forms give one branch per simple real root. Anything else is undecided at the order
   reached, with the bounds that are proved;
+* at a joint angle with an irrational ``tan(q/2)`` (``pi/3``), all of this runs over
+  the number field of the configuration, every sign decided exactly
+  (:mod:`.algebraic`), but for the closure saturation below;
 * with complete contacts only (a welded loop), when the expansion stays undecided:
   the closure conditions dependent here are proved, by exact saturations, to vanish on
   the smooth set cut out by independent ones (:mod:`.closure`): the loop is
@@ -38,12 +41,19 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from coopkin_sym.analysis.finite.algebraic import AlgebraicPoint, algebraic_point
 from coopkin_sym.analysis.finite.closure import welded_loop_dimension
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
-from coopkin_sym.analysis.finite.forms import diagonal_form, quadratic_matrix, real_directions
-from coopkin_sym.analysis.finite.reduce import Reduced, reduce_map
-from coopkin_sym.analysis.finite.series import SeriesField
+from coopkin_sym.analysis.finite.forms import (
+    algebraic_directions,
+    diagonal_form,
+    quadratic_matrix,
+    real_directions,
+)
+from coopkin_sym.analysis.finite.reduce import Reduced, echelon, reduce_map
+from coopkin_sym.analysis.finite.reduce import inverse as _field_inverse
 from coopkin_sym.exact.matrix import RATIONALS, rank
+from coopkin_sym.exact.realroot import element_expression
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
@@ -125,6 +135,19 @@ class FiniteMobility:
     assumptions: tuple[str, ...] = ()
     equations: tuple[str, ...] = field(default=(), compare=False)
     group_motions: tuple[tuple, ...] = ()
+    #: The number field of a configuration with an irrational ``tan(q/2)``
+    #: (``alpha``, ``minimal_polynomial``, ``tangents``), None at a rational one.
+    field: dict | None = None
+
+
+def _sym(x) -> sp.Expr:
+    """An exact number (``fmpq``, ``Fraction``, a number-field element) in SymPy."""
+    if hasattr(x, "field") and hasattr(x, "value"):
+        root = x.field.expression if x.field.expression is not None else x.field.root
+        return element_expression(x.value, root)
+    if isinstance(x, sp.Basic):
+        return x
+    return sp.Rational(str(x))
 
 
 def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
@@ -147,10 +170,11 @@ def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
     points = cmap.contact_points()
     if not points or any(contact_kind(m).position != "point" for _, m in points):
         return [], []
-    base = [sp.Rational(str(x)) for x in points[0][0]]
-    spread = [[sp.Rational(str(x)) - b for x, b in zip(pt, base, strict=True)]
-              for pt, _ in points[1:]]
-    span = rank(spread, 3, RATIONALS)
+    algebraic = cmap.point is not None
+    base = [x if algebraic else sp.Rational(str(x)) for x in points[0][0]]
+    spread = [[(x if algebraic else sp.Rational(str(x))) - b
+               for x, b in zip(pt, base, strict=True)] for pt, _ in points[1:]]
+    span = echelon(spread)[0] if algebraic else rank(spread, 3, RATIONALS)
     if cmap.planar:
         axes = [(0, 0, 1)] if span == 0 else []
     elif span == 0:
@@ -171,37 +195,51 @@ def stabilizer(cmap: ConstraintMap) -> tuple[list[list], list[tuple]]:
             for k in range(3):
                 row[3 + k] = a[k]
         rows.append(row)
-        omega = sp.Matrix(a)
-        v = sp.Matrix(base).cross(omega)          # velocity of the origin: c x a
+        omega = sp.Matrix([_sym(x) for x in a])
+        v = sp.Matrix([_sym(x) for x in base]).cross(omega)
+        v = v.applyfunc(sp.radsimp) if algebraic else v          # velocity of the origin: c x a
         twist = [v[0], v[1], omega[2]] if cmap.planar else list(v) + list(omega)
         motions.append(tuple(twist) + (0,) * njoints)
     del nobj
     return rows, motions
 
 
-def _generic_rank(model: Model, config: Configuration) -> tuple[int | None, bool]:
+def _generic_rank(model: Model, config: Configuration,
+                  point: AlgebraicPoint | None = None) -> tuple[int | None, bool]:
     """The rank of ``Q`` over the joint variables (None unless it is certified: an
     uncertified one could be too low, and a smooth point would not be proved), and
-    whether the seven numbers at ``config`` differ from the generic ones."""
+    whether the seven numbers at ``config`` differ from the generic ones (over the
+    number field of ``point`` for the joints it holds)."""
     from coopkin_sym.analysis import kinematics
     from coopkin_sym.analysis.decomposition import decompose
     from coopkin_sym.analysis.generic import generic_numbers
 
-    kin = kinematics.build(model, config)
-    here = decompose([kin.ring.clear_row(r) for r in kin.Q], model, kin.row_contacts,
-                     kin.ring.zctx).numbers
+    if point is None:
+        kin = kinematics.build(model, config)
+        here = decompose([kin.ring.clear_row(r) for r in kin.Q], model, kin.row_contacts,
+                         kin.ring.zctx).numbers
+    else:
+        from coopkin_sym.analysis.field_rows import field_rows, numbers_at
+
+        here = numbers_at(field_rows(model, point.at))
     everywhere = Configuration({}, {}, dict(config.parameters),
                                frozenset(j.name for j in model.joints))
     gkin = kinematics.build(model, everywhere)
     numbers, certificate = generic_numbers([gkin.ring.clear_row(r) for r in gkin.Q], model,
                                            gkin.row_contacts, gkin.ring.zctx)
-    rows = len(kin.row_contacts)
+    rows = len(gkin.row_contacts)
     rank = rows - numbers.Nh if certificate.exact else None
     return rank, here.as_dict() != numbers.as_dict()
 
 
-def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...]]:
-    config = at if isinstance(at, Configuration) else Configuration.parse(model, at)
+def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...],
+                                               AlgebraicPoint | None]:
+    found = algebraic_point(model, at)
+    point = None
+    if found is not None:
+        config, point = found
+    else:
+        config = at if isinstance(at, Configuration) else Configuration.parse(model, at)
     notes: tuple[str, ...] = ()
     unset = [p for p in model.parameters if p.name not in config.parameters]
     if len(unset) == 1 and len(model.parameters) == 1:
@@ -209,7 +247,9 @@ def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...]]:
         params[unset[0].name] = sp.Integer(1)
         config = Configuration(config.revolute, config.prismatic, params, config.free)
         notes = ("unit_length",)
-    return config, notes
+        if point is not None:
+            point = point.with_parameter(unset[0].name, "1")
+    return config, notes, point
 
 
 def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
@@ -221,17 +261,32 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
     z = {name: sp.Rational(0) for name in names}
     for name, value in zip(red.free, x, strict=True):
         z[name] = sp.nsimplify(value) if not isinstance(value, sp.Basic) else value
-    if red.pivots:
+    if red.pivots and cmap.point is not None:
+        # y = -(A^-1 B) x with A^-1 B computed over the number field, then written
+        # in radicals once (x may hold a square root outside the field)
         piv = [names.index(p) for p in red.pivots]
         rows = list(red.rows)
-        a = sp.Matrix([[sp.Rational(str(jac[i][j])) for j in piv] for i in rows])
-        b = sp.Matrix([sum((sp.Rational(str(jac[i][names.index(f)])) * z[f]
+        frees = [names.index(f) for f in red.free]
+        inv = _field_inverse([[jac[i][j] for j in piv] for i in rows])
+        for k, p in enumerate(red.pivots):
+            coeffs = [sum((inv[k][r] * jac[i][j] for r, i in enumerate(rows)),
+                          cmap.point.field.number(0)) for j in frees]
+            z[p] = -sum((_sym(c) * z[f] for c, f in zip(coeffs, red.free, strict=True)
+                         if c), sp.Integer(0))
+    elif red.pivots:
+        piv = [names.index(p) for p in red.pivots]
+        rows = list(red.rows)
+        a = sp.Matrix([[_sym(jac[i][j]) for j in piv] for i in rows])
+        b = sp.Matrix([sum((_sym(jac[i][names.index(f)]) * z[f]
                             for f in red.free), sp.Rational(0)) for i in rows])
         y = -a.LUsolve(b)
         for k, p in enumerate(red.pivots):
-            z[p] = sp.simplify(y[k])
+            z[p] = sp.simplify(y[k]) if cmap.point is None else sp.radsimp(y[k])
     scale = cmap.scale
     velocity = [scale[k] * z[name] for k, name in enumerate(names)]
+    if cmap.point is not None:          # radicals written out simply
+        velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) else v
+                    for v in velocity]
     nobj = 3 if cmap.planar else 6
     out = velocity[:nobj]
     moving = iter(velocity[nobj:])
@@ -265,7 +320,8 @@ def _hyperplane(form: list) -> list[list]:
 def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
     """What the reduced equations prove at a rank drop (see the module's text)."""
     n = red.n
-    field = SeriesField(red.free, red.order)
+    field = cmap.series_field(red.free, red.order)
+    algebraic = cmap.point is not None
     lows = [field.lowest(g) for g in red.g]
     forms = [(d, h) for d, h in lows if d <= red.order]
     vanishing = len(lows) - len(forms)
@@ -277,7 +333,7 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
     if n == 0:
         return dict(out, bounds=(0, 0), dimension=0, classification="regular",
                     reason="no_first_order_motion")
-    isolated = _only_origin([h for _, h in forms], n)
+    isolated = _only_origin([h for _, h in forms], n, field if algebraic else None)
     if isolated:
         lowest = min(d for d, _ in forms)
         return dict(out, bounds=(0, 0), dimension=0, classification="shaky",
@@ -286,7 +342,8 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
         return out
     d, h = forms[0]
     if d == 2:
-        ds, lins = diagonal_form(quadratic_matrix(h, n))
+        ds, lins = diagonal_form(quadratic_matrix(h, n, field.coefficients(h)
+                                                  if algebraic else None))
         pos, neg = sum(1 for x in ds if x > 0), sum(1 for x in ds if x < 0)
         if not (pos and neg):
             return dict(out, bounds=(0, n - len(ds)))
@@ -295,22 +352,34 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
         if len(ds) == 2:
             a, b = (ds[0], ds[1]) if ds[0] > 0 else (ds[1], ds[0])
             lin_a, lin_b = (lins[0], lins[1]) if ds[0] > 0 else (lins[1], lins[0])
-            root = sp.sqrt(sp.Rational(-b.numerator, b.denominator)
-                           / sp.Rational(a.numerator, a.denominator))
+            if algebraic:
+                root = sp.sqrt(sp.radsimp(_sym(-b / a)))
+            else:
+                root = sp.sqrt(sp.Rational(-b.numerator, b.denominator)
+                               / sp.Rational(a.numerator, a.denominator))
             planes = []
             for sign in (1, -1):
-                form = [sp.Rational(x.numerator, x.denominator) * 1 for x in lin_a]
-                other = [sp.Rational(x.numerator, x.denominator) for x in lin_b]
-                planes.append([sp.nsimplify(form[i] - sign * root * other[i] / 1)
-                               for i in range(n)])
+                form = [_sym(x) for x in lin_a]
+                other = [_sym(x) for x in lin_b]
+                planes.append([(sp.radsimp if algebraic else sp.nsimplify)(
+                    form[i] - sign * root * other[i] / 1) for i in range(n)])
             branches = tuple(Branch(n - 1, _kernel(cmap, red, _hyperplane(p)))
                              for p in planes)
             return dict(out, classification="bifurcation", branches=branches)
-        cone = sp.expand(sum(sp.Rational(x.numerator, x.denominator) *
-                             sum(sp.Rational(c.numerator, c.denominator) *
-                                 sp.Symbol(f"x{i + 1}") for i, c in enumerate(lin)) ** 2
+        cone = sp.expand(sum(_sym(x) * sum(_sym(c) * sp.Symbol(f"x{i + 1}")
+                                           for i, c in enumerate(lin)) ** 2
                              for x, lin in zip(ds, lins, strict=True)))
         return dict(out, classification="cone", branches=(Branch(n - 1, None, cone),))
+    if n == 2 and algebraic:
+        count, multiple, _ = algebraic_directions([field.coefficients(h)],
+                                                  cmap.point.field)
+        if multiple or not count:
+            return out
+        kind = "bifurcation" if count > 1 else "kinematic_singularity"
+        return dict(out, bounds=(1, 1), dimension=1, classification=kind,
+                    reason="binary_form_roots",
+                    branches=tuple(Branch(1) for _ in range(count)),
+                    orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
     if n == 2:
         directions = real_directions([h], 2)
         if any(m > 1 for _, m in directions):
@@ -326,19 +395,26 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
     return out
 
 
-def _only_origin(forms: list, n: int) -> bool:
+def _only_origin(forms: list, n: int, field=None) -> bool:
     """Whether the common real zeros of homogeneous forms in ``n`` variables are the
     origin alone (proved: one variable and a nonzero form; two variables and no common
-    real root; or a definite quadratic form)."""
+    real root; or a definite quadratic form); ``field``: the series over a number
+    field the forms are in (None: over Q)."""
     if not forms:
         return False
     if n == 1:
         return True
+    if n == 2 and field is not None:
+        return algebraic_directions([field.coefficients(h) for h in forms],
+                                    field.numberfield)[0] == 0
     if n == 2:
         return real_directions(forms, 2) == []
     for h in forms:
-        if h.total_degree() == 2:
-            ds, _ = diagonal_form(quadratic_matrix(h, n))
+        degree = (max(sum(m) for m in field.coefficients(h)) if field is not None
+                  else h.total_degree())
+        if degree == 2:
+            ds, _ = diagonal_form(quadratic_matrix(
+                h, n, None if field is None else field.coefficients(h)))
             if len(ds) == n and (all(x > 0 for x in ds) or all(x < 0 for x in ds)):
                 return True
     return False
@@ -349,8 +425,10 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                     numbers_change: bool | None = None) -> FiniteMobility:
     """The finite mobility of ``model`` at the configuration ``at`` (``--at`` syntax or
     a :class:`~coopkin_sym.model.configuration.Configuration`; every joint at a
-    rational ``tan(q/2)``, ``q = pi`` included, and every parameter set, a single
-    length set to 1 when left free), exact to ``order`` (default: 2, 3, ... up to
+    rational ``tan(q/2)``, ``q = pi`` included, or an algebraic one such as ``pi/3``
+    given as text, computed then over its number field (:mod:`.algebraic`), and every
+    parameter set, a single length set to 1 when left free), exact to ``order``
+    (default: 2, 3, ... up to
     :data:`DEFAULT_ORDER`, until decided). ``generic_rank`` is the rank of ``Q`` over
     the joint variables (computed when not given); ``numbers_change`` whether the
     seven numbers here differ from the generic ones (for the words "regular" and
@@ -363,12 +441,13 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
     >>> fm.dimension, fm.first_order, fm.classification
     (2, 3, 'bifurcation')
     """
-    config, notes = _configuration(model, at)
-    cmap = ConstraintMap(model, config)
+    config, notes, point = _configuration(model, at)
+    cmap = ConstraintMap(model, config, point=point)
+    where = None if point is None else point.as_json()
     if cmap.frictionless:
         notes = notes + ("frictionless_flat_face",)
     if generic_rank is None or numbers_change is None:
-        known_rank, changed = _generic_rank(model, config)
+        known_rank, changed = _generic_rank(model, config, point)
         generic_rank = known_rank if generic_rank is None else generic_rank
         numbers_change = changed if numbers_change is None else numbers_change
     first = reduce_map(cmap, 1)
@@ -380,15 +459,15 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
         return FiniteMobility(n, (n, n), n, "kinematic_singularity" if numbers_change
                               else "regular", smooth,
                               (Branch(n, _kernel(cmap, first, basis)),),
-                              tuple((i, n) for i in (1,)), 1, notes)
+                              tuple((i, n) for i in (1,)), 1, notes, field=where)
     orders = [order] if order is not None else list(range(2, DEFAULT_ORDER + 1))
     rows_g, motions = stabilizer(cmap)
-    work = ConstraintMap(model, config, rows_g) if rows_g else cmap
+    work = ConstraintMap(model, config, rows_g, point=point) if rows_g else cmap
     extra = len(rows_g)
     for k in orders:
         red = reduce_map(work, k)
         found = _decide_singular(work, red)
-        if found["dimension"] is None and k == orders[-1] and not extra:
+        if found["dimension"] is None and k == orders[-1] and not extra and point is None:
             proved = welded_loop_dimension(cmap, n)
             if proved is not None:
                 basis = [_unit(n, i) for i in range(n)]
@@ -396,6 +475,10 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                                       if numbers_change else "regular", "closure_saturation",
                                       (Branch(n, _kernel(cmap, first, basis)),),
                                       ((1, n),), 1, notes)
+        if (found["dimension"] is None and k == orders[-1] and not extra
+                and point is not None and len(cmap.positions) > 1
+                and all(x == "weld" for x in cmap.positions)):
+            notes = notes + ("no_closure_saturation_over_field",)
         if found["dimension"] is not None or k == orders[-1]:
             lower, upper = found["bounds"]
             branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else
@@ -407,5 +490,6 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
             return FiniteMobility(dim, (lower + extra, upper + extra), n,
                                   found["classification"], found["reason"], branches,
                                   tuple((i, m + extra) for i, m in found["orders"]), k,
-                                  notes, tuple(str(g) for g in red.g), tuple(motions))
+                                  notes, tuple(str(g) for g in red.g), tuple(motions),
+                                  where)
     raise AssertionError("unreachable")  # pragma: no cover

@@ -37,7 +37,7 @@ from collections.abc import Sequence
 import flint
 import sympy as sp
 
-from coopkin_sym.analysis.finite.series import SeriesField
+from coopkin_sym.analysis.finite.series import AlgebraicSeriesField, SeriesField
 from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
 from coopkin_sym.errors import FiniteMobilityError
 from coopkin_sym.model.configuration import Configuration
@@ -127,7 +127,7 @@ class ConstraintMap:
     """
 
     def __init__(self, model: Model, config: Configuration,
-                 slice_rows: Sequence[Sequence] = ()):
+                 slice_rows: Sequence[Sequence] = (), point=None):
         check_holonomic(model)
         unset = [p.name for p in model.parameters if p.name not in config.parameters]
         if unset:
@@ -146,12 +146,34 @@ class ConstraintMap:
             for k in self.moving)
         self.positions = [contact_kind(c.model).position for c in model.contacts]
         self.frictionless = "face" in self.positions
+        #: The configuration over a number field (an :class:`AlgebraicPoint`: the joints
+        #: with an irrational ``tan(q/2)``, left free in ``config``), or None.
+        self.point = point
+        self._algebraic = {} if point is None else {
+            k: point.cos_sin[name] for k, name in enumerate(self.joint_names)
+            if name in point.cos_sin}
         #: Linear forms in the coordinates appended as rows (a slice: see
         #: :func:`stabilizer`).
-        self.slice_rows = [[flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))
+        self.slice_rows = [[c if hasattr(c, "field") else
+                            flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))
                             for c in row] for row in slice_rows]
-        exact = RationalField()
-        self._home_poses, _, _ = self.chain.poses(exact, lambda col, spec, fixed: fixed)
+        exact = RationalField() if point is None else self.series_field((), 0)
+        self._home_poses, _, _ = self.chain.poses(
+            exact, lambda col, spec, fixed: self._fixed(exact, col, fixed))
+
+    def series_field(self, names: Sequence[str], order: int) -> SeriesField:
+        """The truncated power series in ``names`` over the field of the configuration
+        (Q, or the number field of :attr:`point`)."""
+        if self.point is None:
+            return SeriesField(names, order)
+        return AlgebraicSeriesField(names, order, self.point.field)
+
+    def _fixed(self, f, col: int, fixed):
+        """The value of joint ``col`` at the configuration in ``f``."""
+        if col in self._algebraic:
+            c, s = self._algebraic[col]
+            return f.lift(c), f.lift(s)
+        return fixed
 
     @property
     def scale(self) -> list[int]:
@@ -174,6 +196,7 @@ class ConstraintMap:
         values = {k: z[nobj + i] for i, k in enumerate(self.moving)}
 
         def value(col, spec, fixed):
+            fixed = self._fixed(f, col, fixed)
             if col not in values:           # held still (fixed is in the field already)
                 return fixed
             u = values[col]
@@ -186,6 +209,7 @@ class ConstraintMap:
                     f.red((s0 * one_minus + 2 * c0 * u) * inv))
 
         poses, _, _ = self.chain.poses(f, value)
+        home = self._home(f)
         lin_rows, ang_rows = [], []
         keep = (0, 1) if planar else (0, 1, 2)
         for (arm, link, _, _, _), (home_pt, home_nm), position in zip(
@@ -198,15 +222,16 @@ class ConstraintMap:
                 rot, trans = poses[arm][link]
                 rc = _apply(rot, [f.ctx.constant(x) for x in home_pt], f)
                 c = [f.red(rc[i] + trans[i]) for i in range(3)]
-                rot0, trans0 = self._home_poses[arm][link]
-                c0 = [sum((rot0[i][j] * home_pt[j] for j in range(3)), 0) + trans0[i]
+                rot0, trans0 = home[arm][link]
+                c0 = [f.red(sum((rot0[i][j] * home_pt[j] for j in range(3)), 0) + trans0[i])
                       for i in range(3)]
             local = _apply(rt, [f.red(c[i] - p[i]) for i in range(3)], f)
             gap = [f.red(local[i] - c0[i]) for i in range(3)]
             if position == "face":
-                rot0 = (self._home_poses[arm][link][0] if arm is not None else
+                rot0 = (home[arm][link][0] if arm is not None else
                         [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
-                n0 = [sum((rot0[i][j] * home_nm[j] for j in range(3)), 0) for i in range(3)]
+                n0 = [f.red(sum((rot0[i][j] * home_nm[j] for j in range(3)), 0))
+                      for i in range(3)]
                 lin_rows.append(f.red(sum((n0[i] * gap[i] for i in keep), zero)))
             else:
                 lin_rows += [gap[i] for i in keep]
@@ -214,39 +239,53 @@ class ConstraintMap:
                 if arm is None:
                     rel = rt
                 else:
-                    rot0 = self._home_poses[arm][link][0]
-                    rot0_t = [[f.ctx.constant(rot0[j][i]) for j in range(3)]
+                    rot0 = home[arm][link][0]
+                    rot0_t = [[f.lift(rot0[j][i]) for j in range(3)]
                               for i in range(3)]
                     rel = _matmul(_matmul(rt, poses[arm][link][0], f), rot0_t, f)
                 vee = [f.red((rel[2][1] - rel[1][2]) / 2), f.red((rel[0][2] - rel[2][0]) / 2),
                        f.red((rel[1][0] - rel[0][1]) / 2)]
                 ang_rows += [vee[2]] if planar else vee
-        extra = [f.red(sum((c * z[k] for k, c in enumerate(row) if c), zero))
+        extra = [f.red(sum((f.lift(c) * z[k] for k, c in enumerate(row) if c), zero))
                  for row in self.slice_rows]
         return lin_rows + ang_rows + extra
 
+    def _home(self, f) -> list:
+        """The poses at the configuration, in ``f`` (computed once over Q)."""
+        if self.point is None:
+            return self._home_poses
+        return self.chain.poses(f, lambda col, spec, fixed: self._fixed(f, col, fixed))[0]
+
     def contact_points(self) -> list[tuple]:
-        """Each contact's point at the configuration (exact rationals), with its model."""
+        """Each contact's point at the configuration (exact rationals, or
+        :class:`~coopkin_sym.exact.numberfield.Number` over a number field), with its
+        model."""
         out = []
+        exact = RationalField() if self.point is None else self.series_field((), 0)
         for (arm, link, _, _, model), (home_pt, _) in zip(
-                self.chain.data["contacts"], self.chain._bound(RationalField())[1],
+                self.chain.data["contacts"], self.chain._bound(exact)[1],
                 strict=True):
             if arm is None:
-                out.append((tuple(home_pt), model))
-                continue
-            rot0, trans0 = self._home_poses[arm][link]
-            out.append((tuple(sum((rot0[i][j] * home_pt[j] for j in range(3)), 0)
-                              + trans0[i] for i in range(3)), model))
+                pt = tuple(home_pt)
+            else:
+                rot0, trans0 = self._home_poses[arm][link]
+                pt = tuple(sum((rot0[i][j] * home_pt[j] for j in range(3)), 0)
+                           + trans0[i] for i in range(3))
+            if self.point is not None:
+                pt = tuple(exact.constant_term(exact.red(x)) for x in pt)
+            out.append((pt, model))
         return out
 
     def linear(self) -> list[list]:
-        """The linear part ``J`` of ``F`` at the configuration (exact rationals)."""
-        f = SeriesField(self.names, 1)
+        """The linear part ``J`` of ``F`` at the configuration (exact rationals, or
+        :class:`~coopkin_sym.exact.numberfield.Number` over a number field)."""
+        f = self.series_field(self.names, 1)
         rows = self.evaluate(f, f.gens)
         n = len(self.names)
+        zero = 0 if self.point is None else self.point.field.number(0)
         out = []
         for r in rows:
-            d = r.to_dict()
-            out.append([d.get(tuple(1 if i == k else 0 for i in range(n)), 0)
+            d = f.coefficients(r)
+            out.append([d.get(tuple(1 if i == k else 0 for i in range(n)), zero)
                         for k in range(n)])
         return out

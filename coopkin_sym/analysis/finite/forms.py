@@ -30,7 +30,8 @@ def diagonal_form(matrix: Sequence[Sequence]) -> tuple[list[Fraction], list[list
     (['1', '1'], [['1', '0'], ['0', '1']])
     """
     n = len(matrix)
-    a = [[Fraction(x) for x in row] for row in matrix]
+    # exact elements of a real number field (with signs) are kept as they are
+    a = [[x if hasattr(x, "sign") else Fraction(x) for x in row] for row in matrix]
     ds: list[Fraction] = []
     rows: list[list[Fraction]] = []
     while True:
@@ -54,12 +55,14 @@ def diagonal_form(matrix: Sequence[Sequence]) -> tuple[list[Fraction], list[list
                 a[i][j] -= w[i] * w[j] / d
 
 
-def quadratic_matrix(h, n: int) -> list[list[Fraction]]:
-    """The symmetric matrix of a quadratic form (flint polynomial in ``n`` variables)."""
+def quadratic_matrix(h, n: int, coefficients: dict | None = None) -> list[list[Fraction]]:
+    """The symmetric matrix of a quadratic form (flint polynomial in ``n`` variables),
+    or of the form with ``coefficients`` (monomial -> element of a number field)."""
     a = [[Fraction(0)] * n for _ in range(n)]
-    for mono, c in h.to_dict().items():
+    items = h.to_dict().items() if coefficients is None else coefficients.items()
+    for mono, c in items:
         idx = [i for i, e in enumerate(mono[:n]) for _ in range(e)]
-        c = Fraction(int(c.p), int(c.q))
+        c = Fraction(int(c.p), int(c.q)) if coefficients is None else c
         if idx[0] == idx[1]:
             a[idx[0]][idx[0]] += c
         else:
@@ -117,3 +120,70 @@ def _gcd(a: int, b: int) -> int:
     while b:
         a, b = b, a % b
     return a
+
+
+def _sturm_count(field, p: list) -> int:
+    """The number of distinct real roots of ``p`` (coefficients in the real number
+    field ``field``, lowest degree first, nonzero): Sturm's theorem, with the signs of
+    the leading coefficients at the real embedding decided exactly."""
+    p = field.gcd([p])                    # monic
+    if len(p) <= 1:
+        return 0
+    seq = [p, [field.element(c * i) for i, c in enumerate(p)][1:]]
+    while True:
+        r = field._rem(seq[-2], seq[-1])
+        if not r:
+            break
+        seq.append([field.element(-c) for c in r])
+    plus = [field.sign(q[-1]) for q in seq]
+    minus = [s if (len(q) - 1) % 2 == 0 else -s for s, q in zip(plus, seq, strict=True)]
+
+    def changes(signs):
+        signs = [s for s in signs if s]
+        return sum(1 for a, b in zip(signs, signs[1:], strict=False) if a != b)
+    return changes(minus) - changes(plus)
+
+
+def algebraic_directions(coefficients: Sequence[dict], field) -> tuple[int, int, bool]:
+    """For binary forms over a real number field (each given by ``coefficients``:
+    ``(i, j)`` -> coefficient of ``x^i y^j``, as
+    :class:`~coopkin_sym.exact.numberfield.Number`), their common real zeros on the
+    projective line, counted exactly without computing them: ``(count, multiple,
+    first_degree)``, ``multiple`` true when one of them is a multiple root of the first
+    form (then the branches are not decided).
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.numberfield import RealNumberField
+    >>> from coopkin_sym.exact.realroot import RealRoot
+    >>> k = RealNumberField(flint.fmpq_poly([-2, 0, 1]), RealRoot.all_of([-2, 0, 1])[1])
+    >>> s = k.number([0, 1])
+    >>> # y (x^2 - sqrt(2) y^2): the directions (1, 0) and x = +-2^(1/4) y
+    >>> algebraic_directions([{(2, 1): k.number(1), (0, 3): -s}], k)[:2]
+    (3, False)
+    """
+    degree = max(sum(m) for m in coefficients[0])
+    polys = []
+    at_infinity = True
+    infinity_mult = 0
+    for k, coeffs in enumerate(coefficients):
+        d = max(sum(m) for m in coeffs)
+        top = max(i for i, _ in coeffs)
+        if top == d:
+            at_infinity = False
+        if k == 0:
+            infinity_mult = d - top
+        p = [field.element(0)] * (top + 1)
+        for (i, _), c in coeffs.items():
+            p[i] = field.element(p[i] + c.value)
+        polys.append(p)
+    common = field.gcd(polys)
+    count = _sturm_count(field, common) if len(common) > 1 else 0
+    multiple = at_infinity and infinity_mult > 1
+    if count:
+        first = polys[0]
+        derivative = [field.element(c * i) for i, c in enumerate(first)][1:]
+        shared = field.gcd([common, derivative])
+        multiple = multiple or (len(shared) > 1 and _sturm_count(field, shared) > 0)
+    return count + int(at_infinity), multiple, degree

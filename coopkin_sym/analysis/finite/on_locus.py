@@ -6,7 +6,9 @@ Each component with an exact rational witness gets, as plain data in
 (:func:`~coopkin_sym.analysis.finite.finite_mobility`): its dimension (None when
 undecided), the bounds proved, the first-order motions, the classification, how it was
 decided, the order of the expansion and the dimensions of the branches. A component
-with an algebraic witness, or none, keeps None.
+with only an algebraic witness gets it there, over the number field of the witness
+(:mod:`coopkin_sym.analysis.finite.algebraic`), with that field under ``"field"``; a
+component with no witness keeps None.
 
 Example
 -------
@@ -22,8 +24,9 @@ Example
 from __future__ import annotations
 
 from coopkin_sym.analysis.finite import FiniteMobility, finite_mobility
-from coopkin_sym.analysis.finite.constraints import ConstraintMap
+from coopkin_sym.analysis.finite.constraints import check_holonomic
 from coopkin_sym.analysis.locus.types import Locus
+from coopkin_sym.errors import CoopkinError
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
@@ -37,24 +40,38 @@ def finite_data(fm: FiniteMobility) -> dict:
     >>> finite_data(load("shaky-pinned-bars").finite_mobility())["classification"]
     'shaky'
     """
-    return {"dimension": fm.dimension, "bounds": list(fm.bounds),
-            "first_order": fm.first_order, "classification": fm.classification,
-            "reason": fm.reason, "order": fm.order,
-            "branches": [b.dimension for b in fm.branches]}
+    out = {"dimension": fm.dimension, "bounds": list(fm.bounds),
+           "first_order": fm.first_order, "classification": fm.classification,
+           "reason": fm.reason, "order": fm.order,
+           "branches": [b.dimension for b in fm.branches]}
+    if fm.field is not None:
+        out["field"] = dict(fm.field)
+    return out
 
 
 def finite_at_witnesses(locus: Locus, model: Model, order: int | None = None) -> int:
-    """The finite mobility at every rational witness of ``locus`` (a locus of
-    ``model``), kept in each component's ``finite``; how many were computed. Raises
+    """The finite mobility at every witness of ``locus`` (a locus of ``model``):
+    rational ones, and algebraic ones where a component has no rational witness; kept
+    in each component's ``finite``; how many were computed. Raises
     :class:`~coopkin_sym.errors.FiniteMobilityError` for a contact that is not
     holonomic, before computing any."""
+    check_holonomic(model)                       # refuses soft contacts at once
     done = 0
     for component in locus.components:
         point = component.witness
         if not isinstance(point, Configuration):
+            point = (component.algebraic_witness or {}).get("point")
+            if not point:
+                continue
+            try:
+                found = finite_mobility(model, dict(point), order)
+            except CoopkinError:
+                # a witness whose values this expansion cannot take (an angle in a
+                # root of a quintic, a field over the degree limit): not computed
+                continue
+            component.finite = finite_data(found)
+            done += 1
             continue
-        if done == 0:
-            ConstraintMap(model, point)          # refuses soft contacts at once
         component.finite = finite_data(finite_mobility(model, point, order))
         done += 1
     return done

@@ -27,7 +27,6 @@ from dataclasses import dataclass
 import flint
 
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
-from coopkin_sym.analysis.finite.series import SeriesField
 
 
 @dataclass(frozen=True)
@@ -67,26 +66,80 @@ def _pivots(matrix: list[list]) -> tuple[int, list[int]]:
     return rank, cols
 
 
+def echelon(matrix: list[list]) -> tuple[int, list[int], list[list]]:
+    """The rank, the pivot columns and the reduced echelon form of a matrix over a
+    field whose elements have ``+ - * /`` and an exact zero test (as
+    :class:`~coopkin_sym.exact.numberfield.Number`), by Gauss-Jordan elimination.
+
+    Example
+    -------
+    >>> from fractions import Fraction
+    >>> echelon([[Fraction(1), Fraction(2)], [Fraction(2), Fraction(4)]])[:2]
+    (1, [0])
+    """
+    a = [list(row) for row in matrix]
+    if not a or not a[0]:
+        return 0, [], a
+    rows, cols = len(a), len(a[0])
+    r, pivots = 0, []
+    for j in range(cols):
+        k = next((i for i in range(r, rows) if a[i][j] != 0), None)
+        if k is None:
+            continue
+        a[r], a[k] = a[k], a[r]
+        inv = 1 / a[r][j]
+        a[r] = [x * inv for x in a[r]]
+        for i in range(rows):
+            if i != r and a[i][j] != 0:
+                c = a[i][j]
+                a[i] = [x - c * y for x, y in zip(a[i], a[r], strict=True)]
+        pivots.append(j)
+        r += 1
+        if r == rows:
+            break
+    return r, pivots, a
+
+
+def inverse(a: list[list]) -> list[list]:
+    """The inverse of an invertible square matrix (elements as in :func:`echelon`)."""
+    n = len(a)
+    one, zero = a[0][0] * 0 + 1, a[0][0] * 0
+    wide = [list(row) + [one if i == j else zero for j in range(n)]
+            for i, row in enumerate(a)]
+    _, _, e = echelon(wide)
+    return [row[n:] for row in e]
+
+
 def reduce_map(cmap: ConstraintMap, order: int) -> Reduced:
     """``g`` of :mod:`this module <coopkin_sym.analysis.finite.reduce>` to ``order``."""
-    jac = [[flint.fmpq(x) for x in row] for row in cmap.linear()]
     names = cmap.names
-    rank, pivot_cols = _pivots(jac)
-    transposed = [list(col) for col in zip(*jac, strict=True)] if jac else []
-    _, rows = _pivots(transposed)
+    if cmap.point is None:
+        jac = [[flint.fmpq(x) for x in row] for row in cmap.linear()]
+        rank, pivot_cols = _pivots(jac)
+        transposed = [list(col) for col in zip(*jac, strict=True)] if jac else []
+        _, rows = _pivots(transposed)
+    else:                       # over the number field of the configuration
+        jac = cmap.linear()
+        rank, pivot_cols, _ = echelon(jac)
+        transposed = [list(col) for col in zip(*jac, strict=True)] if jac else []
+        _, rows, _ = echelon(transposed)
     free = [k for k in range(len(names)) if k not in pivot_cols]
-    field = SeriesField(tuple(names[k] for k in free), order)
+    field = cmap.series_field(tuple(names[k] for k in free), order)
     x = dict(zip(free, field.gens, strict=True))
-    if rank:
+    if rank and cmap.point is None:
         a = flint.fmpq_mat(rank, rank, [jac[i][j] for i in rows for j in pivot_cols])
-        a_inv = a.inv()
+        inv = a.inv()
+        a_inv = [[inv[i, j] for j in range(rank)] for i in range(rank)]
+    elif rank:
+        a_inv = [[field.lift(c) for c in row] for row in
+                 inverse([[jac[i][j] for j in pivot_cols] for i in rows])]
     y = {k: field.zero for k in pivot_cols}
     for _ in range(order):
         z = [x[k] if k in x else y[k] for k in range(len(names))]
         values = cmap.evaluate(field, z)
         solved = [values[i] for i in rows]
         for a_row, k in enumerate(pivot_cols):
-            step = sum((a_inv[a_row, b] * solved[b] for b in range(rank)), field.zero)
+            step = sum((a_inv[a_row][b] * solved[b] for b in range(rank)), field.zero)
             y[k] = field.red(y[k] - step)
         if all(v.is_zero() for v in solved):
             break

@@ -79,8 +79,8 @@ class LocusMethods:
         return locked if locked is not None else system.with_actuators_locked()
 
     def finite_mobility(self, order: int | None = None, *, system: Any = None) -> int:
-        """The finite mobility at every rational witness (which singular families are
-        bifurcations, shaky, or only first-order), kept in each component's ``finite``;
+        """The finite mobility at every witness, rational or algebraic (which singular
+        families are bifurcations, shaky, or only first-order), kept in each component's ``finite``;
         how many were computed (see :meth:`coopkin_sym.system.System.finite_locus`).
 
         Example
