@@ -262,7 +262,8 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
         return None
 
     def exact(e) -> sp.Expr:
-        return sp.radsimp(sp.expand(exact_expr(e, None, "value").subs(values)))
+        # every key a symbol: replacing them is substituting them, without subs's search
+        return sp.radsimp(sp.expand(exact_expr(e, None, "value").xreplace(values)))
 
     def vectors(block, ncols):
         return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]

@@ -220,14 +220,48 @@ def _real_root_count(f, k: int) -> int:
     return real_root_count(flint.fmpq_poly(coeffs))
 
 
+def _specialized(terms, k: int, others: list[int], degrees, values) -> flint.fmpz_poly:
+    """``f`` (its ``terms``) with variable ``others[i]`` set to ``values[i]``, as an
+    integer polynomial in variable ``k`` (a nonzero multiple of it: each value ``p/q``
+    enters as ``p^e q^(d - e)``, ``d`` the degree of ``f`` in that variable)."""
+    coeffs = [0] * (degrees[k] + 1)
+    for mon, c in terms:
+        c = int(c)
+        for i, v in zip(others, values, strict=True):
+            e = int(mon[i])
+            c *= v.numerator ** e * v.denominator ** (degrees[i] - e)
+        coeffs[int(mon[k])] += c
+    return flint.fmpz_poly(coeffs)
+
+
+def _has_rational_root(uni: flint.fmpz_poly) -> bool:
+    """Whether a nonconstant integer polynomial has a rational root (a factor of
+    degree 1 over Z)."""
+    if uni[0] == 0:
+        return True
+    _, factors = uni.factor()
+    return any(g.degree() == 1 for g, _e in factors)
+
+
 def rational_point(ctx: SearchContext, f, names) -> dict[str, Fraction] | None:
-    expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
+    expr = None
     syms = [ctx.symbols[n] for n in names]
+    terms = list(f.to_dict().items())
+    degrees = f.degrees()
+    indices = [ctx.ring_names.index(n) for n in names]
     for x_idx in range(len(syms)):
         x = syms[x_idx]
         others_syms = [s for i, s in enumerate(syms) if i != x_idx]
+        others = [k for i, k in enumerate(indices) if i != x_idx]
         for values in itertools.islice(itertools.product(NICE, repeat=len(others_syms)),
                                        60):
+            # decided over Z first: no rational root there (the common case) is exact;
+            # otherwise SymPy picks the root, as it always did
+            uni = _specialized(terms, indices[x_idx], others, degrees, values)
+            if uni.degree() <= 0 or not _has_rational_root(uni):
+                continue
+            if expr is None:
+                expr = poly_to_sympy(f, ctx.ring, ctx.symbols)
             sub = {s: to_sympy(v)
                    for s, v in zip(others_syms, values, strict=True)}
             uni = sp.Poly(expr.subs(sub), x)

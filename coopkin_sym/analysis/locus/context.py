@@ -173,6 +173,8 @@ class SearchContext:
     owners: dict | None = None
     steps: Any = None  # the search's recursive steps (search.components.Steps)
     analyses: dict = field(default_factory=dict)
+    # id of a recorded component -> (its equations, as a tuple, and as a frozenset)
+    equation_sets: dict = field(default_factory=dict)
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""

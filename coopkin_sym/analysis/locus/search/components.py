@@ -97,6 +97,18 @@ def off_charts(charts, substitute, quotient=None) -> bool:
 
 
 # --- components -------------------------------------------------------------------------
+def _equation_set(ctx: SearchContext, c: Component) -> frozenset:
+    """``set(c.equations)``, built once while its equations stay the same objects."""
+    kept = ctx.equation_sets.get(id(c))
+    if kept is not None and len(kept[0]) == len(c.equations) and all(
+            a is b for a, b in zip(kept[0], c.equations, strict=True)):
+        return kept[1]
+    eqs = tuple(c.equations)
+    out = frozenset(eqs)
+    ctx.equation_sets[id(c)] = (eqs, out)
+    return out
+
+
 def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbers: Numbers,
                    kind: str, drops, decided: Remark, *, witness: dict | None = None,
                    condition: Condition | None = None, real: bool = True, chain: dict | None = None,
@@ -112,10 +124,11 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     the same chart with the same numbers whose equations vanish there contains it, and
     it is not recorded."""
     polys = [_named(ctx, text) for text in equations]
-    if any(set(c.equations) == set(polys) for c in ctx.locus.components):
+    mine = frozenset(polys)
+    if any(_equation_set(ctx, c) == mine for c in ctx.locus.components):
         return None
     here = numbers.as_dict()
-    if any(c.numbers == here and c.equations and set(c.equations) < set(polys)
+    if any(c.numbers == here and c.equations and _equation_set(ctx, c) < mine
            for c in ctx.locus.components):
         return None  # inside a recorded component, with its numbers: nothing new
     if chain is not None and any(_within(ctx, chain, c, numbers)
