@@ -14,6 +14,7 @@ from __future__ import annotations
 import sympy as sp
 
 from coopkin_sym.analysis.finite import FiniteMobility
+from coopkin_sym.exact.parse import parse_expression
 
 _CLASS_WORDS = {
     "regular": "a regular configuration: the system moves with all its first-order "
@@ -181,8 +182,9 @@ def finite_latex(fm: FiniteMobility) -> str:
         elif branch.cone is not None:
             out.append(f"Branch {k}: tangent to the cone ${sp.latex(branch.cone)} = 0$.")
     if fm.field is not None:
-        alpha = sp.latex(sp.sympify(fm.field["alpha"]))
-        poly = sp.latex(sp.sympify(fm.field["minimal_polynomial"]))
+        alpha = sp.latex(parse_expression(fm.field["alpha"], [], "field.alpha"))
+        poly = sp.latex(parse_expression(fm.field["minimal_polynomial"], ["alpha"],
+                                         "field.minimal_polynomial"))
         out.append(f"Computed exactly over $\\mathbb{{Q}}(\\alpha)$, $\\alpha = {alpha}$, "
                    f"a root of ${poly}$.")
     return "\n".join(out) + "\n"

@@ -140,7 +140,9 @@ def test_analyze_finite_at_an_irrational_angle_on_the_command_line():
     assert finite["field"]["minimal_polynomial"] == "3*alpha**2 - 1"
     latex = runner.invoke(app, ["analyze", "paper-case1-planar", "--at",
                                 "q1=pi/3,q2=pi/3", "--finite", "--latex"])
-    assert latex.exit_code == 0 and "\\mathbb{Q}(\\alpha)" in latex.output
+    assert latex.exit_code == 0, latex.output
+    assert ("Computed exactly over $\\mathbb{Q}(\\alpha)$, $\\alpha = \\frac{\\sqrt{3}}{3}$, "
+            "a root of $3 \\alpha^{2} - 1$.") in latex.output
 
 
 def test_a_transcendental_angle_is_still_refused():
