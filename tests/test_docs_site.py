@@ -106,3 +106,15 @@ def test_the_schemas_page_lists_every_schema_as_it_is():
         assert f"```{{literalinclude}} {path.name}\n" in page, path.name
         assert f"**{schema['title']}**" in page, path.name
         assert schema["description"] in page, path.name
+
+
+def test_every_public_name_has_an_entry_in_the_api_pages():
+    """The quick form of the check above, without Sphinx: every name of
+    ``coopkin_sym.__all__`` is named by one ``auto...`` directive of ``docs/api``."""
+    directive = re.compile(
+        r"^\.\. auto(?:function|class|data|exception):: (?:coopkin_sym\.)?(\w+)\s*$", re.M)
+    named = set()
+    for page in (DOCS / "api").glob("*.md"):
+        named.update(directive.findall(page.read_text(encoding="utf-8")))
+    missing = [name for name in coopkin_sym.__all__ if name not in named]
+    assert missing == []
