@@ -21,6 +21,7 @@ Example
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 
@@ -132,7 +133,7 @@ def _written(c: Component, short: bool, names: PolynomialNames | None) -> Formul
             tex = ", ".join(_clause_tex(v, namer) for v in clauses)
             return Formula(text or "(no equations)", tex or r"\textit{(no equations)}")
         text = " and ".join(f"{e} = 0" for e in c.equations) or "(no equations)"
-        tex = ", ".join(f"${_latex(e.to_sympy())} = 0$" for e in c.equations)
+        tex = ", ".join(f"${_polynomial_tex(e)} = 0$" for e in c.equations)
         return Formula(text, tex or r"\textit{(no equations)}")
     more = short and len(alternatives) > 2
     shown = alternatives[:1] if more else alternatives
@@ -181,14 +182,27 @@ def _clause_text(clause: Clause, namer) -> str:
     return clause.text
 
 
+@functools.lru_cache(maxsize=4096)
 def _symbol(name: str) -> str:
     return sp.latex(sp.Symbol(name))
+
+
+@functools.lru_cache(maxsize=4096)
+def _value_tex(value: sp.Expr) -> str:
+    """The LaTeX of an exact value (kept: a picture writes the same clauses again)."""
+    return _latex(value)
+
+
+@functools.lru_cache(maxsize=4096)
+def _polynomial_tex(p: NamedPolynomial) -> str:
+    """The LaTeX of a polynomial (kept, as :func:`_value_tex`)."""
+    return _latex(p.to_sympy())
 
 
 def _clause_tex(clause: Clause, namer) -> str:
     if isinstance(clause, Value):
         if not _long_value(clause):
-            return f"${_symbol(clause.name)} = {_latex(clause.value)}$"
+            return f"${_symbol(clause.name)} = {_value_tex(clause.value)}$"
         value = clause.approximation()  # float-ok: shown rounded
         if clause.kind == "revolute":
             return (f"${_symbol(clause.name)} \\approx "
@@ -205,7 +219,7 @@ def _clause_tex(clause: Clause, namer) -> str:
     if named is not None:
         label, names = named
         return f"${label[0]}_{{{label[1:]}}}({', '.join(map(_symbol, names))}) = 0$"
-    return f"${_latex(clause.polynomial.to_sympy())} = 0$"
+    return f"${_polynomial_tex(clause.polynomial)} = 0$"
 
 
 def report_names(components: Sequence[Component]) -> PolynomialNames:

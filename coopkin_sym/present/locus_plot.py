@@ -41,6 +41,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+import flint
 import numpy as np  # float-ok: plotting grids only
 import sympy as sp
 
@@ -48,6 +49,7 @@ from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.errors import PlotError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
+from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.conditions import PolynomialNames, report_names, short_condition
 from coopkin_sym.present.plot_legend import (
     LABEL_LINES,
@@ -411,8 +413,60 @@ def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis
     return out
 
 
+def _in_plane_rational(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _Axis,
+                       names: tuple[str, ...]) -> _Drawn | None:
+    """What :func:`_in_plane` draws, computed with flint when every value put in is
+    rational (``None`` otherwise, or when a used variable has no value): the same
+    curve and points as the SymPy way (its polynomials up to constant factors)."""
+    if any(isinstance(v, str) or not getattr(v, "is_Rational", False)
+           for v in values.values()):
+        return None
+    try:
+        equations = c.equation_polynomials(names)
+    except NumberError as exc:
+        raise PlotError(str(exc)) from None
+    plane = (ax.variable, ay.variable)
+    used = sorted({v for p in equations for v in p.variables} | set(plane))
+    if set(used) - set(values) - set(plane):
+        return None
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(used), "lex")
+    at = {n: flint.fmpq(int(values[n].p), int(values[n].q))
+          for n in used if n not in plane}
+    polys = []
+    for p in equations:
+        f = ctx.from_dict({e: flint.fmpq(k.numerator, k.denominator)
+                           for e, k in p.exponents(used).items()})
+        f = f.subs(at) if at else f
+        if not f.is_zero():
+            polys.append(f)
+    drawn = _Drawn()
+    if not polys:
+        drawn.whole = True
+        return drawn
+    if any(f.is_constant() for f in polys):
+        return drawn            # does not meet the plane at these values
+    g = functools.reduce(lambda a, b: a.gcd(b), polys)
+    symbols = {n: sp.Symbol(n) for n in used}
+
+    def back(f) -> sp.Expr:
+        return NamedPolynomial.from_flint(f, used).to_sympy(symbols)
+
+    if not g.is_constant():
+        drawn.curve = sp.Poly(back(g), ax.symbol, ay.symbol)
+    if len(polys) > 1:
+        drawn.points = _points([back(f / g) for f in polys], ax, ay)
+    return drawn
+
+
 def _in_plane(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _Axis,
               names: tuple[str, ...]) -> _Drawn:
+    fast = _in_plane_rational(c, values, ax, ay, names)
+    return fast if fast is not None else _in_plane_sympy(c, values, ax, ay, names)
+
+
+def _in_plane_sympy(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _Axis,
+                    names: tuple[str, ...]) -> _Drawn:
+    """What :func:`_in_plane` draws, with SymPy (any exact values, ``INFINITY``)."""
     drawn = _Drawn()
     x, y = ax.symbol, ay.symbol
     polys = [_substitute(f, values) for f in _equations(c, names)]
