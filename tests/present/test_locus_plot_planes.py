@@ -9,6 +9,7 @@ import sympy as sp
 
 from coopkin_sym import load
 from coopkin_sym.present import locus_plot as lp
+from coopkin_sym.present import plot_plane
 from coopkin_sym.present.report import default_pairs
 
 
@@ -25,7 +26,7 @@ def _cuts(name):
             axes = []
             for j in pair:
                 v = used.get(j) or kinds.variables(j)[0]
-                axes.append(lp._Axis(j, v, kinds.joint_of(v)[1]))
+                axes.append(plot_plane._Axis(j, v, kinds.joint_of(v)[1]))
             values, _ = lp._slice(locus, kinds, c, {a.variable for a in axes}, names)
             yield c, values, axes, names
 
@@ -34,10 +35,10 @@ def _cuts(name):
 def test_flint_and_sympy_cut_every_component_alike(name):
     compared = 0
     for c, values, (ax, ay), names in _cuts(name):
-        fast = lp._in_plane_rational(c, values, ax, ay, names)
+        fast = plot_plane._in_plane_rational(c, values, ax, ay, names)
         if fast is None:
             continue
-        slow = lp._in_plane_sympy(c, values, ax, ay, names)
+        slow = plot_plane._in_plane_sympy(c, values, ax, ay, names)
         compared += 1
         assert fast.whole == slow.whole
         assert (fast.curve is None) == (slow.curve is None)
