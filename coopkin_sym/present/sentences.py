@@ -19,7 +19,7 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 import sympy as sp
@@ -347,6 +347,49 @@ def _force_sentences(n, r: int) -> list[str]:
         "Nh = 0: every internal force can be controlled by the joints (not "
         "hyperstatic).",
     ]
+
+
+#: What one more (first) or one less (second) of each number means, for
+#: :func:`change_words`; ``{n}`` is the count in words.
+_CHANGE_WORDS = {
+    "Nc": ("the object gains {n} direction{s} of motion",
+           "the object loses {n} direction{s} of motion"),
+    "Ni": ("with every joint locked the object gains {n} free motion{s}",
+           "with every joint locked the object loses {n} free motion{s}"),
+    "Nr": ("the arms gain {n} self-motion{s} that leave{v} the object fixed",
+           "the arms lose {n} self-motion{s} that leave{v} the object fixed"),
+    "Ng": ("{n} more internal force{s}", "{n} internal force{s} fewer"),
+    "Nd": ("{n} more contact force{s} the joints cannot balance",
+           "{n} contact force{s} fewer that the joints cannot balance"),
+    "Nh": ("{n} more internal force{s} the joints cannot control",
+           "{n} internal force{s} fewer that the joints cannot control"),
+}
+
+
+def change_words(changes: Mapping[str, tuple[int, int]]) -> str:
+    """What a change of the numbers means for the motions and forces, in words
+    (``Nm`` is told by ``Nc`` and ``Nr``, since ``Nm = Nc + Nr``).
+
+    Example
+    -------
+    >>> change_words({"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)})
+    'the object loses one direction of motion; the arms gain one self-motion that leaves \
+the object fixed; one more contact force the joints cannot balance'
+    >>> change_words({"Nm": (2, 3)})
+    'Nm 2 -> 3'
+    """
+    parts = []
+    for name, (before, after) in changes.items():
+        words = _CHANGE_WORDS.get(name)
+        if name == "Nm" and ("Nc" in changes or "Nr" in changes):
+            continue
+        if words is None or before == after:
+            parts.append(f"{name} {before} -> {after}")
+            continue
+        k = abs(after - before)
+        parts.append(words[after < before].format(
+            n=_number_word(k), s="" if k == 1 else "s", v="s" if k == 1 else ""))
+    return "; ".join(parts)
 
 
 def configuration_words(analysis: Analysis) -> str:

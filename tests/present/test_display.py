@@ -224,7 +224,10 @@ def test_pretty_says_more_on_more_lines(results):
     assert lines[3] == "  Blocks: C11 (6 x 1), C12 (6 x 2), C22 (2 x 2), C23 (2 x 0)"
     locus = pretty(results["locus"]).splitlines()
     assert locus[1] == "  completeness not certified (run with --certify)"
-    assert locus[4] == ("  #1 q1 = -pi/2, q2 = -pi/2 (isolated point): Nm 2 -> 3, "
+    assert locus[4:6] == [
+        "  family A (4 components, e.g. #1): Nm 2 -> 3, Nc 2 -> 3, Nh 0 -> 1",
+        "  family B (#5): Nm 2 -> 3, Nc 2 -> 3, Ni 1 -> 3, Ng 1 -> 3, Nh 0 -> 1"]
+    assert locus[6] == ("  #1 q1 = -pi/2, q2 = -pi/2 (isolated point): Nm 2 -> 3, "
                         "Nc 2 -> 3, Nh 0 -> 1; becomes hyperstatic")
     nasty = pretty(results["nasty locus"]).splitlines()
     assert nasty[-1] == "  ... and 238 more components"
@@ -335,10 +338,12 @@ def test_html_of_a_locus_has_a_row_per_component(results):
     nasty = results["nasty locus"]._repr_html_()
     parsed = parse_html(nasty)
     assert "... and 50 more components." in "".join(parsed.text)
-    # twelve rows open, the others (up to 200) folded under one line that says so
-    opened, folded = nasty.split("<details><summary>components #13 to #200</summary>")
-    assert opened.count("<tr><td") == 7 + 12       # the generic numbers, then twelve
-    assert folded.count("<tr><td") == 188
+    # many components of one family: the family is said, the components (up to 200)
+    # are folded under one line that says so
+    opened, folded = nasty.split("<details><summary>components #1 to #200</summary>")
+    assert opened.count("<tr><td") == 7 + 1       # the generic numbers, the family
+    assert "<p>By what changes: 1 family.</p>" in opened
+    assert folded.count("<tr><td") == 200
     listed = [r[0] for r in parsed.rows if r and r[0].startswith("#") and r[0] != "#"]
     assert [x.split()[0] for x in listed] == [f"#{k}" for k in range(1, 201)]
     assert "Completeness: complete (certified)." in "".join(parsed.text)

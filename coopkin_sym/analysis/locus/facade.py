@@ -28,6 +28,7 @@ import os
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.locus.families import Family, group_families
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.renderers import action
 from coopkin_sym.errors import ArgumentError, MissingDependency
@@ -213,6 +214,21 @@ class LocusMethods:
                 "witness": assignments_text(point) if point
                 else None})
         return rows
+
+    def families(self) -> list[Family]:
+        """The components grouped by their numbers: one
+        :class:`~coopkin_sym.analysis.locus.families.Family` for each kind of singular
+        configuration (what changes), with its members and the one to show first, in
+        the order of their first member.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("paper-case1-hard").locus()
+        >>> [(f.changes, f.members) for f in locus.families()][0]
+        ({'Nm': (2, 3), 'Nc': (2, 3), 'Nh': (0, 1)}, (0, 1, 2, 3))
+        """
+        return group_families(self.components, self.generic)
 
     def to_pandas(self):
         """:meth:`table` as a :class:`pandas.DataFrame`, one row per component (the
