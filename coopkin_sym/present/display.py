@@ -53,9 +53,11 @@ from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.conditions import short_condition
 from coopkin_sym.present.factored_display import factored_html, factored_latex, factored_pretty
+from coopkin_sym.present.family_words import changes_text, family_name, members_text
 from coopkin_sym.present.html_parts import bullet_list as _list
 from coopkin_sym.present.html_parts import div as _div
 from coopkin_sym.present.html_parts import escape as _e
+from coopkin_sym.present.html_parts import numbers_strip as _numbers_strip
 from coopkin_sym.present.html_parts import numbers_table as _numbers_table
 from coopkin_sym.present.html_parts import table as _table
 from coopkin_sym.present.mathjax import latex_or_none, math_html, typesets
@@ -63,7 +65,6 @@ from coopkin_sym.present.passive import passive_numbers_text
 from coopkin_sym.present.remarks import grouped_remark_texts
 from coopkin_sym.present.report import KIND_WORDS, NUMBER_WORDS, witness_text
 from coopkin_sym.present.report import _changes as changes_of
-from coopkin_sym.present.report.families import changes_text, family_name, members_text
 from coopkin_sym.present.result_display import (
     analysis_passive,
     batch_html,
@@ -99,7 +100,7 @@ _MAX_ROWS = 200
 # rows of components shown open in the HTML form of a locus (the others folded)
 _OPEN_ROWS = 12
 # not-explored sentences shown open in the HTML form of a locus (the others folded)
-_OPEN_REMARKS = 6
+_OPEN_REMARKS = 3
 # lines of components in the text form of a locus
 _MAX_LINES = 12
 # the longest expression (in characters of its text) written in LaTeX
@@ -426,7 +427,8 @@ def locus_html(locus: Locus) -> str:
              f"<p>Free variables: {_e(', '.join(locus.variables) or 'none')}. "
              f"{n} component{'' if n == 1 else 's'} where the numbers differ from the "
              f"generic ones. {_completeness(locus)}</p>",
-             "<p>Generic numbers:</p>", _numbers_table(locus.generic),
+             "<p>Generic numbers (their meanings on the names):</p>",
+             _numbers_strip(locus.generic),
              f"<p>{_e(_classes(locus.generic))}</p>" if _classes(locus.generic) else ""]
     if locus.components:
         families = locus.families()
@@ -447,8 +449,10 @@ def locus_html(locus: Locus) -> str:
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
-        said = [clip(t, 400) for t in grouped_remark_texts(locus.unexplored)]
-        parts += ["<p>Not explored:</p>", _list(said[:_OPEN_REMARKS])]
+        said = [clip(t, 240) for t in grouped_remark_texts(locus.unexplored)]
+        parts += [f"<p>Not explored ({len(locus.unexplored)} items, said in {len(said)} "
+                  f"sentence{'' if len(said) == 1 else 's'}; all of them in a report):</p>",
+                  _list(said[:_OPEN_REMARKS])]
         if len(said) > _OPEN_REMARKS:
             parts.append(_folded(f"{len(said) - _OPEN_REMARKS} more",
                                  _list(said[_OPEN_REMARKS:])))
@@ -470,11 +474,12 @@ def _families_table(locus: Locus, families: Sequence[Family]) -> str:
         where = f"#{family.example + 1}: " + _e(clip(short_condition(c), 200))
         if not family.real:
             where += " (real points: undecided)"
+        witness = _e(clip(_witness(c), 200)).replace(",", ",<wbr/>")
         rows.append([_e(family_name(i)), _e(changes_text(family)),
-                     _e(change_words(family.changes)), _e(members_text(family)), where,
-                     f"<code>{_e(clip(_witness(c), 200))}</code>"])
-    return _table(["family", "what changes", "in words", "components", "for example",
-                   "witness (at)"], rows)
+                     _e(change_words(family.changes)), _e(members_text(family)),
+                     f"{where}<br/>at <code>{witness}</code>"])
+    return _table(["family", "what changes", "in words", "components",
+                   "for example (witness)"], rows)
 
 
 def _folded(summary: str, body: str) -> str:

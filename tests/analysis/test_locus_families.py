@@ -8,8 +8,8 @@ from support import shipped_locus
 from coopkin_sym.analysis.locus.families import group_families
 from coopkin_sym.analysis.locus.types import Component
 from coopkin_sym.present.display import locus_html, pretty_text
+from coopkin_sym.present.family_words import family_name, members_text
 from coopkin_sym.present.report import render_html, render_latex, render_markdown
-from coopkin_sym.present.report.families import family_name, members_text
 from coopkin_sym.present.sentences import change_words
 
 GENERIC = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 1, "Nd": 4, "Nh": 0}

@@ -174,10 +174,12 @@ class LocusMethods:
         system = system if system is not None else self._system
         return action(self, "write")(path, format, system=system, pairs=pairs)
 
-    def plot(self, pair: Sequence[str] | None = None, *, system: Any = None) -> Figure:
+    def plot(self, pair: Sequence[str] | None = None, *, system: Any = None,
+             by: str = "auto") -> Figure:
         """A matplotlib figure of the real components on a pair of joint variables
         (see :func:`coopkin_sym.present.locus_plot.plot_components`; default: the first
-        pair that occurs together in a component).
+        pair that occurs together in a component), coloured ``by`` component or by
+        family (``"auto"``: by family when many components are drawn).
 
         Example
         -------
@@ -187,7 +189,7 @@ class LocusMethods:
         True
         """
         system = system if system is not None else self._system
-        return action(self, "plot")(pair, system=system)
+        return action(self, "plot")(pair, system=system, by=by)
 
     def table(self) -> list[dict[str, Any]]:
         """One plain row per component: its number (``#``, from 1), the component it

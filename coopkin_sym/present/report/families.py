@@ -4,8 +4,9 @@ as an example.
 
 Example
 -------
->>> family_name(0), family_name(25), family_name(26)
-('A', 'Z', 'F27')
+>>> from coopkin_sym import load
+>>> families_table(load("paper-case1-hard").locus()).rows[1][3]
+[('text', '#5')]
 """
 
 from __future__ import annotations
@@ -13,51 +14,11 @@ from __future__ import annotations
 from coopkin_sym.analysis.locus.families import Family
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.present.conditions import PolynomialNames, short_condition
+from coopkin_sym.present.family_words import changes_text, family_name, members_text
 from coopkin_sym.present.report.blocks import Paragraph, Span, Table, _h, _t
 from coopkin_sym.present.report.components import _algebraic_witness_cell
 from coopkin_sym.present.report.words import _component_name, witness_text
 from coopkin_sym.present.sentences import change_words
-
-#: How many member numbers a family's row lists before "... (N in all)".
-MAX_MEMBERS_LISTED = 8
-
-
-def family_name(index: int) -> str:
-    """The name of the family at ``index``: ``A`` to ``Z``, then ``F27``, ``F28``...
-
-    Example
-    -------
-    >>> family_name(2)
-    'C'
-    """
-    return chr(ord("A") + index) if index < 26 else f"F{index + 1}"
-
-
-def changes_text(family: Family, arrow: str = "\u2192") -> str:
-    """The numbers that change, ``"Nc 6 → 5, Nr 2 → 3"``.
-
-    Example
-    -------
-    >>> changes_text(Family({"Nm": 3}, {"Nm": (2, 3)}, (0,), 0, True), "->")
-    'Nm 2 -> 3'
-    """
-    return ", ".join(f"{k} {a} {arrow} {b}" for k, (a, b) in family.changes.items()) \
-        or "as generic"
-
-
-def members_text(family: Family) -> str:
-    """The members by their numbers in the report (``"#1, #36 (2)"``), the first
-    :data:`MAX_MEMBERS_LISTED` of them.
-
-    Example
-    -------
-    >>> members_text(Family({}, {}, tuple(range(10)), 0, True))
-    '#1, #2, #3, #4, #5, #6, #7, #8, ... (10 in all)'
-    """
-    shown = ", ".join(_component_name(k) for k in family.members[:MAX_MEMBERS_LISTED])
-    if len(family.members) > MAX_MEMBERS_LISTED:
-        return f"{shown}, ... ({len(family.members)} in all)"
-    return shown
 
 
 def _example_cells(locus: Locus, family: Family, names: PolynomialNames | None
