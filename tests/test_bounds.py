@@ -256,6 +256,25 @@ def test_a_locus_ended_inside_a_flint_call_writes_what_it_had_kept(tmp_path, mon
                                              "resultant")
 
 
+def test_a_locus_ended_inside_a_flint_call_right_after_its_generic_numbers_writes(
+        tmp_path, monkeypatch):
+    """Once the generic numbers are known a cut locus writes its report, even when the
+    search runs into a step that cannot be interrupted within the first second (before
+    any step of the search could send a copy)."""
+    import coopkin_sym.analysis.locus.search as search
+
+    monkeypatch.setattr(search, "explore", lambda *a, **k: _slow_resultant())
+    result = CliRunner().invoke(app, ["locus", "paper-case1-hard", "-o",
+                                      str(tmp_path / "r.json"), "--timeout", "2"])
+    assert result.exit_code == TIME_BOUND_EXIT
+    assert result.stderr.splitlines()[-1] == (
+        "coopkin: error: time bound of 2 s reached during a resultant; the report says "
+        f"what was not explored; wrote {tmp_path / 'r.json'}")
+    data = json.loads((tmp_path / "r.json").read_text())
+    assert (data["generic"]["Nm"], data["components"]) == (2, [])
+    assert data["unexplored"][-1].startswith("time bound of 2 s reached during a resultant")
+
+
 def test_progress_is_shown_on_a_terminal_after_a_second(models):
     """stderr a terminal: the step being computed is shown, then removed; the error
     line stays."""
