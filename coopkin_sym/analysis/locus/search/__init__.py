@@ -74,7 +74,7 @@ from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle
-from coopkin_sym.exact.bounded import checkpoint
+from coopkin_sym.exact.bounded import checkpoint, report
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -227,7 +227,9 @@ def search_context(system, at=None, free=None, max_depth: int = 2,
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=list(notes), locked_joints=[j for j in model.joint_names
                                                     if j in model.locked])
+    report("the kinematics (G, D, H, Q)")      # the steps named as in an analysis
     chart, q_rows = chart_of(model, config)
+    report("the ranks and the decomposition of the nullspace")
     generic = decompose(q_rows, model, chart["row_contacts"], chart["ring"].zctx).numbers
     ctx = SearchContext(model=model, generic=generic, max_depth=max_depth, locus=locus,
                         rng=random.Random(1992), readings={}, chains={}, owners={},
