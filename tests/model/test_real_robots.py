@@ -220,6 +220,7 @@ def test_the_readme_shows_what_the_commands_print_for_the_pandas(k):
     from coopkin_sym.cli import app
 
     command, *shown = _readme_runs()[k]
+    shown = [line for line in shown if line != "..."]      # a line "...": lines left out
     result = CliRunner().invoke(app, command.split())
     assert result.exit_code == 0, result.output
     assert shown and all(line in result.stdout.splitlines() for line in shown), (

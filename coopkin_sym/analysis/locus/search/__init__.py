@@ -74,6 +74,7 @@ from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.bounded import checkpoint, report
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -117,7 +118,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     started = time.monotonic()
     ctx, q_rows = search_context(system, at, free, max_depth, timeout, progress)
     locus, model = ctx.locus, ctx.model
-    deadline.keep(locus)  # from here on, a time bound returns what was found
+    # from here on, a time bound returns what was found; a copy goes to the caller now,
+    # so that a run ended inside a step that cannot be interrupted still has it
+    checkpoint(locus)
     size = pi_size if pi_size is not None else default_pi_size(ctx)
     with ctx.reporter, ctx.reporter.parts(2):
         # the progress: half for the t chart, half for the slices at q = pi (shared
@@ -224,7 +227,9 @@ def search_context(system, at=None, free=None, max_depth: int = 2,
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=list(notes), locked_joints=[j for j in model.joint_names
                                                     if j in model.locked])
+    report("the kinematics (G, D, H, Q)")      # the steps named as in an analysis
     chart, q_rows = chart_of(model, config)
+    report("the ranks and the decomposition of the nullspace")
     generic = decompose(q_rows, model, chart["row_contacts"], chart["ring"].zctx).numbers
     ctx = SearchContext(model=model, generic=generic, max_depth=max_depth, locus=locus,
                         rng=random.Random(1992), readings={}, chains={}, owners={},
