@@ -100,7 +100,33 @@ def finite_summary(data: dict) -> str:
                                   list(data["branches"]), data["order"], data["bounds"])
     field = data.get("field")
     over = (f" (exact over Q(alpha), alpha = {field['alpha']})" if field else "")
-    return f"{value} (first-order motions: {data['first_order']}): {words}{over}"
+    return (f"{value} (first-order motions: {data['first_order']}): {words}{over}"
+            f"{_along_words(data.get('along'))}")
+
+
+def _along_words(along: dict | None) -> str:
+    """What is known along the component beyond its witness, in words ("" if nothing).
+
+    Example
+    -------
+    >>> _along_words({"how": "constant_rank", "dimension": 1,
+    ...               "classification": "kinematic_singularity"})[:60]
+    '; the same at every point of the component where its numbers'
+    """
+    if not along:
+        return ""
+    if along["how"] == "constant_rank":
+        return ("; the same at every point of the component where its numbers hold (the "
+                "rank of Q is the same there)")
+    if along["dimension"] is None:
+        value = f"undecided ({along['bounds'][0]} to {along['bounds'][1]})"
+    else:
+        words = _classification_words(along["classification"], along["dimension"], [], 0,
+                                      along["bounds"])
+        value = f"{along['dimension']}, {words.split(':')[0]}"
+    at = ",".join(f"{k}={v}" for k, v in along["point"].items())
+    return (f"; at a second point of the component, {at}: {value} (one more point, not "
+            f"a proof for the whole component)")
 
 
 def _vector(v) -> str:
