@@ -90,7 +90,7 @@ class RootDirection:
     @property
     def polynomial(self) -> sp.Expr:
         """The minimal polynomial of ``s`` over Q (integer coefficients)."""
-        return sp.sympify(self.root.polynomial_text("s"), locals={"s": sp.Symbol("s")})
+        return sp.Poly(list(reversed(self.root.coeffs)), sp.Symbol("s")).as_expr()
 
     @property
     def interval(self) -> tuple[Fraction, Fraction]:
