@@ -62,6 +62,9 @@ _ASSUMPTION_WORDS = {
     "unit_length": "the one length parameter was set to 1 (scaling changes no dimension)",
     "frictionless_flat_face": "each frictionless contact is read as the link's point "
                               "kept on a flat face of the object",
+    "closure_expansion": "the expansion is that of the loop closure's polynomials, without "
+                         "the closure conditions that hold identically near the "
+                         "configuration or were proved to follow from the others",
     "closure_saturation_inconclusive": "tried as well: the loop closure's exact "
                                        "saturations (Gröbner bases, with a time bound) "
                                        "proved nothing here, so the expansion's bounds are "

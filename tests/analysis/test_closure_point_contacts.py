@@ -29,6 +29,7 @@ from coopkin_sym.exact.realroot import RealRoot
 from coopkin_sym.model.configuration import Configuration
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 from finite_sampler import Sampler  # noqa: E402
 
 # Bennett's relation tan(theta1/2) tan(theta2/2) = -5 (the file's header) at
@@ -208,3 +209,91 @@ def test_the_sampler_sees_one_motion(name, at, samples):
     sampler = Sampler(system.model, q0, {})
     assert sampler.dimension(samples) == 1
     assert system.finite_mobility(",".join(f"{k}={v}" for k, v in at.items())).dimension == 1
+
+
+def test_with_faces_only_the_object_stays_and_the_rows_are_those_of_q():
+    """Frictionless contacts only: nothing carries the object's motion, so the
+    polynomials keep p and w, and their linear parts span the rows of J = -Q S."""
+    faces = dict(FACE, contacts=[dict(c, model="frictionless") for c in FACE["contacts"]])
+    model = load(faces).model
+    cmap = ConstraintMap(model, Configuration.parse(model, "q1=2*atan(1/2)"))
+    polys, names = contact_polynomials(cmap)
+    assert names == cmap.names == ("p1", "p2", "w3", "u_q1", "u_q2", "u_q3")
+    n = len(names)
+    linear = [[p.to_dict().get(tuple(int(i == k) for i in range(n)), 0) for k in range(n)]
+              for p in polys]
+    jac = [[flint.fmpq(x) for x in row] for row in cmap.linear()]
+    both = flint.fmpq_mat(len(linear) + len(jac), n, [x for r in linear + jac for x in r])
+    assert flint.fmpq_mat(3, n, [x for r in linear for x in r]).rank() == 3 == both.rank()
+
+
+def _random(seed):
+    from random_systems import random_system
+
+    return load(random_system(seed))
+
+
+# two planar arms welded to one object, seen in space: at these points of their loci
+# the out-of-plane rows of the constraint map vanish to every order (they hold
+# identically), which blocked the expansion before (undecided, 0 to 1)
+PLANAR_IN_SPACE = [(0, "q1=-11/5,q2=2*atan(-1/3),q3=2*atan(2),q4=3"),
+                   (32, "q1=2,q2=2*atan(-1/3),q3=pi/2,q4=2*atan(3)")]
+
+
+@pytest.mark.parametrize(("seed", "at"), PLANAR_IN_SPACE)
+def test_the_closure_expansion_leaves_out_what_holds_identically(seed, at):
+    system = _random(seed)
+    fm = system.finite_mobility(at)
+    assert (fm.dimension, fm.bounds, fm.first_order) == (1, (1, 1), 2)
+    assert (fm.classification, fm.reason) == ("bifurcation", "cone_regular_points")
+    assert "closure_expansion" in fm.assumptions and len(fm.equations) == 1
+    q = system.analyze(at).Q
+    spans = []
+    for branch in fm.branches:
+        (v,) = branch.tangent
+        assert [sp.radsimp(sp.expand(e)) for e in q * sp.Matrix(v)] == [0] * q.rows
+        spans.append(v)
+    assert sp.Matrix(spans).rank(simplify=True) == 2          # two distinct branches
+
+
+def test_the_closure_map_expands_like_the_constraint_map_where_both_decide():
+    """The folded four-bar through the closure's polynomials: the same bifurcation,
+    with the same exact tangents once written back as velocities (u, qdot)."""
+    from coopkin_sym.analysis.finite import _decide_singular
+    from coopkin_sym.analysis.finite.closure_map import closure_map
+    from coopkin_sym.analysis.finite.reduce import reduce_map
+
+    cmap = _cmap("four-bar", "q1=-pi/2,q2=-pi/2")
+    closed = closure_map(cmap)
+    assert closed.names == ("w3", "u_q1", "u_q2")
+    found = _decide_singular(closed, reduce_map(closed, 2))
+    assert (found["dimension"], found["classification"]) == (1, "bifurcation")
+    assert {b.tangent for b in found["branches"]} == {
+        ((0, 2, 0, 2, 2),), ((0, -2, sp.Rational(4, 3), sp.Rational(-2, 3), 2),)}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("seed", "at"), PLANAR_IN_SPACE)
+def test_the_sampler_sees_the_closure_expansions_branches(seed, at):
+    """60-digit mpmath: the same local dimension, and started a small step along
+    each branch's exact tangent, the projection onto the closure stays along it."""
+    system = _random(seed)
+    values = dict(item.split("=") for item in at.split(","))
+    q0 = {k: mp.mpf(str(sp.N(sp.sympify(v), 70))) for k, v in values.items()}
+    sampler = Sampler(system.model, q0, {})
+    fm = system.finite_mobility(at)
+    assert sampler.dimension(6) == fm.dimension == 1
+    units = []
+    for branch in fm.branches:
+        v = [mp.mpf(str(sp.N(x, 70))) for x in branch.tangent[0]]
+        norm = mp.sqrt(sum(c * c for c in v))
+        units.append([c / norm for c in v])
+    for k, u in enumerate(units):
+        point = sampler.project([mp.mpf(10) ** -4 * c for c in u])
+        size = mp.sqrt(sum(c * c for c in point))
+        along = [c / size for c in point]
+        off = [min(mp.sqrt(sum((a - b) ** 2 for a, b in zip(along, w, strict=True))),
+                   mp.sqrt(sum((a + b) ** 2 for a, b in zip(along, w, strict=True))))
+               for w in units]
+        assert off[k] < mp.mpf(10) ** -3 and all(o > mp.mpf(10) ** -2 for i, o in
+                                                  enumerate(off) if i != k), off

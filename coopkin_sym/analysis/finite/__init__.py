@@ -45,6 +45,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.finite.algebraic import AlgebraicPoint, algebraic_point
 from coopkin_sym.analysis.finite.closure import closure_dimension
+from coopkin_sym.analysis.finite.closure_map import ClosureMap, closure_map
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
 from coopkin_sym.analysis.finite.forms import (
     algebraic_directions,
@@ -320,11 +321,13 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
         y = -a.LUsolve(b)
         for k, p in enumerate(red.pivots):
             z[p] = sp.simplify(y[k]) if cmap.point is None else sp.radsimp(y[k])
+    if isinstance(cmap, ClosureMap):        # the object's coordinates, left out there
+        z, cmap = cmap.extend(z), cmap.base
+        names = cmap.names
     scale = cmap.scale
     velocity = [scale[k] * z[name] for k, name in enumerate(names)]
-    if cmap.point is not None:          # radicals written out simply
-        velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) else v
-                    for v in velocity]
+    velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) and not v.is_Rational
+                else v for v in velocity]          # radicals written out simply
     nobj = 3 if cmap.planar else 6
     out = velocity[:nobj]
     moving = iter(velocity[nobj:])
@@ -451,6 +454,28 @@ def _binary_branches(cmap: ConstraintMap, red: Reduced, h, d: int, out: dict) ->
                 orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
 
 
+def _closure_expansion(cmap: ConstraintMap, orders: list[int], notes: tuple,
+                       where: dict | None) -> FiniteMobility | None:
+    """The finite mobility decided by expanding the loop closure's polynomials instead
+    of the constraint map (:mod:`.closure_map`: without the conditions that hold
+    identically or are proved redundant), or None when that does not decide either."""
+    closed = closure_map(cmap)
+    if closed is None or len(closed.polys) >= len(cmap.linear()):
+        return None
+    for k in orders:
+        red = reduce_map(closed, k)
+        if red.n != reduce_map(cmap, 1).n:          # not the same first-order motions
+            return None
+        found = _decide_singular(closed, red)
+        if found["dimension"] is not None:
+            return FiniteMobility(found["dimension"], found["bounds"], red.n,
+                                  found["classification"], found["reason"],
+                                  found["branches"], found["orders"], k,
+                                  notes + ("closure_expansion",),
+                                  tuple(str(g) for g in red.g), (), where)
+    return None
+
+
 def _only_origin(forms: list, n: int, field=None) -> bool:
     """Whether the common real zeros of homogeneous forms in ``n`` variables are the
     origin alone (proved: one variable and a nonzero form; two variables and no common
@@ -533,6 +558,11 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
                                       (Branch(n, _kernel(cmap, first, basis)),),
                                       ((1, n),), 1, notes, field=where)
             notes = notes + ("closure_saturation_inconclusive",)
+        if (found["dimension"] is None and k == orders[-1] and not extra
+                and any(g.is_zero() for g in red.g)):   # rows that vanish: the closure's
+            closed = _closure_expansion(cmap, orders, notes, where)
+            if closed is not None:
+                return closed
         if found["dimension"] is not None or k == orders[-1]:
             lower, upper = found["bounds"]
             branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else

@@ -56,7 +56,7 @@ import time
 import flint
 
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
-from coopkin_sym.analysis.finite.curve import _degree, vanishes_along_curve
+from coopkin_sym.analysis.finite.curve import _degree, curve_verdicts
 from coopkin_sym.analysis.finite.loops import EXACT_ORDER, contact_polynomials, link_motions
 from coopkin_sym.analysis.finite.reduce import echelon
 from coopkin_sym.exact.saturation import saturate
@@ -161,37 +161,58 @@ def _germ_dimension(polys: list, n: int, timeout: float,
     an element ``h`` of it with ``h(0, alpha) != 0`` modulo ``m`` does not vanish at the
     configuration (``alpha`` at its real value)."""
     polys = [p for p in polys if not p.is_zero()]
+    rows, proved, how = _redundant(polys, n, timeout, field, stop=True)
+    if len(rows) + len(proved) < len(polys):
+        return None
+    return n - len(rows), how
+
+
+def proved_redundant(polys: list, n: int, timeout: float, field=None) -> list:
+    """``polys`` without the zero ones and without the dependent ones proved (as in
+    :func:`_germ_dimension`, within ``timeout`` seconds) to vanish near the origin on
+    the manifold of the independent ones: the same zeros near the origin."""
+    polys = [p for p in polys if not p.is_zero()]
+    _, proved, _ = _redundant(polys, n, timeout, field, stop=False)
+    return [p for k, p in enumerate(polys) if k not in proved]
+
+
+def _redundant(polys: list, n: int, timeout: float, field,
+               stop: bool) -> tuple[list[int], set[int], str]:
+    """The independent rows of least degree (indices), the dependent ones proved to
+    vanish on their manifold, and how (``closure_bezout``, ``closure_saturation``);
+    ``stop``: at the first one not proved."""
     if not polys:
-        return n, "closure_saturation"
-    # independent rows of least degree first (a smaller Bezout bound, smaller bases)
+        return [], set(), "closure_saturation"
     order = sorted(range(len(polys)), key=lambda i: (_degree(polys[i], n),
                                                      len(polys[i].to_dict())))
     jac = [_linear(polys[i], n, field) for i in order]
     rows = sorted(order[i] for i in _independent_rows(jac, field))
-    rank = len(rows)
+    dependent = [k for k in range(len(polys)) if k not in rows]
     end = time.monotonic() + timeout
-    if rank == n - 1:                       # a curve: Bezout's bound, no Gröbner basis
-        verdict = vanishes_along_curve([polys[i] for i in rows],
-                                       [p for k, p in enumerate(polys) if k not in rows],
-                                       n, field, timeout)
-        if verdict is not None:
-            return (1, "closure_bezout") if verdict else None
+    if len(rows) == n - 1:                  # a curve: Bezout's bound, no Gröbner basis
+        verdicts = curve_verdicts([polys[i] for i in rows], [polys[k] for k in dependent],
+                                  n, field, timeout)
+        if verdicts is not None:
+            return rows, {k for k, v in zip(dependent, verdicts, strict=True) if v}, \
+                "closure_bezout"
     ideal = [_integer(polys[i]) for i in rows]
     nvars = n
     if field is not None:
         nvars = n + 1
         ideal.append({(0,) * n + (j,): int(c) for j, c in
                       enumerate(field.g.numer().coeffs()) if c != 0})
-    for k, p in enumerate(polys):
-        if k in rows:
-            continue
-        f = _integer(p)
+    proved = set()
+    for k in dependent:
+        f = _integer(polys[k])
         left = end - time.monotonic()
         sat = saturate(ideal, f, nvars, timeout=left) if left > 0 else None
         if sat is None or not any(_nonzero_at_point(g, n, field) for g in sat):
-            return None
+            if stop:
+                break
+            continue
+        proved.add(k)
         ideal.append(f)       # it vanishes near the configuration: the same germ
-    return n - rank, "closure_saturation"
+    return rows, proved, "closure_saturation"
 
 
 def _paired(polys: list, names: tuple[str, ...], tangent: list, field=None) -> list | None:

@@ -150,13 +150,21 @@ def vanishes_along_curve(independent: list, dependent: list, n: int, field=None,
     None when the Bezout bound is over :data:`MAX_BOUND` or the time bound is reached.
     The polynomials are ``fmpq_mpoly`` in ``n`` variables, over a real number field
     ``field`` with ``alpha`` as one more, last variable."""
+    verdicts = curve_verdicts(independent, dependent, n, field, timeout)
+    return None if verdicts is None else all(verdicts)
+
+
+def curve_verdicts(independent: list, dependent: list, n: int, field=None,
+                   timeout: float = 10.0) -> list[bool] | None:
+    """For each polynomial of ``dependent``, whether it vanishes on the curve (as
+    :func:`vanishes_along_curve`), or None when not decided."""
     deadline = time.monotonic() + timeout
     if len(independent) != n - 1:
         return None
+    if not dependent:
+        return []
     degree = prod(_degree(g, n) for g in independent)
     bounds = [degree * _degree(f, n) for f in dependent]
-    if not dependent:
-        return True
     if max(bounds) > MAX_BOUND:
         return None
     jac = [[_linear_coefficient(g, n, k, field) for k in range(n)] for g in independent]
@@ -173,14 +181,14 @@ def vanishes_along_curve(independent: list, dependent: list, n: int, field=None,
     if gamma is None:
         return None
     top = max(_degree(f, n) for f in dependent)
+    out = []
     for f, bound in zip(dependent, bounds, strict=True):
         if time.monotonic() > deadline:
             return None
         value = _Evaluator(ring, [ring.truncate(s, bound + 1) for s in gamma], bound + 1,
                            top)(_terms(f, n, field))
-        if not ring.is_zero(value):
-            return False
-    return True
+        out.append(ring.is_zero(value))
+    return out
 
 
 def _degree(p, n: int) -> int:
