@@ -42,7 +42,17 @@ from coopkin_sym.analysis.finite.loops import contact_polynomials
 class ClosureMap:
     """The closure polynomials ``polys`` (in ``names``, coordinates of ``base``; with
     ``alpha`` last over a number field) as a constraint map near the configuration of
-    ``base`` (a :class:`~.constraints.ConstraintMap`)."""
+    ``base`` (a :class:`~.constraints.ConstraintMap`).
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> from coopkin_sym.model.configuration import Configuration
+    >>> model = load_model("parallel-cranks")
+    >>> cm = closure_map(ConstraintMap(model, Configuration.parse(model, None)))
+    >>> [[str(x) for x in row] for row in cm.linear()][0], cm.extend({"w3": 0, "u_q1": 1})
+    (['0', '2', '-2', '0'], {'w3': 0, 'u_q1': 1, 'p1': -2, 'p2': 0, 'u_q2': 1, 'u_q3': 1})
+    """
 
     def __init__(self, base: ConstraintMap, polys: list, names: tuple[str, ...]):
         self.base = base
