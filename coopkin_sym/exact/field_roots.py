@@ -16,8 +16,7 @@ never is: nothing is decided in floating point.
 Example
 -------
 >>> import flint
->>> from coopkin_sym.errors import NumberError
-from coopkin_sym.exact.numberfield import RealNumberField
+>>> from coopkin_sym.exact.numberfield import RealNumberField
 >>> from coopkin_sym.exact.realroot import RealRoot
 >>> k = RealNumberField(flint.fmpq_poly([-2, 0, 1]), RealRoot.all_of([-2, 0, 1])[1])
 >>> # x^3 - sqrt(2): the real root 2^(1/6), of minimal polynomial x^6 - 2 over Q
