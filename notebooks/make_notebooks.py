@@ -1759,14 +1759,15 @@ NB06 = [
 
     Two bars pinned end to end on the line of their pivots can start to move: the pin
     moves across the line, one first-order motion. But no finite motion follows. Where
-    the expansion proves nothing (a rank drop whose reduced equations vanish to every
-    order computed), the result says *undecided* and gives the bounds it proves.
+    nothing is proved (three parallel cranks lying on the ground line: two reduced
+    equations whose lowest terms share a real direction), the result says *undecided*
+    and gives the bounds it proves.
     """),
     code("""
     shaky = load("shaky-pinned-bars").finite_mobility("q1=0,q2=0")
     print(shaky.dimension, shaky.first_order, shaky.classification, shaky.equations)
     assert (shaky.dimension, shaky.first_order, shaky.classification) == (0, 1, "shaky")
-    open_question = load("paper-case1-complete-hard").finite_mobility("q1=0,q2=pi/2")
+    open_question = load("parallel-cranks").finite_mobility("q1=pi/2,q2=pi/2,q3=pi/2")
     print(open_question.dimension, open_question.bounds, open_question.reason)
     assert open_question.dimension is None and open_question.bounds == (0, 1)
     """),
@@ -1789,28 +1790,51 @@ NB06 = [
     assert kinds == ["bifurcation", "bifurcation", "shaky", "shaky"], kinds
     """),
     md("""
-    ## Overconstrained loops: Bennett and Bricard
+    ## Overconstrained loops: Bennett, Bricard, parallel cranks
 
     Grübler-Kutzbach counts `6 (links - 1) - 5 joints` motions for a loop of revolute
     joints: -2 for four joints in space, 0 for six. Bennett's linkage (four joints) and
     Bricard's line-symmetric linkage (six) move all the same, once: their special
     geometry makes some closure conditions follow from the others at every nearby
-    configuration. The expansion cannot see it (every first-order motion extends to
-    every order computed), so with welded contacts only the loop closure is written as
-    polynomials (dual quaternions, one variable per joint), and exact Gröbner
-    saturations prove that the dependent conditions vanish on the smooth set the
-    independent ones cut out: the reason `closure_saturation`.
+    configuration. So do three parallel cranks pinned to a coupler in the plane
+    (`3 (5 - 1) - 2 * 6 = 0`). The expansion cannot see it (every first-order motion
+    extends to every order computed), so the loop closure is written as polynomials
+    (dual quaternions, one variable per joint; contact points compared for pins), and
+    the dependent conditions are proved to vanish on the smooth curve the independent
+    ones cut out: along it to an order above Bezout's bound, the product of the
+    degrees (the reason `closure_bezout`), or by exact Gröbner saturations
+    (`closure_saturation`). It also runs over a number field: Bennett's linkage at a
+    point of its motion where `q1 = pi/6`.
     """),
     code("""
-    for name, joints in (("bennett-linkage", 4), ("bricard-linkage", 6)):
-        system = load(name)
-        fm = system.finite_mobility()
-        q = system.analyze().Q
-        (tangent,) = fm.branches[0].tangent
-        print(f"{name}: Gruebler {6 * (joints - 1) - 5 * joints}, first-order "
-              f"{fm.first_order}, finite {fm.dimension} ({fm.reason})")
-        assert (fm.dimension, fm.reason) == (1, "closure_saturation")
-        assert q * sp.Matrix(tangent) == sp.zeros(q.rows, 1)
+    bennett_curve = "2*atan((65*sqrt(3)-70)/311)"
+    loops = [("bennett-linkage", None, -2), ("bricard-linkage", None, 0),
+             ("parallel-cranks", None, 0),
+             ("bennett-linkage", f"q1=pi/6,q2={bennett_curve},q3=pi/6,q4={bennett_curve}",
+              -2)]
+    for name, at, count in loops:
+        fm = load(name).finite_mobility(at)
+        field = "" if fm.field is None else f" over Q({fm.field['alpha']})"
+        print(f"{name}{' at q1=pi/6' if at else ''}: Gruebler {count}, first-order "
+              f"{fm.first_order}, finite {fm.dimension} ({fm.reason}){field}")
+        assert (fm.dimension, fm.reason) == (1, "closure_bezout")
+    """),
+    md("""
+    ## Three branches along the roots of a cubic
+
+    `seven-r-loop` is a loop of seven revolute joints whose axes are all horizontal at
+    home: two first-order motions instead of one, a second-order closure term that
+    vanishes, and a third-order one that is an irreducible cubic with three real roots.
+    Three branches cross; each tangent is exact, with its root `s` given by its minimal
+    polynomial and an isolating interval with rational ends.
+    """),
+    code("""
+    fm = load("seven-r-loop").finite_mobility()
+    print(fm.classification, len(fm.branches), "branches")
+    for branch in fm.branches:
+        d = branch.direction
+        print(f"  s in ({d.interval[0]}, {d.interval[1]}], root of {d.polynomial}")
+    assert len({b.direction.polynomial for b in fm.branches}) == 1
     """),
 ]
 

@@ -39,7 +39,7 @@ def _rows() -> list[list[str]]:
 
 
 def test_the_table_of_examples_is_what_the_package_computes():
-    assert len(_rows()) == 9
+    assert len(_rows()) == 12
     for name, where, first, finite, kind in _rows():
         name = name.strip("`").split("`")[0]
         at = None if where == "home" else where.strip("`").split("`")[0]
