@@ -449,10 +449,12 @@ def locus_html(locus: Locus) -> str:
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
-        said = [clip(t, 240) for t in grouped_remark_texts(locus.unexplored)]
-        parts += [f"<p>Not explored ({len(locus.unexplored)} items, said in {len(said)} "
-                  f"sentence{'' if len(said) == 1 else 's'}; all of them in a report):</p>",
-                  _list(said[:_OPEN_REMARKS])]
+        said = [clip(t, 400) for t in grouped_remark_texts(locus.unexplored)]
+        items = len(locus.unexplored)
+        counted = ("" if items == 1 else
+                   f" ({items} items, said in {len(said)} "
+                   f"sentence{'' if len(said) == 1 else 's'}; all of them in a report)")
+        parts += [f"<p>Not explored{counted}:</p>", _list(said[:_OPEN_REMARKS])]
         if len(said) > _OPEN_REMARKS:
             parts.append(_folded(f"{len(said) - _OPEN_REMARKS} more",
                                  _list(said[_OPEN_REMARKS:])))
