@@ -34,6 +34,7 @@ import sympy as sp
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ArgumentTypeError, ConfigurationError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
+from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_sympy
@@ -256,7 +257,7 @@ def factored_motions(analysis: Any) -> FactoredMotions:
     def entry(value: RatFunc):
         if value.num.is_zero():
             return sp.Integer(0), ()
-        content, parts = value.den.factor()
+        content, parts = factor(value.den)
         powers = []
         for f, e in parts:
             key = str(f)
