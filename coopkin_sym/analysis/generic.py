@@ -49,17 +49,21 @@ from coopkin_sym.exact.matrix import (
     POLYNOMIALS,
     RATIONALS,
     ArmBlock,
+    PrimeField,
     eliminate_arm,
     rank,
     rank_triple,
 )
 from coopkin_sym.exact.ring import ClearedRows
+from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
 #: Random coordinates are drawn from the integers in ``[-2**SAMPLE_BITS, 2**SAMPLE_BITS]``.
 SAMPLE_BITS = 62
 #: Independent random points (each one multiplies the error exponent).
 POINTS = 2
+#: The prime of :func:`chain_numbers` (``2**61 - 1``).
+CHAIN_PRIME = 2**61 - 1
 #: Wall-clock seconds spent on the exact eliminations before the result is given as
 #: probabilistic (the numbers themselves never wait on it longer).
 CERTIFY_SECONDS = 2.0
@@ -335,3 +339,58 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     bits = _error_bits(q_rows, checks, count)
     numbers = numbers_from_ranks(m, r, best.q, best.gt, sum(best.arms), dim=dim)
     return numbers, NumbersCertificate.from_ranks(ranks, count, bits)
+
+
+def chain_numbers(model: Model, config: Configuration, *, points: int = POINTS,
+                  seed: int | None = None) -> tuple[Numbers, NumbersCertificate] | None:
+    """The numbers over the fraction field of the symbolic joints and parameters of
+    ``config`` when the sizes certify every rank, found without building ``Q``
+    symbolically; ``None`` otherwise (:func:`generic_numbers` then ranks the symbolic
+    ``Q``).
+
+    ``Q`` is evaluated at ``points`` random points modulo the prime
+    :data:`CHAIN_PRIME` from the product of exponentials
+    (:mod:`coopkin_sym.analysis.sweep.chains`: cost linear in the joints, nothing
+    expanded). A rank modulo p at a point is at most the rank over the field (a minor
+    that is nonzero there is a nonzero rational function), so these ranks are lower
+    bounds, certain whatever the points drawn; where they reach the bounds the sizes
+    give (as in :func:`generic_numbers`), every rank is certified (``"size"``).
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> model = load_model("panda-two-arm-box")
+    >>> numbers, cert = chain_numbers(model, Configuration.parse(model, None, "all"),
+    ...                               seed=1)
+    >>> numbers.as_dict()["Nm"], cert.exact, {r.how for r in cert.ranks}
+    (8, True, {'size'})
+    """
+    from coopkin_sym.analysis.sweep import chains
+
+    base = model.in_base_frame()
+    swept = tuple(j.name for j in base.joints if j.name in config.free)
+    data = chains.chain_data(base, config, swept)
+    chain = chains.ChainQ(data)
+    m, dim, r = data["m"], base.object_dim, len(base.joints)
+    arms = _arm_blocks(base, chains.row_contacts(base), dim)
+    rng = random.Random(seed) if seed is not None else random.SystemRandom()
+    best = _Sampled(-1, -1, [-1] * len(arms))
+    for _ in range(points):
+        check("the ranks at random points")
+        field = chains.ModularField(CHAIN_PRIME, [rng.randrange(2, CHAIN_PRIME)
+                                                  for _ in data["params"]])
+        try:
+            rows = chain.rows(field, [(rng.randrange(CHAIN_PRIME), 1) for _ in swept])
+        except chains.Unlucky:      # a denominator vanishes modulo the prime there
+            continue
+        ranks = rank_triple(rows, dim + r, dim, PrimeField(CHAIN_PRIME), arms)
+        best.q, best.gt = max(best.q, ranks.q), max(best.gt, ranks.gt)
+        best.arms = [max(b, ra) for b, ra in zip(best.arms, ranks.arms, strict=True)]
+    certify = _Certify(None, best, arms, m, dim + r, dim, None)
+    if not certify.settled():
+        return None
+    ranks = [RankBound("Q", best.q, "size"), RankBound("Gt", best.gt, "size")]
+    ranks += [RankBound(f"Dt[{arm.name}]", ra, "size")
+              for arm, ra in zip(base.arms, best.arms, strict=True)]
+    numbers = numbers_from_ranks(m, r, best.q, best.gt, sum(best.arms), dim=dim)
+    return numbers, NumbersCertificate.from_ranks(ranks, points)

@@ -44,7 +44,12 @@ from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.decomposition import Decomposition, _ArmMap, decompose
 from coopkin_sym.analysis.decomposition import numbers_modulo as numbers_modulo
 from coopkin_sym.analysis.factored import FactoredMotions, factored_motions
-from coopkin_sym.analysis.generic import NumbersCertificate, RankBound, generic_numbers
+from coopkin_sym.analysis.generic import (
+    NumbersCertificate,
+    RankBound,
+    chain_numbers,
+    generic_numbers,
+)
 from coopkin_sym.analysis.manipulability import MAX_TERMS as MANIPULABILITY_TERMS
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import (
@@ -183,6 +188,10 @@ class Analysis(Displayable):
                            in zip(("Q", "Gt", "Dt"), ranks, strict=True)]
             return (numbers_from_ranks(m, self.r, *ranks, dim=self.dim),
                     NumbersCertificate.from_ranks(ranks_known, 0))
+        if self.configuration.free:      # the sizes may certify ranks at points mod p
+            sampled = chain_numbers(self.model, self.configuration)
+            if sampled is not None:
+                return sampled
         kin = self.kinematics
         return generic_numbers(self._cleared, self.model, kin.row_contacts, kin.ring.zctx)
 
