@@ -420,7 +420,24 @@ class Analysis(Displayable):
     @cached_property
     def C11(self) -> sp.Matrix:
         """Basis of ``N(Gt^T)``: object motions with every joint locked (6 x Ni)."""
+        self._fits("C11", self._c11, "indeterminate object motions")
         return self._cols(self._c11, self.dim)
+
+    def _fits(self, name: str, vectors, what: str) -> None:
+        """Refuse a block whose largest entry (known before it is written out) has more
+        terms than the budget, with the size it would have had."""
+        size = max((len(x) for v in vectors for x in v), default=0)
+        if self.term_budget is not None and size > self.term_budget:
+            raise BlockTooLarge(
+                f"{name}: the {what} would have entries of {size:,} terms, over the "
+                f"budget of {self.term_budget:,}; keep fewer joints symbolic (free=[...] "
+                "/ --free) or set analysis.term_budget = None")
+
+    @cached_property
+    def _twists(self) -> sp.Matrix:
+        """The coordinated object twists (``C12`` before its columns are scaled to clear
+        the joint part's denominators), written out once."""
+        return self._cols(self._coord_u, self.dim)
 
     @property
     def coordinated_form(self) -> str:
@@ -455,7 +472,8 @@ class Analysis(Displayable):
         except BlockTooLarge:
             coordinated = None
         if coordinated is None:
-            return self._cols(self._coord_u, self.dim)
+            self._fits("C12", self._coord_u, "coordinated object motions")
+            return self._twists
         return self._cols([v[:self.dim] for v in coordinated], self.dim)
 
     @cached_property
@@ -480,6 +498,7 @@ class Analysis(Displayable):
     @cached_property
     def C23(self) -> sp.Matrix:
         """Basis of ``N(Dt)``: joint motions with the object fixed (r x Nr)."""
+        self._fits("C23", self._c23, "redundant joint motions")
         return self._cols(self._c23, self.r)
 
     def twist_in_base(self, u: Sequence) -> list[sp.Expr]:

@@ -107,6 +107,27 @@ def test_the_hand_at_exact_configurations_agrees_with_the_independent_analysis(
     assert ours == numbers == _independent("allegro-hand-sphere", at)
 
 
+def test_the_generic_blocks_of_the_hand_over_the_budget_are_refused_before_written():
+    """The hand's generic C12 (24,440 terms in an entry) and C22 (a bound of 7,063,244)
+    are over the term budget: both are refused with their sizes before anything is
+    written out as SymPy (nor expanded); C11 and C23 are kept, and the factored form
+    of C22 still gives each finger's small map."""
+    a = coopkin_sym.load("allegro-hand-sphere").analyze(generic=True)
+    blocks, omitted = a.available_blocks()
+    assert sorted(omitted) == ["C12", "C22"]
+    assert "C12: the coordinated object motions would have entries of 24,440 terms, " \
+        "over the budget of 20,000" in omitted["C12"]
+    assert "C22: the coordinated joint motions would have entries of up to about " \
+        "7,063,244 terms, over the budget of 20,000" in omitted["C22"]
+    assert "_twists" not in a.__dict__ and "_unbounded_coordinated" not in a.__dict__
+    assert blocks["C11"].shape == (6, 0) and blocks["C23"].shape == (16, 3)
+    assert str(blocks["C23"][1, 0]) == "2848*t_i2**2*t_i3 + 2848*t_i3"
+    text = coopkin_sym.analysis_text(a)
+    assert "C12: not shown: C12: the coordinated object motions would have entries " \
+        "of 24,440 terms" in text
+    assert "K_thumb (rows: joints; columns: v_x, v_y, v_z, w_x, w_y, w_z)" in text
+
+
 @pytest.mark.parametrize("name, at", [("panda-two-arm-box", PANDA_BENT),
                                       ("allegro-hand-sphere", HAND_BENT)])
 def test_the_real_robots_are_drawn(name, at, tmp_path):
