@@ -66,7 +66,7 @@ def test_generic_numbers_agree_with_elimination(data):
                                       seed=seed, certify_seconds=None)
     assert certified == exact
     assert cert.exact and cert.error_bits is None
-    assert all(r.how in {"size", "elimination"} for r in cert.ranks)
+    assert all(r.how in {"size", "contacts", "elimination"} for r in cert.ranks)
     # rows cleared only where used, values at the points from the fractions
     lazy = ClearedRows(kin.ring, kin.Q)
     fast, cert_fast = generic_numbers(lazy, model, kin.row_contacts, kin.ring.zctx,
@@ -100,7 +100,7 @@ def test_numbers_from_the_chains_are_those_of_the_elimination_or_none(data):
     if found is not None:
         numbers, cert = found
         assert numbers == exact
-        assert cert.exact and {r.how for r in cert.ranks} == {"size"}
+        assert cert.exact and {r.how for r in cert.ranks} <= {"size", "contacts"}
 
 
 @pytest.mark.parametrize("name", list_examples())
@@ -196,7 +196,7 @@ def test_generic_numbers_of_hands_are_certified(build, expected):
 def test_probabilistic_numbers_say_so():
     """With no time for a certificate, ranks the sizes do not bound are sampled, and
     the certificate gives the error exponent from the degrees and the points."""
-    model = coopkin_sym.load("paper-case2-hard").model
+    model = coopkin_sym.load("allegro-hand-sphere").model
     config = Configuration.parse(model, None, "all")
     rows, kin, exact = _decomposed(model, config)
     numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
@@ -204,11 +204,34 @@ def test_probabilistic_numbers_say_so():
     assert numbers == exact
     assert not cert.exact
     hows = {r.matrix: r.how for r in cert.ranks}
-    assert hows["Gt"] == "sampled"            # rank 5 of 6 columns: not a size bound
-    assert hows["Dt[s1]"] == "size"           # 3 rows, rank 3
+    assert hows["Dt[index]"] == "sampled"     # 4 rows, 4 joints, rank 3: no size bound
+    assert hows["Dt[thumb]"] == "size"        # 4 rows, rank 4
     # two points, coordinates from 2**63 + 1 integers, minors of degree below 2**7
     assert 100 <= cert.error_bits <= 2 * 63
     assert cert.as_dict()["error_bits"] == cert.error_bits
+
+
+def test_the_rank_of_gt_is_certified_by_free_contact_points():
+    """Two hard contacts: rank H G^T is 5 (the object turns about the line through
+    them), below the sizes' 6; it equals the rank with every contact point and normal
+    free, a certified bound, so no elimination is needed (nor time for it)."""
+    from coopkin_sym.analysis.generic import grasp_rank_bound
+
+    model = coopkin_sym.load("paper-case2-hard").model
+    assert grasp_rank_bound(model) == 5
+    assert grasp_rank_bound(coopkin_sym.load("paper-case2-complete").model) == 6
+    config = Configuration.parse(model, None, "all")
+    rows, kin, exact = _decomposed(model, config)
+    numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
+                                    seed=7, certify_seconds=0)
+    assert numbers == exact and cert.exact
+    assert {r.matrix: r.how for r in cert.ranks}["Gt"] == "contacts"
+    chained, cert = chain_numbers(model, config, seed=7)
+    assert chained == exact and cert.exact
+    a = coopkin_sym.load(spatial_hand(2, 4)).analyze(generic=True)
+    assert a.certificate.exact and "kinematics" not in a.__dict__
+    assert a.numbers.as_dict() == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0,
+                                   "Nh": 0}
 
 
 def test_point_analysis_blocks_after_numbers():
