@@ -381,8 +381,12 @@ class Analysis(Displayable):
 
     @property
     def variables(self) -> tuple[sp.Symbol, ...]:
-        """The symbols left in the results (free joint variables, free parameters)."""
-        return tuple(self.kinematics.symbols[n] for n in self.ring.names)
+        """The symbols left in the results (free joint variables, free parameters);
+        known without building the kinematics."""
+        if "kinematics" in self.__dict__:
+            return tuple(self.kinematics.symbols[n] for n in self.ring.names)
+        ring, symbols = kinematics.ring_for(self.model, self.configuration)
+        return tuple(symbols[n] for n in ring.names)
 
     def _sym(self, rows, shape=None) -> sp.Matrix:
         return matrix_to_sympy(rows, self.ring, self.kinematics.symbols, shape)

@@ -51,7 +51,7 @@ FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
 #: The float rank tests at witnesses are run when ``Q`` has at most this many entries
 #: (a float SVD costs the cube of its size: about 8 s CPU for 1,200 x 1,206); beyond
 #: it they are left out and the locus says so (see :func:`floats_left_out`).
-FLOAT_CHECK_ENTRIES = 100_000
+FLOAT_CHECK_ENTRIES = 40_000
 
 
 def complete_point(ctx: SearchContext, point_so_far: dict, point: dict[str, Fraction],
