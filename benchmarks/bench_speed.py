@@ -450,13 +450,15 @@ def _context():
     return _CTX
 
 
-def run_stages(func, args, stages: list[str], cap: float) -> dict[str, dict]:
+def run_stages(func, args, stages: list[str], cap: float, daemon: bool = True
+               ) -> dict[str, dict]:
     """Run the generator ``func(*args)`` in a worker; each stage (one message) gets
     ``cap`` seconds. Returns ``{stage: result}`` with ``status`` ``ok | timeout |
-    memory | error | died | not run``."""
+    memory | error | died | not run``. A worker that starts processes of its own (a
+    bounded locus search, a certificate) is not a daemon (``daemon=False``)."""
     ctx = _context()
     parent, child = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_stage_worker, args=(child, func, args), daemon=True)
+    proc = ctx.Process(target=_stage_worker, args=(child, func, args), daemon=daemon)
     proc.start()
     child.close()
     results: dict[str, dict] = {}

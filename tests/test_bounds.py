@@ -166,8 +166,9 @@ def test_the_check_of_processes_sees_a_running_one():
       "table.csv", "--workers", "2"], "nothing written"),
     (["verify", "paper-case1-hard", "case1.json", "--lines", "5000"], "no verdict"),
     (["locus", "contacts.json", "-o", "report.md"], "nothing written"),
+    (["draw", "arms.json", "-o", "arms.png"], "nothing written"),
 ], ids=["analyze-200-arms", "analyze-2000-contacts", "manipulability", "sweep", "verify",
-        "locus"])
+        "locus", "draw-200-arms"])
 def test_each_command_stops_at_its_bound_with_one_line(models, args, outcome):
     before = set(models.iterdir())
     status, out, err, took = _run([*args, "--timeout", str(BOUND)], models)

@@ -436,16 +436,17 @@ def sentences(analysis: Analysis) -> list[str]:
     """
     n = analysis.numbers
     driven = n.Nc - n.Ni
-    blocks, _ = analysis.available_blocks()
-    c12, c22 = blocks["C12"], blocks["C22"]
+    blocks, _ = analysis.available_blocks()    # a block over the term budget is None
+    c11, c12, c22, c23 = (blocks[k] for k in ("C11", "C12", "C22", "C23"))
     coordinated = [f"{describe_twist(c12.col(k), analysis)} by moving "
                    f"{describe_joint_motion(c22.col(k), analysis)}"
-                   for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
-    free = object_motions_words([analysis.twist_in_base(analysis.C11.col(k))
-                                 for k in range(n.Ni)],
-                                _contact_points(analysis)) if n.Ni else None
-    redundant = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
-                          for k in range(n.Nr)) if n.Nr else None
+                   for k in range(c12.cols)] if (0 < driven <= 3 and c12 is not None
+                                                 and c22 is not None) else []
+    free = object_motions_words([analysis.twist_in_base(c11.col(k)) for k in range(n.Ni)],
+                                _contact_points(analysis)) if n.Ni and c11 is not None \
+        else None
+    redundant = "; ".join(describe_joint_motion(c23.col(k), analysis)
+                          for k in range(n.Nr)) if n.Nr and c23 is not None else None
     return [_mobility_sentence(n), _connectivity_sentence(n, analysis.dim, coordinated),
             _indeterminacy_sentence(n, free), _redundancy_sentence(n, redundant),
             *_force_sentences(n, analysis.r)]

@@ -15,6 +15,7 @@ from fractions import Fraction
 
 import flint
 
+from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.field_roots import real_root_count, real_roots
 from coopkin_sym.exact.realroot import RealRoot
 
@@ -95,8 +96,8 @@ def real_directions(forms: Sequence, n: int) -> list[tuple[object, int]] | None:
         return []
     x, y = ctx.gens()[:2]
     out: list[tuple[object, int]] = []
-    _, factors = g.factor()
-    first = dict((str(f), e) for f, e in forms[0].factor()[1])
+    _, factors = factor(g)
+    first = dict((str(f), e) for f, e in factor(forms[0])[1])
     for f, _e in factors:
         mult = first.get(str(f), 1)
         if f.degrees()[0] == 0:                        # a power of y: the direction x

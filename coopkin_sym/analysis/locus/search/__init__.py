@@ -70,6 +70,7 @@ from coopkin_sym.analysis.locus.search.charts import (
 from coopkin_sym.analysis.locus.search.components import settle_realness
 from coopkin_sym.analysis.locus.search.recursion import STEPS, explore
 from coopkin_sym.analysis.locus.types import Locus, canonical_order, cut_short
+from coopkin_sym.analysis.locus.witness import floats_left_out
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
@@ -139,7 +140,10 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         # the bound passed between steps: what each step left is said, and this
         locus.unexplored.append(Remark.of("time_whole_run", seconds=timeout,
                                           where="the search"))
-    if any(c.algebraic_witness for c in locus.components):
+    left_out = floats_left_out(ctx)
+    if left_out is not None:
+        locus.notes.append(left_out)
+    elif any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
     if model.passive_joints and not model.locked:
         # where the passive-joint numbers change: the locus of the locked system

@@ -105,8 +105,8 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int,
     out there by minors alone are not searched, and the report says so. With ``comp``
     None, ``f = 0`` is a candidate with the enclosing numbers (``place.base``, in
     ``place.parent``), searched one such level deep."""
-    names = ({n for row in place.rows for e in row for n in vars_of(ctx, e)}
-             | set(vars_of(ctx, f)))
+    names = ({n for row in place.rows for e in row if not e.is_constant()
+              for n in vars_of(ctx, e)} | set(vars_of(ctx, f)))
     if comp is not None:
         index = ctx.locus.components.index(comp)
         where = dict(component=index, equations=())
