@@ -343,6 +343,11 @@ ELSEWHERE: dict[str, tuple[str, Callable[[], list[str]]]] = {
         "coopkin analyze bricard-linkage --finite",
         "coopkin analyze paper-case1-planar --at q1=pi/3,q2=pi/3 --finite",
         "coopkin locus paper-case1-hard --finite -o case1-locus.md",
+        "coopkin analyze seven-r-loop --finite",
+        "coopkin analyze parallel-cranks --finite --json",
+        "coopkin analyze seven-r-loop --at q4=pi/3 --finite",
+        "coopkin analyze bennett-linkage --at q1=pi/6,q2=2*atan((65*sqrt(3)-70)/311),"
+        "q3=pi/6,q4=2*atan((65*sqrt(3)-70)/311) --finite",
     ]}
 
 #: The commands over about 3 s: a block holding one is a slow test.
