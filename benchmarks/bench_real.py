@@ -440,46 +440,11 @@ def run(quick: bool = False, log=print) -> list[dict]:
 def plot_real(rows: list[dict], path: Path = PLOT_PATH) -> bool:
     """Log-log figure of the growth rows (one panel per series), fitted exponents in
     the legend."""
-    panels: dict[str, list[dict]] = {}
-    for r in rows:
-        p = r.get("real_plot")
-        if p and p["points"]:
-            panels.setdefault(p["panel"], []).append(p)
-    if not panels:
-        return False
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.ticker import NullFormatter, ScalarFormatter
-    fig, axes = plt.subplots(1, len(panels), figsize=(6.2 * len(panels), 5.4),
-                             squeeze=False)
-    for ax, (title, series) in zip(axes[0], panels.items(), strict=True):
-        xs = set()
-        for k, s in enumerate(series):
-            pts = sorted(s["points"])
-            xs.update(x for x, _ in pts)
-            exp = f"r^{s['exponent']:.2f}" if s["exponent"] is not None else "no fit"
-            ax.plot([x for x, _ in pts], [y for _, y in pts], "-", marker="os^D"[k % 4],
-                    markersize=4, label=f"{s['series']} ({exp})")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.xaxis.set_major_formatter(ScalarFormatter())
-        ax.xaxis.set_minor_formatter(NullFormatter())
-        ax.set_xticks(sorted(xs))
-        ax.tick_params(axis="x", labelrotation=45)
-        ax.set_xlabel("joints r")
-        ax.set_ylabel("seconds (CPU; point analysis: median wall per point)")
-        ax.set_title(title)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8, loc="best", framealpha=0.7)
-    fig.suptitle("coopkin_sym on real-size systems: cost against size (log-log, fitted "
+    return bench_speed.plot_growth(
+        rows, "real_plot", path, size=(6.2, 5.4), rotate=True,
+        ylabel="seconds (CPU; point analysis: median wall per point)",
+        suptitle="coopkin_sym on real-size systems: cost against size (log-log, fitted "
                  "exponents)")
-    fig.tight_layout()
-    tmp = path.with_name(path.stem + ".tmp.png")
-    fig.savefig(tmp, dpi=110)
-    plt.close(fig)
-    os.replace(tmp, path)
-    return True
 
 
 if __name__ == "__main__":
