@@ -421,20 +421,12 @@ def bench_thousand(quick: bool, log=print) -> list[dict]:
 
 def run(quick: bool = False, log=print) -> list[dict]:
     """All rows of this benchmark (see the module docstring)."""
-    rows: list[dict] = []
     parts = [(label, lambda s=source, f=free, lab=label: measure_system(lab, s, f, quick,
                                                                          log))
              for label, source, free in SYSTEMS]
     parts += [("1,000 configurations", lambda: bench_thousand(quick, log)),
               ("growth", lambda: bench_growth(quick, log))]
-    for name, part in parts:       # a part that fails is a row; the others still run
-        try:
-            rows += part()
-        except Exception as exc:
-            import traceback
-            traceback.print_exc()
-            rows.append(_row(name, "(failed)", note=f"{type(exc).__name__}: {exc}"))
-    return rows
+    return bench_speed.run_parts(parts)
 
 
 def plot_real(rows: list[dict], path: Path = PLOT_PATH) -> bool:

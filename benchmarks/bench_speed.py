@@ -716,6 +716,21 @@ def bench_scaling(quick: bool, log=print) -> list[dict]:
     return rows
 
 
+def run_parts(parts: list[tuple[str, Callable[[], list[dict]]]]) -> list[dict]:
+    """The rows of each ``(name, part)`` in turn; a part that fails is one row saying
+    why (its traceback on stderr), and the others still run."""
+    rows: list[dict] = []
+    for name, part in parts:
+        try:
+            rows += part()
+        except Exception as exc:
+            traceback.print_exc()
+            rows.append({"benchmark": name, "case": "(failed)", "ours_s": None,
+                         "baseline": None, "baseline_s": None, "ratio": None,
+                         "note": f"{type(exc).__name__}: {exc}"})
+    return rows
+
+
 def plot_speed(rows: list[dict], path: Path = PLOT_PATH) -> bool:
     """Log-log figure of the scaling rows (one panel per series of hands), the fitted
     exponents in the legend."""
@@ -785,14 +800,7 @@ def run(quick: bool = False, log=print) -> list[dict]:
               ("blocks", lambda: bench_blocks(quick, log)),
               ("scale-out", lambda: bench_scale_out(quick, log)),
               ("scaling", lambda: bench_scaling(quick, log))]
-    for name, part in parts:       # a part that fails is a row; the others still run
-        try:
-            rows += part()
-        except Exception as exc:
-            traceback.print_exc()
-            rows.append({"benchmark": name, "case": "(failed)", "ours_s": None,
-                         "baseline": None, "baseline_s": None, "ratio": None,
-                         "note": f"{type(exc).__name__}: {exc}"})
+    rows += run_parts(parts)
     return rows
 
 
