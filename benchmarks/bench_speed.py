@@ -450,13 +450,15 @@ def _context():
     return _CTX
 
 
-def run_stages(func, args, stages: list[str], cap: float) -> dict[str, dict]:
+def run_stages(func, args, stages: list[str], cap: float, daemon: bool = True
+               ) -> dict[str, dict]:
     """Run the generator ``func(*args)`` in a worker; each stage (one message) gets
     ``cap`` seconds. Returns ``{stage: result}`` with ``status`` ``ok | timeout |
-    memory | error | died | not run``."""
+    memory | error | died | not run``. A worker that starts processes of its own (a
+    bounded locus search, a certificate) is not a daemon (``daemon=False``)."""
     ctx = _context()
     parent, child = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_stage_worker, args=(child, func, args), daemon=True)
+    proc = ctx.Process(target=_stage_worker, args=(child, func, args), daemon=daemon)
     proc.start()
     child.close()
     results: dict[str, dict] = {}
@@ -714,12 +716,38 @@ def bench_scaling(quick: bool, log=print) -> list[dict]:
     return rows
 
 
+def run_parts(parts: list[tuple[str, Callable[[], list[dict]]]]) -> list[dict]:
+    """The rows of each ``(name, part)`` in turn; a part that fails is one row saying
+    why (its traceback on stderr), and the others still run."""
+    rows: list[dict] = []
+    for name, part in parts:
+        try:
+            rows += part()
+        except Exception as exc:
+            traceback.print_exc()
+            rows.append({"benchmark": name, "case": "(failed)", "ours_s": None,
+                         "baseline": None, "baseline_s": None, "ratio": None,
+                         "note": f"{type(exc).__name__}: {exc}"})
+    return rows
+
+
 def plot_speed(rows: list[dict], path: Path = PLOT_PATH) -> bool:
     """Log-log figure of the scaling rows (one panel per series of hands), the fitted
     exponents in the legend."""
+    return plot_growth(rows, "speed_plot", path, panel_title="spatial hands, {}",
+                       suptitle="coopkin_sym speed: cost against hand size (log-log, "
+                                "fitted exponents)")
+
+
+def plot_growth(rows: list[dict], key: str, path: Path, *, panel_title: str = "{}",
+                suptitle: str, ylabel: str = "seconds", size: tuple = (6.5, 5.5),
+                rotate: bool = False) -> bool:
+    """Log-log figure of the rows carrying ``key`` (``{"panel", "series", "points",
+    "exponent"}``): one panel per ``panel``, one line per series, the fitted exponents
+    in the legend. Returns whether there was anything to draw."""
     panels: dict[str, list[dict]] = {}
     for r in rows:
-        p = r.get("speed_plot")
+        p = r.get(key)
         if p and p["points"]:
             panels.setdefault(p["panel"], []).append(p)
     if not panels:
@@ -728,7 +756,7 @@ def plot_speed(rows: list[dict], path: Path = PLOT_PATH) -> bool:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.ticker import NullFormatter, ScalarFormatter
-    fig, axes = plt.subplots(1, len(panels), figsize=(6.5 * len(panels), 5.5),
+    fig, axes = plt.subplots(1, len(panels), figsize=(size[0] * len(panels), size[1]),
                              squeeze=False)
     for ax, (title, series) in zip(axes[0], panels.items(), strict=True):
         xs = set()
@@ -743,12 +771,14 @@ def plot_speed(rows: list[dict], path: Path = PLOT_PATH) -> bool:
         ax.xaxis.set_major_formatter(ScalarFormatter())
         ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_xticks(sorted(xs))
+        if rotate:
+            ax.tick_params(axis="x", labelrotation=45)
         ax.set_xlabel("joints r")
-        ax.set_ylabel("seconds")
-        ax.set_title(f"spatial hands, {title}")
+        ax.set_ylabel(ylabel)
+        ax.set_title(panel_title.format(title))
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.suptitle("coopkin_sym speed: cost against hand size (log-log, fitted exponents)")
+        ax.legend(fontsize=8, loc="best", framealpha=0.7)
+    fig.suptitle(suptitle)
     fig.tight_layout()
     tmp = path.with_name(path.stem + ".tmp.png")
     fig.savefig(tmp, dpi=110)
@@ -770,14 +800,7 @@ def run(quick: bool = False, log=print) -> list[dict]:
               ("blocks", lambda: bench_blocks(quick, log)),
               ("scale-out", lambda: bench_scale_out(quick, log)),
               ("scaling", lambda: bench_scaling(quick, log))]
-    for name, part in parts:       # a part that fails is a row; the others still run
-        try:
-            rows += part()
-        except Exception as exc:
-            traceback.print_exc()
-            rows.append({"benchmark": name, "case": "(failed)", "ours_s": None,
-                         "baseline": None, "baseline_s": None, "ratio": None,
-                         "note": f"{type(exc).__name__}: {exc}"})
+    rows += run_parts(parts)
     return rows
 
 

@@ -43,6 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from coopkin_sym.analysis.batch import BatchResult
     from coopkin_sym.analysis.irrational import IrrationalAnalysis
     from coopkin_sym.analysis.locus.certify import Certificate
+    from coopkin_sym.analysis.locus.families import Family
     from coopkin_sym.analysis.locus.types import Component, Locus, ended_at_bound
     from coopkin_sym.analysis.locus.verify import Verification
     from coopkin_sym.analysis.manipulability import Manipulability
@@ -99,6 +100,7 @@ _LAZY = {
     "Certificate": "coopkin_sym.analysis.locus.certify",
     "Component": "coopkin_sym.analysis.locus.types",
     "Configuration": "coopkin_sym.model.configuration",
+    "Family": "coopkin_sym.analysis.locus.families",
     "IrrationalAnalysis": "coopkin_sym.analysis.irrational",
     "Locus": "coopkin_sym.analysis.locus.types",
     "Manipulability": "coopkin_sym.analysis.manipulability",
@@ -227,6 +229,7 @@ __all__ = [
     "ConfigurationError",
     "CoopkinError",
     "DrawError",
+    "Family",
     "FiniteMobilityError",
     "InfeasibleMotion",
     "IrrationalAnalysis",

@@ -10,7 +10,7 @@
 A part of an output left out (a plot with nothing to show, a motion not available at
 the configuration) is announced on stderr as ``coopkin: note: ...``.
 
-``analyze``, ``locus``, ``sweep``, ``manipulability`` and ``verify`` take
+``analyze``, ``locus``, ``sweep``, ``manipulability``, ``verify`` and ``draw`` take
 ``--timeout SECONDS``, a wall-clock bound on the whole run, held whatever the step
 (see :mod:`coopkin_sym.exact.bounded`), and show what they are doing on stderr once
 they have run for a second (when stderr is a terminal; ``--no-progress``: never).
@@ -282,19 +282,37 @@ def draw(
     labels: Annotated[str, typer.Option(
         "--labels", help="Name labels: names (long ones shortened), short (joint "
                          "numbers in their arm) or none.")] = "names",
+    timeout: TimeoutOption = None,
+    no_progress: NoProgressOption = False,
 ) -> None:
     """Draw the system (arms, joints, contacts, object) and optionally one motion."""
-    from coopkin_sym import DrawError, save_picture
+    from coopkin_sym import DrawError
 
     styles = {"names": True, "short": "short", "none": False}
+
+    def work():
+        from coopkin_sym import load, save_picture
+        from coopkin_sym import report_step as report
+
+        report("loading the model")
+        system = load(model)
+        with warnings.catch_warnings(record=True) as caught:   # said by the command
+            warnings.simplefilter("always", OutputSkipped)
+            path = save_picture(system, output, at=at, motion=motion, ellipsoid=ellipsoid,
+                                labels=styles[labels])
+        return path, [str(w.message) for w in caught if issubclass(w.category,
+                                                                    OutputSkipped)]
+
     try:
         if labels not in styles:
             raise DrawError(f"--labels: names, short or none (not {labels!r})")
-        with _notes():
-            path = save_picture(model, output, at=at, motion=motion, ellipsoid=ellipsoid,
-                                labels=styles[labels])
+        path, notes = _bounded(work, timeout, "draw", no_progress)
+    except TimeLimitReached as exc:
+        _cut(exc, "nothing written")
     except USER_ERRORS as exc:
         _fail(str(exc))
+    for note in notes:
+        typer.echo(f"coopkin: note: {note}", err=True)
     typer.echo(f"wrote {path}")
 
 

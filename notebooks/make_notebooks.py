@@ -538,8 +538,7 @@ NB03 = [
     and lists what it did not explore. `Locus.write` writes it up.
 
     Angles are handled through $t = \\tan(q/2)$, so a component such as
-    `t_q1 - 1 = 0` is $q_1 = \\pi/2$. Floats appear only in the plots and in the float
-    comparison of section 4 (marked).
+    `t_q1 - 1 = 0` is $q_1 = \\pi/2$. Floats appear only in the plots.
     """),
     code("""
     import io
@@ -564,28 +563,24 @@ NB03 = [
 
 
     def recheck(system, locus):
-        \"\"\"Each rational witness again, by a direct exact analysis; asserts the numbers
-        agree. Irrational witnesses were checked by the engine over Q(alpha). Prints
-        the first eight, then how many of each kind.\"\"\"
+        \"\"\"Each rational witness again, by a direct exact analysis (irrational ones
+        were checked by the engine over Q(alpha)); prints the first eight.\"\"\"
         kinds = {"rechecked directly": 0, "irrational, checked over Q(alpha)": 0,
                  "real points undecided": 0}
         for k, (c, row) in enumerate(zip(locus.components, locus.table(), strict=True)):
             if c.real_points == "undecided":     # no real witness found: not called real
                 assert not c.real
-                kinds["real points undecided"] += 1
-                line = f"{c.condition.text[:58]:58} real points: undecided"
+                kind, said = "real points undecided", "real points: undecided"
             elif c.witness is None:
                 assert c.witness_checked, c.condition.text
-                kinds["irrational, checked over Q(alpha)"] += 1
-                line = f"{row['witness'][:58]:58} irrational: checked over Q(alpha)"
+                kind, said = "irrational, checked over Q(alpha)", "irrational: over Q(alpha)"
             else:
-                direct = system.analyze(c.witness).numbers.as_dict()
-                assert c.witness_checked and direct == c.numbers, c.condition.text
-                kinds["rechecked directly"] += 1
-                line = (f"{row['witness'][:58]:58} Nm={direct['Nm']} Nc={direct['Nc']} "
-                        f"Nr={direct['Nr']}: as reported")
+                n = system.analyze(c.witness).numbers.as_dict()
+                assert c.witness_checked and n == c.numbers, c.condition.text
+                kind, said = "rechecked directly", f"Nm={n['Nm']} Nc={n['Nc']} Nr={n['Nr']}"
+            kinds[kind] += 1
             if k < 8:
-                print(line)
+                print(f"{(row['witness'] or c.condition.text)[:58]:58} {said}")
         if len(locus.components) > 8:
             print(f"... all {len(locus.components)} agree: " + ", ".join(
                 f"{n} {what}" for what, n in kinds.items() if n))
@@ -811,12 +806,11 @@ NB03 = [
     """),
     md("""
     In the $(a_2, b_2)$ plane the hypersurfaces are lines (the folded-back ones at
-    $\\pm\\pi$, one angle drawn twice) and the deeper components all sit at $(0, 0)$;
-    the $(a_1, b_1)$ plane separates the four depth-2 points:
+    $\\pm\\pi$, one angle drawn twice) and the deeper components all sit at $(0, 0)$
+    (the $(a_1, b_1)$ plane of the report separates the four depth-2 points):
     """),
     code("""
-    display(png(locus2.plot(("a2", "b2"))))
-    display(png(locus2.plot(("a1", "b1"))))
+    png(locus2.plot(("a2", "b2")))
     """),
     md("""
     The system at the witness of the component $a_2 = b_2 = 0$, $a_1 = b_1 = -\\pi/2$:
@@ -829,8 +823,8 @@ NB03 = [
     draw(fingers, at=witness)
     """),
     code("""
-    for item in remark_texts(locus2.unexplored):
-        print("-", item)
+    for item in coopkin_sym.grouped_remark_texts(locus2.unexplored):
+        print("-", item if len(item) < 160 else item[:160] + " ...")
     assert all(any(words in item for words in ("not solved", "not explored",
                                                "not searched"))
                for item in remark_texts(locus2.unexplored))
@@ -846,7 +840,11 @@ NB03 = [
     ## 3. Paper case 2, all eight joints free
 
     Two SCARA-type robots with hard contacts (section 4.2): six revolute and two
-    prismatic joints, all free. One level of recursion:
+    prismatic joints, all free. One level of recursion. With this many components the
+    display says first the *families*: the components grouped by the numbers that
+    change (one kind of singular configuration each, wherever the search met it), in
+    words, each with an example and its witness; the table of components is folded
+    under it.
     """),
     code("""
     case2 = coopkin_sym.load("paper-case2-hard")
@@ -889,6 +887,9 @@ NB03 = [
     assert not any(c.kind == "chart" for c in at_pi)
     assert all(c.changes in [d.changes for d in t_chart3]
                or (c.real_points == "undecided" and not c.real) for c in at_pi)
+    families = locus3.families()
+    assert sorted(k for f in families for k in f.members) == list(range(len(locus3.components)))
+    assert [f.changes for f in families][:2] == [one, two]
     recheck(case2, locus3)
     """),
     md("""
@@ -921,15 +922,18 @@ NB03 = [
     is the same robot in line with another joint turned half a turn (listed with
     $s_q = \\cot(q/2) = 0$ where the $t$ chart's equations involve that joint).
     """),
+    md("""
+    In the plot the components are coloured by family (a legend entry per family):
+    """),
     code("""
     png(locus3.plot(("q1", "q2")))
     """),
     code("""
     unexplored = remark_texts(locus3.unexplored)
     said = coopkin_sym.grouped_remark_texts(locus3.unexplored)
-    print(f"{len(unexplored)} items not explored, said in {len(said)} sentences:")
-    for item in said:
-        print("-", item if len(item) < 400 else item[:400] + " ...")
+    print(f"{len(unexplored)} items not explored, said in {len(said)} sentences, e.g.:")
+    for item in said[:4]:
+        print("-", item if len(item) < 160 else item[:160] + " ...")
     assert len(said) < len(unexplored) // 4
     assert sum("not solved" in u for u in unexplored) >= 3
     assert all(any(words in u for words in ("not solved", "not explored", "not searched"))
@@ -945,84 +949,8 @@ NB03 = [
     reader gets the boundary of what was checked along with the result; `--certify`
     then says whether the whole is proved complete.
 
-    ## 4. What a float rank test says near the locus
-
-    At and near every witness (at 1e-6, 1e-9 and 1e-12 rad on one joint, with the
-    lengths at 1, 1/1000 and 1000) the engine also computes the numbers the usual way,
-    with numpy's `matrix_rank` at its default tolerance, and compares them with the
-    exact ones:
-    """),
-    code("""
-    loci = {"paper case 1": locus1, "two fingers": locus2, "paper case 2": locus3}
-    rows = ["| system | tests | disagree | missed singular | regular called singular |",
-            "|---|---|---|---|---|"]
-    for name, locus in loci.items():
-        checks = [f for c in locus.components for f in c.float_checks]
-        s = locus.float_summary()
-        rows.append(f"| {name} | {len(checks)} | {sum(not f.agree for f in checks)} | "
-                    f"{s['missed_singular']} | {s['false_singular']} |")
-    display(Markdown("\\n".join(rows)))
-    assert locus1.float_summary() == {"missed_singular": 0, "false_singular": 6}
-    assert locus2.float_summary() == {"missed_singular": 22, "false_singular": 2}
-    assert locus3.float_summary() == {"missed_singular": 106, "false_singular": 6}
-    """),
-    code("""
-    rows = ["| system | near | lengths | distance | exact Nm | float Nm |",
-            "|---|---|---|---|---|---|"]
-    for name, locus in loci.items():
-        shown = 0
-        for c in locus.components:
-            for f in c.float_checks:
-                if not f.agree and shown < 4:      # the first four of each system
-                    shown += 1
-                    rows.append(f"| {name} | `{c.condition.text}` | {f.scale} | "
-                                f"{f.distance:.0e} rad | {f.exact['Nm']} | {f.float['Nm']} |")
-    display(Markdown("\\n".join(rows)))
-
-    wrong = as_component = at_point = 0
-    for locus in loci.values():
-        for c in locus.components:
-            for f in c.float_checks:
-                if f.agree:
-                    continue
-                assert f.scale in ("L=1/1000", "L=1000")  # with L = 1 floats agree
-                if f.distance == 0:                                    # float-ok
-                    # on the component itself: the contact points meeting, seen by
-                    # numpy as apart (Ni too low)
-                    assert "Ni" in c.changes and f.float["Ni"] < f.exact["Ni"]
-                    at_point += 1
-                    continue
-                assert f.distance == 1e-12                             # float-ok
-                # exactly: off the component, in its parent (or regular)
-                parent = locus.generic if c.parent is None else \\
-                    locus.components[c.parent].numbers
-                assert f.exact in (parent, locus.generic)
-                wrong += 1
-                as_component += f.float == c.numbers   # numpy: "on the component"
-    assert (at_point, wrong, as_component) == (100, 42, 36)
-    """),
-    md("""
-    Every disagreement comes with the lengths rescaled to 1/1000 or 1000 (with $L = 1$
-    the floats agree), and is of one of two kinds. In 100 tests numpy is *at* an exact
-    point of a family where the two contact points of case 2 meet, and sees them apart:
-    it misses the singularity itself ($N_i$ too low). In the other 42 it is
-    $10^{-12}$ rad off a component (moving a joint of its last equation, so the point
-    stays in the enclosing component, or, once, leaves it too): in 36 of them it gives
-    the numbers of the
-    component it has just left, in the other six numbers that belong to neither. In
-    case 1 it calls regular configurations singular; for the fingers and inside case
-    2's hypersurfaces it gives configurations of a singular family the numbers of a
-    deeper family next to them
-    (counted as missed: a singular configuration given the wrong numbers). With
-    $L = 1$ the same configurations are answered correctly.
-
-    For a float-based tool this means that its locus is a band of unknown width around
-    the true one, and the width depends on the unit of length: the same configuration
-    is singular in millimetres and regular in metres, and nothing in the output says
-    which answer is wrong. A difference of $10^{-12}$ rad is physically negligible, but
-    it shows that such a tool cannot certify any configuration near the locus, in
-    either direction. The exact components above have no tolerance: they are where they
-    are at every scale, and every reported number was re-derived at an exact witness.
+    Notebook 04 (section 4) compares these loci with what floating-point rank tests
+    say at and near every witness.
     """),
 ]
 
@@ -1040,7 +968,8 @@ NB04 = [
     configuration with exact (rational) data the answer is exact, whatever the scale.
 
     In this notebook floats appear only where marked: the float baselines we compare
-    with, the numerical integration of section 3 and the plots.
+    with, the numerical integration of section 3, the float rank tests along the loci
+    of section 4 and the plots.
     """),
     code("""
     import math
@@ -1240,6 +1169,88 @@ NB04 = [
         print("rotation about x:", exc)
     else:
         raise AssertionError("a rotation should break a complete-constraint contact")
+    """),
+    md("""
+    ## 4. Along a whole singularity locus
+
+    At and near every witness (at 1e-6, 1e-9 and 1e-12 rad on one joint, with the
+    lengths at 1, 1/1000 and 1000) the engine also computes the numbers the usual way,
+    with numpy's `matrix_rank` at its default tolerance, and compares them with the
+    exact ones. The loci of notebook 03: paper case 1, the planar two-finger grasp, and
+    paper case 2 with every joint free (one level of recursion):
+    """),
+    code("""
+    loci = {"paper case 1": coopkin_sym.load("paper-case1-hard").locus(),
+            "two fingers": coopkin_sym.load("planar-two-fingers").locus(),
+            "paper case 2": coopkin_sym.load("paper-case2-hard").locus(max_depth=1)}
+    rows = ["| system | tests | disagree | missed singular | regular called singular |",
+            "|---|---|---|---|---|"]
+    for name, locus in loci.items():
+        checks = [f for c in locus.components for f in c.float_checks]
+        s = locus.float_summary()
+        rows.append(f"| {name} | {len(checks)} | {sum(not f.agree for f in checks)} | "
+                    f"{s['missed_singular']} | {s['false_singular']} |")
+    display(Markdown("\\n".join(rows)))
+    print({name: locus.float_summary() for name, locus in loci.items()})
+    """),
+    code("""
+    rows = ["| system | near | lengths | distance | exact Nm | float Nm |",
+            "|---|---|---|---|---|---|"]
+    for name, locus in loci.items():
+        shown = 0
+        for c in locus.components:
+            for f in c.float_checks:
+                if not f.agree and not shown:      # the first of each system
+                    shown += 1
+                    rows.append(f"| {name} | `{c.condition.text}` | {f.scale} | "
+                                f"{f.distance:.0e} rad | {f.exact['Nm']} | {f.float['Nm']} |")
+    display(Markdown("\\n".join(rows)))
+
+    wrong = as_component = at_point = 0
+    for locus in loci.values():
+        for c in locus.components:
+            for f in c.float_checks:
+                if f.agree:
+                    continue
+                assert f.scale in ("L=1/1000", "L=1000")  # with L = 1 floats agree
+                if f.distance == 0:                                    # float-ok
+                    # on the component itself: the contact points meeting, seen by
+                    # numpy as apart (Ni too low)
+                    assert "Ni" in c.changes and f.float["Ni"] < f.exact["Ni"]
+                    at_point += 1
+                    continue
+                assert f.distance == 1e-12                             # float-ok
+                # exactly: off the component, in its parent (or regular)
+                parent = locus.generic if c.parent is None else \\
+                    locus.components[c.parent].numbers
+                assert f.exact in (parent, locus.generic)
+                wrong += 1
+                as_component += f.float == c.numbers   # numpy: "on the component"
+    print((at_point, wrong, as_component))
+    """),
+    md("""
+    Every disagreement comes with the lengths rescaled to 1/1000 or 1000 (with $L = 1$
+    the floats agree), and is of one of two kinds. In 100 tests numpy is *at* an exact
+    point of a family where the two contact points of case 2 meet, and sees them apart:
+    it misses the singularity itself ($N_i$ too low). In the other 34 it is
+    $10^{-12}$ rad off a component (moving a joint of its last equation, so the point
+    stays in the enclosing component, or leaves it too): in 31 of them it gives the
+    numbers of the component it has just left, in the other three numbers that belong
+    to neither. In
+    case 1 it calls regular configurations singular; for the fingers and inside case
+    2's hypersurfaces it gives configurations of a singular family the numbers of a
+    deeper family next to them
+    (counted as missed: a singular configuration given the wrong numbers). With
+    $L = 1$ the same configurations are answered correctly.
+
+    For a float-based tool this means that its locus is a band of unknown width around
+    the true one, and the width depends on the unit of length: the same configuration
+    is singular in millimetres and regular in metres, and nothing in the output says
+    which answer is wrong. A difference of $10^{-12}$ rad is physically negligible, but
+    it shows that such a tool cannot certify any configuration near the locus, in
+    either direction. The exact components of the loci have no tolerance: they are where
+    they are at every scale, and every reported number was re-derived at an exact
+    witness.
     """),
 ]
 
@@ -1748,14 +1759,15 @@ NB06 = [
 
     Two bars pinned end to end on the line of their pivots can start to move: the pin
     moves across the line, one first-order motion. But no finite motion follows. Where
-    the expansion proves nothing (a rank drop whose reduced equations vanish to every
-    order computed), the result says *undecided* and gives the bounds it proves.
+    nothing is proved (three parallel cranks lying on the ground line: two reduced
+    equations whose lowest terms share a real direction), the result says *undecided*
+    and gives the bounds it proves.
     """),
     code("""
     shaky = load("shaky-pinned-bars").finite_mobility("q1=0,q2=0")
     print(shaky.dimension, shaky.first_order, shaky.classification, shaky.equations)
     assert (shaky.dimension, shaky.first_order, shaky.classification) == (0, 1, "shaky")
-    open_question = load("paper-case1-complete-hard").finite_mobility("q1=0,q2=pi/2")
+    open_question = load("parallel-cranks").finite_mobility("q1=pi/2,q2=pi/2,q3=pi/2")
     print(open_question.dimension, open_question.bounds, open_question.reason)
     assert open_question.dimension is None and open_question.bounds == (0, 1)
     """),
@@ -1778,28 +1790,51 @@ NB06 = [
     assert kinds == ["bifurcation", "bifurcation", "shaky", "shaky"], kinds
     """),
     md("""
-    ## Overconstrained loops: Bennett and Bricard
+    ## Overconstrained loops: Bennett, Bricard, parallel cranks
 
     Grübler-Kutzbach counts `6 (links - 1) - 5 joints` motions for a loop of revolute
     joints: -2 for four joints in space, 0 for six. Bennett's linkage (four joints) and
     Bricard's line-symmetric linkage (six) move all the same, once: their special
     geometry makes some closure conditions follow from the others at every nearby
-    configuration. The expansion cannot see it (every first-order motion extends to
-    every order computed), so with welded contacts only the loop closure is written as
-    polynomials (dual quaternions, one variable per joint), and exact Gröbner
-    saturations prove that the dependent conditions vanish on the smooth set the
-    independent ones cut out: the reason `closure_saturation`.
+    configuration. So do three parallel cranks pinned to a coupler in the plane
+    (`3 (5 - 1) - 2 * 6 = 0`). The expansion cannot see it (every first-order motion
+    extends to every order computed), so the loop closure is written as polynomials
+    (dual quaternions, one variable per joint; contact points compared for pins), and
+    the dependent conditions are proved to vanish on the smooth curve the independent
+    ones cut out: along it to an order above Bezout's bound, the product of the
+    degrees (the reason `closure_bezout`), or by exact Gröbner saturations
+    (`closure_saturation`). It also runs over a number field: Bennett's linkage at a
+    point of its motion where `q1 = pi/6`.
     """),
     code("""
-    for name, joints in (("bennett-linkage", 4), ("bricard-linkage", 6)):
-        system = load(name)
-        fm = system.finite_mobility()
-        q = system.analyze().Q
-        (tangent,) = fm.branches[0].tangent
-        print(f"{name}: Gruebler {6 * (joints - 1) - 5 * joints}, first-order "
-              f"{fm.first_order}, finite {fm.dimension} ({fm.reason})")
-        assert (fm.dimension, fm.reason) == (1, "closure_saturation")
-        assert q * sp.Matrix(tangent) == sp.zeros(q.rows, 1)
+    bennett_curve = "2*atan((65*sqrt(3)-70)/311)"
+    loops = [("bennett-linkage", None, -2), ("bricard-linkage", None, 0),
+             ("parallel-cranks", None, 0),
+             ("bennett-linkage", f"q1=pi/6,q2={bennett_curve},q3=pi/6,q4={bennett_curve}",
+              -2)]
+    for name, at, count in loops:
+        fm = load(name).finite_mobility(at)
+        field = "" if fm.field is None else f" over Q({fm.field['alpha']})"
+        print(f"{name}{' at q1=pi/6' if at else ''}: Gruebler {count}, first-order "
+              f"{fm.first_order}, finite {fm.dimension} ({fm.reason}){field}")
+        assert (fm.dimension, fm.reason) == (1, "closure_bezout")
+    """),
+    md("""
+    ## Three branches along the roots of a cubic
+
+    `seven-r-loop` is a loop of seven revolute joints whose axes are all horizontal at
+    home: two first-order motions instead of one, a second-order closure term that
+    vanishes, and a third-order one that is an irreducible cubic with three real roots.
+    Three branches cross; each tangent is exact, with its root `s` given by its minimal
+    polynomial and an isolating interval with rational ends.
+    """),
+    code("""
+    fm = load("seven-r-loop").finite_mobility()
+    print(fm.classification, len(fm.branches), "branches")
+    for branch in fm.branches:
+        d = branch.direction
+        print(f"  s in ({d.interval[0]}, {d.interval[1]}], root of {d.polynomial}")
+    assert len({b.direction.polynomial for b in fm.branches}) == 1
     """),
 ]
 

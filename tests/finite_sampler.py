@@ -118,17 +118,50 @@ class Sampler:
         return mp.matrix([[cols[k][i] for k in range(self.n)] for i in range(len(f0))])
 
     def project(self, x, steps: int = 40):
-        """Gauss-Newton (least norm steps) from ``x`` onto the closure."""
+        """Gauss-Newton from ``x`` onto the closure; ``None`` when it does not get
+        there. Plain least-norm steps first; where they fail (``J J^T`` numerically
+        singular, or no convergence within ``steps``), again with the truncated steps of
+        :meth:`_truncated_step`, each at most ``RADIUS`` long."""
+        return self._newton(x, steps, robust=False) or self._newton(x, steps, robust=True)
+
+    def _newton(self, x, steps, robust):
         x = list(x)
         for _ in range(steps):
             f = mp.matrix(self.closure(x))
             if mp.norm(f) < mp.mpf(10) ** -40:
                 return x
             j = self.jacobian(x)
-            step = mp.lu_solve(j * j.T + mp.eye(j.rows) * mp.mpf(10) ** -45, f)
-            dx = j.T * step
+            if robust:
+                dx = self._truncated_step(j, f)
+                length = mp.sqrt(sum(v * v for v in dx))
+                if length > RADIUS:  # a trust region: no jump along a nearly free direction
+                    dx = [v * RADIUS / length for v in dx]
+            else:
+                try:
+                    step = mp.lu_solve(j * j.T + mp.eye(j.rows) * mp.mpf(10) ** -45, f)
+                except ZeroDivisionError:  # numerically singular
+                    return None
+                dx = j.T * step
             x = [x[k] - dx[k] for k in range(self.n)]
         return x if mp.norm(mp.matrix(self.closure(x))) < mp.mpf(10) ** -30 else None
+
+    @staticmethod
+    def _truncated_step(j, f):
+        """The least-norm solution of ``J dx = f`` by the singular value decomposition,
+        singular values below ``10^-6`` of the largest dropped: a direction along
+        which the closure is nearly free (a tangent of the closure, slightly off it)
+        is not a direction to correct along, and a row of zeros (a folded
+        configuration) leaves no normal equations to solve."""
+        u, s, v = mp.svd_r(j)
+        top = max((abs(x) for x in s), default=0)
+        dx = [mp.mpf(0)] * j.cols
+        for k in range(len(s)):
+            if top == 0 or abs(s[k]) <= top * mp.mpf(10) ** -6:
+                continue
+            coefficient = sum(u[i, k] * f[i] for i in range(j.rows)) / s[k]
+            for c in range(j.cols):
+                dx[c] += coefficient * v[k, c]
+        return dx
 
     def points(self, samples: int = 12, radius=RADIUS, seed: int = 1):
         rng = random.Random(seed)

@@ -47,9 +47,10 @@ def _within(seconds: float, bound: float = BOUND) -> bool:
     return seconds < bound * 1.1 + START_UP
 
 
-def _slow_resultant():
+def _slow_resultant(step: str | None = "a resultant"):
     """A resultant of two dense random trivariate polynomials of degree 12: one flint
-    call of about 16 s that holds the interpreter (no check, no signal gets in)."""
+    call of about 16 s that holds the interpreter (no check, no signal gets in); it
+    reports ``step`` first (None: nothing)."""
     rng = random.Random(1)
     ctx = flint.fmpz_mpoly_ctx.get(("x", "y", "z"), "degrevlex")
     x, y, z = ctx.gens()
@@ -58,7 +59,8 @@ def _slow_resultant():
         return sum(rng.randint(-9, 9) * x**i * y**j * z**k for i in range(d + 1)
                    for j in range(d + 1 - i) for k in range(d + 1 - i - j))
     f, g = dense(12), dense(12)
-    report("a resultant")
+    if step is not None:
+        report(step)
     return f.resultant(g, "x")
 
 
@@ -164,8 +166,9 @@ def test_the_check_of_processes_sees_a_running_one():
       "table.csv", "--workers", "2"], "nothing written"),
     (["verify", "paper-case1-hard", "case1.json", "--lines", "5000"], "no verdict"),
     (["locus", "contacts.json", "-o", "report.md"], "nothing written"),
+    (["draw", "arms.json", "-o", "arms.png"], "nothing written"),
 ], ids=["analyze-200-arms", "analyze-2000-contacts", "manipulability", "sweep", "verify",
-        "locus"])
+        "locus", "draw-200-arms"])
 def test_each_command_stops_at_its_bound_with_one_line(models, args, outcome):
     before = set(models.iterdir())
     status, out, err, took = _run([*args, "--timeout", str(BOUND)], models)
@@ -205,6 +208,20 @@ def test_a_locus_ended_inside_a_flint_call_writes_nothing(tmp_path, monkeypatch)
     assert result.exit_code == TIME_BOUND_EXIT
     assert result.stderr == ("coopkin: error: time bound of 2 s reached during a "
                              "resultant; nothing written\n")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_locus_ended_inside_its_generic_numbers_names_that_step(tmp_path, monkeypatch):
+    """Ended at the bound inside a step that cannot be interrupted while the generic
+    numbers are computed, the command names that step (not the loading of the model)."""
+    import coopkin_sym.analysis.locus.search as search
+
+    monkeypatch.setattr(search, "decompose", lambda *a, **k: _slow_resultant(None))
+    result = CliRunner().invoke(app, ["locus", "paper-case1-hard", "-o",
+                                      str(tmp_path / "r.md"), "--timeout", "2"])
+    assert result.exit_code == TIME_BOUND_EXIT
+    assert result.stderr == ("coopkin: error: time bound of 2 s reached during the ranks "
+                             "and the decomposition of the nullspace; nothing written\n")
     assert list(tmp_path.iterdir()) == []
 
 
@@ -254,6 +271,25 @@ def test_a_locus_ended_inside_a_flint_call_writes_what_it_had_kept(tmp_path, mon
     assert [c["equations"] for c in data["components"]] == [["t_q1 - 1", "t_q2 - 1"]]
     assert data["unexplored"][-1].startswith("time bound of 2.5 s reached during a "
                                              "resultant")
+
+
+def test_a_locus_ended_inside_a_flint_call_right_after_its_generic_numbers_writes(
+        tmp_path, monkeypatch):
+    """Once the generic numbers are known a cut locus writes its report, even when the
+    search runs into a step that cannot be interrupted within the first second (before
+    any step of the search could send a copy)."""
+    import coopkin_sym.analysis.locus.search as search
+
+    monkeypatch.setattr(search, "explore", lambda *a, **k: _slow_resultant())
+    result = CliRunner().invoke(app, ["locus", "paper-case1-hard", "-o",
+                                      str(tmp_path / "r.json"), "--timeout", "2"])
+    assert result.exit_code == TIME_BOUND_EXIT
+    assert result.stderr.splitlines()[-1] == (
+        "coopkin: error: time bound of 2 s reached during a resultant; the report says "
+        f"what was not explored; wrote {tmp_path / 'r.json'}")
+    data = json.loads((tmp_path / "r.json").read_text())
+    assert (data["generic"]["Nm"], data["components"]) == (2, [])
+    assert data["unexplored"][-1].startswith("time bound of 2 s reached during a resultant")
 
 
 def test_progress_is_shown_on_a_terminal_after_a_second(models):

@@ -18,8 +18,9 @@ EXAMPLES = ["allegro-hand-sphere", "bennett-linkage", "bricard-linkage",
             "five-bar", "four-bar", "panda-two-arm-box", "paper-case1-complete-hard",
             "paper-case1-hard", "paper-case1-planar",
             "paper-case1-soft", "paper-case1-soft-hard", "paper-case2-complete",
-            "paper-case2-hard", "planar-two-fingers", "quadruped-standing",
-            "shaky-pinned-bars", "underactuated-finger", "urdf-two-fingers"]
+            "paper-case2-hard", "parallel-cranks", "planar-two-fingers",
+            "quadruped-standing", "seven-r-loop", "shaky-pinned-bars",
+            "underactuated-finger", "urdf-two-fingers"]
 
 
 def run_ok(*args: str) -> str:

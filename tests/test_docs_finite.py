@@ -39,7 +39,7 @@ def _rows() -> list[list[str]]:
 
 
 def test_the_table_of_examples_is_what_the_package_computes():
-    assert len(_rows()) == 9
+    assert len(_rows()) == 12
     for name, where, first, finite, kind in _rows():
         name = name.strip("`").split("`")[0]
         at = None if where == "home" else where.strip("`").split("`")[0]
@@ -54,15 +54,3 @@ def test_the_table_of_examples_is_what_the_package_computes():
         if "branches" in kind:
             assert kind.endswith(f"{len(fm.branches)} branches")
 
-
-def test_the_readme_shows_what_the_finite_command_prints():
-    """The README's ``--finite`` example: its command runs and prints the lines shown."""
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
-    block = readme.split("## Finite motions at singular configurations")[1]
-    block = block.split("```console\n")[1].split("```")[0].splitlines()
-    command, shown = block[0], block[1:]
-    assert command.startswith("$ coopkin analyze") and "--finite" in command
-    result = CliRunner().invoke(app, shlex.split(command)[2:])
-    assert result.exit_code == 0, result.output
-    printed = result.stdout.splitlines()
-    assert all(line in printed for line in shown), (shown, printed[-6:])

@@ -25,8 +25,9 @@ Example
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import sympy as sp
@@ -34,6 +35,7 @@ import sympy as sp
 from coopkin_sym.analysis.renderers import Displayable, clip
 from coopkin_sym.errors import ArgumentTypeError, ConfigurationError
 from coopkin_sym.exact.angles import ExactAngle, tangent_name
+from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.parse import brief
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.exact.rationals import to_sympy
@@ -68,7 +70,8 @@ class FactoredMotions(Displayable):
     ----------
     twists
         The object twists of the coordinated motions (columns): ``C12`` before its
-        columns are scaled to clear the joint part's denominators.
+        columns are scaled to clear the joint part's denominators (written out when
+        first asked for).
     arms
         One :class:`ArmMap` per arm with joints.
     factors
@@ -92,12 +95,24 @@ class FactoredMotions(Displayable):
 a2 (1 joints); 3 named factors>
     """
 
-    twists: sp.Matrix
     arms: tuple[ArmMap, ...]
     factors: tuple[tuple[str, sp.Expr], ...]
     symbols: tuple[sp.Symbol, ...]
     twist_names: tuple[str, ...]
     model: Any = field(default=None, repr=False, compare=False)
+    #: The number of coordinated motions (the columns of :attr:`twists`).
+    motions: int = 0
+    #: Writes :attr:`twists` out when they are first asked for (the maps alone, as
+    #: ``coopkin analyze`` shows them, do not need them; they can be large).
+    write_twists: Callable[[], sp.Matrix] | None = field(default=None, repr=False,
+                                                           compare=False)
+
+    @cached_property
+    def twists(self) -> sp.Matrix:
+        """The object twists of the coordinated motions (columns)."""
+        if self.write_twists is None:
+            raise ArgumentTypeError("these factored motions carry no twists")
+        return self.write_twists()
 
     def factor_symbols(self) -> dict[str, sp.Symbol]:
         """The factor names as SymPy symbols."""
@@ -118,7 +133,7 @@ a2 (1 joints); 3 named factors>
                     den = sp.Mul(*[values[i] ** e for i, e in powers])
                     cells.append(num / den if powers else num)
                 rows.append(cells)
-            out[arm.name] = sp.Matrix(rows) if rows else sp.zeros(0, self.twists.rows)
+            out[arm.name] = sp.Matrix(rows) if rows else sp.zeros(0, len(self.twist_names))
         return out
 
     def latex(self) -> str:
@@ -146,7 +161,7 @@ a2 (1 joints); 3 named factors>
     def __repr__(self) -> str:
         arms = ", ".join(f"{arm.name} ({len(arm.joints)} joints)" for arm in self.arms)
         name = clip(getattr(self.model, "name", "") or "a system", 100)
-        return (f"<FactoredMotions {name}: {self.twists.cols} coordinated motions; "
+        return (f"<FactoredMotions {name}: {self.motions} coordinated motions; "
                 f"arms {arms or 'none'}; {len(self.factors)} named factors>")
 
     def joint_motions(self) -> sp.Matrix:
@@ -256,7 +271,7 @@ def factored_motions(analysis: Any) -> FactoredMotions:
     def entry(value: RatFunc):
         if value.num.is_zero():
             return sp.Integer(0), ()
-        content, parts = value.den.factor()
+        content, parts = factor(value.den)
         powers = []
         for f, e in parts:
             key = str(f)
@@ -276,7 +291,6 @@ def factored_motions(analysis: Any) -> FactoredMotions:
         rows = tuple(tuple(entry(columns[k][j]) for k in range(dim))
                      for j in range(len(arm.joints)))
         arms.append(ArmMap(arm.name, tuple(j.name for j in arm.joints), rows))
-    twists = analysis._cols(analysis._coord_u, dim)
-    return FactoredMotions(twists, tuple(arms), tuple(factors),
-                           tuple(syms[n] for n in ring.names), tuple(analysis.model.twist_names),
-                           analysis.model)
+    return FactoredMotions(tuple(arms), tuple(factors), tuple(syms[n] for n in ring.names),
+                           tuple(analysis.model.twist_names), analysis.model,
+                           len(analysis._coord_u), lambda: analysis._twists)

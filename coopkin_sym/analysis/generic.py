@@ -49,17 +49,21 @@ from coopkin_sym.exact.matrix import (
     POLYNOMIALS,
     RATIONALS,
     ArmBlock,
+    PrimeField,
     eliminate_arm,
     rank,
     rank_triple,
 )
 from coopkin_sym.exact.ring import ClearedRows
+from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
 
 #: Random coordinates are drawn from the integers in ``[-2**SAMPLE_BITS, 2**SAMPLE_BITS]``.
 SAMPLE_BITS = 62
 #: Independent random points (each one multiplies the error exponent).
 POINTS = 2
+#: The prime of :func:`chain_numbers` (``2**61 - 1``).
+CHAIN_PRIME = 2**61 - 1
 #: Wall-clock seconds spent on the exact eliminations before the result is given as
 #: probabilistic (the numbers themselves never wait on it longer).
 CERTIFY_SECONDS = 2.0
@@ -70,9 +74,10 @@ class RankBound:
     """One rank behind the numbers and how its value is known.
 
     ``how`` is ``"size"`` (it equals a bound from the matrix sizes or other certified
-    ranks), ``"elimination"`` (computed over
-    the field of rational functions), ``"point"`` (no variable: the exact rank) or
-    ``"sampled"`` (a lower bound at random points, not certified).
+    ranks), ``"contacts"`` (``rank H G^T`` equal to its rank with every contact point
+    and normal an independent variable, :func:`grasp_rank_bound`), ``"elimination"``
+    (computed over the field of rational functions), ``"point"`` (no variable: the
+    exact rank) or ``"sampled"`` (a lower bound at random points, not certified).
 
     Example
     -------
@@ -315,6 +320,7 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
         return (numbers_from_ranks(m, r, best.q, best.gt, rd, dim=dim),
                 NumbersCertificate.from_ranks(ranks, 0))
     certify = _Certify(q_rows, best, arms, m, dim + r, dim, zctx)
+    _contacts_bound(model, best, certify)
     if not certify.settled():
         bound = nullcontext() if certify_seconds is None else time_limit(certify_seconds)
         try:
@@ -335,3 +341,110 @@ def generic_numbers(q_rows, model: Model, row_contacts: Sequence[int], zctx, *,
     bits = _error_bits(q_rows, checks, count)
     numbers = numbers_from_ranks(m, r, best.q, best.gt, sum(best.arms), dim=dim)
     return numbers, NumbersCertificate.from_ranks(ranks, count, bits)
+
+
+def chain_numbers(model: Model, config: Configuration, *, points: int = POINTS,
+                  seed: int | None = None) -> tuple[Numbers, NumbersCertificate] | None:
+    """The numbers over the fraction field of the symbolic joints and parameters of
+    ``config`` when the sizes certify every rank, found without building ``Q``
+    symbolically; ``None`` otherwise (:func:`generic_numbers` then ranks the symbolic
+    ``Q``).
+
+    ``Q`` is evaluated at ``points`` random points modulo the prime
+    :data:`CHAIN_PRIME` from the product of exponentials
+    (:mod:`coopkin_sym.analysis.sweep.chains`: cost linear in the joints, nothing
+    expanded). A rank modulo p at a point is at most the rank over the field (a minor
+    that is nonzero there is a nonzero rational function), so these ranks are lower
+    bounds, certain whatever the points drawn; where they reach the bounds the sizes
+    give (as in :func:`generic_numbers`), every rank is certified (``"size"``).
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> model = load_model("panda-two-arm-box")
+    >>> numbers, cert = chain_numbers(model, Configuration.parse(model, None, "all"),
+    ...                               seed=1)
+    >>> numbers.as_dict()["Nm"], cert.exact, {r.how for r in cert.ranks}
+    (8, True, {'size'})
+    """
+    from coopkin_sym.analysis.sweep import chains
+
+    base = model.in_base_frame()
+    swept = tuple(j.name for j in base.joints if j.name in config.free)
+    data = chains.chain_data(base, config, swept)
+    chain = chains.ChainQ(data)
+    m, dim, r = data["m"], base.object_dim, len(base.joints)
+    arms = _arm_blocks(base, chains.row_contacts(base), dim)
+    rng = random.Random(seed) if seed is not None else random.SystemRandom()
+    best = _Sampled(-1, -1, [-1] * len(arms))
+    for _ in range(points):
+        check("the ranks at random points")
+        field = chains.ModularField(CHAIN_PRIME, [rng.randrange(2, CHAIN_PRIME)
+                                                  for _ in data["params"]])
+        try:
+            rows = chain.rows(field, [(rng.randrange(CHAIN_PRIME), 1) for _ in swept])
+        except chains.Unlucky:      # a denominator vanishes modulo the prime there
+            continue
+        ranks = rank_triple(rows, dim + r, dim, PrimeField(CHAIN_PRIME), arms)
+        best.q, best.gt = max(best.q, ranks.q), max(best.gt, ranks.gt)
+        best.arms = [max(b, ra) for b, ra in zip(best.arms, ranks.arms, strict=True)]
+    certify = _Certify(None, best, arms, m, dim + r, dim, None)
+    if None not in best.arm_how:
+        _contacts_bound(base, best, certify)
+    if not certify.settled():
+        return None
+    ranks = [RankBound("Q", best.q, "size"), RankBound("Gt", best.gt, best.gt_how)]
+    ranks += [RankBound(f"Dt[{arm.name}]", ra, "size")
+              for arm, ra in zip(base.arms, best.arms, strict=True)]
+    numbers = numbers_from_ranks(m, r, best.q, best.gt, sum(best.arms), dim=dim)
+    return numbers, NumbersCertificate.from_ranks(ranks, points)
+
+
+def grasp_rank_bound(model: Model) -> int:
+    """The rank of ``H G^T`` with every contact point and normal an independent
+    indeterminate: an upper bound of its generic rank (putting the points and normals
+    of the kinematics in their place is a ring homomorphism, which keeps or lowers a
+    rank). Two hard contacts, for one, give 5: the object can always turn about the
+    line through them.
+
+    Example
+    -------
+    >>> from coopkin_sym.model import load_model
+    >>> grasp_rank_bound(load_model("paper-case1-hard"))
+    5
+    """
+    import flint
+
+    from coopkin_sym.analysis import kinematics
+    from coopkin_sym.model.contacts import contact_kind
+
+    names = tuple(f"x{i}_{a}" for i in range(len(model.contacts)) for a in range(6))
+    ctx = flint.fmpz_mpoly_ctx.get(names, "degrevlex")
+    gens, zero, one = ctx.gens(), ctx.constant(0), ctx.constant(1)
+    lin_rows, ang_rows = [], []
+    for i, c in enumerate(model.contacts):
+        (x, y, z), n = gens[6 * i:6 * i + 3], gens[6 * i + 3:6 * i + 6]
+        lin = [[one, zero, zero, zero, z, -y], [zero, one, zero, -z, zero, x],
+               [zero, zero, one, y, -x, zero]]
+        ang = [[zero] * 3 + [one if a == b else zero for b in range(3)] for a in range(3)]
+        if model.planar:
+            lin = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in lin[:2]]
+            ang = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in ang[2:]]
+
+        def along(rows, n=n):
+            return [sum((a * b for a, b in zip(n[:len(rows)], col, strict=True)), zero)
+                    for col in zip(*rows, strict=True)]
+        comps = contact_kind(c.model).components(model.planar)  # type: ignore[union-attr]
+        axes = "z" if model.planar else "xyz"
+        picked = kinematics.pick_rows(comps, dict(zip("xyz"[:len(lin)], lin, strict=True)),
+                                      dict(zip(axes, ang, strict=True)), along)
+        lin_rows += picked[0]
+        ang_rows += picked[1]
+    return rank(lin_rows + ang_rows, model.object_dim, POLYNOMIALS, ctx)
+
+
+def _contacts_bound(model: Model, best: _Sampled, certify: _Certify) -> None:
+    """Certify ``rank H G^T`` by :func:`grasp_rank_bound` where the sizes leave it open
+    and the points reach it (``"contacts"``)."""
+    if best.gt_how is None and best.gt >= 0 and best.gt == grasp_rank_bound(model):
+        best.gt_how = "contacts"

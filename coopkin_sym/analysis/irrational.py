@@ -265,9 +265,12 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
         # every key a symbol: replacing them is substituting them, without subs's search
         return sp.radsimp(sp.expand(exact_expr(e, None, "value").xreplace(values)))
 
+    def written(v) -> list[sp.Expr]:
+        return [sp.Integer(0) if e.is_zero() else
+                exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]
+
     def vectors(block, ncols):
-        return [[exact(poly_to_sympy(e, kin.ring, kin.symbols)) for e in v]
-                for v in PolyMatrix(block, ncols, quotient).nullspace()]
+        return [written(v) for v in PolyMatrix(block, ncols, quotient).nullspace()]
 
     twists: list[list[sp.Expr]] = []
     contacts: list[tuple[str, list[sp.Expr]]] = []
@@ -277,9 +280,32 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
                     for c, point in zip(model.contacts, kin.points, strict=True)]
         twists = vectors([r[:model.object_dim] for r in rows], model.object_dim)
     if "Nr" in keys and numbers.Nr:
-        joint_motions = vectors([r[model.object_dim:] for r in rows], len(model.joints))
+        joint_motions = [written(v) for v in _joint_nullspace(model, rows, kin.row_contacts,
+                                                              quotient)]
     return PointMotions(object_twists=twists, joint_motions=joint_motions,
                         contact_points=contacts, object_frame=model.object_frame)
+
+
+def _joint_nullspace(model: Model, rows, row_contacts, quotient: Quotient) -> list[list]:
+    """A basis of ``N(Dt)``, the nullspace of the joint columns of ``rows``, arm by arm:
+    ``Dt`` is block diagonal (an arm's rows are zero in the other arms' joints), so the
+    reduced-echelon basis of the whole is that of each arm's block, each vector zero
+    outside its arm (the same vectors, in the same order)."""
+    zero, one = quotient.zctx.constant(0), quotient.zctx.constant(1)
+    dim, r = model.object_dim, len(model.joints)
+    out: list[list] = []
+    for a, arm in enumerate(model.arms):
+        start = model.joint_offset(a)
+        width = len(arm.joints)
+        if not width:
+            continue
+        block = [row[dim + start:dim + start + width]
+                 for row, c in zip(rows, row_contacts, strict=True)
+                 if model.contacts[c].arm == a]
+        found = (PolyMatrix(block, width, quotient).nullspace() if block else
+                 [[one if i == k else zero for i in range(width)] for k in range(width)])
+        out += [[zero] * start + list(v) + [zero] * (r - start - width) for v in found]
+    return out
 
 
 __all__ = ["IrrationalAnalysis", "NotIrrational", "PointMotions", "analyze_irrational",

@@ -44,7 +44,12 @@ from coopkin_sym.analysis.classes import grasp_classes
 from coopkin_sym.analysis.decomposition import Decomposition, _ArmMap, decompose
 from coopkin_sym.analysis.decomposition import numbers_modulo as numbers_modulo
 from coopkin_sym.analysis.factored import FactoredMotions, factored_motions
-from coopkin_sym.analysis.generic import NumbersCertificate, RankBound, generic_numbers
+from coopkin_sym.analysis.generic import (
+    NumbersCertificate,
+    RankBound,
+    chain_numbers,
+    generic_numbers,
+)
 from coopkin_sym.analysis.manipulability import MAX_TERMS as MANIPULABILITY_TERMS
 from coopkin_sym.analysis.manipulability import manipulability
 from coopkin_sym.analysis.numbers import (
@@ -183,6 +188,10 @@ class Analysis(Displayable):
                            in zip(("Q", "Gt", "Dt"), ranks, strict=True)]
             return (numbers_from_ranks(m, self.r, *ranks, dim=self.dim),
                     NumbersCertificate.from_ranks(ranks_known, 0))
+        if self.configuration.free:      # the sizes may certify ranks at points mod p
+            sampled = chain_numbers(self.model, self.configuration)
+            if sampled is not None:
+                return sampled
         kin = self.kinematics
         return generic_numbers(self._cleared, self.model, kin.row_contacts, kin.ring.zctx)
 
@@ -372,8 +381,12 @@ class Analysis(Displayable):
 
     @property
     def variables(self) -> tuple[sp.Symbol, ...]:
-        """The symbols left in the results (free joint variables, free parameters)."""
-        return tuple(self.kinematics.symbols[n] for n in self.ring.names)
+        """The symbols left in the results (free joint variables, free parameters);
+        known without building the kinematics."""
+        if "kinematics" in self.__dict__:
+            return tuple(self.kinematics.symbols[n] for n in self.ring.names)
+        ring, symbols = kinematics.ring_for(self.model, self.configuration)
+        return tuple(symbols[n] for n in ring.names)
 
     def _sym(self, rows, shape=None) -> sp.Matrix:
         return matrix_to_sympy(rows, self.ring, self.kinematics.symbols, shape)
@@ -411,7 +424,24 @@ class Analysis(Displayable):
     @cached_property
     def C11(self) -> sp.Matrix:
         """Basis of ``N(Gt^T)``: object motions with every joint locked (6 x Ni)."""
+        self._fits("C11", self._c11, "indeterminate object motions")
         return self._cols(self._c11, self.dim)
+
+    def _fits(self, name: str, vectors, what: str) -> None:
+        """Refuse a block whose largest entry (known before it is written out) has more
+        terms than the budget, with the size it would have had."""
+        size = max((len(x) for v in vectors for x in v), default=0)
+        if self.term_budget is not None and size > self.term_budget:
+            raise BlockTooLarge(
+                f"{name}: the {what} would have entries of {size:,} terms, over the "
+                f"budget of {self.term_budget:,}; keep fewer joints symbolic (free=[...] "
+                "/ --free) or set analysis.term_budget = None")
+
+    @cached_property
+    def _twists(self) -> sp.Matrix:
+        """The coordinated object twists (``C12`` before its columns are scaled to clear
+        the joint part's denominators), written out once."""
+        return self._cols(self._coord_u, self.dim)
 
     @property
     def coordinated_form(self) -> str:
@@ -446,7 +476,8 @@ class Analysis(Displayable):
         except BlockTooLarge:
             coordinated = None
         if coordinated is None:
-            return self._cols(self._coord_u, self.dim)
+            self._fits("C12", self._coord_u, "coordinated object motions")
+            return self._twists
         return self._cols([v[:self.dim] for v in coordinated], self.dim)
 
     @cached_property
@@ -471,6 +502,7 @@ class Analysis(Displayable):
     @cached_property
     def C23(self) -> sp.Matrix:
         """Basis of ``N(Dt)``: joint motions with the object fixed (r x Nr)."""
+        self._fits("C23", self._c23, "redundant joint motions")
         return self._cols(self._c23, self.r)
 
     def twist_in_base(self, u: Sequence) -> list[sp.Expr]:

@@ -80,6 +80,7 @@ from coopkin_sym.exact.binaries import (
     polynomial_text,
     singular_path,
 )
+from coopkin_sym.exact.factoring import factor
 
 PolyDict = dict[tuple[int, ...], int]
 
@@ -513,7 +514,7 @@ def _strip_hypersurfaces(gens, comps):
     hyper = set()
     for c in comps:
         if len(c) == 1 and not c[0].is_constant():
-            for f, _e in c[0].factor()[1]:
+            for f, _e in factor(c[0])[1]:
                 hyper.add(str(_normal(f)))
     if not hyper:
         return gens, comps
@@ -522,7 +523,7 @@ def _strip_hypersurfaces(gens, comps):
         if g.is_zero():
             continue
         kept = g.context().constant(1)
-        for f, _e in g.factor()[1]:
+        for f, _e in factor(g)[1]:
             f = _normal(f)
             if str(f) not in hyper:
                 kept = kept * f

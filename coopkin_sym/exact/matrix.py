@@ -554,13 +554,71 @@ def rank_triple(rows, ncols: int, dim: int, domain: object = POLYNOMIALS,
 
 
 def _direct_triple(rows, ncols: int, dim: int, domain, arms, context) -> Ranks:
-    q = rank(rows, ncols, domain, context)
     gt = rank([r[:dim] for r in rows], dim, domain, context)
     if arms is None:
+        q = rank(rows, ncols, domain, context)
         return Ranks(q, gt, rank([r[dim:] for r in rows], ncols - dim, domain, context))
+    if isinstance(domain, Rationals | PrimeField):
+        blocks, q = _field_arm_ranks(rows, dim, arms, domain)
+        return Ranks(q, gt, sum(blocks), blocks)
+    q = rank(rows, ncols, domain, context)
     blocks = tuple(rank([rows[i][c0:c1] for i in block], c1 - c0, domain, context)
                    for block, c0, c1 in arms)
     return Ranks(q, gt, sum(blocks), blocks)
+
+
+def _field_arm_ranks(rows, dim: int, arms: Sequence[ArmBlock], domain
+                     ) -> tuple[tuple[int, ...], int]:
+    """The rank of each arm block of ``H D`` and ``rank Q``, arm by arm, over ``Q``
+    (:data:`RATIONALS`) or a :class:`PrimeField`.
+
+    Each arm's rows (zero in every other arm's joint columns), its joint columns first,
+    are brought to reduced echelon form on their own (flint: fraction-free over the
+    integers, or modulo ``p``): the pivots in the joint columns are the block's rank,
+    the rows left have a zero joint part, and their object parts, with the rows of no
+    arm, are ranked together. Row operations within one arm's rows keep the rank, so
+    ``rank Q`` is the sum of the pivots and that rank: small eliminations, linear in
+    the number of arms, instead of one elimination of the whole matrix (over ``Q`` its
+    entries grow with its size).
+    """
+    in_arm: set[int] = set()
+    leftover: list[list] = []
+    blocks = []
+    for block, c0, c1 in arms:
+        in_arm.update(block)
+        width = c1 - c0
+        if not block:
+            blocks.append(0)
+            continue
+        reduced, found = _reduced([rows[i][c0:c1] + rows[i][:dim] for i in block], domain)
+        pivots = 0
+        for k in range(found):
+            row = [reduced[k, j] for j in range(width + dim)]
+            if any(row[:width]):
+                pivots += 1
+            else:
+                leftover.append([int(x) for x in row[width:]])
+        blocks.append(pivots)
+    leftover += [rows[i][:dim] for i in range(len(rows)) if i not in in_arm]
+    return tuple(blocks), sum(blocks) + rank(leftover, dim, domain)
+
+
+def _reduced(rows, domain) -> tuple:
+    """The reduced echelon form of a small matrix over ``Q`` (as integers: each row
+    times the least common multiple of its denominators, the same row space) or
+    modulo ``p``, and its rank."""
+    if isinstance(domain, PrimeField):
+        return flint.nmod_mat(rows, domain.p).rref()
+    out = []
+    for r in rows:
+        if all(isinstance(e, int | flint.fmpz) for e in r):
+            out.append(list(r))
+            continue
+        values = [_rational(e) for e in r]
+        scale = lcm(*(int(v.q) for v in values))
+        out.append([int(v.p) * (scale // int(v.q)) for v in values])
+    reduced, _, found = flint.fmpz_mat(out).rref()
+    return reduced, found
 
 
 def arm_elimination(rows, dim: int, arms: Sequence[ArmBlock], domain: object = POLYNOMIALS

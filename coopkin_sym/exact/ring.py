@@ -132,24 +132,35 @@ class Ring:
         """
         if not row:
             return []
-        top = tuple(max(es) for es in zip(*(f.powers for f in row), strict=True))
+        # zero entries (most of a row of a system with many arms) stay zero: only the
+        # others are scaled and converted
+        nonzero = [k for k, f in enumerate(row) if not f.num.is_zero()]
+        zero = self.zctx.constant(0)           # one zero for the row (never changed)
+        if not nonzero:
+            return [zero] * len(row)
+        top = tuple(max(es) for es in zip(*(row[k].powers for k in nonzero), strict=True))
         factors: dict[tuple[int, ...], flint.fmpq_mpoly] = {}
-        nums = []
-        for f in row:
+        nums = {}
+        for k in nonzero:
+            f = row[k]
             missing = tuple(a - b for a, b in zip(top, f.powers, strict=True))
             if any(missing):
                 if missing not in factors:
                     factors[missing] = self.den_poly(missing)
-                nums.append(f.num * factors[missing])
+                nums[k] = f.num * factors[missing]
             else:
-                nums.append(f.num)
+                nums[k] = f.num
         d = 1
-        for p in nums:
+        for p in nums.values():
             for c in p.coeffs():
                 if c.q != 1:
                     d = lcm(d, int(c.q))
         out = []
-        for p in nums:
+        for k in range(len(row)):
+            p = nums.get(k)
+            if p is None:
+                out.append(zero)
+                continue
             if d != 1:
                 p = p * d                                  # integer coefficients now
             out.append(self.zctx.from_dict(dict(zip(p.monoms(), [int(c.p) for c in p.coeffs()],

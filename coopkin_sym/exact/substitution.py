@@ -26,9 +26,13 @@ def substitute_rows(rows, k: int, f0, f1):
     with ``f1 != 0``)."""
     out = []
     for row in rows:
-        deg = max((e.degrees()[k] for e in row if not e.is_zero()), default=0)
-        new = [substitute(e, k, f0, f1, deg) for e in row]
-        nonzero = [e for e in new if not e.is_zero()]
+        # zero entries (most of a row of a system with many arms) are kept as they are
+        places = [i for i, e in enumerate(row) if not e.is_zero()]
+        deg = max((row[i].degrees()[k] for i in places), default=0)
+        new = list(row)
+        for i in places:
+            new[i] = substitute(row[i], k, f0, f1, deg)
+        nonzero = [new[i] for i in places if not new[i].is_zero()]
         if not nonzero:
             out.append(new)
             continue
@@ -38,7 +42,8 @@ def substitute_rows(rows, k: int, f0, f1):
         common = content.gcd(f1 ** deg) if not f1.is_constant() else \
             content.context().constant(content.content())
         if not common.is_one():
-            new = [e / common for e in new]
+            for i in places:
+                new[i] = new[i] / common
         out.append(new)
     return out
 

@@ -72,6 +72,25 @@ def _spread(count: int) -> list[int]:
     return [(24 * i) // count for i in range(count)]
 
 
+def _cell_directions(count: int) -> list[tuple[Fraction, Fraction]]:
+    """``count`` distinct exact horizontal directions: those of :func:`_spread` for up
+    to 24; beyond, ring ``j = i // 24`` of ``R`` rings turns direction ``i mod 24`` of
+    the table by ``2 atan(j / (16 R))`` (under 7.2 degrees; the table's directions are
+    more than 13 degrees apart)."""
+    if count <= 24:
+        return [circle_point(k) for k in _spread(count)]
+    rings = -(-count // 24)
+    out = []
+    for i in range(count):
+        ring, k = divmod(i, 24)
+        c, s = circle_point(k)
+        t = Fraction(ring, 16 * rings)
+        d = 1 + t * t
+        cr, sr = (1 - t * t) / d, 2 * t / d
+        out.append((c * cr - s * sr, s * cr + c * sr))
+    return out
+
+
 def _number(c: Fraction, scaled: bool) -> int | str:
     """Model-file form of ``c`` (times ``L`` when ``scaled``)."""
     c = Fraction(c)
@@ -304,7 +323,11 @@ def arm_cell(arms: int, joints_per_arm: int, contact: str | Sequence[str] = "com
     centred at ``(0, 0, 2L)``), each holding it at one contact.
 
     Geometry (home pose, lengths in units of ``L``): arm i stands at ``4 u_i`` on the
-    floor, ``u_i`` a rational horizontal direction of the 24-direction table, and in
+    floor, ``u_i`` a rational horizontal direction of the 24-direction table (with more
+    than 24 arms, arm ``i`` takes direction ``i mod 24`` of the table turned by the
+    exact angle ``2 atan(j / (16 R))``, ``j = i // 24`` of ``R`` rings: under 7.2
+    degrees, less than the gaps of the table, so every arm has its own direction and
+    contact point; the arms are not kept apart in space), and in
     its frame ``(u_i, v_i, e_z)`` its joints are, in order (axis @ point):
     waist ``e_z @ (4, 0, 0)``, shoulder ``v @ (4, 0, 1)``, elbow ``v @ (3, 0, 3)``,
     wrist ``(-4/5, 0, -3/5) @ (7/5, 0, 9/5)``, ``v @ (7/5, 1/10, 9/5)``,
@@ -316,7 +339,7 @@ def arm_cell(arms: int, joints_per_arm: int, contact: str | Sequence[str] = "com
     Parameters
     ----------
     arms, joints_per_arm
-        Sizes (up to 24 arms, 1..8 joints each).
+        Sizes (any number of arms, 1..8 joints each).
     contact
         Contact model of every arm's contact, or a list with one per arm.
     name
@@ -333,8 +356,7 @@ def arm_cell(arms: int, joints_per_arm: int, contact: str | Sequence[str] = "com
     _check_size(arms, joints_per_arm, "arms of arm_cell", max_joints=len(_ARM_JOINTS))
     models = _models(contact, arms, "contact")
     out_arms, contacts = [], []
-    for i, k_dir in enumerate(_spread(arms)):
-        u = circle_point(k_dir)
+    for i, u in enumerate(_cell_directions(arms)):
         joints = []
         for k, (axis, point) in enumerate(_ARM_JOINTS[:joints_per_arm], start=1):
             joints.append({"name": f"a{i + 1}_{k}", "type": "revolute",

@@ -72,15 +72,16 @@ def write_locus(locus: Locus, path: str | os.PathLike, format: str | None = None
                         verification=shown)
 
 
-def plot_locus(locus: Locus, pair: Sequence[str] | None = None, *, system: Any = None):
+def plot_locus(locus: Locus, pair: Sequence[str] | None = None, *, system: Any = None,
+               by: str = "auto"):
     """``Locus.plot``: the components on ``pair`` (default: the first pair shown in a
-    report, else the first two joints)."""
+    report, else the first two joints), coloured ``by`` component or family."""
     from coopkin_sym.present.locus_plot import default_pairs, plot_components
 
     if pair is None:
         pairs = default_pairs(locus, system)
         pair = pairs[0] if pairs else ("q1", "q2")
-    return plot_components(locus, system, tuple(pair))
+    return plot_components(locus, system, tuple(pair), by=by)
 
 
 register_action(Locus, "write", write_locus)

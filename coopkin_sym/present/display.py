@@ -37,6 +37,7 @@ import sympy as sp
 from coopkin_sym.analysis.batch import BatchResult
 from coopkin_sym.analysis.factored import FactoredMotions
 from coopkin_sym.analysis.irrational import IrrationalAnalysis
+from coopkin_sym.analysis.locus.families import Family
 from coopkin_sym.analysis.locus.types import Certificate, Component, Locus
 from coopkin_sym.analysis.locus.verify_results import Verification
 from coopkin_sym.analysis.manipulability import Manipulability
@@ -52,9 +53,11 @@ from coopkin_sym.present.certificate import completeness_text
 from coopkin_sym.present.classes import class_changes_text, classes_text
 from coopkin_sym.present.conditions import short_condition
 from coopkin_sym.present.factored_display import factored_html, factored_latex, factored_pretty
+from coopkin_sym.present.family_words import changes_text, family_name, members_text
 from coopkin_sym.present.html_parts import bullet_list as _list
 from coopkin_sym.present.html_parts import div as _div
 from coopkin_sym.present.html_parts import escape as _e
+from coopkin_sym.present.html_parts import numbers_strip as _numbers_strip
 from coopkin_sym.present.html_parts import numbers_table as _numbers_table
 from coopkin_sym.present.html_parts import table as _table
 from coopkin_sym.present.mathjax import latex_or_none, math_html, typesets
@@ -75,6 +78,7 @@ from coopkin_sym.present.result_display import (
     verification_pretty,
 )
 from coopkin_sym.present.sentences import (
+    change_words,
     component_sentences,
     count_sentences,
     irrational_sentences,
@@ -96,7 +100,7 @@ _MAX_ROWS = 200
 # rows of components shown open in the HTML form of a locus (the others folded)
 _OPEN_ROWS = 12
 # not-explored sentences shown open in the HTML form of a locus (the others folded)
-_OPEN_REMARKS = 6
+_OPEN_REMARKS = 3
 # lines of components in the text form of a locus
 _MAX_LINES = 12
 # the longest expression (in characters of its text) written in LaTeX
@@ -423,25 +427,61 @@ def locus_html(locus: Locus) -> str:
              f"<p>Free variables: {_e(', '.join(locus.variables) or 'none')}. "
              f"{n} component{'' if n == 1 else 's'} where the numbers differ from the "
              f"generic ones. {_completeness(locus)}</p>",
-             "<p>Generic numbers:</p>", _numbers_table(locus.generic),
+             "<p>Generic numbers (their meanings on the names):</p>",
+             _numbers_strip(locus.generic),
              f"<p>{_e(_classes(locus.generic))}</p>" if _classes(locus.generic) else ""]
     if locus.components:
+        families = locus.families()
+        if len(families) < n:
+            parts.append(f"<p>By what changes: {len(families)} "
+                         f"famil{'y' if len(families) == 1 else 'ies'}.</p>")
+            parts.append(_families_table(locus, families))
         header = ["#", "where", "kind", *NUMBER_NAMES, "what changes", "witness (at)"]
         rows = [_component_row(k, c, locus.generic)
                 for k, c in enumerate(locus.components[:_MAX_ROWS])]
-        parts.append(_table(header, rows[:_OPEN_ROWS], centered=range(3, 10)))
-        if len(rows) > _OPEN_ROWS:
-            parts.append(_folded(f"components #{_OPEN_ROWS + 1} to #{len(rows)}",
-                                 _table(header, rows[_OPEN_ROWS:], centered=range(3, 10))))
+        # with many components, the families say it first and the components are folded
+        opened = 0 if n > _OPEN_ROWS and len(families) < n else _OPEN_ROWS
+        if opened:
+            parts.append(_table(header, rows[:opened], centered=range(3, 10)))
+        if len(rows) > opened:
+            parts.append(_folded(f"components #{opened + 1} to #{len(rows)}",
+                                 _table(header, rows[opened:], centered=range(3, 10))))
         if n > _MAX_ROWS:
             parts.append(f"<p>... and {n - _MAX_ROWS} more components.</p>")
     if locus.unexplored:
         said = [clip(t, 400) for t in grouped_remark_texts(locus.unexplored)]
-        parts += ["<p>Not explored:</p>", _list(said[:_OPEN_REMARKS])]
+        items = len(locus.unexplored)
+        counted = ("" if items == 1 else
+                   f" ({items} items, said in {len(said)} "
+                   f"sentence{'' if len(said) == 1 else 's'}; all of them in a report)")
+        parts += [f"<p>Not explored{counted}:</p>", _list(said[:_OPEN_REMARKS])]
         if len(said) > _OPEN_REMARKS:
             parts.append(_folded(f"{len(said) - _OPEN_REMARKS} more",
                                  _list(said[_OPEN_REMARKS:])))
     return _div(parts)
+
+
+def _members(family: Family) -> str:
+    n = len(family.members)
+    return (f"{n} components, e.g. #{family.example + 1}" if n > 1 else
+            f"#{family.example + 1}")
+
+
+def _families_table(locus: Locus, families: Sequence[Family]) -> str:
+    """The families of ``locus`` (HTML): what changes, in words, the components, and
+    one of them with its witness."""
+    rows = []
+    for i, family in enumerate(families):
+        c = locus.components[family.example]
+        where = f"#{family.example + 1}: " + _e(clip(short_condition(c), 200))
+        if not family.real:
+            where += " (real points: undecided)"
+        witness = _e(clip(_witness(c), 200)).replace(",", ",<wbr/>")
+        rows.append([_e(family_name(i)), _e(changes_text(family)),
+                     _e(change_words(family.changes)), _e(members_text(family)),
+                     f"{where}<br/>at <code>{witness}</code>"])
+    return _table(["family", "what changes", "in words", "components",
+                   "for example (witness)"], rows)
 
 
 def _folded(summary: str, body: str) -> str:
@@ -463,6 +503,11 @@ def _locus_pretty(locus: Locus) -> str:
              "  generic: " + _numbers_spaced(locus.generic)]
     if _classes(locus.generic):
         lines.append("  " + _classes(locus.generic))
+    families = locus.families()
+    if len(families) < len(locus.components):
+        lines += ["  " + clip(f"family {family_name(i)} ({_members(f)}): "
+                              f"{changes_text(f, '->')}", 160)
+                  for i, f in enumerate(families)]
     for k, c in enumerate(locus.components[:_MAX_LINES]):
         kind = KIND_WORDS.get(c.kind, c.kind)
         lines.append("  " + clip(f"#{k + 1} {short_condition(c)} ({kind}): "

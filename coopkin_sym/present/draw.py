@@ -52,6 +52,7 @@ import numpy as np  # float-ok: drawing coordinates
 
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError, OutputSkipped
+from coopkin_sym.exact.bounded import report
 from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.draw_inputs import (
     MOTION_KINDS,
@@ -156,8 +157,16 @@ def draw_system(analysis_or_system: Any, at: str | Mapping | None = None,
     2
     """
     labels = check_labels(labels)
+    report("the analysis")
     a = _analysis(analysis_or_system, at)
     request = parse_motion(motion, a)
+    names = len(a.model.joints) + len(a.model.contacts)
+    if labels and names > MAX_NAME_LABELS:
+        warnings.warn(f"name labels left out: {names:,} names (joints and contacts) would "
+                      f"cover the picture (at most {MAX_NAME_LABELS}; labels=False, "
+                      "--labels none)", OutputSkipped, stacklevel=2)
+        labels = False
+    report("the picture")
     Figure, FigureCanvasAgg = _mpl()
     if ax is None:
         fig = Figure(figsize=(10.5, 7.5), layout="constrained")
@@ -219,11 +228,39 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
         if h.get_label() not in seen:
             seen.add(h.get_label())
             unique.append(h)
-    ax.legend(handles=unique, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
-              frameon=False)
+    ax.legend(handles=_folded(unique), loc="upper left", bbox_to_anchor=(1.02, 1.0),
+              fontsize=8, frameon=False)
     if labels:
         spread_labels(ax)
     return fig
+
+
+#: The most name labels (joints and contacts) a picture is drawn with; past it the
+#: names are left out (and a note says so): they would cover it.
+MAX_NAME_LABELS = 200
+#: The most arms the legend names one by one; the others are one entry.
+LEGEND_ARMS = 12
+
+
+def _folded(handles: list) -> list:
+    """The legend entries with the arms past :data:`LEGEND_ARMS` folded into one
+    (their colours repeat those named): a legend of 200 arms would not fit the figure."""
+    arms = [h for h in handles if h.get_gid() == "legend:arm"]
+    if len(arms) <= LEGEND_ARMS:
+        return handles
+    from matplotlib.lines import Line2D
+
+    shown = arms[:LEGEND_ARMS - 1]
+    rest = len(arms) - len(shown)
+    more = Line2D([], [], color="0.55", linewidth=3,
+                  label=f"{rest} more arms")
+    out = []
+    for h in handles:
+        if h.get_gid() != "legend:arm" or h in shown:
+            out.append(h)
+            if h is shown[-1]:
+                out.append(more)
+    return out
 
 
 def _not_drawn(request: tuple[str, int] | None, ellipsoid: bool) -> str:
@@ -264,6 +301,7 @@ def save_picture(analysis_or_system: Any, path: str | os.PathLike, *,
     target, suffix = check_output_path(path, SAVE_FORMATS, DrawError, "picture")
     fig = draw_system(analysis_or_system, at=at, motion=motion, title=title,
                       ellipsoid=ellipsoid, labels=labels)
+    report("writing the picture")
 
     def save(tmp: str) -> None:
         fig.savefig(tmp, dpi=dpi, format=suffix[1:])

@@ -367,7 +367,8 @@ def _draw_arms(ax, a: Analysis, scene: _Scene, legend: list,
     at_point: dict[tuple, list] = {}    # joints at one point: one label
     for i, arm in enumerate(model.arms):
         color = ARM_COLORS[i % len(ARM_COLORS)]
-        legend.append(Line2D([], [], color=color, linewidth=3, label=f"arm {arm.name}"))
+        legend.append(Line2D([], [], color=color, linewidth=3, label=f"arm {arm.name}",
+                             gid="legend:arm"))
         starts = scene.starts[i]
         nlinks = len(arm.joints)
         for link in range(0, nlinks + 1):

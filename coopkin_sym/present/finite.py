@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from coopkin_sym.analysis.finite import FiniteMobility
+from coopkin_sym.analysis.finite import Branch, FiniteMobility
 from coopkin_sym.exact.parse import parse_expression
 
 _CLASS_WORDS = {
@@ -45,11 +45,16 @@ _REASON_WORDS = {
                            "theorem after a blow-up)",
     "binary_form_roots": "each simple real root of the reduced constraint's lowest "
                          "term is the tangent of one smooth branch",
-    "closure_saturation": "the welded loop is overconstrained: its closure conditions "
+    "closure_saturation": "the loop is overconstrained: its closure conditions "
                           "that are dependent here vanish, by exact ideal saturations, on "
                           "the smooth set the independent ones cut out, so the "
                           "configuration space is smooth here, of the dimension of the "
                           "first-order motions",
+    "closure_bezout": "the loop is overconstrained: the closure conditions that are "
+                      "independent here cut out a smooth curve, and each dependent one "
+                      "vanishes along it to an order above Bezout's bound (the product of "
+                      "the degrees), so on all of it; the configuration space is that "
+                      "curve here",
     "no_first_order_motion": "there is no first-order motion",
 }
 
@@ -57,10 +62,13 @@ _ASSUMPTION_WORDS = {
     "unit_length": "the one length parameter was set to 1 (scaling changes no dimension)",
     "frictionless_flat_face": "each frictionless contact is read as the link's point "
                               "kept on a flat face of the object",
-    "no_closure_saturation_over_field": "not tried: the welded-loop closure saturation "
-                                        "(it is not computed over a number field yet, so "
-                                        "the expansion's bounds are all that is proved "
-                                        "here)",
+    "closure_expansion": "the expansion is that of the loop closure's polynomials, without "
+                         "the closure conditions that hold identically near the "
+                         "configuration or were proved to follow from the others",
+    "closure_saturation_inconclusive": "tried as well: the loop closure's exact "
+                                       "saturations (Gröbner bases, with a time bound) "
+                                       "proved nothing here, so the expansion's bounds are "
+                                       "all that is proved",
 }
 
 
@@ -95,12 +103,63 @@ def finite_summary(data: dict) -> str:
                                   list(data["branches"]), data["order"], data["bounds"])
     field = data.get("field")
     over = (f" (exact over Q(alpha), alpha = {field['alpha']})" if field else "")
-    return f"{value} (first-order motions: {data['first_order']}): {words}{over}"
+    return (f"{value} (first-order motions: {data['first_order']}): {words}{over}"
+            f"{_along_words(data.get('along'))}")
+
+
+def _along_words(along: dict | None) -> str:
+    """What is known along the component beyond its witness, in words ("" if nothing).
+
+    Example
+    -------
+    >>> _along_words({"how": "constant_rank", "dimension": 1,
+    ...               "classification": "kinematic_singularity"})[:60]
+    '; the same at every point of the component where its numbers'
+    """
+    if not along:
+        return ""
+    if along["how"] == "constant_rank":
+        return ("; the same at every point of the component where its numbers hold (the "
+                "rank of Q is the same there)")
+    if along["dimension"] is None:
+        value = f"undecided ({along['bounds'][0]} to {along['bounds'][1]})"
+    else:
+        words = _classification_words(along["classification"], along["dimension"], [], 0,
+                                      along["bounds"])
+        value = f"{along['dimension']}, {words.split(':')[0]}"
+    at = ",".join(f"{k}={v}" for k, v in along["point"].items())
+    return (f"; at a second point of the component, {at}: {value} (one more point, not "
+            f"a proof for the whole component)")
 
 
 def _vector(v) -> str:
     return "(" + ", ".join(str(x if isinstance(x, sp.Basic) and not x.is_Rational
                                else sp.nsimplify(x)) for x in v) + ")"
+
+
+def _written_with_s(branch: Branch) -> bool:
+    """Whether a branch tangent is written with ``s`` (a root of degree three or more,
+    not in radicals) rather than its exact value."""
+    return branch.direction is not None and branch.direction.root.degree > 2
+
+
+def _tangent_rows(branch: Branch) -> tuple:
+    """The spanning vectors shown: the tangent of an irrational direction of degree
+    three or more in ``s`` (then the first vector), the exact values otherwise."""
+    if not _written_with_s(branch):
+        return branch.tangent
+    return (branch.direction.tangent,) + tuple(branch.tangent[1:])
+
+
+def _root_words(branch: Branch) -> str:
+    """``, where s ... is the real root of ... in (lo, hi]`` for a tangent written with
+    ``s``, else nothing."""
+    if not _written_with_s(branch):
+        return ""
+    d = branch.direction
+    lo, hi = d.interval
+    return (f", where s (= {d.free[0]}/{d.free[1]} along the branch) is the real root of "
+            f"{d.polynomial} in ({lo}, {hi}]")
 
 
 def _field_words(fm: FiniteMobility) -> str | None:
@@ -129,19 +188,17 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
     lines = [f"Finite mobility: {value} (first-order motions: {fm.first_order}) - "
              f"{classification_text(fm)}."]
     if fm.reason in _REASON_WORDS:
-        how = ("exact Gröbner bases" if fm.reason == "closure_saturation"
-               else f"expansion to order {fm.order}")
+        how = {"closure_saturation": "exact Gröbner bases",
+               "closure_bezout": "exact power series"}.get(fm.reason,
+                                                           f"expansion to order {fm.order}")
         lines.append(f"  Proof: {_REASON_WORDS[fm.reason]} ({how}).")
     for k, branch in enumerate(fm.branches, 1):
         if branch.tangent is not None:
-            span = ", ".join(_vector(v) for v in branch.tangent) or "{0}"
+            rows = _tangent_rows(branch)
+            span = ", ".join(_vector(v) for v in rows) or "{0}"
             lines.append(f"  Branch {k}: {branch.dimension} motion"
                          f"{'' if branch.dimension == 1 else 's'}, tangent to the span of "
-                         f"{span} in (u, qdot)")
-        elif branch.cone is None:
-            lines.append(f"  Branch {k}: {branch.dimension} motion, tangent to a simple "
-                         f"real root of the lowest term (counted exactly; its direction "
-                         f"is not written over the number field)")
+                         f"{span} in (u, qdot){_root_words(branch)}")
         else:
             lines.append(f"  Branch {k}: {branch.dimension} motions, tangent to the cone "
                          f"{branch.cone} = 0 (in the first-order motions)")
@@ -177,8 +234,16 @@ def finite_latex(fm: FiniteMobility) -> str:
            f"{classification_text(fm)}."]
     for k, branch in enumerate(fm.branches, 1):
         if branch.tangent:
-            span = ", ".join(sp.latex(sp.Matrix(v).T) for v in branch.tangent)
-            out.append(f"Branch {k}: tangent to $\\operatorname{{span}}\\{{{span}\\}}$.")
+            span = ", ".join(sp.latex(sp.Matrix(v).T) for v in _tangent_rows(branch))
+            where = ""
+            if _written_with_s(branch):
+                lo, hi = branch.direction.interval
+                where = (f", where $s$ is the real root of "
+                         f"${sp.latex(branch.direction.polynomial)} = 0$ in "
+                         f"$({sp.latex(sp.Rational(lo.numerator, lo.denominator))}, "
+                         f"{sp.latex(sp.Rational(hi.numerator, hi.denominator))}]$")
+            out.append(f"Branch {k}: tangent to $\\operatorname{{span}}\\{{{span}\\}}$"
+                       f"{where}.")
         elif branch.cone is not None:
             out.append(f"Branch {k}: tangent to the cone ${sp.latex(branch.cone)} = 0$.")
     if fm.field is not None:
@@ -188,6 +253,15 @@ def finite_latex(fm: FiniteMobility) -> str:
         out.append(f"Computed exactly over $\\mathbb{{Q}}(\\alpha)$, $\\alpha = {alpha}$, "
                    f"a root of ${poly}$.")
     return "\n".join(out) + "\n"
+
+
+def _direction_json(branch: Branch) -> dict | None:
+    """An irrational branch direction as plain data (None for the others)."""
+    d = branch.direction
+    if d is None:
+        return None
+    return {"free": list(d.free), "minimal_polynomial": str(d.polynomial),
+            "interval": [str(x) for x in d.interval], "tangent": [str(x) for x in d.tangent]}
 
 
 def finite_json(fm: FiniteMobility) -> dict:
@@ -211,7 +285,8 @@ def finite_json(fm: FiniteMobility) -> dict:
         "branches": [{"dimension": b.dimension,
                       "tangent": None if b.tangent is None else
                       [[str(x) for x in v] for v in b.tangent],
-                      "cone": None if b.cone is None else str(b.cone)}
+                      "cone": None if b.cone is None else str(b.cone),
+                      "direction": _direction_json(b)}
                      for b in fm.branches],
         "orders": [{"order": i, "dimension": m} for i, m in fm.orders],
         "order": fm.order,

@@ -66,6 +66,23 @@ def numbers_table(numbers: Numbers | Mapping[str, int]) -> str:
     return table(["number", "value", "meaning"], numbers_rows(numbers), centered=(1,))
 
 
+def numbers_strip(numbers: Numbers | Mapping[str, int]) -> str:
+    """The seven numbers as one compact HTML table (names above values), each name
+    carrying its meaning as a tooltip.
+
+    Example
+    -------
+    >>> strip = numbers_strip(Numbers(2, 2, 1, 0, 1, 4, 0))
+    >>> 'title="connectivity: independent motions of the object">Nc</th>' in strip
+    True
+    """
+    get = numbers.get if isinstance(numbers, Mapping) else numbers.as_dict().get
+    head = "".join(f'<th{_CENTER} title="{escape(NUMBER_WORDS[k])}">{escape(k)}</th>'
+                   for k in NUMBER_NAMES)
+    values = "".join(f"<td{_CENTER}>{escape(get(k, '?'))}</td>" for k in NUMBER_NAMES)
+    return f"<table><thead><tr>{head}</tr></thead><tbody><tr>{values}</tr></tbody></table>"
+
+
 def div(parts: Sequence[str]) -> str:
     """The parts (HTML; empty ones left out) in the ``coopkin`` block of a view."""
     return '<div class="coopkin">' + "\n".join(p for p in parts if p) + "</div>"

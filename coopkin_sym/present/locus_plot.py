@@ -49,6 +49,7 @@ from coopkin_sym.errors import PlotError
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.parse import NumberError, parse_angle, parse_number
 from coopkin_sym.present.conditions import PolynomialNames, report_names, short_condition
+from coopkin_sym.present.family_words import changes_text, family_name
 from coopkin_sym.present.plot_legend import (
     LABEL_LINES,
     LABEL_WIDTH,
@@ -406,8 +407,13 @@ def _witness_xy(c: Component, pair: Sequence[str], kinds: _Kinds
     return out[0], out[1]
 
 
+#: With more components than this in a plane (and fewer families), ``by="auto"``
+#: colours them by family.
+FAMILY_COLOURS_FROM = 12
+
+
 def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
-                    ax: Axes | None = None) -> Figure:
+                    ax: Axes | None = None, by: str = "auto") -> Figure:
     """Draw the real components of ``locus`` that involve the joints ``pair``.
 
     Parameters
@@ -421,6 +427,13 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
         Two joint names: the horizontal and the vertical axis.
     ax
         Axes to draw on (a new figure when ``None``).
+    by
+        ``"component"``: a colour and marker per component, each in the legend;
+        ``"family"``: one per family (:meth:`Locus.families
+        <coopkin_sym.analysis.locus.facade.LocusMethods.families>`), the legend saying
+        what changes; ``"auto"``: by family when more than
+        :data:`FAMILY_COLOURS_FROM` components are drawn and they fall into fewer
+        families.
 
     Returns
     -------
@@ -455,7 +468,9 @@ def plot_components(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"
     A, B = np.meshgrid(grid_a, grid_b)  # float-ok
     plane = _Plane(ax, locus, kinds, names, tuple(pair), rev, A, B, Line2D,
                    report_names(locus.components))
-    for n, k in enumerate(components_on(locus, system, pair)):
+    drawn = components_on(locus, system, pair)
+    plane.family_of = _family_styles(locus, drawn, by)
+    for n, k in enumerate(drawn):
         _draw_component(plane, n, k)
     rows = 0.0  # float-ok: lines of the legend
     if plane.handles or plane.unlisted:
@@ -493,6 +508,30 @@ class _Plane:
     placed: dict[tuple[float, float], int] = field(default_factory=dict)  # float-ok
     notes: set[str] = field(default_factory=set)
     has_others: bool = False
+    #: component -> (its family's index, the legend entry of the family), when the
+    #: components are coloured by family
+    family_of: dict[int, tuple[int, str]] = field(default_factory=dict)
+    families_listed: set[int] = field(default_factory=set)
+
+
+def _family_styles(locus: Locus, drawn: Sequence[int], by: str
+                   ) -> dict[int, tuple[int, str]]:
+    """For each component of ``drawn``, its family's index and legend entry, when the
+    plot colours by family (see :func:`plot_components`); else nothing."""
+    if by not in ("auto", "component", "family"):
+        raise PlotError(f"by: {by!r} is not one of 'auto', 'component', 'family'")
+    if by == "component":
+        return {}
+    families = locus.families()
+    of = {k: i for i, f in enumerate(families) for k in f.members}
+    if by == "auto" and (len(drawn) <= FAMILY_COLOURS_FROM
+                         or len({of[k] for k in drawn}) >= len(drawn)):
+        return {}
+    entries = {}
+    for i, f in enumerate(families):
+        count = f"{len(f.members)} component{'' if len(f.members) == 1 else 's'}"
+        entries[i] = f"{family_name(i)}: {changes_text(f)} ({count}; e.g. #{f.example + 1})"
+    return {k: (of[k], entries[of[k]]) for k in drawn}
 
 
 def _draw_component(plane: _Plane, n: int, k: int) -> None:
@@ -501,9 +540,13 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
     ax, kinds, names, pair, rev, Line2D = (plane.ax, plane.kinds, plane.names, plane.pair,
                                            plane.rev, plane.Line2D)
     c = plane.locus.components[k]
-    color, marker = style(n)
+    family, family_label = plane.family_of.get(k, (None, ""))
+    color, marker = style(n if family is None else family)
     listed = (color, marker) != OVERFLOW_STYLE
-    plane.unlisted += not listed
+    if family is not None:   # one legend entry per family, at its first member drawn
+        listed = listed and family not in plane.families_listed
+        plane.families_listed.add(family)
+    plane.unlisted += (color, marker) == OVERFLOW_STYLE
     gid = f"component:{k + 1}"
     used = _joints_in(c, kinds, names)
     axes = []
@@ -514,8 +557,8 @@ def _draw_component(plane: _Plane, n: int, k: int) -> None:
     plane.notes.update(chosen)
     plane.has_others = plane.has_others or any(kinds.joint_of(v)[0] for v in values)
     drawn = _in_plane(c, values, axes[0], axes[1], names)
-    label = _label(k, c, names=plane.polynomials) + (" (the whole plane)" if drawn.whole
-                                                     else "")
+    label = family_label or (_label(k, c, names=plane.polynomials)
+                             + (" (the whole plane)" if drawn.whole else ""))
     marks = list(drawn.points)
     drawn_curve = False
     if drawn.curve is not None:
@@ -610,7 +653,7 @@ def _title(locus: Locus, pair: Sequence[str], notes: list[str], others: bool) ->
 
 
 def plot_png(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
-             dpi: int = 110) -> bytes:
+             dpi: int = 110, by: str = "auto") -> bytes:
     """:func:`plot_components` as PNG bytes.
 
     Example
@@ -619,7 +662,7 @@ def plot_png(locus: Locus, system: Any, pair: Sequence[str] = ("q1", "q2"),
     >>> plot_png(Locus("demo", ["t_q1", "t_q2"], "", {}), None)[:4]
     b'\\x89PNG'
     """
-    fig = plot_components(locus, system, pair)
+    fig = plot_components(locus, system, pair, by=by)
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     return buffer.getvalue()

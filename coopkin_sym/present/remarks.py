@@ -104,6 +104,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         "A witness with irrational coordinates is decided over Q(alpha); its float "
         "checks use a rational point within 1e-40 of it (the same float64 image), "
         "with the witness's own exact numbers at distance 0."),
+    "float_checks_left_out": lambda f: (
+        f"No float rank tests at the witnesses: Q is {f['rows']:,} x {f['columns']:,}, "
+        f"over {f['bound']:,} entries (a float SVD costs the cube of its size)."),
     "pi_chart": lambda f: (
         "s_q = cot(q/2): an equation s_q (= 0) is q = pi, outside the chart of t_q; "
         "every set of joints at pi is searched like the t chart."),

@@ -124,6 +124,18 @@ class _FieldIn(_In):
     tangents: Names = Field(default_factory=dict)
 
 
+class _AlongIn(_In):
+    """The finite mobility along a component beyond its witness."""
+
+    how: Literal["constant_rank", "second_point"]
+    dimension: StrictInt | None
+    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cone",
+                            "shaky", "undecided"]
+    point: Names | None = None
+    bounds: tuple[StrictInt, StrictInt] | None = None
+    reason: StrictStr | None = None
+
+
 class _FiniteIn(_In):
     """The finite mobility at a component's witness (``coopkin locus --finite``)."""
 
@@ -136,6 +148,7 @@ class _FiniteIn(_In):
     order: StrictInt
     branches: list[StrictInt]
     field: _FieldIn | None = None
+    along: _AlongIn | None = None
 
 
 class _CheckIn(_In):
@@ -676,6 +689,11 @@ def _to_locus(parsed, checker: _Checker) -> Locus:
             values["finite"] = dict(c.finite.model_dump(exclude_none=True),
                                     dimension=c.finite.dimension,
                                     bounds=list(c.finite.bounds))
+            if c.finite.along is not None:       # undecided there: its dimension is None
+                along = values["finite"]["along"]
+                along["dimension"] = c.finite.along.dimension
+                if "bounds" in along:
+                    along["bounds"] = list(along["bounds"])
         comps.append(Component(**values))
     values = {f.name: getattr(parsed, f.name) for f in dataclasses.fields(Locus)}
     values["components"] = comps

@@ -19,7 +19,7 @@ Ni = 1: with every joint locked, the object can still rotate about the line thro
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 import sympy as sp
@@ -349,6 +349,49 @@ def _force_sentences(n, r: int) -> list[str]:
     ]
 
 
+#: What one more (first) or one less (second) of each number means, for
+#: :func:`change_words`; ``{n}`` is the count in words.
+_CHANGE_WORDS = {
+    "Nc": ("the object gains {n} direction{s} of motion",
+           "the object loses {n} direction{s} of motion"),
+    "Ni": ("with every joint locked the object gains {n} free motion{s}",
+           "with every joint locked the object loses {n} free motion{s}"),
+    "Nr": ("the arms gain {n} self-motion{s} that leave{v} the object fixed",
+           "the arms lose {n} self-motion{s} that leave{v} the object fixed"),
+    "Ng": ("{n} more internal force{s}", "{n} internal force{s} fewer"),
+    "Nd": ("{n} more contact force{s} the joints cannot balance",
+           "{n} contact force{s} fewer that the joints cannot balance"),
+    "Nh": ("{n} more internal force{s} the joints cannot control",
+           "{n} internal force{s} fewer that the joints cannot control"),
+}
+
+
+def change_words(changes: Mapping[str, tuple[int, int]]) -> str:
+    """What a change of the numbers means for the motions and forces, in words
+    (``Nm`` is told by ``Nc`` and ``Nr``, since ``Nm = Nc + Nr``).
+
+    Example
+    -------
+    >>> change_words({"Nc": (6, 5), "Nr": (2, 3), "Nd": (0, 1)})
+    'the object loses one direction of motion; the arms gain one self-motion that leaves \
+the object fixed; one more contact force the joints cannot balance'
+    >>> change_words({"Nm": (2, 3)})
+    'Nm 2 -> 3'
+    """
+    parts = []
+    for name, (before, after) in changes.items():
+        words = _CHANGE_WORDS.get(name)
+        if name == "Nm" and ("Nc" in changes or "Nr" in changes):
+            continue
+        if words is None or before == after:
+            parts.append(f"{name} {before} -> {after}")
+            continue
+        k = abs(after - before)
+        parts.append(words[after < before].format(
+            n=_number_word(k), s="" if k == 1 else "s", v="s" if k == 1 else ""))
+    return "; ".join(parts)
+
+
 def configuration_words(analysis: Analysis) -> str:
     """Where an analysis is: the values set, the joints at home, the symbolic joints.
 
@@ -393,16 +436,17 @@ def sentences(analysis: Analysis) -> list[str]:
     """
     n = analysis.numbers
     driven = n.Nc - n.Ni
-    blocks, _ = analysis.available_blocks()
-    c12, c22 = blocks["C12"], blocks["C22"]
+    blocks, _ = analysis.available_blocks()    # a block over the term budget is None
+    c11, c12, c22, c23 = (blocks[k] for k in ("C11", "C12", "C22", "C23"))
     coordinated = [f"{describe_twist(c12.col(k), analysis)} by moving "
                    f"{describe_joint_motion(c22.col(k), analysis)}"
-                   for k in range(c12.cols)] if 0 < driven <= 3 and c22 is not None else []
-    free = object_motions_words([analysis.twist_in_base(analysis.C11.col(k))
-                                 for k in range(n.Ni)],
-                                _contact_points(analysis)) if n.Ni else None
-    redundant = "; ".join(describe_joint_motion(analysis.C23.col(k), analysis)
-                          for k in range(n.Nr)) if n.Nr else None
+                   for k in range(c12.cols)] if (0 < driven <= 3 and c12 is not None
+                                                 and c22 is not None) else []
+    free = object_motions_words([analysis.twist_in_base(c11.col(k)) for k in range(n.Ni)],
+                                _contact_points(analysis)) if n.Ni and c11 is not None \
+        else None
+    redundant = "; ".join(describe_joint_motion(c23.col(k), analysis)
+                          for k in range(n.Nr)) if n.Nr and c23 is not None else None
     return [_mobility_sentence(n), _connectivity_sentence(n, analysis.dim, coordinated),
             _indeterminacy_sentence(n, free), _redundancy_sentence(n, redundant),
             *_force_sentences(n, analysis.r)]

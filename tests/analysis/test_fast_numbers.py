@@ -8,16 +8,18 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from independent import reference_numbers_algebraic
+from large_systems import many_arms
 from strategies import random_configurations, random_systems
 
 import coopkin_sym
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.generic import NumbersCertificate, generic_numbers
+from coopkin_sym.analysis.generic import NumbersCertificate, chain_numbers, generic_numbers
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.analysis.points import point_ranks
 from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.builders import planar_hand, spatial_hand
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.model.examples import list_examples
 
 SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow,
                                                        HealthCheck.data_too_large])
@@ -64,7 +66,7 @@ def test_generic_numbers_agree_with_elimination(data):
                                       seed=seed, certify_seconds=None)
     assert certified == exact
     assert cert.exact and cert.error_bits is None
-    assert all(r.how in {"size", "elimination"} for r in cert.ranks)
+    assert all(r.how in {"size", "contacts", "elimination"} for r in cert.ranks)
     # rows cleared only where used, values at the points from the fractions
     lazy = ClearedRows(kin.ring, kin.Q)
     fast, cert_fast = generic_numbers(lazy, model, kin.row_contacts, kin.ring.zctx,
@@ -76,6 +78,65 @@ def test_generic_numbers_agree_with_elimination(data):
     if not cert0.exact:
         assert cert0.error_bits >= 100
         assert any(r.how == "sampled" for r in cert0.ranks)
+
+
+@settings(max_examples=40, **SETTINGS)
+@given(st.data())
+def test_numbers_from_the_chains_are_those_of_the_elimination_or_none(data):
+    """Ranks modulo a prime at random points, ``Q`` evaluated from the product of
+    exponentials: where they reach the size bounds, the numbers (every rank "size")
+    are the decomposition's; otherwise nothing is claimed. Every joint symbolic, or
+    some of them (the others at exact values), ``L`` symbolic or given."""
+    spec = data.draw(random_systems(with_parameter=data.draw(st.booleans())))
+    model = coopkin_sym.load(spec).model
+    names = list(model.joint_names)
+    free = data.draw(st.lists(st.sampled_from(names), min_size=1, unique=True))
+    at = ",".join(f"{j}=2*atan({data.draw(st.integers(-3, 3))}/2)" for j in names
+                  if j not in free and next(x for x in model.joints if x.name == j).type
+                  == "revolute")
+    config = Configuration.parse(model, at or None, free)
+    _, _, exact = _decomposed(model, config)
+    found = chain_numbers(model, config, seed=data.draw(st.integers(0, 2**32)))
+    if found is not None:
+        numbers, cert = found
+        assert numbers == exact
+        assert cert.exact and {r.how for r in cert.ranks} <= {"size", "contacts"}
+
+
+@pytest.mark.parametrize("name", list_examples())
+def test_numbers_from_the_chains_of_the_shipped_examples(name):
+    """Every shipped example: the numbers from the chains, where the sizes certify
+    them, are those of the symbolic ``Q``; they do for the real robots' arms."""
+    model = coopkin_sym.load(name).model
+    config = Configuration.parse(model, None, "all")
+    kin = kinematics.build(model, config)
+    expected, _ = generic_numbers(ClearedRows(kin.ring, kin.Q), model, kin.row_contacts,
+                                  kin.ring.zctx, seed=3, certify_seconds=None)
+    found = chain_numbers(model, config, seed=3)
+    if name in ("panda-two-arm-box", "dh-two-puma560-box", "quadruped-standing"):
+        assert found is not None
+    assert found is None or found[0] == expected
+
+
+@pytest.mark.parametrize("contact, numbers", [
+    ("hard", {"Nm": 606, "Nc": 6, "Ni": 0, "Nr": 600, "Ng": 594, "Nd": 0, "Nh": 0}),
+    pytest.param("complete",
+                 {"Nm": 6, "Nc": 6, "Ni": 0, "Nr": 0, "Ng": 1194, "Nd": 0, "Nh": 0},
+                 marks=pytest.mark.slow),
+])
+def test_generic_numbers_of_200_arms_come_from_the_chains(contact, numbers):
+    """A cell of 200 six-joint arms (1,200 joints): its generic numbers are certified
+    by the sizes from ranks at points modulo a prime, without the symbolic ``Q`` (whose
+    kinematics alone costs about a minute); at a random exact point (ranked arm by arm
+    over Q) the numbers are the same."""
+    system = coopkin_sym.load(many_arms(200, 6, contact))
+    a = system.analyze(generic=True)
+    assert a.numbers.as_dict() == numbers
+    assert a.certificate.exact and {r.how for r in a.certificate.ranks} == {"size"}
+    assert "kinematics" not in a.__dict__
+    at = ",".join(f"{j}=2*atan({(7 * k) % 11 - 5}/{k % 4 + 1})"
+                  for k, j in enumerate(system.joint_names)) + ",L=1"
+    assert system.analyze(at).numbers.as_dict() == numbers
 
 
 @settings(max_examples=30, **SETTINGS)
@@ -135,7 +196,7 @@ def test_generic_numbers_of_hands_are_certified(build, expected):
 def test_probabilistic_numbers_say_so():
     """With no time for a certificate, ranks the sizes do not bound are sampled, and
     the certificate gives the error exponent from the degrees and the points."""
-    model = coopkin_sym.load("paper-case2-hard").model
+    model = coopkin_sym.load("allegro-hand-sphere").model
     config = Configuration.parse(model, None, "all")
     rows, kin, exact = _decomposed(model, config)
     numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
@@ -143,11 +204,34 @@ def test_probabilistic_numbers_say_so():
     assert numbers == exact
     assert not cert.exact
     hows = {r.matrix: r.how for r in cert.ranks}
-    assert hows["Gt"] == "sampled"            # rank 5 of 6 columns: not a size bound
-    assert hows["Dt[s1]"] == "size"           # 3 rows, rank 3
+    assert hows["Dt[index]"] == "sampled"     # 4 rows, 4 joints, rank 3: no size bound
+    assert hows["Dt[thumb]"] == "size"        # 4 rows, rank 4
     # two points, coordinates from 2**63 + 1 integers, minors of degree below 2**7
     assert 100 <= cert.error_bits <= 2 * 63
     assert cert.as_dict()["error_bits"] == cert.error_bits
+
+
+def test_the_rank_of_gt_is_certified_by_free_contact_points():
+    """Two hard contacts: rank H G^T is 5 (the object turns about the line through
+    them), below the sizes' 6; it equals the rank with every contact point and normal
+    free, a certified bound, so no elimination is needed (nor time for it)."""
+    from coopkin_sym.analysis.generic import grasp_rank_bound
+
+    model = coopkin_sym.load("paper-case2-hard").model
+    assert grasp_rank_bound(model) == 5
+    assert grasp_rank_bound(coopkin_sym.load("paper-case2-complete").model) == 6
+    config = Configuration.parse(model, None, "all")
+    rows, kin, exact = _decomposed(model, config)
+    numbers, cert = generic_numbers(rows, model, kin.row_contacts, kin.ring.zctx,
+                                    seed=7, certify_seconds=0)
+    assert numbers == exact and cert.exact
+    assert {r.matrix: r.how for r in cert.ranks}["Gt"] == "contacts"
+    chained, cert = chain_numbers(model, config, seed=7)
+    assert chained == exact and cert.exact
+    a = coopkin_sym.load(spatial_hand(2, 4)).analyze(generic=True)
+    assert a.certificate.exact and "kinematics" not in a.__dict__
+    assert a.numbers.as_dict() == {"Nm": 8, "Nc": 6, "Ni": 1, "Nr": 2, "Ng": 1, "Nd": 0,
+                                   "Nh": 0}
 
 
 def test_point_analysis_blocks_after_numbers():

@@ -70,12 +70,30 @@ def test_a_regular_configuration_moves_with_its_first_order_motions():
     assert span.rank() == 2
 
 
-def test_a_rank_drop_whose_expansion_vanishes_is_undecided_with_its_bounds():
-    """Case 1 with a complete contact at q2 = pi/2: the reduced equations vanish to the
-    order reached, so nothing is claimed beyond the bounds proved."""
+def test_a_rank_drop_whose_expansion_vanishes_is_decided_by_the_loop_closure():
+    """Case 1 with a complete contact at q2 = pi/2: arm 2's pin lies on joint 1's axis,
+    so the object (welded to link 1) turns about it with q2 held: a curve of closed
+    configurations (by hand: the pin at the origin stays there). The reduced equations
+    vanish to every order, and the loop closure proves the curve is all there is."""
     fm = finite_mobility(load("paper-case1-complete-hard").model, "q1=0,q2=pi/2")
-    assert (fm.dimension, fm.bounds, fm.first_order) == (None, (0, 1), 1)
+    assert (fm.dimension, fm.bounds, fm.first_order) == (1, (1, 1), 1)
+    assert (fm.classification, fm.reason) == ("kinematic_singularity", "closure_bezout")
+    assert fm.branches[0].tangent == ((0, 0, 0, 0, 0, 2, 2, 0),)
+
+
+def test_two_reduced_equations_with_a_common_direction_stay_undecided():
+    """Three parallel cranks lying on the ground line (q = pi/2): two first-order
+    motions, two reduced equations sharing the direction u_q2 = u_q3; nothing is
+    claimed beyond the bounds proved."""
+    fm = finite_mobility(load("parallel-cranks").model, "q1=pi/2,q2=pi/2,q3=pi/2")
+    assert (fm.dimension, fm.bounds, fm.first_order) == (None, (0, 1), 2)
     assert fm.classification == "undecided" and fm.reason == "undecided_at_order_4"
+    u2, u3 = sp.symbols("u_q2 u_q3")
+    lowest = [sum(t for t in sp.Add.make_args(sp.sympify(e.replace("^", "**")))
+                  if sp.Poly(t, u2, u3).total_degree() == 2) for e in fm.equations]
+    assert [sp.expand(a - b) for a, b in zip(lowest, [-2 * u2 * (u2 - u3),
+                                                      -3 * (u2 - u3) * (u2 + u3)],
+                                             strict=True)] == [0, 0]
 
 
 def test_soft_contacts_and_free_lengths_are_refused_with_the_reason():

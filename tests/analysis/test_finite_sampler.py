@@ -100,3 +100,24 @@ def test_the_sampler_sees_the_overconstrained_loops_move_once(name):
     sampler's (Grübler-Kutzbach counts -2 and 0)."""
     system = load(name)
     _check(system, {j.name: "0" for j in system.model.joints}, samples=6)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [26, 42])
+def test_the_closure_decisions_on_random_loci_are_the_samplers(seed):
+    """Random two-arm systems with point contacts at the witnesses of their loci,
+    where the loop closure's saturation decides (the expansion stays undecided there,
+    every reduced constraint vanishing): the sampler finds the same local dimension."""
+    system = coopkin_sym.load(random_system(seed))
+    joints = {j.name for j in system.model.joints}
+    checked = 0
+    for component in system.locus().components:
+        if component.witness is None or checked == 2:
+            continue
+        fm = finite_mobility(system.model, component.witness)
+        if fm.reason not in ("closure_saturation", "closure_bezout"):
+            continue
+        values = {k: _angle(v) for k, v in dict(component.witness).items() if k in joints}
+        assert Sampler(system.model, values, {}).dimension(6) == fm.dimension
+        checked += 1
+    assert checked == 2

@@ -128,3 +128,35 @@ def test_every_part_of_a_rational_analysis_is_there_or_not_available():
             continue
         with pytest.raises(NotAvailable, match=f"^{name} is not available"):
             getattr(a, name)
+
+
+@pytest.mark.parametrize("name, free", [("paper-case2-hard", ["q2", "q5"]),
+                                        ("allegro-hand-sphere", ["i1", "t2"]),
+                                        ("panda-two-arm-box", ["l2", "r4"])])
+def test_the_joint_nullspace_arm_by_arm_is_that_of_the_whole(name, free):
+    """Over a number field (a quadratic in one free variable), the basis of N(Dt)
+    found arm by arm is the reduced-echelon basis of the whole joint block."""
+    import flint
+
+    from coopkin_sym.analysis import kinematics
+    from coopkin_sym.analysis.irrational import _joint_nullspace
+    from coopkin_sym.exact.matrix import PolyMatrix
+    from coopkin_sym.exact.quotient import Quotient
+
+    model = load_model(name)
+    kin = kinematics.build(model, model_configuration(model, free))
+    rows = [kin.ring.clear_row(r) for r in kin.Q]
+    t = kin.ring.zctx.gens()[0]
+    quotient = Quotient(t**2 - 2 * t - 1, 0)          # t = 1 +- sqrt(2)
+    dim = model.object_dim
+    whole = PolyMatrix([r[dim:] for r in rows], len(model.joints), quotient).nullspace()
+    ours = _joint_nullspace(model, rows, kin.row_contacts, quotient)
+    assert len(ours) == len(whole) > 0
+    assert all(str(a) == str(b) for u, v in zip(ours, whole, strict=True)
+               for a, b in zip(u, v, strict=True))
+    assert isinstance(ours[0][0], flint.fmpz_mpoly)
+
+
+def model_configuration(model, free):
+    from coopkin_sym.model.configuration import Configuration
+    return Configuration.parse(model, None, free)

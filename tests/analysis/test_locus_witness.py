@@ -91,3 +91,53 @@ def test_point_moved_and_compared():
     assert moved != p and p == Point.of({"q1": (1, 0)}, {"d2": sp.Rational(1, 2)},
                                         {"L": 2})
     assert p.moved("e", sp.Integer(3))["e"] == "3" and len(p.moved("e", 3)) == 4
+
+
+def test_float_checks_are_left_out_over_the_size_and_the_locus_says_so(case1, monkeypatch):
+    """Over FLOAT_CHECK_ENTRIES entries of Q no float SVD is run at the witnesses (its
+    cost is the cube of the size): every component is found as before, without float
+    checks, and one note says why."""
+    from coopkin_sym.analysis.locus.remarks import Remark
+    from coopkin_sym.present.remarks import remark_texts
+
+    system, full = case1
+    monkeypatch.setattr(witness_module, "FLOAT_CHECK_ENTRIES", 47)     # Q is 6 x 8
+    locus = compute_locus(system)
+    assert [c.equations for c in locus.components] == [c.equations for c in full.components]
+    assert [c.numbers for c in locus.components] == [c.numbers for c in full.components]
+    assert all(c.float_checks == [] for c in locus.components)
+    note = Remark.of("float_checks_left_out", rows=6, columns=8, bound=47)
+    assert note in locus.notes and Remark.of("irrational_witness_floats") not in locus.notes
+    assert remark_texts([note]) == ["No float rank tests at the witnesses: Q is 6 x 8, over "
+                                    "47 entries (a float SVD costs the cube of its size)."]
+    assert all(c.float_checks for c in full.components)
+
+
+@pytest.mark.slow   # about 30 s
+def test_a_slice_of_a_cell_of_200_arms_is_searched_without_float_checks():
+    """The first arm's shoulder and elbow free, the 1,199 other joints at exact
+    values: the search works on Q (1,200 x 1,206) without a float SVD and says so; every
+    component has numbers of its own, and its witness is checked exactly."""
+    import random
+
+    from coopkin_sym.analysis.locus.remarks import Remark
+    from coopkin_sym.model.builders import arm_cell
+
+    system = load(arm_cell(200, 6))
+    rng = random.Random(5)
+    free = ["a1_2", "a1_3"]
+    at = ",".join(f"{j}=2*atan({rng.randint(-9, 9)}/{rng.randint(1, 9)})"
+                  for j in system.joint_names if j not in free) + ",L=1"
+    locus = system.locus(at, free=free)
+    # one of the fixed arms stands at a singular configuration of its own (an angle
+    # at 0 among the values drawn): one redundant motion on the whole slice
+    assert locus.generic == {"Nm": 6, "Nc": 5, "Ni": 0, "Nr": 1, "Ng": 1194, "Nd": 1,
+                             "Nh": 0}
+    inside = system.analyze(at + ",a1_2=2*atan(1/7),a1_3=2*atan(-3/11)")
+    assert inside.numbers.as_dict() == locus.generic
+    assert Remark.of("float_checks_left_out", rows=1200, columns=1206,
+                     bound=witness_module.FLOAT_CHECK_ENTRIES) in locus.notes
+    assert len(locus.components) == 4
+    for c in locus.components:
+        assert c.numbers != locus.generic and c.float_checks == []
+        assert c.witness is None or c.witness_checked

@@ -198,3 +198,31 @@ def test_term_budget_leaves_out_huge_blocks_and_says_so():
     assert data["blocks"]["C22"] is None and "C22" in data["omitted"]
     assert data["blocks"]["C23"] is not None
     assert data["numbers"]["Nm"] == 8
+
+
+def test_the_term_budget_holds_on_every_block_before_it_is_written():
+    """Each block's largest entry is known before the block is written out (exactly
+    for C11, C23 and the twists of C12, a bound for C22): a block over the budget is
+    refused with the size it would have had, every other block is kept as it was."""
+    full = coopkin_sym.load("paper-case2-hard").analyze(generic=True).blocks()
+    a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    assert a.block_terms() == {"C11": 276, "C12": 60, "C22": 60, "C23": 7}
+    a.term_budget = 100
+    blocks, omitted = a.available_blocks()
+    assert omitted == {"C11": "C11: the indeterminate object motions would have entries "
+                              "of 276 terms, over the budget of 100; keep fewer joints "
+                              "symbolic (free=[...] / --free) or set analysis.term_budget "
+                              "= None"}
+    assert blocks["C11"] is None and blocks["C23"] == full["C23"]
+    assert blocks["C12"].shape == full["C12"].shape == (6, 5)
+    assert blocks["C22"].shape == full["C22"].shape == (8, 5)
+    at_size = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    at_size.term_budget = 276
+    blocks, omitted = at_size.available_blocks()
+    assert omitted == {} and blocks["C11"] == full["C11"] and blocks["C23"] == full["C23"]
+    b = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
+    b.term_budget = 6
+    blocks, omitted = b.available_blocks()
+    assert sorted(omitted) == ["C11", "C22", "C23"]
+    assert "entries of 7 terms, over the budget of 6" in omitted["C23"]
+    assert blocks["C12"] == b.C12 and b.coordinated_form == "rational"

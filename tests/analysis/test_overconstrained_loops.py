@@ -172,7 +172,7 @@ def test_the_overconstrained_loops_move_once(name, numbers, rank_q, gruebler):
     fm = system.finite_mobility()
     assert time.perf_counter() - start < 10
     assert (fm.dimension, fm.bounds, fm.first_order) == (1, (1, 1), 1)
-    assert (fm.classification, fm.reason) == ("kinematic_singularity", "closure_saturation")
+    assert (fm.classification, fm.reason) == ("kinematic_singularity", "closure_bezout")
     (branch,) = fm.branches
     (v,) = branch.tangent
     assert a.Q * sp.Matrix(v) == sp.zeros(12, 1) and any(x != 0 for x in v)
@@ -236,10 +236,25 @@ def test_the_germ_proof_is_local_and_refuses_what_does_not_vanish():
 
     ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "degrevlex")
     x, y = ctx.gens()
-    assert _germ_dimension([y * (y - 1), x * y], 2, 10) == 1
+    assert _germ_dimension([y * (y - 1), x * y], 2, 10) == (1, "closure_bezout")
     assert _germ_dimension([y * (y - 1), x ** 3], 2, 10) is None
-    assert _germ_dimension([y - x ** 2, (y - x ** 2) * (y - 1)], 2, 10) == 1
+    assert _germ_dimension([y - x ** 2, (y - x ** 2) * (y - 1)], 2, 10) == (1,
+                                                                            "closure_bezout")
     assert _germ_dimension([y - x ** 2, x * y], 2, 10) is None
+
+
+def test_the_germ_proof_by_saturation_on_a_surface():
+    """Two free directions (no Bezout bound for curves): ``z (z - 1) = 0`` is the plane
+    ``z = 0`` near the origin; ``x z`` vanishes there (an exact saturation finds
+    ``z - 1``, nonzero at the origin), ``x^2 - y z`` does not."""
+    import flint
+
+    from coopkin_sym.analysis.finite.closure import _germ_dimension
+
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "z"), "degrevlex")
+    x, y, z = ctx.gens()
+    assert _germ_dimension([z * (z - 1), x * z], 3, 30) == (2, "closure_saturation")
+    assert _germ_dimension([z * (z - 1), x * x - y * z], 3, 30) is None
 
 
 def test_the_command_words_the_proof():
@@ -249,8 +264,10 @@ def test_the_command_words_the_proof():
 
     out = CliRunner().invoke(app, ["analyze", "bennett-linkage", "--finite"])
     assert out.exit_code == 0, out.output
-    assert ("  Proof: the welded loop is overconstrained: its closure conditions that are "
-            "dependent here vanish, by exact ideal saturations,") in out.stdout
-    assert "(exact Gröbner bases)." in out.stdout
+    assert ("  Proof: the loop is overconstrained: the closure conditions that are "
+            "independent here cut out a smooth curve, and each dependent one vanishes along "
+            "it to an order above Bezout's bound (the product of the degrees), so on all of "
+            "it; the configuration space is that curve here (exact power series).\n"
+            ) in out.stdout
     data = CliRunner().invoke(app, ["analyze", "bricard-linkage", "--finite", "--json"])
-    assert '"reason": "closure_saturation"' in data.stdout
+    assert '"reason": "closure_bezout"' in data.stdout

@@ -243,3 +243,61 @@ def test_sympy_rational_functions_are_ranked_with_their_denominators(case):
     expected = DomainMatrix.from_list_sympy(len(rows), n, rows).to_field().rank()
     assert rank(rows, n, SYMPY) == expected
     assert rank_triple(rows, n, 1, SYMPY).q == expected
+
+
+@st.composite
+def many_arm_matrices(draw):
+    """``Q``-shaped integer matrices with many arm blocks: object columns, then each
+    arm's joint columns, each arm's rows zero outside its own joint columns; some arms
+    without rows, some without joints, some rows on no arm, blocks often rank-deficient
+    (a row the sum of two others)."""
+    dim = draw(st.integers(1, 6))
+    arms, rows, col = [], [], dim
+    count = draw(st.integers(1, 12))
+    sizes = [(draw(st.integers(0, 4)), draw(st.integers(0, 4))) for _ in range(count)]
+    n = dim + sum(j for _, j in sizes)
+    for nrows, joints in sizes:
+        block = []
+        for _ in range(nrows):
+            row = [0] * n
+            for c in list(range(dim)) + list(range(col, col + joints)):
+                row[c] = draw(st.integers(-5, 5))
+            block.append(len(rows))
+            rows.append(row)
+        if nrows >= 3 and draw(st.booleans()):
+            rows[block[-1]] = [a + b for a, b in zip(rows[block[0]], rows[block[1]],
+                                                     strict=True)]
+        arms.append((block, col, col + joints))
+        col += joints
+    for _ in range(draw(st.integers(0, 3))):           # rows of contacts on no arm
+        rows.append([draw(st.integers(-5, 5)) for _ in range(dim)] + [0] * (n - dim))
+    return rows, n, dim, arms
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=many_arm_matrices(), halves=st.booleans())
+def test_arm_by_arm_ranks_over_fields_equal_the_whole_matrix_ranks(case, halves):
+    """Over Q and GF(p) the rank triple with arm blocks is found arm by arm; it equals
+    the ranks of the whole matrix (flint, one elimination) and of its blocks."""
+    rows, n, dim, arms = case
+    if not rows:
+        return
+    if halves:
+        rows = [[Fraction(e, 2 + (i % 3)) for e in r] for i, r in enumerate(rows)]
+    whole = flint.fmpq_mat([[flint.fmpq(e.numerator, e.denominator) if halves else e
+                             for e in r] for r in rows])
+    blocks = tuple(flint.fmpq_mat([[whole[i, c] for c in range(c0, c1)] for i in block]
+                                  ).rank() if block and c1 > c0 else 0
+                   for block, c0, c1 in arms)
+    obj = flint.fmpq_mat([[whole[i, c] for c in range(dim)] for i in range(len(rows))])
+    assert rank_triple(rows, n, dim, RATIONALS, arms) == (whole.rank(), obj.rank(),
+                                                         sum(blocks), blocks)
+    if not halves:
+        p = 7
+        mod = flint.nmod_mat(rows, p)
+        blocks = tuple(flint.nmod_mat([[rows[i][c] for c in range(c0, c1)] for i in block],
+                                      p).rank() if block and c1 > c0 else 0
+                       for block, c0, c1 in arms)
+        obj = flint.nmod_mat([r[:dim] for r in rows], p)
+        assert rank_triple(rows, n, dim, PrimeField(p), arms) == (
+            mod.rank(), obj.rank(), sum(blocks), blocks)

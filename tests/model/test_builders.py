@@ -4,6 +4,7 @@ against hand derivations, and generic numbers against random rational points."""
 from __future__ import annotations
 
 import random
+from fractions import Fraction
 
 import pytest
 import sympy as sp
@@ -216,3 +217,25 @@ def test_generic_numbers_equal_a_random_point_and_home(case):
     at = random_configuration(model, rng, size=97)
     assert system.analyze(at).numbers == generic.numbers
     assert system.analyze().numbers == generic.numbers
+
+
+@pytest.mark.parametrize("arms", [25, 48, 49, 200, 1000])
+def test_a_cell_of_more_than_24_arms_gives_each_arm_its_own_direction(arms):
+    """Beyond the 24 directions of the table, rings of turned directions: every arm
+    stands and touches the object at its own exact point, its axes exact unit vectors."""
+    model = arm_cell(arms, 2, "hard")
+    assert len(model["arms"]) == len(model["contacts"]) == arms
+    assert len({tuple(c["point"]) for c in model["contacts"]}) == arms
+    assert len({tuple(a["joints"][0]["point"]) for a in model["arms"]}) == arms
+    assert model["arms"][:24] == arm_cell(24, 2, "hard")["arms"]     # the first ring
+    for c in model["contacts"]:
+        assert sum(Fraction(x) ** 2 for x in c["normal"]) == 1
+
+
+def test_a_cell_of_200_arms_has_the_numbers_of_200_arms_holding_one_object():
+    """200 six-joint arms, each welded to the object: 1,200 joints, 1,200 constraints;
+    rigid (each arm exactly constrained), generic numbers certified by the sizes."""
+    a = coopkin_sym.load(arm_cell(200, 6)).analyze(generic=True)
+    assert a.numbers.as_dict() == {"Nm": 6, "Nc": 6, "Ni": 0, "Nr": 0, "Ng": 1194,
+                                   "Nd": 0, "Nh": 0}
+    assert a.certificate.exact

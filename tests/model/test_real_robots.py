@@ -8,6 +8,8 @@ component's numbers recomputed independently at its witness."""
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import pytest
 import sympy as sp
 from independent import at_from_text, reference_analysis, reference_numbers_algebraic
@@ -105,6 +107,27 @@ def test_the_hand_at_exact_configurations_agrees_with_the_independent_analysis(
     assert ours == numbers == _independent("allegro-hand-sphere", at)
 
 
+def test_the_generic_blocks_of_the_hand_over_the_budget_are_refused_before_written():
+    """The hand's generic C12 (24,440 terms in an entry) and C22 (a bound of 7,063,244)
+    are over the term budget: both are refused with their sizes before anything is
+    written out as SymPy (nor expanded); C11 and C23 are kept, and the factored form
+    of C22 still gives each finger's small map."""
+    a = coopkin_sym.load("allegro-hand-sphere").analyze(generic=True)
+    blocks, omitted = a.available_blocks()
+    assert sorted(omitted) == ["C12", "C22"]
+    assert "C12: the coordinated object motions would have entries of 24,440 terms, " \
+        "over the budget of 20,000" in omitted["C12"]
+    assert "C22: the coordinated joint motions would have entries of up to about " \
+        "7,063,244 terms, over the budget of 20,000" in omitted["C22"]
+    assert "_twists" not in a.__dict__ and "_unbounded_coordinated" not in a.__dict__
+    assert blocks["C11"].shape == (6, 0) and blocks["C23"].shape == (16, 3)
+    assert str(blocks["C23"][1, 0]) == "2848*t_i2**2*t_i3 + 2848*t_i3"
+    text = coopkin_sym.analysis_text(a)
+    assert "C12: not shown: C12: the coordinated object motions would have entries " \
+        "of 24,440 terms" in text
+    assert "K_thumb (rows: joints; columns: v_x, v_y, v_z, w_x, w_y, w_z)" in text
+
+
 @pytest.mark.parametrize("name, at", [("panda-two-arm-box", PANDA_BENT),
                                       ("allegro-hand-sphere", HAND_BENT)])
 def test_the_real_robots_are_drawn(name, at, tmp_path):
@@ -165,6 +188,31 @@ def test_the_locus_of_the_left_panda_elbow_and_wrist_checked_at_its_witnesses():
         "panda-two-arm-box", at)
 
 
+#: every joint of both arms bent (the left shoulder and elbow l2, l4 free)
+PANDA_SHOULDER_SLICE = ("l1=2*atan(1/3),l3=2*atan(-1/2),l5=2*atan(1/5),l6=2*atan(2/3),"
+                        "l7=2*atan(1/7),r1=2*atan(-1/3),r2=2*atan(1/4),r3=2*atan(1/2),"
+                        "r4=2*atan(-2/3),r5=2*atan(1/6),r6=2*atan(3/4),r7=2*atan(-1/5)")
+
+
+def test_the_locus_of_the_left_panda_shoulder_and_elbow_is_certified():
+    """Its certificate factors polynomials whose factors have coefficients beyond a C
+    long (python-flint's own factor fails to sort them): certified complete, the
+    components with a rational witness checked there."""
+    locus = coopkin_sym.load("panda-two-arm-box").locus(
+        PANDA_SHOULDER_SLICE, free=["l2", "l4"], certify=True)
+    assert locus.certified
+    lost = {"Nm": 8, "Nc": 5, "Ni": 0, "Nr": 3, "Ng": 6, "Nd": 1, "Nh": 0}
+    cubic = "236766750*t_l4**3 - 2380112295*t_l4**2 + 5451054946*t_l4 + 1481497600"
+    assert _found(locus) == {("s_l2", cubic): ("hypersurface", lost),
+                             ("s_l2", "t_l4"): ("isolated", lost),
+                             ("t_l2", "t_l4"): ("isolated", lost),
+                             (cubic, "t_l2"): ("isolated", lost)}
+    rational = [c for c in locus.components if c.witness is not None]
+    assert len(rational) == 2
+    _check_witnesses("panda-two-arm-box", SimpleNamespace(components=rational,
+                                                          generic=locus.generic))
+
+
 @pytest.mark.slow   # about 10 s
 def test_the_locus_of_the_left_panda_elbow_and_wrists_checked_at_its_witnesses():
     locus = coopkin_sym.load("panda-two-arm-box").locus(PANDA_SLICE,
@@ -220,6 +268,7 @@ def test_the_readme_shows_what_the_commands_print_for_the_pandas(k):
     from coopkin_sym.cli import app
 
     command, *shown = _readme_runs()[k]
+    shown = [line for line in shown if line != "..."]      # a line "...": lines left out
     result = CliRunner().invoke(app, command.split())
     assert result.exit_code == 0, result.output
     assert shown and all(line in result.stdout.splitlines() for line in shown), (

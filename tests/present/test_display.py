@@ -224,7 +224,10 @@ def test_pretty_says_more_on_more_lines(results):
     assert lines[3] == "  Blocks: C11 (6 x 1), C12 (6 x 2), C22 (2 x 2), C23 (2 x 0)"
     locus = pretty(results["locus"]).splitlines()
     assert locus[1] == "  completeness not certified (run with --certify)"
-    assert locus[4] == ("  #1 q1 = -pi/2, q2 = -pi/2 (isolated point): Nm 2 -> 3, "
+    assert locus[4:6] == [
+        "  family A (4 components, e.g. #1): Nm 2 -> 3, Nc 2 -> 3, Nh 0 -> 1",
+        "  family B (#5): Nm 2 -> 3, Nc 2 -> 3, Ni 1 -> 3, Ng 1 -> 3, Nh 0 -> 1"]
+    assert locus[6] == ("  #1 q1 = -pi/2, q2 = -pi/2 (isolated point): Nm 2 -> 3, "
                         "Nc 2 -> 3, Nh 0 -> 1; becomes hyperstatic")
     nasty = pretty(results["nasty locus"]).splitlines()
     assert nasty[-1] == "  ... and 238 more components"
@@ -307,6 +310,11 @@ def test_html_is_balanced_and_states_the_numbers(results, name):
         assert ["c1", "hard", "a1 link 1"] in parsed.rows
         return
     numbers = numbers_of(results[name])
+    if isinstance(results[name], Locus):   # compact: names (meanings as tooltips), values
+        assert list(NUMBER_NAMES) in parsed.rows
+        assert [str(numbers[k]) for k in NUMBER_NAMES] in parsed.rows
+        assert all(f'title="{NUMBER_WORDS[k]}"' in page for k in NUMBER_NAMES)
+        return
     for k in NUMBER_NAMES:
         assert [k, str(numbers[k]), NUMBER_WORDS[k]] in parsed.rows, k
 
@@ -335,10 +343,12 @@ def test_html_of_a_locus_has_a_row_per_component(results):
     nasty = results["nasty locus"]._repr_html_()
     parsed = parse_html(nasty)
     assert "... and 50 more components." in "".join(parsed.text)
-    # twelve rows open, the others (up to 200) folded under one line that says so
-    opened, folded = nasty.split("<details><summary>components #13 to #200</summary>")
-    assert opened.count("<tr><td") == 7 + 12       # the generic numbers, then twelve
-    assert folded.count("<tr><td") == 188
+    # many components of one family: the family is said, the components (up to 200)
+    # are folded under one line that says so
+    opened, folded = nasty.split("<details><summary>components #1 to #200</summary>")
+    assert opened.count("<tr><td") == 1 + 1       # the generic numbers, the family
+    assert "<p>By what changes: 1 family.</p>" in opened
+    assert folded.count("<tr><td") == 200
     listed = [r[0] for r in parsed.rows if r and r[0].startswith("#") and r[0] != "#"]
     assert [x.split()[0] for x in listed] == [f"#{k}" for k in range(1, 201)]
     assert "Completeness: complete (certified)." in "".join(parsed.text)
@@ -374,6 +384,8 @@ def test_display_builds_no_large_block():
 def test_display_says_a_block_over_the_budget_is_too_large(monkeypatch):
     a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
     a.term_budget = 10
+    # the budget held on C22 alone: C11 (276 terms) and the rest still shown
+    monkeypatch.setattr(type(a), "_fits", lambda self, name, vectors, what: None)
     monkeypatch.setattr(display, "_ENTRY_TERMS", 10**6)
     monkeypatch.setattr(display, "_BLOCK_TERMS", 10**9)
     monkeypatch.setattr(display, "_MAX_LATEX", 10**9)
@@ -410,6 +422,8 @@ def test_no_latex_over_what_mathjax_accepts(results, monkeypatch):
         assert len(results[name]._repr_latex_()) <= mathjax.MATHJAX_LATEX_LIMIT, name
     a = coopkin_sym.load("paper-case2-hard").analyze(generic=True)
     a.term_budget = 10
+    # the budget held on C22 alone: C11 (276 terms) and the rest still shown
+    monkeypatch.setattr(type(a), "_fits", lambda self, name, vectors, what: None)
     monkeypatch.setattr(display, "_ENTRY_TERMS", 10**6)
     monkeypatch.setattr(display, "_BLOCK_TERMS", 10**9)
     monkeypatch.setattr(display, "_MAX_LATEX", 10**9)

@@ -298,3 +298,31 @@ def test_pictures_get_the_permissions_of_a_plain_file(tmp_path):
     plain.write_text("x")
     out = save_picture(load("paper-case1-hard"), tmp_path / "case1.png")
     assert stat.S_IMODE(os.stat(out).st_mode) == stat.S_IMODE(os.stat(plain).st_mode)
+
+
+def test_a_legend_of_many_arms_names_twelve_and_counts_the_others():
+    from coopkin_sym.model.builders import arm_cell
+    from coopkin_sym.present.draw import LEGEND_ARMS
+
+    fig = draw_system(load(arm_cell(30, 2)), labels=False)
+    texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    arms = [t for t in texts if t.startswith("arm a")]
+    assert arms == [f"arm a{k}" for k in range(1, LEGEND_ARMS)]
+    assert "19 more arms" in texts
+    small = draw_system(load(arm_cell(12, 2)), labels=False)
+    assert sum(t.get_text().startswith("arm a") for t in
+               small.axes[0].get_legend().get_texts()) == 12
+
+
+def test_too_many_names_are_left_out_and_said():
+    """Over MAX_NAME_LABELS names (joints and contacts) the labels would cover the
+    picture: none is drawn, and a note says how many there were."""
+    from coopkin_sym.errors import OutputSkipped
+    from coopkin_sym.model.builders import arm_cell
+
+    with pytest.warns(OutputSkipped, match="name labels left out: 240 names"):
+        fig = draw_system(load(arm_cell(60, 3)))
+    assert not [t for t in fig.axes[0].texts if (t.get_gid() or "").startswith("label:")]
+    fig = draw_system(load(arm_cell(10, 3)))           # 40 names: drawn
+    assert len([t for t in fig.axes[0].texts
+                if (t.get_gid() or "").startswith("label:")]) > 20

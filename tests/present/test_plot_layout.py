@@ -61,7 +61,7 @@ def test_axes_keep_their_size_and_the_legend_stays_in_the_figure(count):
 
 
 def test_long_legend_entries_are_wrapped_and_long_lists_counted():
-    fig = plot_components(crowded(30), None)
+    fig = plot_components(crowded(30), None, by="component")
     texts = [t.get_text() for t in fig.legends[0].get_texts()]
     assert all(len(line) <= 64 for t in texts for line in t.splitlines())
     assert all(t.count("\n") <= 2 for t in texts)

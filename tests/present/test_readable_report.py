@@ -188,7 +188,7 @@ def _styles(lines) -> list[tuple[str, str]]:
 
 @pytest.mark.parametrize("n", [30, pytest.param(102, marks=pytest.mark.slow)])
 def test_every_legend_entry_and_every_component_has_its_own_style(n):
-    fig = plot_components(planted_lines(n), None, ("q1", "q2"))
+    fig = plot_components(planted_lines(n), None, ("q1", "q2"), by="component")
     entries = [h for h in fig.legends[0].legend_handles if h.get_label().startswith("#")]
     assert len(entries) == min(n, LEGEND_ENTRIES)
     assert len(set(_styles(entries))) == len(entries)
@@ -200,6 +200,24 @@ def test_every_legend_entry_and_every_component_has_its_own_style(n):
     assert labels[-1] == "exact witness point"
     assert (labels[-2] == f"\u2026 and {n - LEGEND_ENTRIES} more (see the report)") \
         == (n > LEGEND_ENTRIES)
+
+
+def test_many_components_of_few_families_are_coloured_by_family():
+    nm4 = dict(GENERIC, Nm=4)
+    locus = planted_lines(30)
+    locus.components += [Component(["t_q2"], nm4, None, True)]
+    fig = plot_components(locus, None, ("q1", "q2"))                 # by="auto"
+    labels = [h.get_label() for h in fig.legends[0].legend_handles]
+    assert labels == ["A: Nm 2 \u2192 3 (30 components; e.g. #1)",
+                      "B: Nm 2 \u2192 4 (1 component; e.g. #31)", "exact witness point"]
+    lines = fig.axes[0].get_lines()
+    marks = [a for a in lines if (a.get_gid() or "").startswith("marks:")]
+    assert len(marks) == 31 and set(_styles(marks[:30])) == {_styles(marks[:1])[0]}
+    assert _styles(marks[30:]) != _styles(marks[:1])
+    few = plot_components(planted_lines(5), None, ("q1", "q2"))       # five: by component
+    assert sum(h.get_label().startswith("#") for h in few.legends[0].legend_handles) == 5
+    with pytest.raises(PlotError, match="by: 'colour' is not one of"):
+        plot_components(locus, None, ("q1", "q2"), by="colour")
 
 
 def test_the_certificate_notes_are_said_once_with_their_count():

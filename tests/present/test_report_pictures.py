@@ -51,3 +51,30 @@ def test_gained_motion_and_the_cap(tmp_path, case1, monkeypatch):
     text = written[0].read_text()
     assert text.count("<figcaption>Component ") == 2
     assert "3 more components with a real witness are not drawn (at most 2 pictures" in text
+
+
+def test_an_irrational_length_is_drawn_at_a_rational_value_and_said():
+    """Paper case 2's q4 is prismatic: at an algebraic witness with q4 = -3*sqrt(3)/5
+    the picture is drawn with q4 within 1e-9 of it (angles stay exact), and its
+    caption gives that value."""
+    from fractions import Fraction
+
+    from coopkin_sym.analysis.locus.types import Component, Locus
+    from coopkin_sym.present.report.pictures import system_picture_jobs
+
+    system = load("paper-case2-hard")
+    generic = system.analyze(generic=True).numbers.as_dict()
+    point = {"q1": "pi/3", "q2": "0", "q3": "0", "q4": "-3*sqrt(3)/5", "q5": "0",
+             "q6": "0", "q7": "0", "q8": "0", "L": "1"}
+    comp = Component(["t_q1**2 - 3"], dict(generic, Nm=generic["Nm"] + 1), None, True,
+                     kind="hypersurface", algebraic_witness={
+                         "point": point, "alpha": "t_q1", "root_of": "alpha**2 - 3",
+                         "root": "sqrt(3)", "interval": ["1", "2"],
+                         "approx": {"q1": "1.0471975512", "q4": "-1.03923048454"}})
+    locus = Locus("paper-case2-hard", ["t_q1"], "", generic, [comp])
+    ((key, job),) = system_picture_jobs(locus, system, dpi=40)
+    png, (_, name, caption) = job()
+    assert png.startswith(b"\x89PNG") and name == "component 1"
+    drawn = caption.split("Drawn with q4 = ")[1].split(" ")[0]
+    assert abs(Fraction(drawn) + Fraction(3) * Fraction("1.7320508075688772") / 5) < 1e-9
+    assert "its algebraic witness q1=pi/3" in caption and "q4=-3*sqrt(3)/5" in caption

@@ -37,23 +37,27 @@ Example
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from fractions import Fraction
 
+import flint
 import sympy as sp
 
 from coopkin_sym.analysis.finite.algebraic import AlgebraicPoint, algebraic_point
-from coopkin_sym.analysis.finite.closure import welded_loop_dimension
+from coopkin_sym.analysis.finite.closure import closure_dimension
+from coopkin_sym.analysis.finite.closure_map import ClosureMap, closure_map
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
 from coopkin_sym.analysis.finite.forms import (
     algebraic_directions,
     diagonal_form,
+    field_directions,
     quadratic_matrix,
     real_directions,
 )
 from coopkin_sym.analysis.finite.reduce import Reduced, echelon, reduce_map
 from coopkin_sym.analysis.finite.reduce import inverse as _field_inverse
 from coopkin_sym.exact.matrix import RATIONALS, rank
-from coopkin_sym.exact.realroot import element_expression
+from coopkin_sym.exact.realroot import RealRoot, element_expression
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model
@@ -65,11 +69,45 @@ CLASSES = ("regular", "kinematic_singularity", "bifurcation", "cone", "shaky", "
 
 
 @dataclass(frozen=True)
+class RootDirection:
+    """An irrational branch tangent, exactly: in the two first-order motions ``free``
+    (coordinates of the expansion) the branch leaves along ``(s, 1)``, ``s`` the real
+    algebraic number ``root`` (its minimal polynomial over Q and an isolating interval
+    with rational ends, :class:`~coopkin_sym.exact.realroot.RealRoot`); ``tangent`` is
+    the branch's velocity ``(u, qdot)`` with ``s`` kept as the symbol ``s`` (each entry
+    linear in it, with coefficients in the field of the configuration).
+
+    Example
+    -------
+    >>> r = RealRoot.all_of([-2, 0, 0, 1])[0]              # 2^(1/3)
+    >>> RootDirection(r, ("u_q1", "u_q2"), (sp.Symbol("s"), sp.Integer(1))).polynomial
+    s**3 - 2
+    """
+
+    root: RealRoot
+    free: tuple[str, ...]
+    tangent: tuple[sp.Expr, ...]
+
+    @property
+    def polynomial(self) -> sp.Expr:
+        """The minimal polynomial of ``s`` over Q (integer coefficients)."""
+        return sp.Poly(list(reversed(self.root.coeffs)), sp.Symbol("s")).as_expr()
+
+    @property
+    def interval(self) -> tuple[Fraction, Fraction]:
+        """The isolating interval ``(lo, hi]`` of ``s``, rational ends."""
+        return self.root.lo, self.root.hi
+
+
+@dataclass(frozen=True)
 class Branch:
     """One branch of the closed system's motions through the configuration: its
     ``dimension``, and its tangent space as exact velocity vectors ``(u, qdot)`` (the
     columns of ``Q``: ``Q v = 0``), or, for a cone, the quadratic form whose zeros
-    (velocities ``v``) it is (``cone``, a SymPy expression in ``v1, v2, ...``).
+    (velocities ``v``) it is (``cone``, a SymPy expression in ``v1, v2, ...``). A
+    tangent leaving along an irrational root of a binary form (degree three or more:
+    ``CRootOf`` in :attr:`tangent`) also has it as its minimal polynomial and an
+    isolating interval (``direction``, :class:`RootDirection`).
 
     Example
     -------
@@ -80,6 +118,7 @@ class Branch:
     dimension: int
     tangent: tuple[tuple, ...] | None = None
     cone: sp.Expr | None = None
+    direction: RootDirection | None = None
 
 
 @dataclass(frozen=True)
@@ -282,11 +321,13 @@ def _velocity(cmap: ConstraintMap, red: Reduced, x: list) -> tuple:
         y = -a.LUsolve(b)
         for k, p in enumerate(red.pivots):
             z[p] = sp.simplify(y[k]) if cmap.point is None else sp.radsimp(y[k])
+    if isinstance(cmap, ClosureMap):        # the object's coordinates, left out there
+        z, cmap = cmap.extend(z), cmap.base
+        names = cmap.names
     scale = cmap.scale
     velocity = [scale[k] * z[name] for k, name in enumerate(names)]
-    if cmap.point is not None:          # radicals written out simply
-        velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) else v
-                    for v in velocity]
+    velocity = [sp.radsimp(sp.expand(v)) if isinstance(v, sp.Basic) and not v.is_Rational
+                else v for v in velocity]          # radicals written out simply
     nobj = 3 if cmap.planar else 6
     out = velocity[:nobj]
     moving = iter(velocity[nobj:])
@@ -370,29 +411,69 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
                                            for i, c in enumerate(lin)) ** 2
                              for x, lin in zip(ds, lins, strict=True)))
         return dict(out, classification="cone", branches=(Branch(n - 1, None, cone),))
-    if n == 2 and algebraic:
-        count, multiple, _ = algebraic_directions([field.coefficients(h)],
-                                                  cmap.point.field)
-        if multiple or not count:
-            return out
-        kind = "bifurcation" if count > 1 else "kinematic_singularity"
-        return dict(out, bounds=(1, 1), dimension=1, classification=kind,
-                    reason="binary_form_roots",
-                    branches=tuple(Branch(1) for _ in range(count)),
-                    orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
     if n == 2:
-        directions = real_directions([h], 2)
-        if any(m > 1 for _, m in directions):
-            return out
-        branches = []
-        for (a, b), _m in directions:
-            a = a.expression() if hasattr(a, "expression") else sp.Rational(str(a))
-            branches.append(Branch(1, _kernel(cmap, red, [[a, sp.Integer(b)]])))
-        kind = "bifurcation" if len(branches) > 1 else "kinematic_singularity"
-        return dict(out, bounds=(1, 1), dimension=1, classification=kind,
-                    reason="binary_form_roots", branches=tuple(branches),
-                    orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
+        return _binary_branches(cmap, red, h, d, out)
     return out
+
+
+def _binary_branches(cmap: ConstraintMap, red: Reduced, h, d: int, out: dict) -> dict:
+    """In two first-order motions, one branch per simple real root of the lowest form
+    ``h`` (of degree ``d``), each with its exact tangent (:class:`RootDirection` when
+    irrational); ``out`` (undecided) when a real root is multiple."""
+    if cmap.point is not None:
+        field = cmap.series_field(red.free, red.order)
+        directions, multiple = field_directions(field.coefficients(h), cmap.point.field)
+    else:
+        directions = real_directions([h], 2)
+        multiple = any(m > 1 for _, m in directions)
+    if multiple or not directions:
+        return out
+    along = _velocity(cmap, red, [sp.Integer(1), sp.Integer(0)])      # x = (1, 0)
+    across = _velocity(cmap, red, [sp.Integer(0), sp.Integer(1)])     # x = (0, 1)
+    s = sp.Symbol("s")
+    branches = []
+    for (a, _b), _m in directions:
+        if (a, _b) == (1, 0):
+            branches.append(Branch(1, (along,)))
+            continue
+        root = a if isinstance(a, RealRoot) else RealRoot.all_of(
+            [-int(flint.fmpq(a).p), int(flint.fmpq(a).q)])[0]
+        if root.degree > 1:                 # an interval that reads: width 1/1000 at most
+            root = replace(root, **dict(zip(("lo", "hi"), root.refine(Fraction(1, 1000)),
+                                            strict=True)))
+        tangent = tuple(sp.expand(s * x + y) for x, y in zip(along, across, strict=True))
+        value = root.expression()
+        exact = tuple(sp.expand(t.subs(s, value)) for t in tangent)
+        if cmap.point is not None:
+            exact = tuple(sp.radsimp(x) for x in exact)
+        branches.append(Branch(1, (exact,), direction=None if root.degree == 1 else
+                               RootDirection(root, tuple(red.free), tangent)))
+    kind = "bifurcation" if len(branches) > 1 else "kinematic_singularity"
+    return dict(out, bounds=(1, 1), dimension=1, classification=kind,
+                reason="binary_form_roots", branches=tuple(branches),
+                orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
+
+
+def _closure_expansion(cmap: ConstraintMap, orders: list[int], notes: tuple,
+                       where: dict | None) -> FiniteMobility | None:
+    """The finite mobility decided by expanding the loop closure's polynomials instead
+    of the constraint map (:mod:`.closure_map`: without the conditions that hold
+    identically or are proved redundant), or None when that does not decide either."""
+    closed = closure_map(cmap)
+    if closed is None or len(closed.polys) >= len(cmap.linear()):
+        return None
+    for k in orders:
+        red = reduce_map(closed, k)
+        if red.n != reduce_map(cmap, 1).n:          # not the same first-order motions
+            return None
+        found = _decide_singular(closed, red)
+        if found["dimension"] is not None:
+            return FiniteMobility(found["dimension"], found["bounds"], red.n,
+                                  found["classification"], found["reason"],
+                                  found["branches"], found["orders"], k,
+                                  notes + ("closure_expansion",),
+                                  tuple(str(g) for g in red.g), (), where)
+    return None
 
 
 def _only_origin(forms: list, n: int, field=None) -> bool:
@@ -467,22 +548,25 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
     for k in orders:
         red = reduce_map(work, k)
         found = _decide_singular(work, red)
-        if found["dimension"] is None and k == orders[-1] and not extra and point is None:
-            proved = welded_loop_dimension(cmap, n)
+        if (found["dimension"] is None and k == orders[-1]
+                and found["bounds"][1] + extra == n):      # every constraint vanishes
+            proved = closure_dimension(cmap, n)
             if proved is not None:
                 basis = [_unit(n, i) for i in range(n)]
                 return FiniteMobility(n, (n, n), n, "kinematic_singularity"
-                                      if numbers_change else "regular", "closure_saturation",
+                                      if numbers_change else "regular", proved[1],
                                       (Branch(n, _kernel(cmap, first, basis)),),
-                                      ((1, n),), 1, notes)
+                                      ((1, n),), 1, notes, field=where)
+            notes = notes + ("closure_saturation_inconclusive",)
         if (found["dimension"] is None and k == orders[-1] and not extra
-                and point is not None and len(cmap.positions) > 1
-                and all(x == "weld" for x in cmap.positions)):
-            notes = notes + ("no_closure_saturation_over_field",)
+                and any(g.is_zero() for g in red.g)):   # rows that vanish: the closure's
+            closed = _closure_expansion(cmap, orders, notes, where)
+            if closed is not None:
+                return closed
         if found["dimension"] is not None or k == orders[-1]:
             lower, upper = found["bounds"]
             branches = tuple(Branch(b.dimension + extra, None if b.tangent is None else
-                                    b.tangent + tuple(motions), b.cone)
+                                    b.tangent + tuple(motions), b.cone, b.direction)
                              for b in found["branches"])
             if found["dimension"] == 0 and extra:        # the group's orbit alone
                 branches = (Branch(extra, tuple(motions)),)

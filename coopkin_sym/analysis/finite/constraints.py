@@ -276,6 +276,39 @@ class ConstraintMap:
             out.append((pt, model))
         return out
 
+    def joint_lines(self) -> tuple[list, list]:
+        """Each joint's axis and point at the configuration (exact rationals, or
+        :class:`~coopkin_sym.exact.numberfield.Number` over a number field; the point
+        None for a prismatic joint), by column."""
+        exact = RationalField() if self.point is None else self.series_field((), 0)
+        _, axes, origins = self.chain.poses(
+            exact, lambda col, spec, fixed: self._fixed(exact, col, fixed))
+        if self.point is None:
+            return axes, origins
+
+        def number(v):
+            return None if v is None else [exact.constant_term(exact.red(x)) for x in v]
+        return [number(a) for a in axes], [number(o) for o in origins]
+
+    def contact_normals(self) -> list[tuple]:
+        """Each contact's normal at the configuration (as :meth:`contact_points`; None
+        when the contact has none)."""
+        exact = RationalField() if self.point is None else self.series_field((), 0)
+        home = self._home(exact)
+        out = []
+        for (arm, link, _, _, _), (_, home_nm) in zip(
+                self.chain.data["contacts"], self.chain._bound(exact)[1], strict=True):
+            if home_nm is None:
+                out.append(None)
+                continue
+            rot0 = home[arm][link][0] if arm is not None else None
+            nm = tuple(home_nm) if rot0 is None else tuple(
+                sum((rot0[i][j] * home_nm[j] for j in range(3)), 0) for i in range(3))
+            if self.point is not None:
+                nm = tuple(exact.constant_term(exact.red(exact.lift(x))) for x in nm)
+            out.append(nm)
+        return out
+
     def linear(self) -> list[list]:
         """The linear part ``J`` of ``F`` at the configuration (exact rationals, or
         :class:`~coopkin_sym.exact.numberfield.Number` over a number field)."""

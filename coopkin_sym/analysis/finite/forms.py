@@ -15,6 +15,8 @@ from fractions import Fraction
 
 import flint
 
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.field_roots import real_root_count, real_roots
 from coopkin_sym.exact.realroot import RealRoot
 
 
@@ -94,8 +96,8 @@ def real_directions(forms: Sequence, n: int) -> list[tuple[object, int]] | None:
         return []
     x, y = ctx.gens()[:2]
     out: list[tuple[object, int]] = []
-    _, factors = g.factor()
-    first = dict((str(f), e) for f, e in forms[0].factor()[1])
+    _, factors = factor(g)
+    first = dict((str(f), e) for f, e in factor(forms[0])[1])
     for f, _e in factors:
         mult = first.get(str(f), 1)
         if f.degrees()[0] == 0:                        # a power of y: the direction x
@@ -120,28 +122,6 @@ def _gcd(a: int, b: int) -> int:
     while b:
         a, b = b, a % b
     return a
-
-
-def _sturm_count(field, p: list) -> int:
-    """The number of distinct real roots of ``p`` (coefficients in the real number
-    field ``field``, lowest degree first, nonzero): Sturm's theorem, with the signs of
-    the leading coefficients at the real embedding decided exactly."""
-    p = field.gcd([p])                    # monic
-    if len(p) <= 1:
-        return 0
-    seq = [p, [field.element(c * i) for i, c in enumerate(p)][1:]]
-    while True:
-        r = field._rem(seq[-2], seq[-1])
-        if not r:
-            break
-        seq.append([field.element(-c) for c in r])
-    plus = [field.sign(q[-1]) for q in seq]
-    minus = [s if (len(q) - 1) % 2 == 0 else -s for s, q in zip(plus, seq, strict=True)]
-
-    def changes(signs):
-        signs = [s for s in signs if s]
-        return sum(1 for a, b in zip(signs, signs[1:], strict=False) if a != b)
-    return changes(minus) - changes(plus)
 
 
 def algebraic_directions(coefficients: Sequence[dict], field) -> tuple[int, int, bool]:
@@ -179,11 +159,49 @@ def algebraic_directions(coefficients: Sequence[dict], field) -> tuple[int, int,
             p[i] = field.element(p[i] + c.value)
         polys.append(p)
     common = field.gcd(polys)
-    count = _sturm_count(field, common) if len(common) > 1 else 0
+    count = real_root_count(field, common) if len(common) > 1 else 0
     multiple = at_infinity and infinity_mult > 1
     if count:
         first = polys[0]
         derivative = [field.element(c * i) for i, c in enumerate(first)][1:]
         shared = field.gcd([common, derivative])
-        multiple = multiple or (len(shared) > 1 and _sturm_count(field, shared) > 0)
+        multiple = multiple or (len(shared) > 1 and real_root_count(field, shared) > 0)
     return count + int(at_infinity), multiple, degree
+
+
+def field_directions(coefficients: dict, field) -> tuple[list[tuple[object, int]], bool]:
+    """The real directions of one binary form over a real number field (``(i, j)`` ->
+    coefficient of ``x^i y^j``, as :class:`~coopkin_sym.exact.numberfield.Number`), as
+    :func:`real_directions` gives them over Q: ``((1, 0), m)`` and ``((root, 1), m)``
+    with ``root`` a :class:`~coopkin_sym.exact.realroot.RealRoot` over Q (its minimal
+    polynomial and an isolating interval, :func:`~coopkin_sym.exact.field_roots.real_roots`);
+    ``m`` is 1 for a simple root. The flag says whether some real direction is a
+    multiple root (then ``m`` is 2 there: at least).
+
+    Example
+    -------
+    >>> import flint
+    >>> from coopkin_sym.exact.numberfield import RealNumberField
+    >>> k = RealNumberField(flint.fmpq_poly([-2, 0, 1]), RealRoot.all_of([-2, 0, 1])[1])
+    >>> # y (x^3 - sqrt(2) y^3): the directions (1, 0) and x = 2^(1/6) y
+    >>> found, multiple = field_directions({(3, 1): k.number(1), (0, 4): -k.number([0, 1])}, k)
+    >>> found[0], found[1][0][0].coeffs, multiple
+    (((1, 0), 1), (-2, 0, 0, 0, 0, 0, 1), False)
+    """
+    degree = max(sum(m) for m in coefficients)
+    top = max(i for i, _ in coefficients)
+    p = [field.element(0)] * (top + 1)
+    for (i, _), c in coefficients.items():
+        p[i] = field.element(p[i] + c.value)
+    out: list[tuple[object, int]] = []
+    multiple = degree - top > 1
+    if degree > top:
+        out.append(((1, 0), degree - top))
+    derivative = [field.element(c * i) for i, c in enumerate(p)][1:]
+    shared = field.gcd([p, derivative]) if len(p) > 1 else []
+    repeated = real_roots(field, shared) if len(shared) > 1 else []
+    multiple = multiple or bool(repeated)
+    for root in real_roots(field, p) if len(p) > 1 else []:
+        twice = any((root.coeffs, root.index) == (r.coeffs, r.index) for r in repeated)
+        out.append(((root, 1), 2 if twice else 1))
+    return out, multiple

@@ -25,6 +25,7 @@ import sympy as sp
 
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.exact import elimination as el
+from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model
@@ -159,7 +160,7 @@ class _RealZeros:
 
     def strip(self, p: Poly) -> Poly:
         """The square-free part of ``p`` without factors that have no real zeros."""
-        _, factors = p.factor()
+        _, factors = factor(p)
         out = p.context().constant(1)
         for f, _e in factors:
             f = _primitive(f)

@@ -28,6 +28,7 @@ import os
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
+from coopkin_sym.analysis.locus.families import Family, group_families
 from coopkin_sym.analysis.numbers import NUMBER_NAMES
 from coopkin_sym.analysis.renderers import action
 from coopkin_sym.errors import ArgumentError, MissingDependency
@@ -173,10 +174,12 @@ class LocusMethods:
         system = system if system is not None else self._system
         return action(self, "write")(path, format, system=system, pairs=pairs)
 
-    def plot(self, pair: Sequence[str] | None = None, *, system: Any = None) -> Figure:
+    def plot(self, pair: Sequence[str] | None = None, *, system: Any = None,
+             by: str = "auto") -> Figure:
         """A matplotlib figure of the real components on a pair of joint variables
         (see :func:`coopkin_sym.present.locus_plot.plot_components`; default: the first
-        pair that occurs together in a component).
+        pair that occurs together in a component), coloured ``by`` component or by
+        family (``"auto"``: by family when many components are drawn).
 
         Example
         -------
@@ -186,7 +189,7 @@ class LocusMethods:
         True
         """
         system = system if system is not None else self._system
-        return action(self, "plot")(pair, system=system)
+        return action(self, "plot")(pair, system=system, by=by)
 
     def table(self) -> list[dict[str, Any]]:
         """One plain row per component: its number (``#``, from 1), the component it
@@ -213,6 +216,21 @@ class LocusMethods:
                 "witness": assignments_text(point) if point
                 else None})
         return rows
+
+    def families(self) -> list[Family]:
+        """The components grouped by their numbers: one
+        :class:`~coopkin_sym.analysis.locus.families.Family` for each kind of singular
+        configuration (what changes), with its members and the one to show first, in
+        the order of their first member.
+
+        Example
+        -------
+        >>> from coopkin_sym import load
+        >>> locus = load("paper-case1-hard").locus()
+        >>> [(f.changes, f.members) for f in locus.families()][0]
+        ({'Nm': (2, 3), 'Nc': (2, 3), 'Nh': (0, 1)}, (0, 1, 2, 3))
+        """
+        return group_families(self.components, self.generic)
 
     def to_pandas(self):
         """:meth:`table` as a :class:`pandas.DataFrame`, one row per component (the

@@ -31,6 +31,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     # notes
     "candidates_probabilistic": (),
     "irrational_witness_floats": (),
+    "float_checks_left_out": ("rows", "columns", "bound"),
     "pi_chart": (),
     "uniform_scaling": ("parameter",),
     "snapped_model": ("count", "largest"),

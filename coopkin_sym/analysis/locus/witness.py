@@ -29,10 +29,12 @@ from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
 from coopkin_sym.analysis.locus.conditions import Condition, Value
 from coopkin_sym.analysis.locus.context import SearchContext
+from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.types import Component, FloatCheck, WitnessMotions
 from coopkin_sym.analysis.mobility import Analysis, numbers_modulo
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks
-from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data
+from coopkin_sym.analysis.sweep.chains import ChainQ, RationalField, chain_data, row_contacts
+from coopkin_sym.analysis.sweep.compiled import _arm_blocks
 from coopkin_sym.exact import matrix
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
@@ -46,6 +48,10 @@ from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 from coopkin_sym.model.configuration import Configuration, Point
 
 FLOAT_DISTANCES = (1e-6, 1e-9, 1e-12)
+#: The float rank tests at witnesses are run when ``Q`` has at most this many entries
+#: (a float SVD costs the cube of its size: about 8 s CPU for 1,200 x 1,206); beyond
+#: it they are left out and the locus says so (see :func:`floats_left_out`).
+FLOAT_CHECK_ENTRIES = 40_000
 
 
 def complete_point(ctx: SearchContext, point_so_far: dict, point: dict[str, Fraction],
@@ -344,6 +350,8 @@ def float_checks(ctx: SearchContext, witness: Point, analysis,
     """Float ranks at the witness, at points near it, and with lengths rescaled. The
     nearby points move a revolute joint of the component's last equation (so they leave
     the component, and stay in its parent)."""
+    if floats_left_out(ctx) is not None:
+        return []
     checks = []
     scale = ", ".join(f"{p}={v}" for p, v in ctx.config.parameters.items()) or "-"
     probe = _FloatProbe.of(ctx, witness)
@@ -372,6 +380,16 @@ def float_checks(ctx: SearchContext, witness: Point, analysis,
     return checks
 
 
+def floats_left_out(ctx: SearchContext) -> Remark | None:
+    """The note that the float rank tests were left out (``Q`` over
+    :data:`FLOAT_CHECK_ENTRIES` entries), or None when they are run."""
+    rows, columns = len(ctx.rows0), ctx.model.object_dim + len(ctx.model.joints)
+    if rows * columns <= FLOAT_CHECK_ENTRIES:
+        return None
+    return Remark.of("float_checks_left_out", rows=rows, columns=columns,
+                     bound=FLOAT_CHECK_ENTRIES)
+
+
 def _both(ctx: SearchContext, probe: _FloatProbe | None, point: Point
           ) -> tuple[dict[str, int], dict[str, int]]:
     """The exact and the float numbers at ``point``: from ``Q`` there (the compiled
@@ -395,6 +413,7 @@ class _FloatProbe:
         base = Configuration(parameters=dict(parameters))
         self.chain = ChainQ(chain_data(model, base, [j.name for j in self.joints]))
         self.field = RationalField()
+        self.arms = _arm_blocks(model, row_contacts(model), model.object_dim)
 
     @classmethod
     def of(cls, ctx: SearchContext, point: Point) -> _FloatProbe | None:
@@ -420,18 +439,14 @@ class _FloatProbe:
         d, n = self.model.object_dim, self.chain.n
         m, r = len(rows), len(self.joints)
 
-        def exact(cols: range) -> int:
-            return matrix.rank([[row[k] for k in cols] for row in rows], len(cols),
-                               matrix.RATIONALS)
-
         q = np.array([[int(x.p) / int(x.q) for x in row] for row in rows],  # float-ok
                      dtype=float).reshape(m, n)
 
         def rank(a: np.ndarray) -> int:
             return int(np.linalg.matrix_rank(a)) if a.size else 0  # float-ok
 
-        exact_numbers = numbers_from_ranks(m, r, exact(range(n)), exact(range(d)),
-                                           exact(range(d, n)), dim=d)
+        exact = matrix.rank_triple(rows, n, d, matrix.RATIONALS, self.arms)  # arm by arm
+        exact_numbers = numbers_from_ranks(m, r, *exact.triple, dim=d)
         float_ranks = numbers_from_ranks(m, r, rank(q), rank(q[:, :d]), rank(q[:, d:]),
                                          dim=d)
         return exact_numbers.as_dict(), float_ranks.as_dict()

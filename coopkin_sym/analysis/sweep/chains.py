@@ -75,6 +75,11 @@ def _terms(value: Any, subs: Mapping, symbols: Sequence[sp.Symbol]) -> Terms:
     if not symbols or not e.free_symbols:
         r = sp.Rational(e)
         return ((((0,) * len(symbols)), int(r.p), int(r.q)),) if r else ()
+    coeff, rest = e.as_coeff_Mul()          # c * x**k, the common form: no Poly needed
+    base, power = rest.as_base_exp()
+    if coeff.is_Rational and base in symbols and power.is_Integer and power > 0:
+        exps = tuple(int(power) if s == base else 0 for s in symbols)
+        return ((exps, int(coeff.p), int(coeff.q)),)
     poly = sp.Poly(sp.expand(e), *symbols)
     return tuple((tuple(int(x) for x in mono), int(c.p), int(c.q))
                  for mono, c in poly.terms() if c)

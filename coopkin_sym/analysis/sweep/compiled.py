@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.generic import generic_numbers
+from coopkin_sym.analysis.generic import generic_numbers, grasp_rank_bound
 from coopkin_sym.analysis.numbers import (
     Numbers,
     numbers_from_ranks,
@@ -38,18 +38,15 @@ from coopkin_sym.exact import modular
 from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.deadline import time_limit
 from coopkin_sym.exact.matrix import (
-    POLYNOMIALS,
     RATIONALS,
     PolyMatrix,
     PrimeField,
-    rank,
     rank_triple,
 )
 from coopkin_sym.exact.ring import ClearedRows
 from coopkin_sym.model.configuration import (
     Configuration,
 )
-from coopkin_sym.model.contacts import contact_kind
 from coopkin_sym.model.model import Model, model_of
 
 # --- compilation ----------------------------------------------------------------------
@@ -383,36 +380,8 @@ class Compiled:
 
     def _grasp_bound(self) -> int:
         """The rank of ``H G^T`` with every contact point and normal an independent
-        indeterminate: a bound of its generic rank (putting the points and normals of
-        the kinematics in their place is a ring homomorphism, which keeps or lowers a
-        rank). Two hard contacts, for one, give 5: the object can always turn about the
-        line through them."""
-        model = self.model
-        names = tuple(f"x{i}_{a}" for i in range(len(model.contacts)) for a in range(6))
-        ctx = flint.fmpz_mpoly_ctx.get(names, "degrevlex")
-        gens, zero, one = ctx.gens(), ctx.constant(0), ctx.constant(1)
-        lin_rows, ang_rows = [], []
-        for i, c in enumerate(model.contacts):
-            (x, y, z), n = gens[6 * i:6 * i + 3], gens[6 * i + 3:6 * i + 6]
-            lin = [[one, zero, zero, zero, z, -y], [zero, one, zero, -z, zero, x],
-                   [zero, zero, one, y, -x, zero]]
-            ang = [[zero] * 3 + [one if a == b else zero for b in range(3)]
-                   for a in range(3)]
-            if model.planar:
-                lin = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in lin[:2]]
-                ang = [[row[k] for k in kinematics.PLANAR_COLUMNS] for row in ang[2:]]
-
-            def along(rows, n=n):
-                return [sum((a * b for a, b in zip(n[:len(rows)], col, strict=True)), zero)
-                        for col in zip(*rows, strict=True)]
-            comps = contact_kind(c.model).components(model.planar)  # type: ignore[union-attr]
-            axes = "z" if model.planar else "xyz"
-            picked = kinematics.pick_rows(comps, dict(zip("xyz"[:len(lin)], lin, strict=True)),
-                                          dict(zip(axes, ang, strict=True)), along)
-            lin_rows += picked[0]
-            ang_rows += picked[1]
-        rows = lin_rows + ang_rows
-        return rank(rows, self.dim, POLYNOMIALS, ctx)
+        indeterminate (see :func:`~coopkin_sym.analysis.generic.grasp_rank_bound`)."""
+        return grasp_rank_bound(self.model)
 
     def _sampled_generic(self) -> tuple[int, int, int] | None:
         """The generic ranks when ranks modulo :data:`POINT_PRIME` at random points

@@ -11,11 +11,12 @@ published sizes, also given by DH tables;
 ``urdf-two-fingers`` reads its arms from a URDF file shipped beside it;
 ``quadruped-standing`` is a four-legged vehicle seen as a hand grasping the ground;
 ``five-bar`` and ``underactuated-finger`` have passive joints (``actuated: false``);
-``four-bar`` (folded, it bifurcates) and ``shaky-pinned-bars`` (a first-order motion
-and no finite one) show finite mobility, and ``bennett-linkage`` and
-``bricard-linkage`` (overconstrained loops of four and six revolute joints that move
-although the Grübler-Kutzbach count says they cannot) finite motions that no
-expansion decides.
+``four-bar`` (folded, it bifurcates), ``shaky-pinned-bars`` (a first-order motion
+and no finite one) and ``seven-r-loop`` (three branches crossing, with irrational
+tangents) show finite mobility, and ``bennett-linkage``, ``bricard-linkage`` (loops
+of four and six revolute joints in space) and ``parallel-cranks`` (three cranks
+pinned to a coupler in the plane), overconstrained loops that move although the
+Grübler-Kutzbach count says they cannot, finite motions that no expansion decides.
 
 Example
 -------

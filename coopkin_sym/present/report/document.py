@@ -34,6 +34,7 @@ from coopkin_sym.present.report.blocks import (
 )
 from coopkin_sym.present.report.completeness import _certificate_blocks, _completeness_line
 from coopkin_sym.present.report.components import _component_blocks, _components_table
+from coopkin_sym.present.report.families import families_blocks
 from coopkin_sym.present.report.formulas import MAX_EQUATION, _list_or
 from coopkin_sym.present.report.locked import _passive_blocks
 from coopkin_sym.present.report.pictures import (
@@ -122,6 +123,7 @@ def _blocks(locus: Locus, plots: Mapping[tuple[str, ...], Any] | None,
     out.append(_generic_table(locus))
     if _has_classes(locus.generic):
         out.append(Paragraph([_t(classes_text(locus.generic) + ".")]))
+    out += families_blocks(locus, names)
     out += _all_component_blocks(locus, names)
     if locus.locked is not None:
         out.extend(_passive_blocks(locus, locus.locked, names))

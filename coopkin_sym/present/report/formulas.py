@@ -59,7 +59,15 @@ _TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "
 
 
 def _tex_escape(text: str) -> str:
-    return "".join(_TEX_SPECIAL.get(ch, ch) for ch in _one_line(text))
+    r"""Text as LaTeX that prints it as it is (``--`` stays two hyphens, not a dash).
+
+    Example
+    -------
+    >>> print(_tex_escape("run with --certify: 50% of t_q1"))
+    run with -{}-certify: 50\% of t\_q1
+    """
+    escaped = "".join(_TEX_SPECIAL.get(ch, ch) for ch in _one_line(text))
+    return re.sub(r"-(?=-)", "-{}", escaped)
 
 
 def _tex_comment(text: str) -> str:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import io
 import warnings
 from collections.abc import Mapping
+from fractions import Fraction
 from typing import Any
 
 from coopkin_sym.analysis.locus.types import Component, Locus
@@ -128,6 +129,9 @@ class _SystemPicture:
         at_text = ",".join(f"{n}={v}" for n, v in at.items())
         title = f"{locus.system}: component {k + 1}"
         held = _witness_analysis(system, comp) if exact else None
+        near = {} if exact else _lengths_near(system, comp, at)
+        if near:
+            at_text = ",".join(f"{n}={near.get(n, v)}" for n, v in at.items())
         drawn_at = (held, None) if held is not None else (system, at_text)
         try:
             fig = draw_system(*drawn_at, title=title,
@@ -141,7 +145,47 @@ class _SystemPicture:
         buf = io.BytesIO()
         fig.savefig(buf, format="png", dpi=min(self.dpi, SYSTEM_PICTURE_DPI))
         caption = _system_caption(locus, k, comp, at, exact, motion)
+        if near:
+            caption += (" Drawn with " + ", ".join(f"{n} = {v}" for n, v in near.items())
+                        + " (rational values within 1e-9 of the witness's lengths).")
         return buf.getvalue(), (SYSTEM_PICTURE, f"component {k + 1}", caption)
+
+
+def _lengths_near(system: Any, comp: Component, at: Mapping[str, str]) -> dict[str, str]:
+    """For a picture at an algebraic witness: the prismatic joints and parameters whose
+    value there is irrational (a length the picture cannot be given exactly), each with
+    a rational value within 1e-9 of it (from the witness's own approximation). Angles
+    are drawn exactly; the picture is a drawing, its numbers are the component's.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.analysis.locus.types import Component
+    >>> c = Component(["t_q1"], {"Nm": 3}, None, True)
+    >>> c.algebraic_witness = {"point": {"q1": "0", "q4": "sqrt(2)"},
+    ...                        "approx": {"q1": "0", "q4": "1.41421356237"}}
+    >>> _lengths_near(load("paper-case2-hard"), c, {"q1": "0", "q4": "sqrt(2)"})
+    {'q4': '1217471/860882'}
+    """
+    if system is None or not hasattr(system, "model"):
+        return {}
+    lengths = {j.name for j in system.model.joints if j.type == "prismatic"} | {
+        p.name for p in system.model.parameters}
+    approx = (comp.algebraic_witness or {}).get("approx", {})
+    out = {}
+    for name, value in at.items():
+        if name not in lengths or name not in approx:
+            continue
+        try:
+            Fraction(value)
+            continue                     # rational already
+        except ValueError:
+            pass
+        near = Fraction(approx[name]).limit_denominator(10**6)
+        if abs(near - Fraction(approx[name])) > Fraction(1, 10**9):
+            near = Fraction(approx[name])
+        out[name] = str(near)
+    return out
 
 
 def system_picture_failed(job: Any, error: BaseException) -> None:

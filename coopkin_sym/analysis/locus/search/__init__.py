@@ -70,10 +70,12 @@ from coopkin_sym.analysis.locus.search.charts import (
 from coopkin_sym.analysis.locus.search.components import settle_realness
 from coopkin_sym.analysis.locus.search.recursion import STEPS, explore
 from coopkin_sym.analysis.locus.types import Locus, canonical_order, cut_short
+from coopkin_sym.analysis.locus.witness import floats_left_out
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.errors import LocusError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle
+from coopkin_sym.exact.bounded import checkpoint, report
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, model_of
 
@@ -117,7 +119,9 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
     started = time.monotonic()
     ctx, q_rows = search_context(system, at, free, max_depth, timeout, progress)
     locus, model = ctx.locus, ctx.model
-    deadline.keep(locus)  # from here on, a time bound returns what was found
+    # from here on, a time bound returns what was found; a copy goes to the caller now,
+    # so that a run ended inside a step that cannot be interrupted still has it
+    checkpoint(locus)
     size = pi_size if pi_size is not None else default_pi_size(ctx)
     with ctx.reporter, ctx.reporter.parts(2):
         # the progress: half for the t chart, half for the slices at q = pi (shared
@@ -136,7 +140,10 @@ def compute_locus(system, at=None, max_depth: int = 2, timeout: float | None = N
         # the bound passed between steps: what each step left is said, and this
         locus.unexplored.append(Remark.of("time_whole_run", seconds=timeout,
                                           where="the search"))
-    if any(c.algebraic_witness for c in locus.components):
+    left_out = floats_left_out(ctx)
+    if left_out is not None:
+        locus.notes.append(left_out)
+    elif any(c.algebraic_witness for c in locus.components):
         locus.notes.append(Remark.of("irrational_witness_floats"))
     if model.passive_joints and not model.locked:
         # where the passive-joint numbers change: the locus of the locked system
@@ -224,7 +231,9 @@ def search_context(system, at=None, free=None, max_depth: int = 2,
     locus = Locus(system=model.name, variables=[], fixed=config.at_text(), generic={},
                   notes=list(notes), locked_joints=[j for j in model.joint_names
                                                     if j in model.locked])
+    report("the kinematics (G, D, H, Q)")      # the steps named as in an analysis
     chart, q_rows = chart_of(model, config)
+    report("the ranks and the decomposition of the nullspace")
     generic = decompose(q_rows, model, chart["row_contacts"], chart["ring"].zctx).numbers
     ctx = SearchContext(model=model, generic=generic, max_depth=max_depth, locus=locus,
                         rng=random.Random(1992), readings={}, chains={}, owners={},

@@ -103,8 +103,8 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
     rows) is not searched, a search longer than :data:`INSIDE_SECONDS` is cut (what
     it found by then is kept), and points of degree above :data:`INSIDE_DEGREE` are
     not decided; the report says so each time."""
-    names = ({n for row in place.rows for e in row for n in vars_of(ctx, e)}
-             | set(vars_of(ctx, f)))
+    names = ({n for row in place.rows for e in row if not e.is_constant()
+              for n in vars_of(ctx, e)} | set(vars_of(ctx, f)))
     where = (dict(component=place.parent, equations=()) if place.parent is not None
              and place.depth > 0 and _is_component(ctx, place) else
              dict(component=None, equations=place.equations))
