@@ -31,7 +31,7 @@ from math import factorial
 
 import flint
 
-from coopkin_sym.errors import ArgumentError
+from coopkin_sym.errors import ArgumentError, BlockTooLarge
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.elimination import combine, primitive
 
@@ -284,10 +284,14 @@ def coefficients_in(p: Poly, j: int) -> list[Poly]:
     return _split(p, j)
 
 
-def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly]:
+def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient,
+               max_terms: int | None = None) -> list[Poly]:
     """The gcd, over the fraction field of ``quotient``, of polynomials in a further
     variable given by their coefficient lists (lowest degree first), up to a nonzero
-    factor; ``[]`` when all are zero.
+    factor; ``[]`` when all are zero. With ``max_terms``:
+    :class:`~coopkin_sym.errors.BlockTooLarge` (its ``terms`` said) as soon as a
+    remainder has more terms than that (the gcd of its coefficients, which flint
+    cannot interrupt, is not started).
 
     Euclid's algorithm with pseudo-remainders; the coefficients are reduced modulo
     ``f`` (one multiplier for the whole list) and made primitive after every step.
@@ -309,12 +313,23 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
         c = quotient.reduce_row(c)
         while c and c[-1].is_zero():
             c.pop()
+        terms = sum(len(e) for e in c)
+        if max_terms is not None and terms > max_terms:
+            too_large = BlockTooLarge(f"a gcd modulo a polynomial: a remainder of {terms} "
+                                      f"terms (more than {max_terms})")
+            too_large.terms = terms
+            raise too_large
         if c and quotient.degree == 2 and c[-1].degrees()[quotient.k] > 0:
             # times the conjugate of the leading coefficient, which makes it free of x_k:
             # the coefficients stay as small as the element allows
             c = quotient.reduce_row([e * _conjugate(c[-1], quotient) for e in c])
         return primitive(c) if c else c
 
+    return _euclid(polys, trim)
+
+
+def _euclid(polys: Sequence[Sequence[Poly]], trim) -> list[Poly]:
+    """Euclid's algorithm with pseudo-remainders, each made smaller by ``trim``."""
     g: list[Poly] = []
     for p in polys:
         b = trim(list(p))

@@ -58,9 +58,10 @@ def _where(facts: Mapping[str, Any]) -> str:
 
 def _inside_limit(facts: Mapping[str, Any]) -> str:
     """Why the search inside a family without a rational parametrization stopped."""
-    if facts["limit"] == "seconds":
-        return (f"deeper drops searched for {facts['bound']:g} s only (the bound of one "
-                "such family): what was found by then is listed, the rest not searched")
+    if facts["limit"] == "steps":
+        return (f"deeper drops searched within a work budget of {facts['bound']:,} steps "
+                "only (the bound of one such family): what was found by then is listed, "
+                "the rest not searched")
     return (f"deeper drops not searched (a family with no rational parametrization and "
             f"{facts['size']} terms: more than {facts['bound']})")
 

@@ -25,11 +25,14 @@ import sympy as sp
 from coopkin_sym.analysis.locus.conditions import Clause, Related, Value, Vanishes
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
+from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.polynomial import NamedPolynomial, integer_text
+from coopkin_sym.exact.quotient import Quotient, gcd_modulo
+from coopkin_sym.exact.quotient import coefficients_in as coefficients_of
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot, real_root_count
 from coopkin_sym.exact.sizes import resultant_terms
@@ -66,7 +69,28 @@ def bounded_resultant(ctx: SearchContext, p, q, name: str):
     if size > bound:
         _too_large(ctx, "resultant", size, bound, [p, q])
         return None
+    deadline.spend(size, "a resultant")   # under a work budget: one step per term
     return p.resultant(q, name)
+
+
+#: The most terms of a remainder in :func:`bounded_gcd_modulo` (the gcd of its
+#: coefficients, which flint cannot interrupt, takes about a second at 50,000 terms
+#: here and grows faster than the terms).
+GCD_MODULO_TERMS = 30_000
+
+
+def bounded_gcd_modulo(ctx: SearchContext, polys, quotient: Quotient, name: str):
+    """:func:`~coopkin_sym.exact.quotient.gcd_modulo` of the polynomials ``polys`` in
+    the variable ``name`` over the fraction field of ``quotient``, or None when a
+    remainder grows over :data:`GCD_MODULO_TERMS` terms (then a remark says so)."""
+    k = ctx.ring_names.index(name)
+    try:
+        return gcd_modulo([coefficients_of(p, k) for p in polys], quotient,
+                          max_terms=GCD_MODULO_TERMS)
+    except BlockTooLarge as exc:
+        _too_large(ctx, "gcd modulo a polynomial", exc.terms, GCD_MODULO_TERMS,
+                   [*polys, quotient.f])
+        return None
 
 
 def bounded_factor(ctx: SearchContext, p):

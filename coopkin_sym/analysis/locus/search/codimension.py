@@ -12,8 +12,10 @@ from fractions import Fraction
 import sympy as sp
 
 from coopkin_sym.analysis.locus.algebra import (
+    GCD_MODULO_TERMS,
     as_poly,
     bounded_factor,
+    bounded_gcd_modulo,
     bounded_resultant,
     linear_equation,
     linearly_disjoint,
@@ -47,6 +49,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
+from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.quotient import (
     Quotient,
@@ -318,7 +321,9 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
              equations=place.equations + [poly_text(ctx, h)], variable=y)
         return
     quotient = Quotient(h, kx)
-    common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
+    common = bounded_gcd_modulo(ctx, polys, quotient, y)
+    if common is None:
+        return
     if len(common) > 2 and not swapped:
         # several values of y over each point of h = 0 (angles that differ by pi): the
         # family projects onto the hypersurfaces N = 0 in y and the parameters, N a
@@ -395,7 +400,11 @@ def _enclosing_numbers_at_a_point(ctx: SearchContext, place: Place, polys, h, x,
     if not curved:
         return False
     quotient = Quotient(min(curved, key=lambda f: (f.degrees()[kx], len(f))), kx)
-    common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient)
+    try:   # a cheap test only: too large, the family is decided the other way
+        common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient,
+                            max_terms=GCD_MODULO_TERMS)
+    except BlockTooLarge:
+        return False
     if len(common) != 2:
         return False
     rows = substitute_rows(substitute_values(ctx, place.rows, values), ky, *common)

@@ -27,7 +27,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import numbers_modulo
-from coopkin_sym.errors import TimeLimitReached
+from coopkin_sym.errors import WorkLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import split_linear, substitute_rows
@@ -100,9 +100,10 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
     as a drop set of one of them.
 
     A family larger than :data:`INSIDE_TERMS` (its polynomial, or an entry of its
-    rows) is not searched, a search longer than :data:`INSIDE_SECONDS` is cut (what
-    it found by then is kept), and points of degree above :data:`INSIDE_DEGREE` are
-    not decided; the report says so each time."""
+    rows) is not searched, a search past its work budget :data:`INSIDE_STEPS` is
+    cut (what it found by then is kept, and the searches it deferred still run),
+    and points of degree above :data:`INSIDE_DEGREE` are not decided; the report
+    says so each time."""
     names = ({n for row in place.rows for e in row if not e.is_constant()
               for n in vars_of(ctx, e)} | set(vars_of(ctx, f)))
     where = (dict(component=place.parent, equations=()) if place.parent is not None
@@ -120,25 +121,45 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
              **where)
         return
     levels = len(ctx.deferred)
-    with deadline.time_limit(INSIDE_SECONDS, INSIDE_OWNER):
+    with deadline.work_limit(INSIDE_STEPS, INSIDE_OWNER) as bound:
         ctx.inside += 1
         try:
             _search_inside(ctx, place, f, k)
-        except TimeLimitReached:
-            if ctx.expired() or not deadline.active(INSIDE_OWNER):
-                raise
-            del ctx.deferred[levels:]   # the searches it left belong to this family
-            note(ctx, "inside_not_searched", limit="seconds", size=None,
-                 bound=INSIDE_SECONDS, **where)
+        except WorkLimitReached:
+            if not deadline.active(INSIDE_OWNER) or bound.budget[0] >= 0:
+                raise   # an enclosing family's budget, used up here
+            note(ctx, "inside_not_searched", limit="steps", size=None,
+                 bound=INSIDE_STEPS, **where)
         finally:
             ctx.inside -= 1
+            _keep_deferred(ctx, levels)
+        if _TRACE is not None:
+            _TRACE.append((str(f), INSIDE_STEPS - bound.budget[0]))
+
+
+_TRACE = None
+
+
+def _keep_deferred(ctx: SearchContext, levels: int) -> None:
+    """The searches deferred by levels the cut search left open (``ctx.deferred``
+    beyond ``levels``) go to the enclosing level, run now when there is none: a cut
+    in one family drops no search of another."""
+    orphans = [search for level in ctx.deferred[levels:] for search in level]
+    del ctx.deferred[levels:]
+    if ctx.deferred:
+        ctx.deferred[-1].extend(orphans)
+    else:
+        for search in orphans:
+            search()
 
 
 #: The largest family searched inside: terms of its polynomial and of an entry of its
 #: rows (the minors and resultants grow fast with them).
 INSIDE_TERMS = 150
-#: Seconds a search inside one family may take.
-INSIDE_SECONDS = 2.0
+#: The work budget of the search inside one family, in steps of
+#: :func:`~coopkin_sym.exact.deadline.check` (deterministic: the same cut on any
+#: machine and under any load).
+INSIDE_STEPS = 10**9
 #: The highest degree over Q of a point decided inside such a family.
 INSIDE_DEGREE = 4
 #: The owner of the time bound of one such search (see :func:`.deadline.active`).
@@ -149,12 +170,12 @@ BLOCK_ORDER = ("HG^T", "HD", "A", "Y")
 
 def _search_inside(ctx: SearchContext, place: Place, f, k: int) -> None:
     """The drop sets of :func:`inside_curved`, block by block (:data:`BLOCK_ORDER`,
-    the minors of a block before the divisors of its rows)."""
+    the divisors taken out of the rows of every block before the minors)."""
     cands = candidates(ctx, place.rows, Quotient(f, k))
 
     def order(name: str) -> tuple:
         block = name.split(":")[1] if name.startswith("content:") else name.split(":")[0]
-        return (BLOCK_ORDER.index(block), name.startswith("content:"), name)
+        return (not name.startswith("content:"), BLOCK_ORDER.index(block), name)
 
     for name in sorted(cands, key=order):
         polys = cands[name]
