@@ -144,13 +144,40 @@ def test_a_family_too_large_or_too_slow_to_search_inside_is_said(monkeypatch):
     assert said.endswith(" terms: more than 5)")
     _, ctx, place, h = _curve_85()
     monkeypatch.setattr(curved_search, "INSIDE_TERMS", terms)
-    monkeypatch.setattr(curved_search, "INSIDE_SECONDS", 0.0)
+    monkeypatch.setattr(curved_search, "INSIDE_STEPS", 0)
     inside_curved(ctx, place, h, 0)
     assert ctx.locus.components == [] and ctx.deferred == []
     assert remark_texts(ctx.locus.unexplored) == [
-        f"inside {H85}, {Y85} (enclosing numbers there): deeper drops searched for 0 s "
-        "only (the bound of one such family): what was found by then is listed, the rest "
-        "not searched"]
+        f"inside {H85}, {Y85} (enclosing numbers there): deeper drops searched within a "
+        "work budget of 0 steps only (the bound of one such family): what was found by "
+        "then is listed, the rest not searched"]
+
+
+def _inside_with_budget(monkeypatch, steps: int):
+    _, ctx, place, h = _curve_85()
+    monkeypatch.setattr(curved_search, "INSIDE_STEPS", steps)
+    inside_curved(ctx, place, h, 0)
+    return ([texts(c.equations) for c in ctx.locus.components],
+            remark_texts(ctx.locus.unexplored))
+
+
+def test_the_budget_inside_a_family_cuts_at_the_same_place_every_time(monkeypatch):
+    """The bound is work, not seconds: the same budget gives the same locus (on any
+    machine, under any load), and a larger one finds all a smaller one found."""
+    full, _ = _inside_with_budget(monkeypatch, 10**9)
+    assert len(full) == 3
+    budgets = (50, 400, 1500, 4000)
+    found = []
+    for steps in budgets:
+        first, second = (_inside_with_budget(monkeypatch, steps) for _ in range(2))
+        assert first == second
+        found.append(first[0])
+        cut = any("work budget" in r for r in first[1])
+        assert cut == (first[0] != full)
+    assert any(comps != full for comps in found)   # some budget cuts this family
+    for smaller, larger in zip(found, found[1:]):
+        assert all(c in larger for c in smaller)
+    assert all(c in full for comps in found for c in comps)
 
 
 def test_points_of_higher_degree_are_not_decided_there_and_said(monkeypatch):
