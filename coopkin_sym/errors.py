@@ -12,9 +12,10 @@ numbers and ideals (:class:`NumberError`, :class:`UndeclaredSymbol`,
 :class:`ConfigurationError`), analyses (:class:`BlockTooLarge`,
 :class:`InfeasibleMotion`, :class:`ManipulabilityError`, :class:`SweepError`,
 :class:`NotIrrational`, :class:`LocusError`, :class:`CertifyError`,
-:class:`VerifyError`, :class:`TimeLimitReached`) and outputs (:class:`ReportError`,
-:class:`ReportInputError`, :class:`DrawError`, :class:`PlotError`). Each also keeps its
-historical base (``ValueError``), so older ``except ValueError`` code still catches it.
+:class:`VerifyError`, :class:`TimeLimitReached`, :class:`WorkLimitReached`) and outputs
+(:class:`ReportError`, :class:`ReportInputError`, :class:`DrawError`,
+:class:`PlotError`). Each also keeps its historical base (``ValueError``), so older
+``except ValueError`` code still catches it.
 
 One warning, :class:`OutputSkipped`, says that a part of an output was left out
 while the rest was written (a plot with nothing to show, a motion not available at
@@ -89,6 +90,23 @@ class TimeLimitReached(CoopkinError):
         self.hard = hard
         shown = f"{seconds:g}"
         super().__init__(f"time bound of {shown} s reached"
+                         + (f" during {where}" if where else ""))
+
+
+class WorkLimitReached(CoopkinError):
+    """A computation used up the work budget it was given (a number of steps, the
+    same on every machine and under any load: see :func:`.deadline.work_limit`).
+
+    Example
+    -------
+    >>> str(WorkLimitReached(1000, "a determinant"))
+    'work budget of 1000 steps used up during a determinant'
+    """
+
+    def __init__(self, steps: int, where: str = ""):
+        self.steps = steps
+        self.where = where
+        super().__init__(f"work budget of {steps} steps used up"
                          + (f" during {where}" if where else ""))
 
 

@@ -1,4 +1,4 @@
-"""Wall-clock bounds for long exact computations.
+"""Wall-clock bounds and work budgets for long exact computations.
 
 A computation runs inside :func:`time_limit`; the loops of the exact layer (fraction-
 free elimination, determinants, nullspaces, reductions modulo a polynomial) call
@@ -26,21 +26,25 @@ Example
 from __future__ import annotations
 
 import contextvars
+import math
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
-from coopkin_sym.errors import TimeLimitReached
+from coopkin_sym.errors import TimeLimitReached, WorkLimitReached
 
-__all__ = ["Bound", "TimeLimitReached", "active", "check", "keep", "kept", "remaining",
-           "time_limit"]
+__all__ = ["Bound", "TimeLimitReached", "WorkLimitReached", "active", "check", "keep",
+           "budget_left", "kept", "remaining", "spend", "time_limit",
+           "work_limit"]
 
 
 @dataclass
 class Bound:
     """One wall-clock bound: it ends at ``end`` (``time.monotonic()``), ``seconds``
     after ``started``; ``kept`` is what the computation registered with :func:`keep`.
+    Under a work budget, ``budget`` is ``[steps left]`` (shared by the bounds set
+    inside it) and ``steps`` the budget given.
 
     Example
     -------
@@ -55,6 +59,8 @@ class Bound:
     kept: object = None
     owner: str = ""
     outer: Bound | None = None
+    budget: list | None = None
+    steps: int | None = None
 
 
 _CURRENT: contextvars.ContextVar[Bound | None] = contextvars.ContextVar(
@@ -77,6 +83,8 @@ def time_limit(seconds: float | None, owner: str = "",
     bound = Bound(now + max(seconds - margin, 0.0), seconds, now, owner=owner, outer=outer)
     if outer is not None and outer.end < bound.end:
         bound.end, bound.seconds = outer.end, outer.seconds
+    if outer is not None:
+        bound.budget, bound.steps = outer.budget, outer.steps
     token = _CURRENT.set(bound)
     try:
         yield bound
@@ -84,12 +92,67 @@ def time_limit(seconds: float | None, owner: str = "",
         _CURRENT.reset(token)
 
 
+@contextmanager
+def work_limit(steps: int, owner: str = "") -> Iterator[Bound]:
+    """Run the body under a budget of ``steps`` calls of :func:`check` (each spends
+    one), set by ``owner`` (see :func:`active`); any enclosing time bound still
+    applies, and inside an outer budget the steps spent count against it too.
+
+    Example
+    -------
+    >>> with work_limit(3, "an example") as bound:
+    ...     try:
+    ...         for _ in range(10):
+    ...             check("a loop")
+    ...     except WorkLimitReached as exc:
+    ...         message = str(exc)
+    >>> message, bound.budget
+    ('work budget of 3 steps used up during a loop', [-1])
+    """
+    outer = _CURRENT.get()
+    now = time.monotonic()
+    left = steps if outer is None or outer.budget is None else min(steps, outer.budget[0])
+    bound = Bound(math.inf if outer is None else outer.end,
+                  math.inf if outer is None else outer.seconds, now, owner=owner,
+                  outer=outer, budget=[left], steps=steps)
+    token = _CURRENT.set(bound)
+    try:
+        yield bound
+    finally:
+        _CURRENT.reset(token)
+        if outer is not None and outer.budget is not None:
+            outer.budget[0] -= left - bound.budget[0]
+
+
 def check(where: str = "") -> None:
-    """Raise :class:`TimeLimitReached` when the current bound has passed (cheap: call
-    it in every loop that can run long)."""
+    """Raise :class:`TimeLimitReached` when the current bound has passed, and
+    :class:`WorkLimitReached` when the current work budget is used up (cheap: call it
+    in every loop that can run long)."""
     bound = _CURRENT.get()
-    if bound is not None and time.monotonic() > bound.end:
+    if bound is None:
+        return
+    if bound.budget is not None:
+        bound.budget[0] -= 1
+        if bound.budget[0] < 0:
+            raise WorkLimitReached(bound.steps, where)
+    if time.monotonic() > bound.end:
         raise TimeLimitReached(bound.seconds, where)
+
+
+def spend(steps: int, where: str = "") -> None:
+    """Spend ``steps`` of the current work budget at once (before an operation that
+    cannot be interrupted, in proportion to its size), then :func:`check`: an
+    operation larger than the budget left is never started."""
+    bound = _CURRENT.get()
+    if bound is not None and bound.budget is not None:
+        bound.budget[0] -= max(int(steps), 0)
+    check(where)
+
+
+def budget_left() -> int | None:
+    """Steps left of the current work budget (``None`` without one)."""
+    bound = _CURRENT.get()
+    return None if bound is None or bound.budget is None else max(bound.budget[0], 0)
 
 
 def active(owner: str | None = None) -> bool:
@@ -106,9 +169,12 @@ def active(owner: str | None = None) -> bool:
 
 
 def remaining() -> float | None:
-    """Seconds left under the current bound (``None`` without one)."""
+    """Seconds left under the current bound (``None`` without one: a work budget
+    alone is no time bound)."""
     bound = _CURRENT.get()
-    return None if bound is None else bound.end - time.monotonic()
+    if bound is None or bound.end == math.inf:
+        return None
+    return bound.end - time.monotonic()
 
 
 def kept() -> object:

@@ -24,6 +24,7 @@ from fractions import Fraction
 import flint
 
 from coopkin_sym.errors import ArgumentError
+from coopkin_sym.exact.deadline import check
 
 Element = flint.fmpq_poly
 KPoly = list[Element]
@@ -74,6 +75,7 @@ class NumberField:
         a = list(a)
         quotient = [flint.fmpq_poly(0)] * max(len(a) - len(b) + 1, 0)
         while len(a) >= len(b):
+            check("a division over a number field")
             factor = self.element(a[-1] * inv)
             shift = len(a) - len(b)
             quotient[shift] = factor

@@ -27,10 +27,11 @@ True
 from __future__ import annotations
 
 from collections.abc import Sequence
+from math import factorial
 
 import flint
 
-from coopkin_sym.errors import ArgumentError
+from coopkin_sym.errors import ArgumentError, BlockTooLarge
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.elimination import combine, primitive
 
@@ -65,19 +66,30 @@ class Quotient:
         self.zctx = f.context()
         self.lead = _coefficient(f, k, degree)
         self._x = f.context().gens()[k]
+        self._coeffs: list[Poly] | None = None   # of f in x_k, when first needed
 
     def _reduce_counted(self, p: Poly) -> tuple[Poly, int]:
-        """``lead^n p`` reduced, and ``n``."""
-        n = 0
-        while not p.is_zero():
+        """``lead^n p`` reduced, and ``n``: each step is ``lead p - c x^(e - d) f`` for
+        the coefficient ``c`` of the top power ``x^e`` of ``p`` (``d = deg f``), done on
+        the coefficients of ``p`` in ``x`` (split once)."""
+        if p.is_zero() or p.degrees()[self.k] < self.degree:
+            return p, 0
+        if self._coeffs is None:
+            self._coeffs = _split(self.f, self.k)
+        c = _split(p, self.k)
+        f, d, n = self._coeffs, self.degree, 0
+        while len(c) > d:
             check("a reduction modulo a polynomial")
-            e = p.degrees()[self.k]
-            if e < self.degree:
-                break
-            c = _coefficient(p, self.k, e)
-            p = self.lead * p - c * self._x ** (e - self.degree) * self.f
+            top = c.pop()
+            shift = len(c) - d
+            c = [self.lead * e for e in c]
+            for i in range(d):
+                if not f[i].is_zero():
+                    c[shift + i] = c[shift + i] - top * f[i]
             n += 1
-        return p, n
+            while c and c[-1].is_zero():
+                c.pop()
+        return _join(c, self._x), n
 
     def reduce(self, p: Poly) -> Poly:
         """``lead^n p`` (for some ``n``) of degree below ``deg_k f``: the same element up
@@ -141,6 +153,32 @@ def _coefficient(p: Poly, k: int, e: int) -> Poly:
     """The coefficient of ``x_k^e`` in ``p`` (a polynomial free of ``x_k``)."""
     terms = {m[:k] + (0,) + m[k + 1:]: c for m, c in p.to_dict().items() if m[k] == e}
     return p.context().from_dict(terms)
+
+
+def _split(p: Poly, k: int) -> list[Poly]:
+    """The coefficients of ``p`` in ``x_k`` (free of it), lowest degree first: the
+    ``e``-th is the ``e``-th derivative in ``x_k`` at ``x_k = 0`` over ``e!`` (flint's
+    own operations, no pass over the terms in Python)."""
+    top = p.degrees()[k]
+    name = p.context().names()[k]
+    out = []
+    for e in range(top + 1):
+        out.append(p.subs({name: 0}) / factorial(e) if e else p.subs({name: 0}))
+        if e < top:
+            p = p.derivative(name)
+    return out
+
+
+def _join(coeffs: Sequence[Poly], x: Poly) -> Poly:
+    """``sum_e coeffs[e] x^e``."""
+    out = x.context().constant(0)
+    power = x.context().constant(1)
+    for e, c in enumerate(coeffs):
+        if e:
+            power = power * x
+        if not c.is_zero():
+            out = out + c * power
+    return out
 
 
 def _size(p: Poly) -> tuple[int, int]:
@@ -243,14 +281,17 @@ def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) 
 def coefficients_in(p: Poly, j: int) -> list[Poly]:
     """``p`` as a polynomial in variable ``j``: its coefficients (free of ``x_j``),
     lowest degree first."""
-    top = p.degrees()[j]
-    return [_coefficient(p, j, e) for e in range(top + 1)]
+    return _split(p, j)
 
 
-def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly]:
+def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient,
+               max_terms: int | None = None) -> list[Poly]:
     """The gcd, over the fraction field of ``quotient``, of polynomials in a further
     variable given by their coefficient lists (lowest degree first), up to a nonzero
-    factor; ``[]`` when all are zero.
+    factor; ``[]`` when all are zero. With ``max_terms``:
+    :class:`~coopkin_sym.errors.BlockTooLarge` (its ``terms`` said) as soon as a
+    remainder has more terms than that (the gcd of its coefficients, which flint
+    cannot interrupt, is not started).
 
     Euclid's algorithm with pseudo-remainders; the coefficients are reduced modulo
     ``f`` (one multiplier for the whole list) and made primitive after every step.
@@ -272,12 +313,23 @@ def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient) -> list[Poly
         c = quotient.reduce_row(c)
         while c and c[-1].is_zero():
             c.pop()
+        terms = sum(len(e) for e in c)
+        if max_terms is not None and terms > max_terms:
+            too_large = BlockTooLarge(f"a gcd modulo a polynomial: a remainder of {terms} "
+                                      f"terms (more than {max_terms})")
+            too_large.terms = terms
+            raise too_large
         if c and quotient.degree == 2 and c[-1].degrees()[quotient.k] > 0:
             # times the conjugate of the leading coefficient, which makes it free of x_k:
             # the coefficients stay as small as the element allows
             c = quotient.reduce_row([e * _conjugate(c[-1], quotient) for e in c])
         return primitive(c) if c else c
 
+    return _euclid(polys, trim)
+
+
+def _euclid(polys: Sequence[Sequence[Poly]], trim) -> list[Poly]:
+    """Euclid's algorithm with pseudo-remainders, each made smaller by ``trim``."""
     g: list[Poly] = []
     for p in polys:
         b = trim(list(p))

@@ -56,6 +56,16 @@ def _where(facts: Mapping[str, Any]) -> str:
     return ", ".join(facts["equations"]) + " (enclosing numbers there)"
 
 
+def _inside_limit(facts: Mapping[str, Any]) -> str:
+    """Why the search inside a family without a rational parametrization stopped."""
+    if facts["limit"] == "steps":
+        return (f"deeper drops searched within a work budget of {facts['bound']:,} steps "
+                "only (the bound of one such family): what was found by then is listed, "
+                "the rest not searched")
+    return (f"deeper drops not searched (a family with no rational parametrization and "
+            f"{facts['size']} terms: more than {facts['bound']})")
+
+
 def _at_pi(joints: Sequence[str]) -> str:
     return ", ".join(f"{n} = pi" for n in joints)
 
@@ -145,10 +155,19 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"inside {_where(f)}: only where a divisor of the rows vanishes was searched "
         "(drops cut out by minors alone not searched: a family with no rational "
         "parametrization)"),
+    "inside_not_searched": lambda f: f"inside {_where(f)}: {_inside_limit(f)}",
     "lower_dimensional_not_solved": lambda f: (
         f"depth {f['depth']}: lower-dimensional drops in {len(f['variables'])} variables "
         f"({', '.join(f['variables'])}) not solved (solved: up to two variables, and up "
         f"to four when the equations have at most {f['bound']} terms)"),
+    "operation_too_large": lambda f: (
+        f"a {f['operation']} in {', '.join(f['variables'])} of about {f['size']} terms "
+        f"(more than {f['bound']}, and it cannot be interrupted) was not computed: the "
+        "sets it would have solved were not searched"),
+    "points_not_decided": lambda f: (
+        f"the real points where {f['polynomial']} = 0 (degree {f['degree']}) inside a "
+        f"family with no rational parametrization: numbers not decided (points of "
+        f"degree up to {f['bound']} are decided there)"),
     "shared_values_undecided": lambda f: (
         f"real points where {f['polynomial']} = 0 and {f['count']} values of "
         f"{f['variable']} share each {f['over']}: numbers not decided"),
@@ -314,6 +333,7 @@ _GROUP_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "divisors_only": lambda f: (
         "only where a divisor of the rows vanishes was searched (drops cut out by minors "
         "alone not searched: a family with no rational parametrization)"),
+    "inside_not_searched": lambda f: _inside_limit(f),
     "common_root_not_searched": lambda f: (
         f"{f['variable']} a common root of the minors (enclosing numbers there): deeper "
         f"drops not searched ({_NO_PARAMETRIZATION})"),

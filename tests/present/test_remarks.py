@@ -27,10 +27,12 @@ SAMPLE = {"tries": 14, "polynomial": "t_q1**2 + 1", "equations": ("t_q1", "t_q2 
           "error": "component #1, equation 1: 't_q1 +' is not a polynomial", "size": 3,
           "largest": 40, "modular": True, "backend": "msolve",
           "detail": "timed out after 2 s", "locus_system": "one", "model_system": "two",
-          "undecided": False}
+          "undecided": False, "operation": "resultant"}
 SAMPLE_FOR = {("family_too_large", "variables"): ("t_q1", "t_q2"),
               ("lower_dimensional_not_solved", "variables"): ("t_q1", "t_q2", "t_q3"),
-              ("block_not_solved", "bound"): (6, 200)}
+              ("block_not_solved", "bound"): (6, 200),
+              ("operation_too_large", "variables"): ("t_q1", "t_q2"),
+              ("inside_not_searched", "limit"): "terms"}
 
 
 def sample(kind: str) -> Remark:

@@ -25,12 +25,17 @@ import sympy as sp
 from coopkin_sym.analysis.locus.conditions import Clause, Related, Value, Vanishes
 from coopkin_sym.analysis.locus.context import SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
+from coopkin_sym.errors import BlockTooLarge
+from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.polynomial import NamedPolynomial, integer_text
+from coopkin_sym.exact.quotient import Quotient, gcd_modulo
+from coopkin_sym.exact.quotient import coefficients_in as coefficients_of
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot, real_root_count
+from coopkin_sym.exact.sizes import resultant_terms
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
@@ -38,6 +43,69 @@ from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 NICE = [Fraction(1, 2), Fraction(2), Fraction(-1, 3), Fraction(3), Fraction(-2),
         Fraction(1, 3), Fraction(-1, 2), Fraction(2, 3), Fraction(5, 2), Fraction(-3, 4),
         Fraction(1), Fraction(-1), Fraction(0), Fraction(7, 5), Fraction(-5, 3)]
+
+
+#: Budgets of the flint operations that run to their end once started (a time bound
+#: is checked only between them): the estimated terms of a resultant
+#: (:func:`~coopkin_sym.exact.sizes.resultant_terms`) and the terms of a polynomial to
+#: factor. Over one, the operation is not run and the report says so.
+RESULTANT_TERMS = 200_000
+FACTOR_TERMS = 100_000
+#: Under a time bound, a resultant of about ``RESULTANT_RATE * sqrt(s)`` terms takes
+#: some ``s`` seconds here (measured on dense ones): the largest started is the one the
+#: time left allows.
+RESULTANT_RATE = 25_000
+
+
+def bounded_resultant(ctx: SearchContext, p, q, name: str):
+    """The resultant of ``p`` and ``q`` in the variable ``name``, or None when its
+    estimated size is over :data:`RESULTANT_TERMS`, or over what the time left allows
+    under a time bound (then a remark says so)."""
+    size = resultant_terms(p, q, ctx.ring_names.index(name))
+    bound = RESULTANT_TERMS
+    left = deadline.remaining()
+    if left is not None:
+        bound = min(bound, int(RESULTANT_RATE * max(left, 0.0) ** 0.5))  # float-ok: time
+    if size > bound:
+        _too_large(ctx, "resultant", size, bound, [p, q])
+        return None
+    deadline.spend(size, "a resultant")   # under a work budget: one step per term
+    return p.resultant(q, name)
+
+
+#: The most terms of a remainder in :func:`bounded_gcd_modulo` (the gcd of its
+#: coefficients, which flint cannot interrupt, takes about a second at 50,000 terms
+#: here and grows faster than the terms).
+GCD_MODULO_TERMS = 30_000
+
+
+def bounded_gcd_modulo(ctx: SearchContext, polys, quotient: Quotient, name: str):
+    """:func:`~coopkin_sym.exact.quotient.gcd_modulo` of the polynomials ``polys`` in
+    the variable ``name`` over the fraction field of ``quotient``, or None when a
+    remainder grows over :data:`GCD_MODULO_TERMS` terms (then a remark says so)."""
+    k = ctx.ring_names.index(name)
+    try:
+        return gcd_modulo([coefficients_of(p, k) for p in polys], quotient,
+                          max_terms=GCD_MODULO_TERMS)
+    except BlockTooLarge as exc:
+        _too_large(ctx, "gcd modulo a polynomial", exc.terms, GCD_MODULO_TERMS,
+                   [*polys, quotient.f])
+        return None
+
+
+def bounded_factor(ctx: SearchContext, p):
+    """``factor(p)`` (content and factors), or None when ``p`` has more than
+    :data:`FACTOR_TERMS` terms (then a remark says so)."""
+    if len(p) > FACTOR_TERMS:
+        _too_large(ctx, "factorization", len(p), FACTOR_TERMS, [p])
+        return None
+    return factor(p)
+
+
+def _too_large(ctx: SearchContext, operation: str, size: int, bound: int, polys) -> None:
+    names = sorted({n for p in polys for n in vars_of(ctx, p)}, key=ctx.ring_names.index)
+    add_once(ctx.locus.unexplored, Remark.of("operation_too_large", operation=operation,
+                                             variables=names, size=size, bound=bound))
 
 
 def normalize(f):
@@ -312,38 +380,53 @@ def substitute_values(ctx: SearchContext, rows, values: dict, x: str | None = No
     return rows
 
 
-def solve_small(ctx: SearchContext, polys, names: list[str]):
+def solve_small(ctx: SearchContext, polys, names: list[str], max_degree: int | None = None):
     """Common zeros of ``polys`` in one or two variables, exactly: the rational points,
     the real algebraic ones as ``(x, g, {y: r(x)}, equations, alpha)`` (``g``
     irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
     and descriptions of what could not be resolved. Resultants and factorization over
-    Z (python-flint)."""
+    Z (python-flint). Points whose coordinate ``x`` has degree above ``max_degree``
+    over Q are left unresolved (said among the descriptions)."""
     x = names[0]
     if len(names) == 1:
         g = polys[0]
         for p in polys[1:]:
             g = g.gcd(p)
         rational, curved = roots(ctx, g, x)
-        return [{x: r} for r in rational], [(x, f, {}, [f], x) for f in curved], []
-    return solve_two(ctx, polys, names)
+        unresolved = [_too_high(ctx, f, x, max_degree) for f in curved
+                      if _over(f, ctx.ring_names.index(x), max_degree)]
+        return ([{x: r} for r in rational],
+                [(x, f, {}, [f], x) for f in curved
+                 if not _over(f, ctx.ring_names.index(x), max_degree)], unresolved)
+    return solve_two(ctx, polys, names, max_degree)
 
 
-def solve_two(ctx: SearchContext, polys, names: list[str]):
+def _over(f, k: int, max_degree: int | None) -> bool:
+    return max_degree is not None and f.degrees()[k] > max_degree
+
+
+def _too_high(ctx: SearchContext, f, x: str, max_degree: int | None) -> Remark:
+    return Remark.of("points_not_decided", polynomial=poly_text(ctx, f),
+                     degree=int(f.degrees()[ctx.ring_names.index(x)]), bound=max_degree)
+
+
+def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | None = None):
     """:func:`solve_small` for two variables, eliminating the second: ``x`` must
     generate each point's field (else the point is left unresolved)."""
     zctx = ctx.ring.zctx
     x, y = names
     combo = polys[1] if len(polys) == 2 else sum(
         (p * zctx.constant(ctx.rng.randint(1, 9)) for p in polys[1:]), zctx.constant(0))
-    g = polys[0].resultant(combo, y)
-    for p in polys[1:]:
-        if g.is_constant():
-            break
-        g = g.gcd(polys[0].resultant(p, y))
     points: list[dict] = []
     algebraic: list[tuple] = []
     unresolved: list[Remark] = []
-    if g.is_zero() or g.is_constant():
+    g = bounded_resultant(ctx, polys[0], combo, y)
+    for p in polys[1:]:
+        if g is None or g.is_constant():
+            break
+        r = bounded_resultant(ctx, polys[0], p, y)
+        g = None if r is None else g.gcd(r)
+    if g is None or g.is_zero() or g.is_constant():
         return points, algebraic, unresolved
     k = ctx.ring_names.index(x)
     rational, curved = roots(ctx, g, x)
@@ -355,9 +438,15 @@ def solve_two(ctx: SearchContext, polys, names: list[str]):
             uni = q if uni is None else uni.gcd(q)
         ys, curved_y = roots(ctx, uni, y)
         points += [{x: x0, y: y0} for y0 in ys]
+        ky = ctx.ring_names.index(y)
+        unresolved += [_too_high(ctx, h, y, max_degree) for h in curved_y
+                       if _over(h, ky, max_degree)]
         algebraic += [(y, h, {x: x0}, [h, linear_equation(ctx, x, x0)], y)
-                      for h in curved_y]
+                      for h in curved_y if not _over(h, ky, max_degree)]
     for h in curved:
+        if _over(h, k, max_degree):
+            unresolved.append(_too_high(ctx, h, x, max_degree))
+            continue
         field = NumberField(univariate(ctx, h, x))
         ky = ctx.ring_names.index(y)
         common = field.squarefree(field.gcd([coefficients_in(ctx, p, k, ky)
@@ -389,11 +478,16 @@ def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)
                  for p in polys]
         elim = None
         for p in moved[1:]:
-            r = moved[0].resultant(p, x) if moved[0].degrees()[kx] else moved[0]
+            r = bounded_resultant(ctx, moved[0], p, x) if moved[0].degrees()[kx] else moved[0]
+            if r is None:
+                return []
             elim = r if elim is None else elim.gcd(r)
         if elim is None or elim.is_zero() or elim.is_constant():
             continue
-        _, factors = factor(elim)
+        factored = bounded_factor(ctx, elim)
+        if factored is None:
+            return []
+        _, factors = factored
         out, separated = [], True
         for m, _e in factors:
             if m.degrees()[kx] or m.is_constant():
@@ -467,7 +561,10 @@ def roots(ctx: SearchContext, g, name: str):
     if g.is_zero() or g.is_constant():
         return [], []
     k = ctx.ring_names.index(name)
-    _, factors = factor(g)
+    factored = bounded_factor(ctx, g)
+    if factored is None:
+        return [], []
+    _, factors = factored
     roots, curved = [], []
     for f, _e in sorted(factors, key=lambda fe: (fe[0].degrees()[k], str(fe[0]))):
         if f.degrees()[k] == 1 and sum(f.degrees()) == 1:

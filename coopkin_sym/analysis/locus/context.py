@@ -175,6 +175,11 @@ class SearchContext:
     analyses: dict = field(default_factory=dict)
     # id of a recorded component -> (its equations, as a tuple, and as a frozenset)
     equation_sets: dict = field(default_factory=dict)
+    # the families with no rational parametrization searched inside (their equations),
+    # and how many such searches are running (a point found there that a recorded
+    # component with its numbers holds, in any chart, is not recorded again)
+    searched: set = field(default_factory=set)
+    inside: int = 0
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""

@@ -85,7 +85,7 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
                                ctx.config.free - set(subset))
         chart, rows = chart_of(ctx.model, config)
         sub = dataclasses.replace(ctx, **chart, pi=frozenset(subset), hidden=0, splits=0,
-                                  deferred=[], polys={})
+                                  deferred=[], polys={}, searched=set(), inside=0)
         equations = [cotangent_name(n) for n in subset]
         for n in subset:
             ctx.readings[cotangent_name(n)] = Value(n, sp.pi, "revolute")

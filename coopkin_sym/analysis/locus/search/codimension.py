@@ -12,17 +12,25 @@ from fractions import Fraction
 import sympy as sp
 
 from coopkin_sym.analysis.locus.algebra import (
+    GCD_MODULO_TERMS,
+    as_poly,
+    bounded_factor,
+    bounded_gcd_modulo,
+    bounded_resultant,
     linear_equation,
     linearly_disjoint,
     normalize,
     poly_text,
     solve_small,
     substitute_values,
+    univariate,
     vars_of,
 )
+from coopkin_sym.analysis.locus.conditions import Condition
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.search.components import (
+    HIDDEN_DEPTH,
     _new_component,
     angle_condition,
     no_real_points,
@@ -30,7 +38,6 @@ from coopkin_sym.analysis.locus.search.components import (
     off_charts,
     variable_to_solve,
 )
-from coopkin_sym.analysis.locus.search.curved import inside_curved
 from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
     attach_algebraic_witness,
@@ -42,6 +49,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
+from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.quotient import (
     Quotient,
@@ -50,12 +58,14 @@ from coopkin_sym.exact.quotient import (
     gcd_modulo,
     smallest_fraction,
 )
+from coopkin_sym.exact.realroot import real_root_count
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
 
-def isolated(ctx: SearchContext, place: Place, rests) -> None:
-    """Common zeros of the remaining minor combinations (codimension 2 or more)."""
+def isolated(ctx: SearchContext, place: Place, rests, max_degree: int | None = None) -> None:
+    """Common zeros of the remaining minor combinations (codimension 2 or more); points
+    of degree above ``max_degree`` over Q are not decided (and the report says so)."""
     free = [n for n in ctx.ring_names if n not in place.point]
     rational_points: list[dict] = []
     algebraic_points: list[tuple] = []
@@ -64,13 +74,15 @@ def isolated(ctx: SearchContext, place: Place, rests) -> None:
                             key=ctx.ring_names.index)
         if not names_used:
             continue
+        if len(names_used) > 2 and _no_real_common_zero(ctx, polys):
+            continue
         if len(names_used) > 2:
             if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
                 continue
             note(ctx, "lower_dimensional_not_solved", depth=place.depth,
                  variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
             continue
-        points, algebraic, unresolved = solve_small(ctx, polys, names_used)
+        points, algebraic, unresolved = solve_small(ctx, polys, names_used, max_degree)
         for remark in unresolved:
             add_once(ctx.locus.unexplored, remark)
         rational_points += points
@@ -81,6 +93,19 @@ def isolated(ctx: SearchContext, place: Place, rests) -> None:
     for x, g, values, eqs, alpha in algebraic_points:
         created.append(_decide_point(ctx, place, values, (x, g, eqs, alpha), free))
     _intersections(ctx, place, [c for c in created if c is not None], free)
+
+
+def _no_real_common_zero(ctx: SearchContext, polys) -> bool:
+    """Whether the polynomials of ``polys`` in one same variable alone have no common
+    real root (then ``polys`` have no common real zero, whatever the others are)."""
+    by_name: dict = {}
+    for p in polys:
+        names = vars_of(ctx, p)
+        if len(names) == 1:
+            g = by_name.get(names[0])
+            by_name[names[0]] = p if g is None else g.gcd(p)
+    return any(g.is_constant() or real_root_count(univariate(ctx, g, n)) == 0
+               for n, g in by_name.items())
 
 
 def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
@@ -165,13 +190,18 @@ def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[
         if y not in by_y:
             res = None
             for p in polys[1:]:
-                r = polys[0].resultant(p, y)
+                r = bounded_resultant(ctx, polys[0], p, y)
+                if r is None:
+                    return True   # not solved, and the report says why
                 res = r if res is None else res.gcd(r)
             by_y[y] = res
         res = by_y[y]
         if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
             continue
-        _, factors = factor(res)
+        factored = bounded_factor(ctx, res)
+        if factored is None:
+            return True
+        _, factors = factored
         for h, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
             h = normalize(h)
             if no_real_points(ctx, h):
@@ -199,7 +229,10 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
     rows_x = substitute_rows(place.rows, kx, h0, h1)
     inner = dict(place.point)
     inner[x] = (h0, h1)
-    _, factors = factor(common)
+    factored = bounded_factor(ctx, common)
+    if factored is None:
+        return
+    _, factors = factored
     for k, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
         if k.is_constant():
             continue
@@ -252,9 +285,10 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
         numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
         decided = Remark.of("decided_substitution_modulo")
     eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, k)]
+    on_x = place.inside(rows=rows_x, equations=eqs, point=inner,
+                        charts=(*place.charts, h1) if not h1.is_constant() else place.charts)
     if numbers == place.base:
-        ctx.steps.inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
-                                                     charts=()))
+        ctx.steps.inside_candidate(ctx, on_x, family=(k, ky))
         return
     chain = None
     if k.degrees()[ky] == 1:
@@ -273,32 +307,34 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
                            not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
         ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point,
                                                     charts=sub_charts))
-    elif place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
-        ctx.steps.go_deeper(ctx, comp, place.inside(rows=None, equations=eqs, point=None),
-                            "no_parametrization")
     else:
-        inside_curved(ctx, place.inside(
-            rows=rows_x, equations=eqs, point=inner,
-            charts=(*place.charts, h1) if not h1.is_constant() else place.charts),
-            k, ky, comp)
+        ctx.steps.go_deeper(ctx, comp, on_x, family=(k, ky))
 
 
 def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                     swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
-    if _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y):
+    if ((ctx.hidden >= HIDDEN_DEPTH or place.depth > ctx.max_depth or ctx.expired())
+            and _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y)):
+        # its numbers are the enclosing ones, and it would not be searched inside
         note(ctx, "common_root_not_searched",
              equations=place.equations + [poly_text(ctx, h)], variable=y)
         return
     quotient = Quotient(h, kx)
-    common = gcd_modulo([coefficients_in(p, ky) for p in polys], quotient)
+    common = bounded_gcd_modulo(ctx, polys, quotient, y)
+    if common is None:
+        return
     if len(common) > 2 and not swapped:
         # several values of y over each point of h = 0 (angles that differ by pi): the
         # family projects onto the hypersurfaces N = 0 in y and the parameters, N a
         # factor of the norm res_x(h, g); over each, x is solved from h and g instead
         g = sum((c * ctx.ring.zctx.gens()[ky] ** i for i, c in enumerate(common)),
                 ctx.ring.zctx.constant(0))
-        _, factors = factor(h.resultant(g, x))
+        norm = bounded_resultant(ctx, h, g, x)
+        factored = None if norm is None else bounded_factor(ctx, norm)
+        if factored is None:
+            return
+        _, factors = factored
         for n, _e in sorted(factors, key=lambda fe: (fe[0].total_degree(), str(fe[0]))):
             if n.degrees()[ky] == 0:
                 continue  # where the leading coefficients vanish: part of a wider set
@@ -324,26 +360,20 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
     eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, y_eq)]
-    if numbers == place.base:
-        ctx.steps.inside_candidate(ctx, place.inside(rows=None, equations=eqs, point=None,
-                                                     charts=()))
-        return
     inner = dict(place.point)
     inner[y] = (c0, c1)
+    on_h = place.inside(rows=rows, equations=eqs, point=inner,
+                        charts=(*place.charts, c1) if not c1.is_constant() else place.charts)
+    if numbers == place.base:
+        ctx.steps.inside_candidate(ctx, on_h, family=(h, kx))
+        return
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"},
                           Remark.of("decided_family_modulo"), within=inner,
                           generic_point=(inner, quotient))
     if comp is None:
         return
     family_witness(ctx, comp, h, x, inner, numbers)
-    if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
-        ctx.steps.go_deeper(ctx, comp, place.inside(rows=None, point=None),
-                            "no_parametrization")
-    else:
-        inside_curved(ctx, place.inside(
-            rows=rows, equations=[e.text for e in comp.equations], point=inner,
-            charts=(*place.charts, c1) if not c1.is_constant() else place.charts),
-            h, kx, comp)
+    ctx.steps.go_deeper(ctx, comp, on_h, family=(h, kx))
 
 
 # parameters of a family set to random integers of at most this size
@@ -370,7 +400,11 @@ def _enclosing_numbers_at_a_point(ctx: SearchContext, place: Place, polys, h, x,
     if not curved:
         return False
     quotient = Quotient(min(curved, key=lambda f: (f.degrees()[kx], len(f))), kx)
-    common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient)
+    try:   # a cheap test only: too large, the family is decided the other way
+        common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient,
+                            max_terms=GCD_MODULO_TERMS)
+    except BlockTooLarge:
+        return False
     if len(common) != 2:
         return False
     rows = substitute_rows(substitute_values(ctx, place.rows, values), ky, *common)
@@ -406,45 +440,62 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
     kind = "isolated" if len(dims) == len(free) else "subvariety"
     if numbers == place.base:
         if kind == "subvariety":
-            sub_point = dict(place.point)
-            zctx = ctx.ring.zctx
-            if algebraic is None:
-                for n, v in values.items():
-                    sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
+            sub_point = (_with_values(ctx, place.point, values) if algebraic is None
+                         else dict(place.point))
             ctx.steps.inside_candidate(ctx, place.inside(rows=rows if algebraic is None else None,
                                                          equations=eqs, point=sub_point))
         return None
-    if algebraic is None:
-        chain = dict(place.point)
-        for n, v in values.items():
-            chain[n] = (ctx.ring.zctx.constant(-v.numerator),
-                        ctx.ring.zctx.constant(v.denominator))
-        comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
-                              Remark.of("decided_at_point" if kind == "isolated" else
-                                        "decided_free_variables"),
-                              chain=chain)
-        if comp is None:
-            return None
-        for offset in range(6):
-            full = complete_point(ctx, place.point, values, offset)
-            if full is not None and numbers_at_values(ctx, full) == numbers:
-                attach_witness(ctx, comp, to_at(ctx, full), numbers)
-                break
-        sub_point = dict(place.point)
-        zctx = ctx.ring.zctx
-        for n, v in values.items():
-            sub_point[n] = (zctx.constant(-v.numerator), zctx.constant(v.denominator))
-        ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point))
-        return comp, values, None
-    x, g, eq_polys, alpha = algebraic
-    condition = algebraic_condition(ctx, x, g, values)
-    if place.equations:
-        condition = angle_condition(ctx, place.equations) & condition
+    if algebraic is not None:
+        return _algebraic_point(ctx, place, values, algebraic, quotient, rows, eqs, numbers,
+                                kind)
+    chain = _with_values(ctx, place.point, values)
+    comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
+                          Remark.of("decided_at_point" if kind == "isolated" else
+                                    "decided_free_variables"),
+                          chain=chain,
+                          generic_point=(chain, None) if ctx.inside else None)
+    if comp is None:
+        return None
+    for offset in range(6):
+        full = complete_point(ctx, place.point, values, offset)
+        if full is not None and numbers_at_values(ctx, full) == numbers:
+            attach_witness(ctx, comp, to_at(ctx, full), numbers)
+            break
+    ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs,
+                                                point=_with_values(ctx, place.point, values)))
+    return comp, values, None
+
+
+def _with_values(ctx: SearchContext, point: dict, values: dict) -> dict:
+    """``point`` with each variable of ``values`` set to its rational value (as the
+    pair ``(-numerator, denominator)`` of a linear factor)."""
+    out = dict(point)
+    for n, v in values.items():
+        out[n] = (ctx.ring.zctx.constant(-v.numerator), ctx.ring.zctx.constant(v.denominator))
+    return out
+
+
+def _algebraic_point(ctx: SearchContext, place: Place, values: dict, algebraic, quotient,
+                     rows, eqs, numbers, kind: str) -> tuple | None:
+    """The component of :func:`_decide_point` at a point whose coordinates are
+    polynomials over Q in a root ``x`` of ``g`` (``algebraic = (x, g, equations,
+    alpha)``), its numbers ``numbers`` (over ``Q[x]/(g)``, ``quotient``)."""
+    x, g, _eq_polys, alpha = algebraic
+
+    def condition() -> Condition:
+        here = algebraic_condition(ctx, x, g, values)
+        return angle_condition(ctx, place.equations) & here if place.equations else here
+
     m = sp.sstr(poly_to_sympy(g, ctx.ring, ctx.symbols).subs(ctx.symbols[x],
                                                              sp.Symbol("alpha")))
+    at_point = dict(place.point)
+    for n, v in values.items():   # n = num(x)/den, x a root of g
+        num, den = as_poly(ctx, v, x)
+        at_point[n] = (-num, ctx.ring.zctx.constant(den))
     comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
                           Remark.of("decided_algebraic", variable=alpha, minimal_polynomial=m),
-                          condition=condition, within=place.point)
+                          condition=condition, within=place.point,
+                          generic_point=(at_point, quotient) if ctx.inside else None)
     if comp is None:
         return None
     attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)

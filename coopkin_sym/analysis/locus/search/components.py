@@ -111,7 +111,8 @@ def _equation_set(ctx: SearchContext, c: Component) -> frozenset:
 
 def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbers: Numbers,
                    kind: str, drops, decided: Remark, *, witness: dict | None = None,
-                   condition: Condition | None = None, real: bool = True, chain: dict | None = None,
+                   condition: Condition | Callable[[], Condition] | None = None,
+                   real: bool = True, chain: dict | None = None,
                    within: dict | None = None,
                    generic_point: tuple | None = None) -> Component | None:
     """Record a component found at ``place`` (its depth and parent; None when the same
@@ -122,7 +123,8 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     in. Their denominators become the component's ``outside``. ``generic_point``,
     ``(parametrization, quotient or None)``, describes its generic point: a component of
     the same chart with the same numbers whose equations vanish there contains it, and
-    it is not recorded."""
+    it is not recorded. ``condition`` may be given as a function, called only for a
+    component that is recorded (a costly one is then not built for the others)."""
     polys = [_named(ctx, text) for text in equations]
     mine = frozenset(polys)
     if any(_equation_set(ctx, c) == mine for c in ctx.locus.components):
@@ -142,6 +144,8 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     here = numbers.as_dict()
     changes = {k: (generic[k], here[k]) for k in generic if generic[k] != here[k]}
     outside = _denominators(ctx, chain if chain is not None else within, equations)
+    if callable(condition):
+        condition = condition()
     comp = Component(equations=polys, numbers=here, witness=None, real=real,
                      kind=kind, condition=condition or angle_condition(ctx, equations),
                      drops=drops_text(drops), changes=changes, decided=decided,
@@ -174,17 +178,35 @@ def _named(ctx: SearchContext, text: str) -> NamedPolynomial:
 
 
 def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bool:
-    """Whether every equation of ``comp`` (recorded in this chart) vanishes at the
-    generic point given by the parametrization ``point`` and, when not None, the
-    ``quotient`` by an irreducible polynomial."""
-    if ctx.owners is None or ctx.owners.get(id(comp)) is not ctx:
+    """Whether ``comp`` holds at the generic point given by the parametrization
+    ``point`` and, when not None, the ``quotient`` by an irreducible polynomial: every
+    equation of ``comp`` vanishes there and no polynomial of its ``outside`` does.
+    ``comp`` is recorded in this chart or, inside a family with no rational
+    parametrization (``ctx.inside``), in one whose joints at pi are at pi here too and
+    whose equations are polynomials of this chart (they hold here as they are)."""
+    other = ctx.owners.get(id(comp)) if ctx.owners is not None else None
+    if other is None or (other is not ctx and not (ctx.inside and other.pi <= ctx.pi)):
         return False
+    at_pi = {cotangent_name(n) for n in other.pi}
+
+    def here(text: str):
+        p = other.polys.get(text)
+        if p is not None and other is not ctx:
+            p = _transfer(p, other, ctx)
+        return None if p is None else _on_chain(p, ctx, point)
+
+    def zero(p) -> bool:
+        return p.is_zero() or (quotient is not None and quotient.is_zero(p))
+
     for eq in comp.equations:
-        p = ctx.polys.get(eq.text)
-        if p is None:
+        if eq.text in at_pi:
+            continue
+        p = here(eq.text)
+        if p is None or not zero(p):
             return False
-        p = _on_chain(p, ctx, point)
-        if not (p.is_zero() or (quotient is not None and quotient.is_zero(p))):
+    for out in comp.outside:   # where a denominator of its parametrization vanishes,
+        p = here(out.text)     # the component does not hold
+        if p is None or zero(p):
             return False
     return True
 

@@ -1,6 +1,7 @@
 """Curved families: a candidate factor that is not linear in any variable, decided
-modulo its polynomial (over its function field) and searched inside on the random
-lines and points it holds.
+modulo its polynomial (over its function field), and the search inside any family
+with no rational parametrization (the minors of each block over its function field,
+their common zeros with its polynomial solved like any set of codimension 2).
 """
 
 from __future__ import annotations
@@ -13,16 +14,11 @@ from coopkin_sym.analysis.locus.algebra import (
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.search.components import (
-    HIDDEN_DEPTH,
     _new_component,
     beyond_chart,
     note,
 )
-from coopkin_sym.analysis.locus.search.hypersurface import (
-    arm_blocks,
-    reduce_constant_pivots,
-)
-from coopkin_sym.analysis.locus.types import Component
+from coopkin_sym.analysis.locus.search.hypersurface import candidates
 from coopkin_sym.analysis.locus.witness import (
     algebraic_witness_on,
     attach_witness,
@@ -31,10 +27,9 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import numbers_modulo
-from coopkin_sym.analysis.numbers import Numbers
-from coopkin_sym.exact.quotient import (
-    Quotient,
-)
+from coopkin_sym.errors import WorkLimitReached
+from coopkin_sym.exact import deadline
+from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import split_linear, substitute_rows
 
 
@@ -51,7 +46,8 @@ _MAX_CURVED_TERMS = 3000
 
 def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None:
     """A factor linear in no variable: its numbers over its function field (rank modulo
-    ``f``), a witness on it (rational, else a real algebraic point)."""
+    ``f``), a witness on it (rational, else a real algebraic point), and the search
+    inside it (:func:`inside_curved`)."""
     names = vars_of(ctx, f)
     if len(f) > _MAX_CURVED_TERMS:
         note(ctx, "family_too_large", terms=len(f), degree=f.total_degree(),
@@ -64,14 +60,10 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
     k = min((ctx.ring_names.index(n) for n in names if ctx.kinds[n][0] != "parameter"),
             key=lambda i: (f.degrees()[i], i))
     numbers = numbers_modulo(place.rows, ctx.model, ctx.row_contacts, Quotient(f, k))
+    on_f = place.inside(equations=place.equations + [f_text])
     if numbers == place.base:
-        if len([n for n in ctx.ring_names if n not in place.point]) <= 1:
-            return
-        on_f = place.inside(equations=place.equations + [f_text], charts=())
-        if ctx.hidden >= HIDDEN_DEPTH or place.depth > 0 or ctx.expired():
-            ctx.steps.inside_candidate(ctx, on_f.inside(rows=None, point=None))
-        else:   # after the components of the enclosing level, like other candidates
-            ctx.steps.after_enclosing(ctx, lambda: inside_curved(ctx, on_f, f, k, None))
+        if len([n for n in ctx.ring_names if n not in place.point]) > 1:
+            ctx.steps.inside_candidate(ctx, on_f, family=(f, k))
         return
     comp = _new_component(ctx, place, place.equations + [f_text], numbers,
                           "hypersurface" if not beyond_chart(ctx, place.equations)
@@ -87,54 +79,116 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
             attach_witness(ctx, comp, to_at(ctx, values), numbers)
     if comp.witness is None:
         algebraic_witness_on(ctx, comp, f, k, place.point, numbers)
-    if place.depth > 0 or place.depth >= ctx.max_depth or ctx.expired():
-        ctx.steps.go_deeper(ctx, comp, place.inside(rows=None, point=None, charts=()),
-                            "no_parametrization")
-    else:
-        inside_curved(ctx, place.inside(equations=place.equations + [f_text], charts=()),
-                      f, k, comp)
+    ctx.steps.go_deeper(ctx, comp, on_f, family=(f, k))
 
 
-def inside_curved(ctx: SearchContext, place: Place, f, k: int,
-                  comp: Component | None) -> None:
-    """Drops inside a family ``f = 0`` of the first level (depth 0) with no rational
-    parametrization, where a divisor of the rows vanishes: each block (``H G^T``, and
-    ``H D`` of each arm) is reduced modulo ``f`` (a row divisible by ``f`` is zero
-    there), its pivots positive everywhere eliminated, and the zero set on ``f = 0`` of
-    each divisor taken out of a row is solved like any set of codimension 2. Drops cut
-    out there by minors alone are not searched, and the report says so. With ``comp``
-    None, ``f = 0`` is a candidate with the enclosing numbers (``place.base``, in
-    ``place.parent``), searched one such level deep."""
+def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
+    """Drops inside a family ``f = 0`` (``f`` irreducible, linear in no variable; ``k``
+    a variable it is curved in) with no rational parametrization, whose numbers are
+    ``place.base``. ``place.rows`` are the rows of the set ``f`` was found in (they hold
+    on ``f = 0``, outside the zeros of ``place.charts``).
+
+    For each block whose rank drop changes a number (``H G^T``, ``H D`` of each arm,
+    the left nullspace of each ``H D`` and the object rows it leaves) the rank over the
+    function field of ``f`` is taken, and the set where it drops there is cut out by
+    ``f`` and random combinations of the minors of that size, reduced modulo ``f``
+    (Cauchy-Binet over ``Z[x]/(f)``); where a divisor taken out of a row vanishes on
+    ``f = 0`` is a set of its own. Each is solved like any set of codimension 2 (its
+    families decided over their own fields, the points exactly) and what has the
+    numbers of ``f = 0`` is searched in turn, within the bounds of the search. Where
+    two families meet, each is searched inside the other: their intersection is found
+    as a drop set of one of them.
+
+    A family larger than :data:`INSIDE_TERMS` (its polynomial, or an entry of its
+    rows) is not searched, a search past its work budget :data:`INSIDE_STEPS` is
+    cut (what it found by then is kept, and the searches it deferred still run),
+    and points of degree above :data:`INSIDE_DEGREE` are not decided; the report
+    says so each time."""
     names = ({n for row in place.rows for e in row if not e.is_constant()
               for n in vars_of(ctx, e)} | set(vars_of(ctx, f)))
-    if comp is not None:
-        index = ctx.locus.components.index(comp)
-        where = dict(component=index, equations=())
-        place = place.inside(base=Numbers(**comp.numbers), depth=place.depth + 1,
-                             parent=index)
-    else:
-        where = dict(component=None, equations=place.equations)
+    where = (dict(component=place.parent, equations=()) if place.parent is not None
+             and place.depth > 0 and _is_component(ctx, place) else
+             dict(component=None, equations=place.equations))
     if len(names) > 4:
         # the sets cut out there are solved in up to four variables only
         note(ctx, "too_many_variables", variables=len(names), **where)
         return
-    quotient = Quotient(f, k)
-    dim = ctx.model.object_dim
-    blocks = [[row[:dim] for row in place.rows]] + [
-        d for _, _, d in arm_blocks(ctx, place.rows)]
-    divisors: list = []
-    for rows in blocks:
-        rows = [quotient.reduce_row(r) for r in rows]
-        contents: list = []
-        reduce_constant_pivots([r for r in rows if any(not e.is_zero() for e in r)],
-                               contents)
-        divisors += [g for g in contents if not g.is_constant() and not quotient.is_zero(g)
-                     and g not in divisors]
-    note(ctx, "divisors_only", **where)
-    if not divisors:
+    if len(names) < 2:
+        return   # points: nothing lies deeper inside them
+    size = max(len(f), max(len(e) for row in place.rows for e in row))
+    if size > INSIDE_TERMS:
+        note(ctx, "inside_not_searched", limit="terms", size=size, bound=INSIDE_TERMS,
+             **where)
         return
-    ctx.hidden += comp is None
-    try:
-        ctx.steps.isolated(ctx, place, [[f, g] for g in divisors])
-    finally:
-        ctx.hidden -= comp is None
+    levels = len(ctx.deferred)
+    with deadline.work_limit(INSIDE_STEPS, INSIDE_OWNER) as bound:
+        ctx.inside += 1
+        try:
+            _search_inside(ctx, place, f, k)
+        except WorkLimitReached:
+            if not deadline.active(INSIDE_OWNER) or bound.budget[0] >= 0:
+                raise   # an enclosing family's budget, used up here
+            note(ctx, "inside_not_searched", limit="steps", size=None,
+                 bound=INSIDE_STEPS, **where)
+        finally:
+            ctx.inside -= 1
+            _keep_deferred(ctx, levels)
+        if _TRACE is not None:
+            _TRACE.append((str(f), INSIDE_STEPS - bound.budget[0]))
+
+
+_TRACE = None
+
+
+def _keep_deferred(ctx: SearchContext, levels: int) -> None:
+    """The searches deferred by levels the cut search left open (``ctx.deferred``
+    beyond ``levels``) go to the enclosing level, run now when there is none: a cut
+    in one family drops no search of another."""
+    orphans = [search for level in ctx.deferred[levels:] for search in level]
+    del ctx.deferred[levels:]
+    if ctx.deferred:
+        ctx.deferred[-1].extend(orphans)
+    else:
+        for search in orphans:
+            search()
+
+
+#: The largest family searched inside: terms of its polynomial and of an entry of its
+#: rows (the minors and resultants grow fast with them).
+INSIDE_TERMS = 150
+#: The work budget of the search inside one family, in steps of
+#: :func:`~coopkin_sym.exact.deadline.check` (deterministic: the same cut on any
+#: machine and under any load).
+INSIDE_STEPS = 10**9
+#: The highest degree over Q of a point decided inside such a family.
+INSIDE_DEGREE = 4
+#: The owner of the time bound of one such search (see :func:`.deadline.active`).
+INSIDE_OWNER = "the search inside a family"
+#: The order the blocks are searched in: those that change the most numbers first.
+BLOCK_ORDER = ("HG^T", "HD", "A", "Y")
+
+
+def _search_inside(ctx: SearchContext, place: Place, f, k: int) -> None:
+    """The drop sets of :func:`inside_curved`, block by block (:data:`BLOCK_ORDER`,
+    the divisors taken out of the rows of every block before the minors)."""
+    cands = candidates(ctx, place.rows, Quotient(f, k))
+
+    def order(name: str) -> tuple:
+        block = name.split(":")[1] if name.startswith("content:") else name.split(":")[0]
+        return (not name.startswith("content:"), BLOCK_ORDER.index(block), name)
+
+    for name in sorted(cands, key=order):
+        polys = cands[name]
+        if name.startswith("content:"):
+            systems = [[f, g] for g in polys if not g.is_constant()]
+        else:
+            systems = [[f, *polys]] if polys else []
+        if systems:
+            ctx.steps.isolated(ctx, place, systems, INSIDE_DEGREE)
+
+
+def _is_component(ctx: SearchContext, place: Place) -> bool:
+    """Whether ``place`` is the inside of a recorded component (its equations are
+    those of its parent)."""
+    comp = ctx.locus.components[place.parent]
+    return [e.text for e in comp.equations] == list(place.equations)

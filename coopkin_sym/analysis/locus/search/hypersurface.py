@@ -20,24 +20,37 @@ from coopkin_sym.exact import elimination as el
 from coopkin_sym.exact import matrix as exact_matrix
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.matrix import POLYNOMIALS, PolyMatrix
+from coopkin_sym.exact.quotient import Quotient
+from coopkin_sym.exact.sizes import determinant_terms
 
 
 # --- candidate polynomials -------------------------------------------------------------
-def candidates(ctx: SearchContext, q_rows) -> dict[str, list]:
+def candidates(ctx: SearchContext, q_rows, quotient: Quotient | None = None
+               ) -> dict[str, list]:
     """For each matrix whose rank drop changes a number, random combinations of its
     maximal minors (a few polynomials whose common zeros are the drop set); under
     ``content:<matrix>`` the polynomials rows were divided by (each one's zero set is a
-    candidate on its own)."""
+    candidate on its own).
+
+    With a ``quotient`` (``Z[x]/(f)``, ``f`` irreducible), the same on the family
+    ``f = 0``: ranks over its function field, the minors at those ranks, every
+    polynomial reduced modulo ``f`` (their common zeros with ``f`` are the drop set
+    there)."""
     zctx = ctx.ring.zctx
     owners = [ctx.model.contacts[c].arm for c in ctx.row_contacts]
     dim = ctx.model.object_dim
+    if quotient is not None:
+        q_rows = [quotient.reduce_row(r) for r in q_rows]
     gt = [row[:dim] for row in q_rows]
     mats: dict[str, list] = {"HG^T": gt}
     a_rows = [gt[i] for i, o in enumerate(owners) if o is None]
     for arm, rows, d in arm_blocks(ctx, q_rows):
         mats[f"HD:{arm.name}"] = d
         dt = [list(col) for col in zip(*d, strict=True)]
-        y, _ = PolyMatrix(dt, len(rows), context=zctx).nullspace_rref()
+        if quotient is None:
+            y, _ = PolyMatrix(dt, len(rows), context=zctx).nullspace_rref()
+        else:
+            y = PolyMatrix(dt, len(rows), quotient, zctx).nullspace()
         if y:
             mats[f"Y:{arm.name}"] = y
         for v in y:
@@ -52,7 +65,11 @@ def candidates(ctx: SearchContext, q_rows) -> dict[str, list]:
     for name, rows in mats.items():
         contents: list = []
         deep: list = []
-        polys = _minor_combinations(rows, ctx, contents, deep, name)
+        if quotient is not None:
+            rows = [quotient.reduce_row(r) for r in rows]
+        polys = _minor_combinations(rows, ctx, contents, deep, name, quotient)
+        if quotient is not None:
+            contents = [g for g in contents if not quotient.is_zero(g)]
         if contents:
             out[f"content:{name}"] = contents
         if deep:
@@ -83,15 +100,19 @@ def _positive(e) -> bool:
             and all(c > 0 and all(x % 2 == 0 for x in m) for m, c in terms.items()))
 
 
-def reduce_constant_pivots(rows, contents: list):
+def reduce_constant_pivots(rows, contents: list, quotient: Quotient | None = None):
     """Eliminate with every pivot that vanishes at no real point (a nonzero constant,
     or a polynomial that :func:`_positive` shows positive): the rank falls by the
     number of pivots at every real point and the set where it drops stays the same.
 
     Each row is then divided by the gcd of its entries; where that gcd vanishes the
     rank may drop, so every such non-constant gcd is appended to ``contents``: its
-    zero set is a candidate to decide like the others."""
+    zero set is a candidate to decide like the others. With a ``quotient``, every row
+    is reduced modulo its polynomial first (a row zero there is dropped)."""
     rows = [list(r) for r in rows]
+    if quotient is not None:
+        rows = [r for r in (quotient.reduce_row(r) for r in rows)
+                if not all(e.is_zero() for e in r)]
     while rows and rows[0]:
         spot = next(((i, j) for i, r in enumerate(rows) for j, e in enumerate(r)
                      if not e.is_zero() and e.is_constant()), None)
@@ -106,6 +127,8 @@ def reduce_constant_pivots(rows, contents: list):
         p = prow[j]
         rows = [[p * x - r[j] * y for x, y in zip(r, prow, strict=True)]
                 if not r[j].is_zero() else r for r in rows]
+        if quotient is not None:
+            rows = [quotient.reduce_row(r) for r in rows]
         rows = [_without_content(r[:j] + r[j + 1:], contents) for r in rows]
         rows = [r for r in rows if not all(e.is_zero() for e in r)]
     return rows
@@ -128,24 +151,26 @@ def _without_content(row, contents: list):
 
 
 def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | None = None,
-                        name: str = "") -> list:
+                        name: str = "", quotient: Quotient | None = None) -> list:
     """Random combinations of the maximal minors of ``rows`` (their common zeros are the
     set where the rank drops), after a reduction whose divisors go to ``contents``.
 
     When the drop set has no hypersurface part and more than four variables, no
     combination is returned; one maximal minor goes to ``deep`` instead (see
-    :func:`splitting_minor`)."""
+    :func:`splitting_minor`). With a ``quotient``, the rank is the one over its
+    function field and each combination is reduced modulo its polynomial (one that is
+    zero there is drawn again)."""
     rows = [r for r in rows if not all(e.is_zero() for e in r)]
-    rows = reduce_constant_pivots(rows, contents)
+    rows = reduce_constant_pivots(rows, contents, quotient)
     if not rows or not rows[0]:
         return []
     ncols = len(rows[0])
     zctx = ctx.ring.zctx
-    rank = exact_matrix.rank(rows, ncols, POLYNOMIALS, zctx)
+    rank = exact_matrix.rank(rows, ncols, quotient or POLYNOMIALS, zctx)
     if rank == 0:
         return []
     nvars = len({n for r in rows for e in r for n in vars_of(ctx, e)})
-    if nvars > 4:
+    if nvars > 4 and quotient is None:
         # the part of codimension 2 or more is solved here only in up to four variables;
         # it lies in the zero set of any one maximal minor, whose factors are then
         # searched inside one by one
@@ -177,7 +202,16 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
             m = el.matmul(left, m, zctx)
         if right is not None:
             m = el.matmul(m, right, zctx)
+        size = determinant_terms(m)
+        if size > DETERMINANT_TERMS:
+            note(ctx, "operation_too_large", operation="determinant",
+                 variables=sorted({n for r in m for e in r for n in vars_of(ctx, e)},
+                                  key=ctx.ring_names.index),
+                 size=size, bound=DETERMINANT_TERMS)
+            return []
         det = _determinant(m)
+        if quotient is not None:
+            det = quotient.reduce(det)
         if not det.is_zero():
             polys.append(det)
         if left is None and right is None:
@@ -189,6 +223,10 @@ def _minor_combinations(rows, ctx: SearchContext, contents: list, deep: list | N
 
 # how many more random combinations are drawn when some vanish identically
 _REDRAWS = 12
+#: The largest combination of minors computed: its estimated terms (see
+#: :func:`~coopkin_sym.exact.sizes.determinant_terms`; the products of a fraction-free
+#: determinant run to their end once started).
+DETERMINANT_TERMS = 200_000
 
 
 # how many zero sets of single minors are searched inside one another

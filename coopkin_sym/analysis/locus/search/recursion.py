@@ -22,13 +22,18 @@ from coopkin_sym.analysis.locus.search.components import (
     step_name,
     wider_component,
 )
-from coopkin_sym.analysis.locus.search.curved import nonlinear_factor, substitute_linear
+from coopkin_sym.analysis.locus.search.curved import (
+    inside_curved,
+    nonlinear_factor,
+    substitute_linear,
+)
 from coopkin_sym.analysis.locus.search.hypersurface import MAX_SPLITS, candidates
 from coopkin_sym.analysis.locus.types import Component
 from coopkin_sym.analysis.locus.witness import (
     witness_linear,
 )
 from coopkin_sym.analysis.mobility import decompose
+from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.substitution import substitute
 
@@ -148,12 +153,15 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     go_deeper(ctx, comp, inside)
 
 
-def inside_candidate(ctx: SearchContext, place: Place, split: bool = False) -> None:
+def inside_candidate(ctx: SearchContext, place: Place, split: bool = False,
+                     family: tuple | None = None) -> None:
     """A candidate set whose numbers are the enclosing ones. Some candidates come from
     conditions that are sufficient, not necessary (a left nullspace basis losing rank, a
     row divisor), or hold a drop set of higher codimension (``split``: a factor of a
     single minor): the enclosing search does not see drops deeper inside them, so they
-    are searched too, without being reported."""
+    are searched too, without being reported. ``family = (f, k)``: the set is ``f = 0``
+    inside the rows of ``place`` (``f`` curved in variable ``k``), searched by
+    :func:`~.curved.inside_curved`."""
     if ctx.expired():
         return
     if place.point is not None and all(n in place.point for n in ctx.ring_names):
@@ -170,13 +178,22 @@ def inside_candidate(ctx: SearchContext, place: Place, split: bool = False) -> N
         note(ctx, "enclosing_not_searched", equations=place.equations,
              reason=reason or "no_parametrization", bound=bound)
         return
+    if family is not None:   # the same family, found again from another block
+        key = frozenset(place.equations)
+        if key in ctx.searched:
+            return
+        ctx.searched.add(key)
+
     def search() -> None:
         if split:
             ctx.splits += 1
         else:
             ctx.hidden += 1
         try:
-            explore(ctx, place)
+            if family is None:
+                explore(ctx, place)
+            else:
+                inside_curved(ctx, place, *family)
         finally:
             if split:
                 ctx.splits -= 1
@@ -196,20 +213,27 @@ def after_enclosing(ctx: SearchContext, search) -> None:
 
 
 def go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
-              why_not: str | None = None) -> None:
+              why_not: str | None = None, family: tuple | None = None) -> None:
     """Search inside a new component for deeper drops, or say why it was not done
-    (``why_not``: a reason of :data:`~.remarks.REASONS`)."""
+    (``why_not``: a reason of :data:`~.remarks.REASONS`). ``family = (f, k)``: the
+    component is ``f = 0`` inside the rows of ``place`` (``f`` curved in variable
+    ``k``), searched by :func:`~.curved.inside_curved`."""
     if comp is None or comp.kind == "isolated":
         return
     index = ctx.locus.components.index(comp)
     if place.depth >= ctx.max_depth:
         why_not = "max_depth"
+    elif place.rows is None and why_not is None:
+        why_not = "no_parametrization"
     if why_not is not None:
         ctx.locus.unexplored.append(Remark.of(
             "deeper_not_explored", component=index, condition=comp.condition.text,
             reason=why_not, bound=ctx.max_depth if why_not == "max_depth" else None))
-    else:
+    elif family is None:
         explore(ctx, place.inside(depth=place.depth + 1, parent=index))
+    else:
+        inside_curved(ctx, place.inside(depth=place.depth + 1, parent=index,
+                                        base=Numbers(**comp.numbers)), *family)
 
 
 #: The steps the seams below call back into (see :class:`.components.Steps`).

@@ -1,0 +1,244 @@
+"""The search inside families with no rational parametrization (curved families):
+the drops cut out there by the minors of each block over the family's function field,
+where two families meet, the bounds of that search (size, time, degree of the points)
+and the size guards before the flint calls that cannot be interrupted.
+
+Each family below is written by hand (its equations, the variable solved linearly) in
+a small system, and what the search finds inside it is checked exactly: equations,
+numbers, witnesses, and the numbers at each witness by an independent analysis.
+"""
+
+from __future__ import annotations
+
+import pytest
+from random_systems import random_system
+from support import texts
+
+import coopkin_sym
+from coopkin_sym.analysis.locus import algebra
+from coopkin_sym.analysis.locus.context import Place
+from coopkin_sym.analysis.locus.search import codimension, compute_locus, search_context
+from coopkin_sym.analysis.locus.search import curved as curved_search
+from coopkin_sym.analysis.locus.search.curved import inside_curved
+from coopkin_sym.analysis.locus.verify import verify_locus
+from coopkin_sym.analysis.mobility import analyze, numbers_modulo
+from coopkin_sym.exact.quotient import Quotient
+from coopkin_sym.exact.substitution import split_linear, substitute_rows
+from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.verification import summary_lines
+
+#: Two soft fingers, three joints: with q3 = pi, the curved family F below has the
+#: generic numbers, and two points of it have one more indeterminate motion (Ni 1).
+THREE_JOINTS = {
+    "name": "two soft fingers, three joints", "parameters": [],
+    "arms": [{"name": "a1", "joints": [
+                 {"name": "q1", "type": "revolute", "axis": [0, 0, 1], "point": [-1, 1, 0]},
+                 {"name": "q2", "type": "revolute", "axis": [0, 0, 1], "point": [0, 1, 0]}]},
+             {"name": "a2", "joints": [
+                 {"name": "q3", "type": "revolute", "axis": [0, 0, 1], "point": [-2, 0, 0]}]}],
+    "contacts": [
+        {"name": "c1", "link": "a1/2", "point": [1, -2, 0], "normal": [0, 1, 0], "model": "soft"},
+        {"name": "c2", "link": "a2/1", "point": [-1, -2, 0], "normal": [0, -1, 0],
+         "model": "soft"}]}
+F = "2*t_q1**2*t_q2**2 + t_q1**2*t_q2 - t_q1**2 - 6*t_q1*t_q2 - 2*t_q1 - t_q2**2 - t_q2 + 2"
+GENERIC = {"Nm": 2, "Nc": 2, "Ni": 0, "Nr": 0, "Ng": 2, "Nd": 5, "Nh": 1}
+NI_1 = {"Nm": 2, "Nc": 2, "Ni": 1, "Nr": 0, "Ng": 3, "Nd": 5, "Nh": 1}
+
+
+def _numbers_at(system, at: str) -> dict:
+    return analyze(system.model, Configuration.parse(system.model, at)).numbers.as_dict()
+
+
+def test_inside_a_curved_candidate_the_minors_give_its_points():
+    """F = 0 (degree 2 in both variables, linear in none) has the generic numbers; the
+    minors of H G^T over its function field vanish with F at two rational points, and
+    the left nullspace of H D at a point of degree 4, where the arm's H D drops."""
+    system = coopkin_sym.load(THREE_JOINTS)
+    ctx, rows = search_context(system, at="q3=pi")
+    assert ctx.ring_names == ("t_q1", "t_q2") and ctx.generic.as_dict() == GENERIC
+    t1, t2 = ctx.ring.zctx.gens()
+    f = 2*t1**2*t2**2 + t1**2*t2 - t1**2 - 6*t1*t2 - 2*t1 - t2**2 - t2 + 2
+    assert numbers_modulo(rows, ctx.model, ctx.row_contacts, Quotient(f, 0)) == ctx.generic
+    inside_curved(ctx, Place(rows=rows, equations=[F], point={}, depth=0, base=ctx.generic),
+                  f, 0)
+    found = [(texts(c.equations), c.numbers, c.decided.kind) for c in ctx.locus.components]
+    assert found == [
+        ([F, "2*t_q1 + 1", "t_q2 + 1"], NI_1, "decided_at_point"),
+        ([F, "t_q1", "t_q2 + 2"], NI_1, "decided_at_point"),
+        ([F, "t_q1**4 - 4*t_q1**3 - 34*t_q1**2 - 4*t_q1 + 1",
+          "t_q1**3 - 4*t_q1**2 - 35*t_q1 + 6*t_q2"],
+         {"Nm": 2, "Nc": 1, "Ni": 0, "Nr": 1, "Ng": 2, "Nd": 6, "Nh": 1},
+         "decided_algebraic")]
+    assert [c.witness.at_text() for c in ctx.locus.components[:2]] == [
+        "q3=pi,q1=2*atan(-1/2),q2=-pi/2", "q3=pi,q1=0,q2=2*atan(-2)"]
+    for c in ctx.locus.components[:2]:   # an independent analysis at each point
+        assert _numbers_at(system, c.witness.at_text()) == NI_1
+    assert ctx.locus.unexplored == []
+    # the whole search at q3 = pi: the points, and the hypersurface where H D drops,
+    # which holds the point of degree 4 with its numbers (not listed again)
+    locus = compute_locus(system, at="q3=pi")
+    assert sorted(texts(c.equations) for c in locus.components) == sorted([
+        ["3*t_q2**2 + 2*t_q2 - 3"], [F, "2*t_q1 + 1", "t_q2 + 1"], [F, "t_q1", "t_q2 + 2"]])
+    v = verify_locus(system, locus, max_points=400, lines=6, seed=0)
+    assert v.ok, summary_lines(v)
+
+
+#: Random system 85 at q1 = pi: the curve h = 0, t_q3 = -c0/c1 (Ni 1), where the
+#: search found no rational parametrization; the grid point q2 = q4 = pi/2 has Ni 2.
+H85 = "6*t_q2**2*t_q4**2 + 11*t_q2**2 + t_q2*t_q4**2 + t_q2 - 12*t_q4**2 - 7"
+Y85 = ("-6*t_q2*t_q4**2 - 11*t_q2 + 2*t_q3*t_q4**2 + 15*t_q3*t_q4 - 3*t_q3 + 7*t_q4**2 "
+       "- 10*t_q4 - 8")
+NI_2 = {"Nm": 4, "Nc": 4, "Ni": 2, "Nr": 0, "Ng": 4, "Nd": 4, "Nh": 2}
+
+
+def _curve_85():
+    system = coopkin_sym.load(random_system(85))
+    ctx, rows = search_context(system, at="q1=pi")
+    t2, t3, t4 = ctx.ring.zctx.gens()
+    h = 6*t2**2*t4**2 + 11*t2**2 + t2*t4**2 + t2 - 12*t4**2 - 7
+    y = -6*t2*t4**2 - 11*t2 + 2*t3*t4**2 + 15*t3*t4 - 3*t3 + 7*t4**2 - 10*t4 - 8
+    k3 = ctx.ring_names.index("t_q3")
+    c1, c0 = split_linear(y, k3)
+    on = substitute_rows(rows, k3, c0, c1)
+    base = numbers_modulo(on, ctx.model, ctx.row_contacts, Quotient(h, 0))
+    place = Place(rows=on, equations=[H85, Y85], point={"t_q3": (c0, c1)}, depth=0,
+                  base=base, charts=(c1,))
+    return system, ctx, place, h
+
+
+def test_inside_a_curve_of_codimension_two_the_minors_give_its_points():
+    system, ctx, place, h = _curve_85()
+    assert place.base.as_dict() == {"Nm": 4, "Nc": 4, "Ni": 1, "Nr": 0, "Ng": 3, "Nd": 4,
+                                    "Nh": 2}
+    inside_curved(ctx, place, h, 0)
+    found = [(texts(c.equations)[2:], c.numbers) for c in ctx.locus.components]
+    assert found == [
+        (["23*t_q2 - 24", "6*t_q4 - 7"], NI_2),
+        (["t_q2 - 1", "t_q4 - 1"], NI_2),
+        (["553*t_q2**4 + 136*t_q2**3 - 1334*t_q2**2 - 152*t_q2 + 697",
+          "553*t_q2**3 + 10090*t_q2**2 + 561*t_q2 + 3250*t_q4 - 8904"],
+         {"Nm": 4, "Nc": 3, "Ni": 1, "Nr": 1, "Ng": 3, "Nd": 5, "Nh": 2})]
+    assert all(texts(c.equations)[:2] == [H85, Y85] for c in ctx.locus.components)
+    witnesses = [c.witness.at_text() for c in ctx.locus.components[:2]]
+    assert witnesses == ["q1=pi,q2=2*atan(24/23),q3=2*atan(7/4),q4=2*atan(7/6)",
+                         "q1=pi,q2=pi/2,q3=2*atan(2),q4=pi/2"]
+    for at in witnesses:
+        assert _numbers_at(system, at) == NI_2
+    # where the curve meets 3 t_q2^2 - 2 t_q2 - 3 = 0 (H D of the first arm drops), two
+    # values of t_q4 share each t_q2: said, not guessed
+    assert remark_texts(ctx.locus.unexplored) == [
+        "real points where 3*t_q2**2 - 2*t_q2 - 3 = 0 and 2 values of t_q4 share each "
+        "t_q2: numbers not decided"]
+
+
+def test_a_family_too_large_or_too_slow_to_search_inside_is_said(monkeypatch):
+    _, ctx, place, h = _curve_85()
+    terms = curved_search.INSIDE_TERMS
+    monkeypatch.setattr(curved_search, "INSIDE_TERMS", 5)
+    inside_curved(ctx, place, h, 0)
+    assert ctx.locus.components == []
+    (said,) = remark_texts(ctx.locus.unexplored)
+    assert said.startswith(f"inside {H85}, {Y85} (enclosing numbers there): deeper drops "
+                           "not searched (a family with no rational parametrization and ")
+    assert said.endswith(" terms: more than 5)")
+    _, ctx, place, h = _curve_85()
+    monkeypatch.setattr(curved_search, "INSIDE_TERMS", terms)
+    monkeypatch.setattr(curved_search, "INSIDE_STEPS", 0)
+    inside_curved(ctx, place, h, 0)
+    assert ctx.locus.components == [] and ctx.deferred == []
+    assert remark_texts(ctx.locus.unexplored) == [
+        f"inside {H85}, {Y85} (enclosing numbers there): deeper drops searched within a "
+        "work budget of 0 steps only (the bound of one such family): what was found by "
+        "then is listed, the rest not searched"]
+
+
+def _inside_with_budget(monkeypatch, steps: int):
+    _, ctx, place, h = _curve_85()
+    monkeypatch.setattr(curved_search, "INSIDE_STEPS", steps)
+    inside_curved(ctx, place, h, 0)
+    return ([texts(c.equations) for c in ctx.locus.components],
+            remark_texts(ctx.locus.unexplored))
+
+
+def test_the_budget_inside_a_family_cuts_at_the_same_place_every_time(monkeypatch):
+    """The bound is work, not seconds: the same budget gives the same locus (on any
+    machine, under any load), and a larger one finds all a smaller one found."""
+    full, _ = _inside_with_budget(monkeypatch, 10**9)
+    assert len(full) == 3
+    budgets = (50, 400, 1500, 4000)
+    found = []
+    for steps in budgets:
+        first, second = (_inside_with_budget(monkeypatch, steps) for _ in range(2))
+        assert first == second
+        found.append(first[0])
+        cut = any("work budget" in r for r in first[1])
+        assert cut == (first[0] != full)
+    assert any(comps != full for comps in found)   # some budget cuts this family
+    for smaller, larger in zip(found, found[1:]):
+        assert all(c in larger for c in smaller)
+    assert all(c in full for comps in found for c in comps)
+
+
+def test_points_of_higher_degree_are_not_decided_there_and_said(monkeypatch):
+    _, ctx, place, h = _curve_85()
+    monkeypatch.setattr(curved_search, "INSIDE_DEGREE", 3)
+    inside_curved(ctx, place, h, 0)
+    assert [texts(c.equations)[2:] for c in ctx.locus.components] == [
+        ["23*t_q2 - 24", "6*t_q4 - 7"], ["t_q2 - 1", "t_q4 - 1"]]
+    assert ("the real points where 553*t_q2**4 + 136*t_q2**3 - 1334*t_q2**2 - 152*t_q2 "
+            "+ 697 = 0 (degree 4) inside a family with no rational parametrization: "
+            "numbers not decided (points of degree up to 3 are decided there)"
+            in remark_texts(ctx.locus.unexplored))
+
+
+def test_a_resultant_over_its_budget_is_not_computed_and_said(monkeypatch):
+    _, ctx, place, h = _curve_85()
+    monkeypatch.setattr(algebra, "RESULTANT_TERMS", 10)
+    inside_curved(ctx, place, h, 0)
+    assert ctx.locus.components == []
+    said = remark_texts(ctx.locus.unexplored)
+    assert said and all(s.startswith("a resultant in t_q2, t_q4 of about ") and s.endswith(
+        "terms (more than 10, and it cannot be interrupted) was not computed: the sets it "
+        "would have solved were not searched") for s in said)
+
+
+def test_equations_in_one_variable_with_no_common_real_root_leave_nothing_to_solve():
+    """Inside the curved family F154 (seed 154, q4 = 0), two minors are free of all but
+    t_q3 and share no real root there: the set is empty, so nothing is listed as not
+    solved; one with a real root left is still said."""
+    system = coopkin_sym.load(random_system(154))
+    ctx, rows = search_context(system, at="q4=0")
+    t1, t2, t3 = ctx.ring.zctx.gens()
+    f = (2*t1**2*t2**2*t3**2 - 2*t1**2*t2*t3**2 - 2*t1**2*t2 + t1**2*t3**2 - t1**2
+         - 2*t1*t2**2*t3**2 - 2*t1*t2**2 - 2*t1*t2*t3**2 - 2*t1*t2 + 2*t1*t3**2 + 2*t1
+         + t2**2*t3**2 - t2**2 + 2*t2*t3**2 + 2*t2 + 2*t3**2)
+    place = Place(rows=rows, equations=[], point={}, depth=0)
+    codimension.isolated(ctx, place, [[f, 8*t3**2 - 8, 12*t3**2 + 16*t3 - 12],
+                                      [f, t3**2 + 1]])
+    assert ctx.locus.components == [] and ctx.locus.unexplored == []
+    codimension.isolated(ctx, place, [[f, t3**2 - 2, t1**3 - t2 - 5]])
+    assert any(u.kind == "lower_dimensional_not_solved" for u in ctx.locus.unexplored)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed, point, numbers", [
+    # a drop inside a curved family of the first level, inside a hypersurface linear in
+    # q4, where it meets the family where Ni is 2
+    (70, "q1=0,q2=-pi/2,q3=0,q4=-pi/2",
+     {"Nm": 4, "Nc": 3, "Ni": 2, "Nr": 1, "Ng": 3, "Nd": 4, "Nh": 1}),
+    # a point of a curve of codimension 2 at q1 = pi (above)
+    (85, "q1=pi,q2=pi/2,q3=2*atan(2),q4=pi/2", NI_2),
+    # inside q2 = pi/2, a curved set with the enclosing numbers holds curves where Ni is 1
+    (101, "q1=0,q2=pi/2,q3=pi/2,q4=0",
+     {"Nm": 3, "Nc": 2, "Ni": 1, "Nr": 1, "Ng": 3, "Nd": 5, "Nh": 1}),
+    # a point of a curve of codimension 2 at q2 = pi
+    (133, "q1=0,q2=pi,q3=-pi/2,q4=-pi/2", NI_2),
+])
+def test_drops_inside_curved_families_of_random_systems_are_found(seed, point, numbers):
+    system = coopkin_sym.load(random_system(seed))
+    assert _numbers_at(system, point) == numbers
+    locus = compute_locus(system, timeout=300)
+    v = verify_locus(system, locus, max_points=1500, lines=6, seed=seed)
+    assert v.uncovered_total == 0, summary_lines(v)
+    assert v.unsound == [], summary_lines(v)
