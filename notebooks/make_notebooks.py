@@ -936,7 +936,8 @@ NB03 = [
         print("-", item if len(item) < 160 else item[:160] + " ...")
     assert len(said) < len(unexplored) // 4
     assert sum("not solved" in u for u in unexplored) >= 3
-    assert all(any(words in u for words in ("not solved", "not explored", "not searched"))
+    assert all(any(words in u for words in ("not solved", "not explored", "not searched",
+                                            "not decided"))
                for u in unexplored)
     assert sorted(2 * sp.atan(r) for r in sp.solve(t**2 + 2 * t - 1, t)) == [
         -3 * sp.pi / 4, sp.pi / 4]
@@ -944,10 +945,11 @@ NB03 = [
     md("""
     So the report does not claim these families are the whole locus. It says which
     drop sets of codimension 2 or more were not solved (equations in too many
-    variables, or two values of one variable over each point), and that inside the
-    families at irrational angles (and at the depth bound) it did not search deeper. A
-    reader gets the boundary of what was checked along with the result; `--certify`
-    then says whether the whole is proved complete.
+    variables), where the numbers of real points were not decided (two values of one
+    variable over each point), and that inside the families at irrational angles (and
+    at the depth bound) it did not search deeper. A reader gets the boundary of what
+    was checked along with the result; `--certify` then says whether the whole is
+    proved complete.
 
     Notebook 04 (section 4) compares these loci with what floating-point rank tests
     say at and near every witness.
