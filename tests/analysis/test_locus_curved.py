@@ -175,7 +175,7 @@ def test_the_budget_inside_a_family_cuts_at_the_same_place_every_time(monkeypatc
         cut = any("work budget" in r for r in first[1])
         assert cut == (first[0] != full)
     assert any(comps != full for comps in found)   # some budget cuts this family
-    for smaller, larger in zip(found, found[1:]):
+    for smaller, larger in zip(found, found[1:], strict=False):
         assert all(c in larger for c in smaller)
     assert all(c in full for comps in found for c in comps)
 
