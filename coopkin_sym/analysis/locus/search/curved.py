@@ -126,18 +126,16 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
         try:
             _search_inside(ctx, place, f, k)
         except WorkLimitReached:
-            if not deadline.active(INSIDE_OWNER) or bound.budget[0] >= 0:
+            if bound.budget[0] >= 0:
                 raise   # an enclosing family's budget, used up here
             note(ctx, "inside_not_searched", limit="steps", size=None,
                  bound=INSIDE_STEPS, **where)
+        except BaseException:
+            del ctx.deferred[levels:]   # the whole search is ending
+            raise
         finally:
             ctx.inside -= 1
-            _keep_deferred(ctx, levels)
-        if _TRACE is not None:
-            _TRACE.append((str(f), INSIDE_STEPS - bound.budget[0]))
-
-
-_TRACE = None
+    _keep_deferred(ctx, levels)
 
 
 def _keep_deferred(ctx: SearchContext, levels: int) -> None:
