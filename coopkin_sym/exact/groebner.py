@@ -67,7 +67,6 @@ import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from math import comb
 
 import flint
 import sympy as sp
@@ -204,11 +203,13 @@ def rabinowitsch(ideal: Sequence[PolyDict], f: PolyDict, nvars: int
 
 
 def covering_system(ideal: Sequence[PolyDict], components: Sequence[Sequence[PolyDict]],
-                    nvars: int, separate: bool = False) -> tuple[list[PolyDict], int]:
+                    nvars: int, separate: bool = False, max_terms: int | None = None
+                    ) -> tuple[list[PolyDict], int] | None:
     """The system that is the unit ideal exactly when ``V(ideal)`` lies in the union of
     the ``V(component)`` (module docstring). Variables: ``x``, then ``w`` when some
     component has more than one generator, then one ``z`` per component
-    (``separate``) or one ``z`` for the product."""
+    (``separate``) or one ``z`` for the product; None when that product would have
+    more than ``max_terms`` terms (it is abandoned as soon as it has)."""
     w = nvars if any(len(c) > 1 for c in components) else None
     base = nvars + (1 if w is not None else 0)
     zs = len(components) if separate else 1
@@ -220,8 +221,10 @@ def covering_system(ideal: Sequence[PolyDict], components: Sequence[Sequence[Pol
     else:
         ctx = _ctx(total)
         product = ctx.constant(1)
-        for g in combined:
+        for g in sorted(combined, key=len):
             product = product * ctx.from_dict(g)
+            if max_terms is not None and len(product) > max_terms:
+                return None
         system.append(_one_minus(base, _plain(product), total))
     return system, total
 
@@ -442,9 +445,10 @@ def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
     one a Gröbner basis finds easier varies from system to system."""
     started = time.monotonic()
     comps = _merge_hypersurfaces(comps, n)
-    forms = [True] if _product_too_large(comps) else [False, True] if len(comps) > 1 \
-        else [False]
-    systems = [covering_system(polys, comps, n, separate=separate) for separate in forms]
+    forms = [False, True] if len(comps) > 1 else [False]
+    systems = [s for s in (covering_system(polys, comps, n, separate=separate,
+                                           max_terms=MAX_PRODUCT_TERMS)
+                           for separate in forms) if s is not None]
     if len(systems) == 2:
         sizes = [sum(len(p) for p in system) for system, _ in systems]
         if sizes[0] > MAX_PRODUCT_TERMS:
@@ -465,22 +469,10 @@ def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
 
 def _screen_cover(polys, comps, n: int, timeout: float) -> Verdict:
     comps = _merge_hypersurfaces(comps, n)
-    system, m = covering_system(polys, comps, n, separate=_product_too_large(comps))
-    if sum(len(p) for p in system) > MAX_PRODUCT_TERMS:
-        system, m = covering_system(polys, comps, n, separate=True)
+    product = covering_system(polys, comps, n, max_terms=MAX_PRODUCT_TERMS)
+    system, m = product if product is not None else covering_system(polys, comps, n,
+                                                                    separate=True)
     return _screen(system, m, timeout)
-
-
-def _product_too_large(comps) -> bool:
-    """Whether the product of the combined components may exceed the term budget:
-    bounded by the product of their term counts, and by the number of monomials of
-    its degree in its variables."""
-    bound, degree = 1, 0
-    nvars = len(next(iter(comps[0][0]))) + 1 if comps and comps[0] and comps[0][0] else 1
-    for c in comps:
-        bound *= max(1, sum(len(g) for g in c))
-        degree += max(sum(k) for g in c for k in g) + len(c) - 1
-    return min(bound, comb(degree + nvars, nvars)) > MAX_PRODUCT_TERMS
 
 
 def _merge_hypersurfaces(comps: list[list[PolyDict]], n: int) -> list[list[PolyDict]]:
