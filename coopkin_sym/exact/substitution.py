@@ -25,13 +25,14 @@ def substitute_rows(rows, k: int, f0, f1):
     factor that could vanish where ``f1`` does not: the rank stays right at every point
     with ``f1 != 0``)."""
     out = []
+    powers = Powers(f0, f1)
     for row in rows:
         # zero entries (most of a row of a system with many arms) are kept as they are
         places = [i for i, e in enumerate(row) if not e.is_zero()]
         deg = max((row[i].degrees()[k] for i in places), default=0)
         new = list(row)
         for i in places:
-            new[i] = substitute(row[i], k, f0, f1, deg)
+            new[i] = substitute(row[i], k, f0, f1, deg, powers)
         nonzero = [new[i] for i in places if not new[i].is_zero()]
         if not nonzero:
             out.append(new)
@@ -59,11 +60,50 @@ def split_linear(f, k: int):
     return zctx.from_dict(parts[1]), zctx.from_dict(parts[0])
 
 
-def substitute(p, k: int, f0, f1, deg: int):
-    """``p(x_k = -f0/f1) * f1^deg``."""
+class Powers:
+    """The products ``(-f0)^e f1^(d - e)`` of one substitution, each computed once
+    (a matrix substituted entry by entry asks for the same ones again and again).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> str(Powers(y, 2 * ctx.constant(1)).term(1, 2))         # (-y)^1 * 2^1
+    '-2*y'
+    """
+
+    def __init__(self, f0, f1):
+        self._a, self._b = [f0.context().constant(1), -f0], [f0.context().constant(1), f1]
+        self._unit = f1.is_one()
+        self._terms: dict[tuple[int, int], object] = {}
+
+    @staticmethod
+    def _power(table: list, e: int):
+        while len(table) <= e:
+            check("a substitution")
+            table.append(table[-1] * table[1])
+        return table[e]
+
+    def term(self, e: int, deg: int):
+        """``(-f0)^e f1^(deg - e)``."""
+        key = (e, deg)
+        got = self._terms.get(key)
+        if got is None:
+            got = self._power(self._a, e)
+            if not self._unit and deg > e:
+                got = got * self._power(self._b, deg - e)
+            self._terms[key] = got
+        return got
+
+
+def substitute(p, k: int, f0, f1, deg: int, powers: Powers | None = None):
+    """``p(x_k = -f0/f1) * f1^deg`` (``powers``: the :class:`Powers` of ``f0, f1``
+    when several polynomials are substituted alike)."""
     if p.is_zero():
         return p
     zctx = p.context()
+    powers = powers if powers is not None else Powers(f0, f1)
     by_power: dict[int, dict] = {}
     for mon, c in p.to_dict().items():
         e = mon[k]
@@ -72,9 +112,8 @@ def substitute(p, k: int, f0, f1, deg: int):
     acc = zctx.constant(0)
     for e, terms in by_power.items():
         check("a substitution")
-        acc = acc + zctx.from_dict(terms) * (-f0) ** e * f1 ** (deg - e)
+        acc = acc + zctx.from_dict(terms) * powers.term(e, deg)
     return acc
 
 
-
-__all__ = ["split_linear", "substitute", "substitute_rows"]
+__all__ = ["Powers", "split_linear", "substitute", "substitute_rows"]

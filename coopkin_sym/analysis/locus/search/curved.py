@@ -7,7 +7,9 @@ their common zeros with its polynomial solved like any set of codimension 2).
 from __future__ import annotations
 
 from coopkin_sym.analysis.locus.algebra import (
+    bounded_factor,
     has_real_point,
+    normalize,
     rational_point,
     vars_of,
 )
@@ -16,6 +18,7 @@ from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.search.components import (
     _new_component,
     beyond_chart,
+    no_real_points,
     note,
 )
 from coopkin_sym.analysis.locus.search.hypersurface import candidates
@@ -178,11 +181,30 @@ def _search_inside(ctx: SearchContext, place: Place, f, k: int) -> None:
     for name in sorted(cands, key=order):
         polys = cands[name]
         if name.startswith("content:"):
-            systems = [[f, g] for g in polys if not g.is_constant()]
+            systems = [s for g in polys if not g.is_constant()
+                       for s in _split_system(ctx, f, [g])]
         else:
-            systems = [[f, *polys]] if polys else []
+            systems = _split_system(ctx, f, polys) if polys else []
         if systems:
             ctx.steps.isolated(ctx, place, systems, INSIDE_DEGREE)
+
+
+def _split_system(ctx: SearchContext, f, polys) -> list[list]:
+    """``f = 0`` and ``polys = 0`` as a union of smaller systems when ``polys`` are one
+    polynomial ``g`` (up to constants): one system ``[f, h]`` per factor ``h`` of ``g``
+    with real points (factors without are listed as dropped). A minor such as
+    ``(1 + t_3^2)^2 (t_4^2 - 2 t_4 - 1)`` then gives a set in two variables (``f`` in
+    ``t_2``, ``h`` in ``t_4``), not one in three. Otherwise ``[[f, *polys]]``."""
+    g = polys[0]
+    for p in polys[1:]:
+        g = g.gcd(p)
+    if g.is_constant() or not all((p / g).is_constant() for p in polys):
+        return [[f, *polys]]
+    factored = bounded_factor(ctx, g)
+    if factored is None:
+        return [[f, *polys]]
+    return [[f, h] for h in (normalize(h) for h, _e in factored[1])
+            if not no_real_points(ctx, h)]
 
 
 def _is_component(ctx: SearchContext, place: Place) -> bool:

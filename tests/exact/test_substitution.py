@@ -1,0 +1,55 @@
+"""Substituting ``x_k = -f0/f1`` with denominators cleared: the shared powers give
+the same polynomials as the definition, row by row and entry by entry."""
+
+from __future__ import annotations
+
+import random
+
+import flint
+import sympy as sp
+
+from coopkin_sym.exact.substitution import Powers, substitute, substitute_rows
+
+CTX = flint.fmpz_mpoly_ctx.get(("x", "y", "z"), "degrevlex")
+
+
+def _random_poly(rng: random.Random, terms: int, degree: int):
+    return CTX.from_dict({tuple(rng.randint(0, degree) for _ in range(3)):
+                          rng.randint(-9, 9) for _ in range(terms)})
+
+
+def _by_definition(p, k: int, f0, f1, deg: int):
+    """``p(x_k = -f0/f1) f1^deg`` through SymPy's rational functions."""
+    x = sp.symbols("x y z")
+    expr = sp.sympify(str(p).replace("^", "**"), locals=dict(zip("xyz", x, strict=True)))
+    num = sp.sympify(str(f0).replace("^", "**"), locals=dict(zip("xyz", x, strict=True)))
+    den = sp.sympify(str(f1).replace("^", "**"), locals=dict(zip("xyz", x, strict=True)))
+    return sp.expand(sp.cancel(expr.subs(x[k], -num / den) * den**deg))
+
+
+def test_shared_powers_give_the_definition():
+    rng = random.Random(7)
+    for _ in range(12):
+        k = rng.randrange(3)
+        f0, f1 = _random_poly(rng, 3, 2), _random_poly(rng, 2, 1)
+        if f1.is_zero():
+            continue
+        powers = Powers(f0, f1)
+        for _ in range(3):
+            p = _random_poly(rng, 5, 3)
+            deg = p.degrees()[k] + rng.randint(0, 2)
+            once = substitute(p, k, f0, f1, deg)
+            assert once == substitute(p, k, f0, f1, deg, powers)    # the table reused
+            got = sp.sympify(str(once).replace("^", "**"),
+                             locals=dict(zip("xyz", sp.symbols("x y z"), strict=True)))
+            assert sp.expand(got - _by_definition(p, k, f0, f1, deg)) == 0
+
+
+def test_rows_are_cleared_by_the_power_of_their_highest_degree():
+    x, y, z = CTX.gens()
+    rows = [[x**2 + y, x * z, CTX.constant(0)], [y, z, CTX.constant(3)]]
+    out = substitute_rows(rows, 0, -y, z + 1)         # x = y / (z + 1)
+    # row 1 times (z + 1)^2; row 2 has no x and stays as it is
+    assert out[0] == [y**2 + y * (z + 1)**2, y * z * (z + 1), CTX.constant(0)]
+    assert out[1] == rows[1]
+    assert Powers(-y, z + 1).term(2, 3) == y**2 * (z + 1)
