@@ -36,7 +36,7 @@ What is checked
   When a saturation is not computed within its bound, the component is the equations'
   zero set minus ``V(o)``: the tests inside it leave ``V(o)`` out, and a covering that
   uses it also proves the points of its equations where ``o`` vanishes covered by the
-  other components.
+  other components (unless the components without such polynomials cover alone).
 
 Together: **every real configuration has the generic numbers or the numbers of some
 reported component that contains it.** (A point with other numbers lies in a component
@@ -656,15 +656,25 @@ class _Runner:
               conditions, depth: int = 0) -> tuple[Verdict, tuple | None]:
         """Whether ``V(ideal)`` lies in the ``pieces`` ``(index, equations)``. A piece
         is ``V(equations)`` minus where an outside polynomial ``o`` of its component
-        vanishes: the covering of ``V(equations)`` is proved, then for each such ``o``
-        that ``V(ideal + equations + o)`` lies in the other pieces (the same way, up
-        to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict and, when a residual
+        vanishes: the covering of ``V(equations)`` is proved, then that the pieces
+        without such polynomials cover ``V(ideal)`` alone (a quarter of the time), else
+        for each such ``o`` that ``V(ideal + equations + o)`` lies in the other pieces
+        (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict and, when a residual
         test is what failed, ``(component index, o)``."""
         allowed = [[u] for u in chart.units] + conditions
         verdict = covers(ideal, [p for _, p in pieces], timeout=seconds,
                          backend=self.backend, nvars=len(chart.names), allowed=allowed)
         if not verdict.proved:
             return verdict, None
+        closed = [(i, p) for i, p in pieces if not self.outs.get(i)]
+        if len(closed) < len(pieces):
+            # the pieces with an outside polynomial may not be needed at all: then
+            # no residual test is (its polynomial can be far larger than the rest)
+            without = covers(ideal, [p for _, p in closed], timeout=seconds / 4,
+                             backend=self.backend, nvars=len(chart.names),
+                             allowed=allowed) if closed else None
+            if without is not None and without.proved:
+                return without, None
         for i, eqs in pieces:
             for o in self.outs.get(i, ()):
                 if depth >= MAX_RESIDUAL_DEPTH:
