@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from support import shipped_locus
+from support import shipped_locus, texts
 
 from coopkin_sym.analysis.locus.families import group_families
 from coopkin_sym.analysis.locus.types import Component
@@ -55,6 +55,21 @@ def test_the_example_is_real_with_a_witness_and_shallow_first():
     assert family.members == (0, 1, 2) and family.example == 2 and family.real
     (alone,) = group_families([unreal], GENERIC)
     assert alone.example == 0 and not alone.real
+
+
+def test_the_example_is_in_the_widest_chart_before_the_shallowest():
+    # the five-bar's two arms stretched at once: found with q1 = q3 = pi at depth 0,
+    # and with q1, q3 free inside the first arm's family (depth 1): the latter is shown
+    at_pi = Component(["s_q1", "s_q3", "t_q2 + t_q4", "t_q4**2 - 2*t_q4 - 1"],
+                      dict(GENERIC, Nm=3), {"q1": "pi"}, True)
+    free = Component(["t_q2**2 + 2*t_q2 - 1", "t_q2 + t_q4"], dict(GENERIC, Nm=3),
+                     {"q1": "0"}, True, depth=1)
+    (family,) = group_families([at_pi, free], GENERIC)
+    assert family.example == 1
+    locus = shipped_locus("five-bar")
+    stretched = next(f for f in locus.families() if f.changes.get("Nd") == (0, 2))
+    assert not any(e.startswith("s_") for e in
+                   texts(locus.components[stretched.example].equations))
 
 
 def test_the_change_in_words():

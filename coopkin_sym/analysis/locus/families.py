@@ -36,7 +36,8 @@ class Family:
         Indices of the members in :attr:`Locus.components`, in their order there.
     example
         The member to show first: one with real points and a rational witness where
-        there is one, the shallowest, then the one with the fewest equations.
+        there is one, with the fewest joints pinned at ``q = pi`` (the widest chart),
+        the shallowest, then the one with the fewest equations.
     real
         Whether some member has real points.
 
@@ -63,9 +64,15 @@ def _changes(numbers: Mapping[str, Any], generic: Mapping[str, Any]
             if n in generic and numbers[n] != generic[n]}
 
 
+def _at_pi(component: Any) -> int:
+    """How many joints the component pins at ``q = pi`` (its ``s_`` equations)."""
+    return sum(1 for e in component.equations
+               if str(getattr(e, "text", e)).startswith("s_"))
+
+
 def _example_key(component: Any, index: int) -> tuple:
-    return (not component.real, component.witness is None, component.depth,
-            len(component.equations), index)
+    return (not component.real, component.witness is None, _at_pi(component),
+            component.depth, len(component.equations), index)
 
 
 def group_families(components: Sequence[Any], generic: Mapping[str, int]) -> list[Family]:
