@@ -659,8 +659,8 @@ class _Runner:
         vanishes: the covering of ``V(equations)`` is proved, then that the pieces
         without such polynomials cover ``V(ideal)`` alone (a quarter of the time), else
         for each such ``o`` that ``V(ideal + equations + o)`` lies in the other pieces
-        (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict and, when a residual
-        test is what failed, ``(component index, o)``."""
+        (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict
+        and, when a residual test is what failed, ``(component index, o)``."""
         allowed = [[u] for u in chart.units] + conditions
         verdict = covers(ideal, [p for _, p in pieces], timeout=seconds,
                          backend=self.backend, nvars=len(chart.names), allowed=allowed)
