@@ -368,6 +368,10 @@ SATURATION_SECONDS = 10.0
 #: go (those points may lie in a component that has such points of its own).
 MAX_RESIDUAL_DEPTH = 3
 
+#: The share of a test's time for the covering without the components that keep a
+#: denominator of their parametrization (0: not tried; their residual tests decide).
+WITHOUT_DENOMINATORS_SHARE = 0.25
+
 
 def _integer_terms(poly: NamedPolynomial, names: tuple[str, ...]) -> dict:
     """An exact polynomial as a primitive integer exponent map over ``names`` (rational
@@ -657,7 +661,8 @@ class _Runner:
         """Whether ``V(ideal)`` lies in the ``pieces`` ``(index, equations)``. A piece
         is ``V(equations)`` minus where an outside polynomial ``o`` of its component
         vanishes: the covering of ``V(equations)`` is proved, then that the pieces
-        without such polynomials cover ``V(ideal)`` alone (a quarter of the time), else
+        without such polynomials cover ``V(ideal)`` alone (in
+        :data:`WITHOUT_DENOMINATORS_SHARE` of the time), else
         for each such ``o`` that ``V(ideal + equations + o)`` lies in the other pieces
         (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict
         and, when a residual test is what failed, ``(component index, o)``."""
@@ -670,9 +675,10 @@ class _Runner:
         if len(closed) < len(pieces):
             # the pieces with an outside polynomial may not be needed at all: then
             # no residual test is (its polynomial can be far larger than the rest)
-            without = covers(ideal, [p for _, p in closed], timeout=seconds / 4,
+            share = seconds * WITHOUT_DENOMINATORS_SHARE
+            without = covers(ideal, [p for _, p in closed], timeout=share,
                              backend=self.backend, nvars=len(chart.names),
-                             allowed=allowed) if closed else None
+                             allowed=allowed) if closed and share > 0 else None
             if without is not None and without.proved:
                 return without, None
         for i, eqs in pieces:
