@@ -39,14 +39,28 @@ def substitute_rows(rows, k: int, f0, f1):
             continue
         content = nonzero[0]
         for e in nonzero[1:]:
+            check("a substitution")
             content = content.gcd(e)
-        common = content.gcd(f1 ** deg) if not f1.is_constant() else \
+        common = _part_dividing_a_power(content, f1, deg) if not f1.is_constant() else \
             content.context().constant(content.content())
         if not common.is_one():
             for i in places:
                 new[i] = new[i] / common
         out.append(new)
     return out
+
+
+def _part_dividing_a_power(content, f1, deg: int):
+    """``gcd(content, f1^deg)``, one gcd with ``f1`` at a time (``f1^deg`` itself can
+    be far larger than either, and a flint gcd cannot be interrupted)."""
+    common = content.context().constant(1)
+    for _ in range(deg):
+        check("a substitution")
+        g = content.gcd(f1)
+        if g.is_one():
+            break
+        common, content = common * g, content / g
+    return common
 
 
 def split_linear(f, k: int):

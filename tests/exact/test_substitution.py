@@ -53,3 +53,22 @@ def test_rows_are_cleared_by_the_power_of_their_highest_degree():
     assert out[0] == [y**2 + y * (z + 1)**2, y * z * (z + 1), CTX.constant(0)]
     assert out[1] == rows[1]
     assert Powers(-y, z + 1).term(2, 3) == y**2 * (z + 1)
+
+
+def test_the_part_of_a_content_dividing_a_power_is_the_gcd_with_that_power():
+    from coopkin_sym.exact.substitution import _part_dividing_a_power
+
+    rng = random.Random(5)
+    x, y, z = CTX.gens()
+    factors = [x + 1, y - 2 * z, x * y + 3, CTX.constant(2), z]
+    for _ in range(40):
+        f1 = CTX.constant(1)
+        content = CTX.constant(rng.choice([1, 3, 4]))
+        for f in factors:
+            f1 *= f ** rng.randint(0, 2)
+            content *= f ** rng.randint(0, 4)
+        content *= _random_poly(rng, 2, 1) if rng.random() < 0.5 else 1
+        if f1.is_constant() or content.is_zero():
+            continue
+        deg = rng.randint(1, 3)
+        assert _part_dividing_a_power(content, f1, deg) == content.gcd(f1 ** deg)
