@@ -10,6 +10,7 @@ numbers, witnesses, and the numbers at each witness by an independent analysis.
 
 from __future__ import annotations
 
+import flint
 import pytest
 import sympy as sp
 from random_systems import random_system
@@ -276,3 +277,14 @@ def test_two_curved_families_in_disjoint_variables_meet_in_the_t_chart():
     assert all({"t_q1", "t_q3"}.isdisjoint(
         {str(s) for e in texts(c.equations) for s in sp.sympify(e, locals=names).free_symbols})
         for c in holding if c.numbers == numbers)
+
+
+def test_proportional_polynomials_are_constant_multiples_of_each_other():
+    _proportional = curved_search._proportional
+    ctx = flint.fmpz_mpoly_ctx.get(("a", "b"), "degrevlex")
+    a, b = ctx.gens()
+    g = 2 * a**2 - 3 * b + 1
+    assert _proportional(-6 * g, g) and _proportional(g, 4 * g)
+    assert not _proportional(g + a, g)                  # one more term
+    assert not _proportional(g - 2 * a**2 + 5 * a**2, g)  # same terms, not a multiple
+    assert not _proportional(a * g, g)

@@ -196,15 +196,18 @@ def _split_system(ctx: SearchContext, f, polys) -> list[list]:
     ``(1 + t_3^2)^2 (t_4^2 - 2 t_4 - 1)`` then gives a set in two variables (``f`` in
     ``t_2``, ``h`` in ``t_4``), not one in three. Otherwise ``[[f, *polys]]``."""
     g = polys[0]
-    for p in polys[1:]:
-        g = g.gcd(p)
-    if g.is_constant() or not all((p / g).is_constant() for p in polys):
+    if g.is_constant() or not all(_proportional(p, g) for p in polys[1:]):
         return [[f, *polys]]
     factored = bounded_factor(ctx, g)
     if factored is None:
         return [[f, *polys]]
     return [[f, h] for h in (normalize(h) for h, _e in factored[1])
             if not no_real_points(ctx, h)]
+
+
+def _proportional(p, g) -> bool:
+    """Whether ``p`` is a constant multiple of ``g`` (``p lc(g) = g lc(p)``)."""
+    return len(p) == len(g) and p * g.leading_coefficient() == g * p.leading_coefficient()
 
 
 def _is_component(ctx: SearchContext, place: Place) -> bool:
