@@ -25,6 +25,7 @@ import flint
 
 from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.numberfield_gcd import modular_gcd
 
 Element = flint.fmpq_poly
 KPoly = list[Element]
@@ -110,7 +111,14 @@ class NumberField:
 
     def gcd(self, polys: Sequence[Sequence]) -> KPoly:
         """The monic gcd over the field of polynomials in ``y`` (coefficient lists,
-        lowest degree first); ``[]`` when all are zero."""
+        lowest degree first); ``[]`` when all are zero. Computed modulo primes and
+        certified (:func:`~coopkin_sym.exact.numberfield_gcd.modular_gcd`), else by
+        Euclid's algorithm over the field."""
+        nonzero = [b for b in (self._trim(p) for p in polys) if b]
+        if len(nonzero) > 1 and all(len(b) > 1 for b in nonzero):
+            common = modular_gcd(self.g, nonzero)
+            if common is not None:
+                return common
         g: KPoly = []
         for p in polys:
             b = self._trim(p)
