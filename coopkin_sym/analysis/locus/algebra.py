@@ -386,7 +386,16 @@ def solve_small(ctx: SearchContext, polys, names: list[str], max_degree: int | N
     irreducible over Q, ``y`` a polynomial in its root, from a gcd over ``Q[x]/(g)``),
     and descriptions of what could not be resolved. Resultants and factorization over
     Z (python-flint). Points whose coordinate ``x`` has degree above ``max_degree``
-    over Q are left unresolved (said among the descriptions)."""
+    over Q are left unresolved (said among the descriptions). A system met before in
+    the same ring is not solved again."""
+    key = (ctx.ring_names, tuple(str(p) for p in polys), tuple(names), max_degree)
+    if key not in ctx.solved:
+        ctx.solved[key] = _solve_small(ctx, polys, names, max_degree)
+    points, algebraic, unresolved = ctx.solved[key]
+    return [dict(p) for p in points], list(algebraic), list(unresolved)
+
+
+def _solve_small(ctx: SearchContext, polys, names: list[str], max_degree: int | None):
     x = names[0]
     if len(names) == 1:
         g = polys[0]

@@ -180,6 +180,10 @@ class SearchContext:
     # component with its numbers holds, in any chart, is not recorded again)
     searched: set = field(default_factory=set)
     inside: int = 0
+    # the systems in one or two variables solved (the ring, their texts, the
+    # variables, the degree bound) -> the points found (the search meets the same
+    # system again from other components)
+    solved: dict = field(default_factory=dict)
 
     def expired(self) -> bool:
         """Whether the time bound has passed."""
