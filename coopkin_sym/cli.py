@@ -173,16 +173,14 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     from coopkin_sym import deliver_part as deliver
     from coopkin_sym import report_step as report
 
+    if o.finite_problem() is not None:
+        raise FiniteMobilityError(o.finite_problem())
     report("loading the model")
     system = load(model)
     report("the analysis")
     result = system.analyze(o.at, generic=o.generic, free=o.free_joints)
     finite = None
     if o.finite:
-        if o.generic or o.free_joints:
-            raise FiniteMobilityError("--finite needs every joint at an exact angle (a "
-                                      "rational or algebraic tan(q/2); not --generic or "
-                                      "--free)")
         report("the finite mobility")
         # at irrational angles, over the number field of the configuration
         finite = system.finite_mobility(o.at if _irrational(result) else

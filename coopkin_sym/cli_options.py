@@ -217,6 +217,15 @@ class AnalyzeOptions:
     def free_joints(self) -> list[str] | None:
         return _names(self.free)
 
+    def finite_problem(self) -> str | None:
+        """Why ``--finite`` or ``--order`` cannot be asked as given (None: they can)."""
+        if self.order is not None and not self.finite:
+            return "--order is the order of the finite mobility's expansion: give it with --finite"
+        if self.finite and (self.generic or self.free_joints):
+            return ("--finite needs every joint at an exact angle (a rational or "
+                    "algebraic tan(q/2); not --generic or --free)")
+        return None
+
 
 @dataclass
 class ManipulabilityOptions:

@@ -1805,6 +1805,50 @@ NB06 = [
     assert kinds == ["bifurcation", "bifurcation", "shaky", "shaky"], kinds
     """),
     md("""
+    ## The paper's cases along their loci
+
+    In the plane, case 1 is a four-bar with four equal links (the base, the two arms
+    and the object between the contacts). Its locus has four folded configurations
+    and two more points, `q1 = -q2` with `tan(q2/2) = 2 -+ sqrt(3)` (`q2 = pi/6` or
+    `5 pi/6`); `Locus.finite_mobility()` computes the finite mobility at every
+    witness. Three folded points are bifurcations: two of the equal-link four-bar's
+    modes of motion (one of them the parallelogram) cross there. At the fourth the first-order
+    motions have no finite motion behind them (shaky). At the two points with
+    `q1 = -q2` only the instantaneous numbers change: the configuration space is
+    smooth there.
+    """),
+    code("""
+    case1 = load("paper-case1-planar").locus()
+    case1.finite_mobility()
+    for c in case1.components:
+        f = c.finite
+        print(f"{c.condition.text:34} Nm {c.numbers['Nm']}: finite {f['dimension']} "
+              f"of {f['first_order']}, {f['classification']}")
+    kinds = sorted(c.finite["classification"] for c in case1.components)
+    assert kinds == ["bifurcation"] * 3 + ["kinematic_singularity", "shaky"], kinds
+    """),
+    md("""
+    Case 2 with welded contacts (`paper-case2-complete`), on the slice where joints
+    q2, q3, q6 and q7 move and the others stay at home: every component of the locus
+    is a smooth point of the configuration space. The rank of `Q` at each witness is
+    its generic rank along the component (`along` says how that was proved), so the
+    singularities of case 2 there are only first-order: the numbers change, the finite
+    motions do not.
+    """),
+    code("""
+    from collections import Counter
+
+    case2 = load("paper-case2-complete").locus("q1=0,q4=0,q5=0,q8=0,L=1",
+                                                free=["q2", "q3", "q6", "q7"])
+    case2.finite_mobility()
+    seen = Counter((c.finite["dimension"], c.finite["first_order"],
+                    c.finite["classification"], c.finite["reason"])
+                   for c in case2.components)
+    for (dim, first, kind, reason), count in sorted(seen.items()):
+        print(f"{count} components: finite {dim} of {first} first-order, {kind} ({reason})")
+    assert {kind for _, _, kind, _ in seen} == {"kinematic_singularity"}
+    """),
+    md("""
     ## Overconstrained loops: Bennett, Bricard, parallel cranks
 
     Grübler-Kutzbach counts `6 (links - 1) - 5 joints` motions for a loop of revolute

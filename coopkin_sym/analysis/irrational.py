@@ -95,8 +95,7 @@ RATIONAL_ONLY = frozenset({
     "block_terms", "coordinated_factored", "coordinated_form", "coordinated_terms",
     "decompose_rows", "in_angles", "joint_velocities", "object_velocities",
     "manipulability", "kinematics", "twist_in_base", "classes", "certificate", "check",
-    "where", "ring", "poly", "m", "configuration", "term_budget", "r", "dim",
-    "finite_mobility"})
+    "where", "ring", "poly", "m", "configuration", "term_budget", "r", "dim"})
 
 
 @dataclass(frozen=True)
@@ -150,6 +149,24 @@ class IrrationalAnalysis(Displayable):
             raise AttributeError(f"'IrrationalAnalysis' object has no attribute {name!r}")
         raise NotAvailable(f"an analysis has no {clip(name, 40)!r}: at irrational "
                            f"coordinates it has {', '.join(available_attributes())}")
+
+    def finite_mobility(self, order: int | None = None):
+        """The finite mobility here, exactly over the number field of the
+        configuration (see :func:`coopkin_sym.analysis.finite.finite_mobility`).
+
+        Example
+        -------
+        >>> from coopkin_sym.model.model import load_model
+        >>> a = analyze_irrational(load_model("four-bar"), "q1=-pi/4,q2=-pi/4")
+        >>> a.finite_mobility().dimension
+        1
+        """
+        from coopkin_sym.analysis.finite import finite_mobility
+
+        if self.model is None:
+            raise NotAvailable("finite_mobility needs the model analyzed (this analysis "
+                               "was built without it)")
+        return finite_mobility(self.model, assignments_text(self.at), order)
 
     def __repr__(self) -> str:
         at = assignments_text(self.at)
@@ -210,8 +227,8 @@ def available_attributes() -> list[str]:
 
     Example
     -------
-    >>> available_attributes()[:4]
-    ['alpha', 'as_json', 'at', 'joints']
+    >>> available_attributes()[:5]
+    ['alpha', 'as_json', 'at', 'finite_mobility', 'joints']
     """
     names = {*IrrationalAnalysis.__dataclass_fields__, *vars(IrrationalAnalysis)}
     return sorted(n for n in names if not n.startswith("_"))

@@ -22,9 +22,15 @@ _CLASS_WORDS = {
     "kinematic_singularity": "a kinematic singularity at a smooth point of the "
                              "configuration space: the instantaneous numbers change, "
                              "the finite motions do not",
+    "kinematic_singularity_loop": "a smooth point of the configuration space of an "
+                                  "overconstrained loop: the instantaneous numbers are "
+                                  "not those of generic joint values (where the loop "
+                                  "does not close); whether they change along the "
+                                  "motion is not decided",
     "bifurcation": "a bifurcation: {branches} branches of {dim} motion{s} cross here",
     "cone": "a singular point of the configuration space: its motions form a cone "
-            "(one branch of {dim} motion{s}, not smooth here)",
+            "of dimension {dim}, not smooth here (how many branches it holds is not "
+            "decided)",
     "shaky": "shaky: first-order motions exist, but no finite motion follows them",
     "shaky_partly": "shaky: only {dim} of the first-order motions are finite; no "
                     "finite motion follows the others",
@@ -56,6 +62,10 @@ _REASON_WORDS = {
                       "the degrees), so on all of it; the configuration space is that "
                       "curve here",
     "no_first_order_motion": "there is no first-order motion",
+    "group_orbit": "every first-order motion is a rotation of the object that keeps "
+                   "each contact with the joints still; these rotations form a group "
+                   "acting on the configuration space, whose orbit through here is "
+                   "smooth and of their dimension",
 }
 
 _ASSUMPTION_WORDS = {
@@ -75,14 +85,24 @@ _ASSUMPTION_WORDS = {
 def classification_text(fm: FiniteMobility) -> str:
     """The classification in words."""
     return _classification_words(fm.classification, fm.dimension,
-                                 [b.dimension for b in fm.branches], fm.order, fm.bounds)
+                                 [b.dimension for b in fm.branches], fm.order, fm.bounds,
+                                 fm.reason, fm.assumptions)
+
+
+#: The proofs that use the loop closure: the configuration space of an
+#: overconstrained loop, away from generic joint values.
+_CLOSURE_REASONS = frozenset({"closure_saturation", "closure_bezout"})
 
 
 def _classification_words(kind: str, dimension: int | None, branches: list[int],
-                          order: int, bounds) -> str:
+                          order: int, bounds, reason: str = "",
+                          notes: tuple = ()) -> str:
     dim = branches[0] if branches else dimension
     if kind == "shaky" and dimension:
         kind = "shaky_partly"
+    if kind == "kinematic_singularity" and (reason in _CLOSURE_REASONS
+                                            or "closure_expansion" in notes):
+        kind = "kinematic_singularity_loop"
     return _CLASS_WORDS[kind].format(branches=len(branches), dim=dim,
                                      s="" if dim == 1 else "s", order=order,
                                      lower=bounds[0], upper=bounds[1])
@@ -100,11 +120,20 @@ def finite_summary(data: dict) -> str:
     """
     value = "undecided" if data["dimension"] is None else str(data["dimension"])
     words = _classification_words(data["classification"], data["dimension"],
-                                  list(data["branches"]), data["order"], data["bounds"])
+                                  list(data["branches"]), data["order"], data["bounds"],
+                                  data.get("reason", ""),
+                                  tuple(data.get("assumptions", ())))
     field = data.get("field")
     over = (f" (exact over Q(alpha), alpha = {field['alpha']})" if field else "")
+    read = [_ASSUMPTION_WORDS[a] for a in data.get("assumptions", ())
+            if a in _MODEL_ASSUMPTIONS]
+    assumed = f" (assumed: {'; '.join(read)})" if read else ""
     return (f"{value} (first-order motions: {data['first_order']}): {words}{over}"
-            f"{_along_words(data.get('along'))}")
+            f"{assumed}{_along_words(data.get('along'))}")
+
+
+#: The assumptions that say how the model was read (the others say what was tried).
+_MODEL_ASSUMPTIONS = ("unit_length", "frictionless_flat_face")
 
 
 def _along_words(along: dict | None) -> str:
@@ -189,7 +218,8 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
              f"{classification_text(fm)}."]
     if fm.reason in _REASON_WORDS:
         how = {"closure_saturation": "exact Gröbner bases",
-               "closure_bezout": "exact power series"}.get(fm.reason,
+               "closure_bezout": "exact power series",
+               "group_orbit": "first order, the group's rotations split off"}.get(fm.reason,
                                                            f"expansion to order {fm.order}")
         lines.append(f"  Proof: {_REASON_WORDS[fm.reason]} ({how}).")
     for k, branch in enumerate(fm.branches, 1):
@@ -200,8 +230,8 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
                          f"{'' if branch.dimension == 1 else 's'}, tangent to the span of "
                          f"{span} in (u, qdot){_root_words(branch)}")
         else:
-            lines.append(f"  Branch {k}: {branch.dimension} motions, tangent to the cone "
-                         f"{branch.cone} = 0 (in the first-order motions)")
+            lines.append(f"  Tangent cone ({branch.dimension} motions): {branch.cone} = 0 "
+                         f"(x1, x2, ...: coordinates of the first-order motions)")
     if len(fm.orders) > 1:
         lines.append("  First-order motions that extend to order i: "
                      + ", ".join(f"order {i}: {m}" for i, m in fm.orders))
@@ -245,7 +275,11 @@ def finite_latex(fm: FiniteMobility) -> str:
             out.append(f"Branch {k}: tangent to $\\operatorname{{span}}\\{{{span}\\}}$"
                        f"{where}.")
         elif branch.cone is not None:
-            out.append(f"Branch {k}: tangent to the cone ${sp.latex(branch.cone)} = 0$.")
+            out.append(f"Tangent cone: ${sp.latex(branch.cone)} = 0$ in the coordinates "
+                       f"$x_i$ of the first-order motions.")
+    if fm.reason in _REASON_WORDS:
+        out.append(f"Proof: {_REASON_WORDS[fm.reason]}.")
+    out += [f"Assumed: {_ASSUMPTION_WORDS[a]}." for a in fm.assumptions]
     if fm.field is not None:
         alpha = sp.latex(parse_expression(fm.field["alpha"], [], "field.alpha"))
         poly = sp.latex(parse_expression(fm.field["minimal_polynomial"], ["alpha"],

@@ -147,6 +147,8 @@ class _FiniteIn(_In):
     reason: StrictStr
     order: StrictInt
     branches: list[StrictInt]
+    assumptions: list[Literal["unit_length", "frictionless_flat_face", "closure_expansion",
+                              "closure_saturation_inconclusive"]] = []
     field: _FieldIn | None = None
     along: _AlongIn | None = None
 

@@ -10,9 +10,16 @@ import sympy as sp
 from coopkin_sym import load
 from coopkin_sym.analysis.finite import finite_mobility
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
+from coopkin_sym.analysis.finite.on_locus import finite_data
 from coopkin_sym.analysis.finite.reduce import reduce_map
 from coopkin_sym.errors import FiniteMobilityError
 from coopkin_sym.model.configuration import Configuration
+from coopkin_sym.present.finite import (
+    classification_text,
+    finite_latex,
+    finite_lines,
+    finite_summary,
+)
 
 POINTS = [
     ("paper-case1-hard", "q1=pi/2,q2=pi/2,L=1"),
@@ -172,6 +179,8 @@ def test_the_command_says_it_and_refuses_what_it_cannot_expand(monkeypatch, tmp_
     assert not out.exists()                       # nothing half-written
     symbolic = runner.invoke(app, ["analyze", "four-bar", "--generic", "--finite"])
     assert symbolic.exit_code == 2 and "--finite needs every joint" in symbolic.stderr
+    stray = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=0", "--order", "3"])
+    assert stray.exit_code == 2 and "give it with --finite" in stray.stderr
     latex = runner.invoke(app, ["analyze", "four-bar", "--at", "q1=pi/2,q2=pi/2",
                                 "--finite", "--latex"])
     assert "Finite mobility $1$ (first-order motions: $2$): a bifurcation" in latex.stdout
@@ -213,3 +222,62 @@ def test_the_locus_keeps_the_finite_mobility_at_its_witnesses(tmp_path):
     assert ("**Finite mobility at the witness:** 0 (first-order motions: 2): shaky: "
             "first-order motions exist, but no finite motion follows them"
             ) in render_markdown(locus)
+
+
+def test_only_the_groups_rotations_at_a_drop_are_a_smooth_orbit_not_a_regular_point():
+    """Paper case 1 (hard) at q1 = -5pi/6, q2 = 5pi/6 (a locus point: Nm 2 -> 3): every
+    first-order motion is a rotation about the contact line, so the configuration
+    space is that group's orbit, smooth of dimension 3; the numbers change, so it is a
+    kinematic singularity (it read "regular: there is no first-order motion")."""
+    system = load("paper-case1-hard")
+    at = "q1=-5*pi/6,q2=5*pi/6,L=1"
+    fm = system.finite_mobility(at)
+    assert (fm.dimension, fm.bounds, fm.first_order) == (3, (3, 3), 3)
+    assert (fm.classification, fm.reason) == ("kinematic_singularity", "group_orbit")
+    assert len(fm.branches) == 1 and fm.branches[0].dimension == 3
+    assert system.analyze(at).numbers.Nm != system.analyze(generic=True).numbers.Nm
+    text = "\n".join(finite_lines(fm))
+    assert "no first-order motion" not in text and "a rotation of the object" in text
+
+
+def test_finite_mobility_of_a_generic_or_free_analysis_is_refused():
+    """An analysis with symbolic joints has no one configuration to expand at: it is
+    refused, naming the joints (it computed at q = 0 without a word)."""
+    system = load("four-bar")
+    with pytest.raises(FiniteMobilityError, match="joints q1, q2 are left free"):
+        system.analyze(generic=True).finite_mobility()
+    with pytest.raises(FiniteMobilityError, match="joint q2 is left free"):
+        system.analyze("q1=0", free=["q2"]).finite_mobility()
+
+
+def test_an_analysis_at_irrational_angles_has_the_finite_mobility_of_its_point():
+    """``analyze("q1=-pi/4,...").finite_mobility()`` (over a number field) is the
+    system's finite mobility there."""
+    system = load("four-bar")
+    at = "q1=-pi/4,q2=-pi/4"
+    assert system.analyze(at).finite_mobility() == system.finite_mobility(at)
+    assert system.finite_mobility(at).field is not None
+
+
+def test_latex_and_locus_data_say_the_proof_and_how_the_model_was_read():
+    """The LaTeX paragraph has the proof and the assumptions the text has (a
+    frictionless contact read on a flat face); a locus component keeps them."""
+    fm = load("underactuated-finger").finite_mobility("q1=0,q2=2*atan(1/2)")
+    assert fm.assumptions == ("unit_length", "frictionless_flat_face")
+    latex = finite_latex(fm)
+    assert "Proof: the constraints are independent here" in latex
+    assert "flat face of the object" in latex and "set to 1" in latex
+    data = finite_data(fm)
+    assert data["assumptions"] == ["unit_length", "frictionless_flat_face"]
+    assert "flat face of the object" in finite_summary(data)
+
+
+def test_an_overconstrained_loop_is_not_said_to_change_its_numbers_along_its_motion():
+    """Bennett's linkage: the numbers differ from those of generic joint values (where
+    the loop does not close), which the words say, without claiming they change along
+    the motion."""
+    fm = load("bennett-linkage").finite_mobility()
+    assert (fm.dimension, fm.classification) == (1, "kinematic_singularity")
+    words = classification_text(fm)
+    assert "overconstrained loop" in words and "not decided" in words
+    assert "overconstrained loop" in finite_summary(finite_data(fm))

@@ -121,3 +121,44 @@ def test_the_closure_decisions_on_random_loci_are_the_samplers(seed):
         assert Sampler(system.model, values, {}).dimension(6) == fm.dimension
         checked += 1
     assert checked == 2
+
+
+PINNED_TIP = """\
+name: four-bar with a pin joint at the rocker's tip
+planar: true
+arms:
+  - name: crank
+    joints:
+      - {name: q1, type: revolute, axis: [0, 0, 1], point: [0, 0, 0]}
+  - name: rocker
+    joints:
+      - {name: q2, type: revolute, axis: [0, 0, 1], point: [2, 0, 0]}
+      - {name: q3, type: revolute, axis: [0, 0, 1], point: [2, 1, 0]}
+contacts:
+  - {name: c1, link: crank/1, point: [0, 1, 0], normal: [0, 1, 0], model: hard}
+  - {name: c2, link: rocker/2, point: [2, 1, 0], normal: [0, 1, 0], model: hard}
+"""
+
+
+def test_a_rank_two_cone_in_three_motions_is_not_counted_as_two_branches(tmp_path):
+    """The folded four-bar with one more joint about the rocker's pin (a motion that
+    enters no constraint): three first-order motions, a tangent cone of two planes.
+    Its dimension, 2, is proved and the sampler's; its branches are not counted (a
+    cone xy + z^3 = 0 has the same tangent cone and is one sheet)."""
+    path = tmp_path / "pinned-tip.yaml"
+    path.write_text(PINNED_TIP)
+    system = load(str(path))
+    fm = finite_mobility(system.model, "q1=-pi/2,q2=-pi/2")
+    assert (fm.dimension, fm.first_order, fm.classification) == (2, 3, "cone")
+    assert [b.dimension for b in fm.branches] == [2] and fm.branches[0].tangent is None
+    assert sp.factor(fm.branches[0].cone) == sp.factor(
+        sp.sympify("(3*x1 + x2)*(x1 - x2)"))
+    sampler = Sampler(system.model, {"q1": -mp.pi / 2, "q2": -mp.pi / 2, "q3": 0}, {})
+    assert sampler.dimension(8) == 2
+
+
+@pytest.mark.slow
+def test_the_sampler_sees_the_group_orbit_at_a_drop_of_case_1():
+    """Paper case 1 at q1 = -5pi/6, q2 = 5pi/6 (Nm 2 -> 3): the rotations about the
+    contact line are all the first-order motions, and all finite."""
+    _check(load("paper-case1-hard"), {"q1": "-5*pi/6", "q2": "5*pi/6"})

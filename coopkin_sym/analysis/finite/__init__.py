@@ -56,6 +56,7 @@ from coopkin_sym.analysis.finite.forms import (
 )
 from coopkin_sym.analysis.finite.reduce import Reduced, echelon, reduce_map
 from coopkin_sym.analysis.finite.reduce import inverse as _field_inverse
+from coopkin_sym.errors import FiniteMobilityError
 from coopkin_sym.exact.matrix import RATIONALS, rank
 from coopkin_sym.exact.realroot import RealRoot, element_expression
 from coopkin_sym.model.configuration import Configuration
@@ -279,6 +280,13 @@ def _configuration(model: Model, at) -> tuple[Configuration, tuple[str, ...],
         config, point = found
     else:
         config = at if isinstance(at, Configuration) else Configuration.parse(model, at)
+    left = sorted(config.free - set(point.cos_sin if point is not None else ()))
+    if left:
+        raise FiniteMobilityError(
+            f"finite mobility is asked at one configuration, but joint"
+            f"{'s' if len(left) > 1 else ''} {', '.join(left)} "
+            f"{'are' if len(left) > 1 else 'is'} left free (a generic or free= "
+            f"analysis): give every joint a value")
     notes: tuple[str, ...] = ()
     unset = [p for p in model.parameters if p.name not in config.parameters]
     if len(unset) == 1 and len(model.parameters) == 1:
@@ -390,7 +398,7 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
             return dict(out, bounds=(0, n - len(ds)))
         out = dict(out, bounds=(n - 1, n - 1), dimension=n - 1,
                    reason="cone_regular_points", orders=((1, n), (2, n - 1)))
-        if len(ds) == 2:
+        if len(ds) == 2 and n == 2:
             a, b = (ds[0], ds[1]) if ds[0] > 0 else (ds[1], ds[0])
             lin_a, lin_b = (lins[0], lins[1]) if ds[0] > 0 else (lins[1], lins[0])
             if algebraic:
@@ -501,6 +509,14 @@ def _only_origin(forms: list, n: int, field=None) -> bool:
     return False
 
 
+def _group_orbit(found: dict, extra: int, numbers_change: bool) -> tuple[str, str]:
+    """The classification and reason of ``found`` (the slice's), where every
+    first-order motion may be the group's: then its orbit, smooth, is all there is."""
+    if found["reason"] == "no_first_order_motion" and extra:
+        return ("kinematic_singularity" if numbers_change else "regular"), "group_orbit"
+    return found["classification"], found["reason"]
+
+
 def finite_mobility(model: Model, at=None, order: int | None = None,
                     generic_rank: int | None = None,
                     numbers_change: bool | None = None) -> FiniteMobility:
@@ -571,8 +587,9 @@ def finite_mobility(model: Model, at=None, order: int | None = None,
             if found["dimension"] == 0 and extra:        # the group's orbit alone
                 branches = (Branch(extra, tuple(motions)),)
             dim = None if found["dimension"] is None else found["dimension"] + extra
+            kind, reason = _group_orbit(found, extra, numbers_change)
             return FiniteMobility(dim, (lower + extra, upper + extra), n,
-                                  found["classification"], found["reason"], branches,
+                                  kind, reason, branches,
                                   tuple((i, m + extra) for i, m in found["orders"]), k,
                                   notes, tuple(str(g) for g in red.g), tuple(motions),
                                   where)

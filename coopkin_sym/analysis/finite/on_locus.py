@@ -66,7 +66,8 @@ def finite_data(fm: FiniteMobility) -> dict:
     out = {"dimension": fm.dimension, "bounds": list(fm.bounds),
            "first_order": fm.first_order, "classification": fm.classification,
            "reason": fm.reason, "order": fm.order,
-           "branches": [b.dimension for b in fm.branches]}
+           "branches": [b.dimension for b in fm.branches],
+           "assumptions": list(fm.assumptions)}
     if fm.field is not None:
         out["field"] = dict(fm.field)
     return out
