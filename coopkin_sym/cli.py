@@ -183,8 +183,7 @@ def _analyze_work(model: str, o: AnalyzeOptions) -> str | None:
     if o.finite:
         report("the finite mobility")
         # at irrational angles, over the number field of the configuration
-        finite = system.finite_mobility(o.at if _irrational(result) else
-                                        result.configuration, order=o.order)
+        finite = result.finite_mobility(order=o.order)
     if not (o.as_json or o.latex or _irrational(result)):
         parts = analysis_parts(result)
         if finite is not None:

@@ -577,7 +577,9 @@ class Analysis(Displayable):
         """The finite mobility here: the local dimension of the closed system's
         configuration space, its branches and whether the first-order motions are
         finite ones (see :func:`coopkin_sym.analysis.finite.finite_mobility`; every
-        joint at a rational ``tan(q/2)``; hard, complete and frictionless contacts).
+        joint at a rational ``tan(q/2)``; hard, complete and frictionless contacts),
+        with the verdict of every column of ``C11``, ``C12``/``C22`` and ``C23``
+        (:mod:`coopkin_sym.analysis.finite.columns`).
 
         Example
         -------
@@ -587,7 +589,10 @@ class Analysis(Displayable):
         (1, 2, 'bifurcation')
         """
         from coopkin_sym.analysis.finite import finite_mobility
-        return finite_mobility(self.model, self.configuration, order)
+        from coopkin_sym.analysis.finite.columns import with_columns
+
+        found = finite_mobility(self.model, self.configuration, order)
+        return with_columns(found, self.model, self.configuration, self.blocks())
 
     def blocks(self) -> dict[str, sp.Matrix]:
         return {"C11": self.C11, "C12": self.C12, "C22": self.C22, "C23": self.C23}

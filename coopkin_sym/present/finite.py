@@ -232,6 +232,7 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
         else:
             lines.append(f"  Tangent cone ({branch.dimension} motions): {branch.cone} = 0 "
                          f"(x1, x2, ...: coordinates of the first-order motions)")
+    lines += columns_lines(fm)
     if len(fm.orders) > 1:
         lines.append("  First-order motions that extend to order i: "
                      + ", ".join(f"order {i}: {m}" for i, m in fm.orders))
@@ -246,6 +247,43 @@ def finite_lines(fm: FiniteMobility) -> list[str]:
     if fm.field is not None:
         lines.append(f"  Computed {_field_words(fm)}.")
     return lines
+
+
+def columns_lines(fm: FiniteMobility) -> list[str]:
+    """Which columns of the blocks are finite motions, in words (none when the
+    verdicts were not asked).
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> fm = load("four-bar").analyze("q1=-pi/2,q2=-pi/2").finite_mobility()
+    >>> print(columns_lines(fm)[0].replace("; ", chr(10)))
+      Columns of C: C12/C22 column 1 is a finite motion's velocity
+    C12/C22 column 2 is not (the constraints fail along it at order 2).
+    """
+    if not fm.columns:
+        return []
+    name = {"C11": "C11", "C12": "C12/C22", "C23": "C23"}
+    finite = [f"{name[c.block]} column {c.index}" for c in fm.columns
+              if c.verdict == "finite"]
+    parts = []
+    if finite:
+        parts.append(f"{_listed(finite)} {'is a' if len(finite) == 1 else 'are'} finite "
+                     f"motion{'' if len(finite) == 1 else 's'}'"
+                     f"{'s' if len(finite) == 1 else ''} velocit"
+                     f"{'y' if len(finite) == 1 else 'ies'}")
+    for c in fm.columns:
+        if c.verdict == "fails":
+            parts.append(f"{name[c.block]} column {c.index} is not (the constraints fail "
+                         f"along it at order {c.order})")
+        elif c.verdict == "undecided":
+            parts.append(f"{name[c.block]} column {c.index} extends to order {c.order}, "
+                         f"beyond that not decided")
+    return [f"  Columns of C: {'; '.join(parts)}."]
+
+
+def _listed(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def finite_latex(fm: FiniteMobility) -> str:
@@ -279,6 +317,8 @@ def finite_latex(fm: FiniteMobility) -> str:
                        f"$x_i$ of the first-order motions.")
     if fm.reason in _REASON_WORDS:
         out.append(f"Proof: {_REASON_WORDS[fm.reason]}.")
+    out += [line.strip().replace("C12/C22", "$C_{12}/C_{22}$").replace(
+        "C11", "$C_{11}$").replace("C23", "$C_{23}$") for line in columns_lines(fm)]
     out += [f"Assumed: {_ASSUMPTION_WORDS[a]}." for a in fm.assumptions]
     if fm.field is not None:
         alpha = sp.latex(parse_expression(fm.field["alpha"], [], "field.alpha"))
@@ -328,4 +368,6 @@ def finite_json(fm: FiniteMobility) -> dict:
         "field": None if fm.field is None else dict(fm.field),
         "reduced_constraints": list(fm.equations),
         "group_motions": [[str(x) for x in v] for v in fm.group_motions],
+        "columns": [{"block": c.block, "index": c.index, "verdict": c.verdict,
+                     "order": c.order} for c in fm.columns],
     }

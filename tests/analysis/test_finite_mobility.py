@@ -281,3 +281,58 @@ def test_an_overconstrained_loop_is_not_said_to_change_its_numbers_along_its_mot
     words = classification_text(fm)
     assert "overconstrained loop" in words and "not decided" in words
     assert "overconstrained loop" in finite_summary(finite_data(fm))
+
+
+@pytest.mark.parametrize(("name", "at", "expected"), [
+    ("four-bar", "q1=-pi/2,q2=-pi/2", [("C12", 1, "finite", None), ("C12", 2, "fails", 2)]),
+    ("four-bar", "q1=0,q2=0", [("C12", 1, "finite", None)]),
+    ("shaky-pinned-bars", "q1=0,q2=0", [("C12", 1, "fails", 2)]),
+    ("paper-case1-hard", "q1=pi/2,q2=-pi/2",
+     [("C11", 1, "finite", None), ("C12", 1, "fails", 2), ("C12", 2, "fails", 2)]),
+    ("parallel-cranks", "q1=pi/2,q2=pi/2,q3=pi/2",
+     [("C12", 1, "undecided", 4), ("C12", 2, "fails", 2)]),
+    ("bennett-linkage", None, [("C12", 1, "finite", None)]),
+])
+def test_each_column_of_the_blocks_is_said_finite_or_where_it_fails(name, at, expected):
+    """Which columns of C11, C12/C22 and C23 are finite motions' velocities: a finite
+    one lies in a branch's tangent (checked here); along a failing one the lowest
+    term of a reduced constraint is not zero."""
+    a = load(name).analyze(at)
+    fm = a.finite_mobility()
+    assert [(c.block, c.index, c.verdict, c.order) for c in fm.columns] == expected
+    blocks = a.blocks()
+    for c in fm.columns:
+        v = (list(blocks["C11"][:, c.index - 1]) + [0] * blocks["C23"].rows
+             if c.block == "C11" else
+             list(blocks["C12"][:, c.index - 1]) + list(blocks["C22"][:, c.index - 1])
+             if c.block == "C12" else
+             [0] * blocks["C11"].rows + list(blocks["C23"][:, c.index - 1]))
+        v = sp.Matrix(v).subs(sp.Symbol("L", positive=True), 1).subs(sp.Symbol("L"), 1)
+        assert a.Q.subs(sp.Symbol("L", positive=True), 1).subs(sp.Symbol("L"), 1) * v \
+            == sp.zeros(a.Q.rows, 1)
+        on_branch = any(
+            sp.Matrix([list(t) for t in b.tangent]).T.rank()
+            == sp.Matrix([list(t) for t in b.tangent]).T.row_join(v).rank()
+            for b in fm.branches if b.tangent is not None)
+        assert on_branch == (c.verdict == "finite"), c
+    assert (name != "four-bar" or at != "q1=-pi/2,q2=-pi/2"
+            or "column 2 is not (the constraints fail along it at order 2)"
+            in "\n".join(finite_lines(fm)))
+
+
+def test_the_command_gives_the_columns_in_text_latex_and_json():
+    from typer.testing import CliRunner
+
+    from coopkin_sym.cli import app
+
+    runner = CliRunner()
+    args = ["analyze", "four-bar", "--at", "q1=-pi/2,q2=-pi/2", "--finite"]
+    text = runner.invoke(app, args).stdout
+    assert "Columns of C: C12/C22 column 1 is a finite motion's velocity" in text
+    latex = runner.invoke(app, [*args, "--latex"]).stdout
+    assert "$C_{12}/C_{22}$ column 2 is not" in latex
+    import json
+    data = json.loads(runner.invoke(app, [*args, "--json"]).stdout)
+    assert data["finite"]["columns"] == [
+        {"block": "C12", "index": 1, "verdict": "finite", "order": None},
+        {"block": "C12", "index": 2, "verdict": "fails", "order": 2}]

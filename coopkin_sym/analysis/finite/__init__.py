@@ -37,6 +37,7 @@ Example
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
@@ -178,6 +179,10 @@ class FiniteMobility:
     #: The number field of a configuration with an irrational ``tan(q/2)``
     #: (``alpha``, ``minimal_polynomial``, ``tangents``), None at a rational one.
     field: dict | None = None
+    #: Which columns of the paper's blocks are finite motions' velocities
+    #: (:class:`~coopkin_sym.analysis.finite.columns.ColumnVerdict`; asked of an
+    #: analysis, which has the blocks), empty otherwise.
+    columns: tuple = dataclasses.field(default=(), compare=False)
 
 
 def _sym(x) -> sp.Expr:
