@@ -44,7 +44,8 @@ def _exp_rot(phi):
 
 
 class Sampler:
-    """Points of the closure of ``model`` (hard and complete contacts) near the joint
+    """Points of the closure of ``model`` (hard, complete and frictionless contacts: a
+    frictionless one keeps the link's point on the object's face through it) near the joint
     values ``q0`` (radians; the object's place follows from them), the parameters at
     ``params``."""
 
@@ -64,14 +65,20 @@ class Sampler:
                                 for j in arm.joints])
         self.contacts = [(c.arm, c.link, [num(x) for x in c.point], c.model)
                          for c in model.contacts]
+        # a frictionless contact's normal, in its link's frame at q = 0
+        self.normals = [None if c.normal is None else [num(x) for x in c.normal]
+                        for c in model.contacts]
         self.names = [j[0] for arm in self.joints for j in arm
                       if j[0] not in model.locked]
         self.q0 = {name: mp.mpf(q0.get(name, 0)) for arm in self.joints for name, *_ in arm}
         self.nobj = 3 if self.planar else 6
         self.n = self.nobj + len(self.names)
         self.home = {}
+        self.faces = {}
         for i, (arm, link, point, _) in enumerate(self.contacts):
             self.home[i] = self._link(arm, link, self.q0, point)
+            if self.normals[i] is not None:       # the face's normal at q0, in the world
+                self.faces[i] = self.home[i][0] * mp.matrix(self.normals[i])
 
     def _link(self, arm, link, q, point):
         """The pose (R, t) of the link and the world position of ``point`` on it."""
@@ -102,6 +109,10 @@ class Sampler:
             rot0, c0 = self.home[i]
             rot, c = self._link(arm, link, q, point)
             gap = c - (r * c0 + p)
+            if model_ == "frictionless":         # the point stays on the object's face
+                normal = r * self.faces[i]
+                out.append(sum(normal[k] * gap[k] for k in range(3)))
+                continue
             out += [gap[0], gap[1]] + ([] if self.planar else [gap[2]])
             if model_ == "complete":
                 m = rot * rot0.T - r

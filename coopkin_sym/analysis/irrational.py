@@ -142,8 +142,9 @@ class IrrationalAnalysis(Displayable):
             raise NotAvailable(
                 f"{name} is not available at a configuration with irrational coordinates "
                 f"({clip(at, 100)}, over Q({clip(self.alpha, 50)})): only the numbers"
-                f"{' and the motions behind Ni and Nr (.motions)' if self.motions else ''} "
-                f"are computed there; the blocks, matrices and maps need a rational "
+                f"{', the motions behind Ni and Nr (.motions)' if self.motions else ''} "
+                f"and the finite mobility (.finite_mobility()) are computed there; the "
+                f"blocks, matrices and maps need a rational "
                 f"configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
         if name.startswith("_"):
             raise AttributeError(f"'IrrationalAnalysis' object has no attribute {name!r}")

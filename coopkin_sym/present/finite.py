@@ -136,6 +136,38 @@ def finite_summary(data: dict) -> str:
 _MODEL_ASSUMPTIONS = ("unit_length", "frictionless_flat_face")
 
 
+#: A classification as the column of a family reads it.
+_FAMILY_WORDS = {"regular": "regular", "kinematic_singularity": "first-order only",
+                 "bifurcation": "bifurcation", "cone": "cone (not smooth)",
+                 "shaky": "shaky", "undecided": "undecided"}
+
+
+def family_finite_text(finites: list[dict | None]) -> str:
+    """What the finite mobility is at the witnesses of one family's members (their
+    ``finite`` data, None where not computed), counted.
+
+    Example
+    -------
+    >>> family_finite_text([{"classification": "bifurcation"},
+    ...                     {"classification": "bifurcation"},
+    ...                     {"classification": "shaky"}, None])
+    'bifurcation at 2, shaky at 1 (of 4; 1 not computed)'
+    """
+    counts: dict[str, int] = {}
+    for f in finites:
+        if f is not None:
+            words = _FAMILY_WORDS[f["classification"]]
+            counts[words] = counts.get(words, 0) + 1
+    done = sum(counts.values())
+    if not done:
+        return "not computed"
+    said = ", ".join(f"{w} at {k}" for w, k in counts.items())
+    if len(counts) == 1 and done == len(finites):
+        return f"{next(iter(counts))} ({'all ' + str(done) if done > 1 else 'its witness'})"
+    left = len(finites) - done
+    return f"{said} (of {len(finites)}{f'; {left} not computed' if left else ''})"
+
+
 def _along_words(along: dict | None) -> str:
     """What is known along the component beyond its witness, in words ("" if nothing).
 

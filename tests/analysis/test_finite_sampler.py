@@ -162,3 +162,60 @@ def test_the_sampler_sees_the_group_orbit_at_a_drop_of_case_1():
     """Paper case 1 at q1 = -5pi/6, q2 = 5pi/6 (Nm 2 -> 3): the rotations about the
     contact line are all the first-order motions, and all finite."""
     _check(load("paper-case1-hard"), {"q1": "-5*pi/6", "q2": "5*pi/6"})
+
+
+#: The expansion's decisions (not the rank of Q, not the loop closure's).
+_EXPANSION = {"cone_regular_points", "binary_form_roots", "real_cone_origin",
+              "group_orbit"}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [0, 32, 42])
+def test_the_expansions_decisions_on_random_loci_are_the_samplers(seed):
+    """Random two-arm systems with point and welded contacts, at the witnesses of
+    their loci where the expansion decides (bifurcations, shaky points, cones): the
+    sampler finds the same local dimension, and no sampled motion leaves along a
+    column of the blocks said to fail."""
+    system = coopkin_sym.load(random_system(seed))
+    joints = {j.name for j in system.model.joints}
+    checked = 0
+    for component in system.locus().components:
+        if component.witness is None:
+            continue
+        analysis = system.analyze(component.witness)
+        fm = analysis.finite_mobility()
+        if fm.reason not in _EXPANSION:
+            continue
+        values = {k: _angle(v) for k, v in dict(component.witness).items() if k in joints}
+        sampler = Sampler(system.model, values, {})
+        assert sampler.dimension(6) == fm.dimension, component.condition.text
+        blocks = analysis.blocks()
+        failing = [list(blocks["C12"][:, c.index - 1]) + list(blocks["C22"][:, c.index - 1])
+                   for c in fm.columns if c.verdict == "fails" and c.block == "C12"]
+        for d in sampler.directions(6) if failing else ():
+            v = mp.matrix(d)
+            for column in failing:
+                s = mp.matrix([mp.mpf(str(sp.N(x, 70))) for x in column])
+                s = s / mp.norm(s)
+                off = min(mp.norm(v - s), mp.norm(v + s))
+                assert off > mp.mpf(10) ** -2, (component.condition.text, d, column)
+        checked += 1
+    assert checked >= 2
+
+
+@pytest.mark.slow
+def test_a_frictionless_contact_moves_as_the_sampler_sees():
+    """The underactuated finger, whose thumb pad slides on the object's face: at a
+    regular configuration the finite mobility is the sampler's, and where the tip is
+    folded back onto the inner contact (undecided there, the closure's saturation
+    inconclusive) the bounds proved hold the sampler's dimension."""
+    system = load("underactuated-finger")
+    assert system.model.contacts[2].model == "frictionless"
+    regular = {"q1": "2*atan(1/3)", "q2": "2*atan(1/2)", "q3": "2*atan(1/3)"}
+    _check(system, regular, samples=6)
+    folded = {"q1": "2*atan(1/3)", "q2": "-pi/2", "q3": "2*atan(1/3)"}
+    fm = finite_mobility(system.model, ",".join(f"{k}={v}" for k, v in folded.items()))
+    seen = Sampler(system.model, {k: _angle(v) for k, v in folded.items()},
+                   {"L": 1}).dimension(6)
+    assert fm.bounds[0] <= seen <= fm.bounds[1], (fm.bounds, seen)
+    assert (fm.dimension, seen) == (None, 2)

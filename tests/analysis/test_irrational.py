@@ -102,15 +102,17 @@ def test_rational_only_parts_are_a_package_error_naming_what_is_missing():
             getattr(a, name)
         assert str(info.value) == (
             f"{name} is not available at a configuration with irrational coordinates "
-            "(q1=-pi/6,q2=pi/6, over Q(-2 + sqrt(3))): only the numbers and the motions "
-            "behind Ni and Nr (.motions) are computed there; the blocks, matrices and maps "
+            "(q1=-pi/6,q2=pi/6, over Q(-2 + sqrt(3))): only the numbers, the motions "
+            "behind Ni and Nr (.motions) and the finite mobility (.finite_mobility()) are "
+            "computed there; the blocks, matrices and maps "
             "need a rational configuration (tan(q/2) rational, e.g. q = 2*atan(p/q))")
         assert isinstance(info.value, AttributeError) and not hasattr(a, name)
     with pytest.raises(NotAvailable) as info:
         _ = a.no_such_part
     assert str(info.value) == (
         "an analysis has no 'no_such_part': at irrational coordinates it has alpha, "
-        "as_json, at, joints, minimal_polynomial, model, motions, numbers, object_dim, "
+        "as_json, at, finite_mobility, joints, minimal_polynomial, model, motions, "
+        "numbers, object_dim, "
         "passive, system, tangents, variables")
     assert "not available at a configuration" not in str(info.value)
 

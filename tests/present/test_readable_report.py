@@ -251,3 +251,22 @@ def test_a_grouped_remark_names_the_polynomials_the_report_named():
     locus.unexplored = [Remark.of("time_depth", depth=2, equations=("t_q3", P2))]
     assert "- depth 2 inside t\\_q3; P2: not explored, time bound reached\n" \
         in render_markdown(locus)
+
+
+def test_the_families_say_which_are_bifurcations_and_which_only_first_order():
+    """With the finite mobility at the witnesses, each family's row counts what its
+    members are (the four-bar: family A bifurcates at two folded points and is shaky
+    at the third; B is shaky), in every format, and read back from the JSON."""
+    system = load("four-bar")
+    locus = system.locus()
+    locus.finite_mobility()
+    md = render_markdown(locus)
+    assert "| finite motion |" in md
+    assert "| #1, #3, #4 | bifurcation at 2, shaky at 1 (of 3) |" in md
+    assert "| #2 | shaky (its witness) |" in md
+    assert "bifurcation at 2, shaky at 1 (of 3)" in render_html(locus)
+    assert "bifurcation at 2, shaky at 1 (of 3)" in render_latex(locus)
+    again = locus_from_json(render_json(locus))
+    assert "bifurcation at 2, shaky at 1 (of 3)" in render_markdown(again)
+    plain = system.locus()
+    assert "finite motion" not in render_markdown(plain)

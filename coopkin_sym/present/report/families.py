@@ -15,6 +15,7 @@ from coopkin_sym.analysis.locus.families import Family
 from coopkin_sym.analysis.locus.types import Locus
 from coopkin_sym.present.conditions import PolynomialNames, short_condition
 from coopkin_sym.present.family_words import changes_text, family_name, members_text
+from coopkin_sym.present.finite import family_finite_text
 from coopkin_sym.present.report.blocks import Paragraph, Span, Table, _h, _t
 from coopkin_sym.present.report.components import _algebraic_witness_cell
 from coopkin_sym.present.report.words import _component_name, witness_text
@@ -47,13 +48,21 @@ def families_table(locus: Locus, names: PolynomialNames | None = None) -> Table:
     (['family', 'what changes', 'in words'], [[('text', 'Nm 2 → 3, Nc 2 → 3, Nh 0 → 1')]])
     """
     rows = []
+    finite = any(c.finite is not None for c in locus.components)
     for i, family in enumerate(locus.families()):
         where, witness = _example_cells(locus, family, names)
-        rows.append([[_t(family_name(i))], [_t(changes_text(family))],
-                     [_t(change_words(family.changes))], [_t(members_text(family))],
-                     where, witness])
-    header = ["family", "what changes", "in words", "components", "for example",
-              "witness (--at)"]
+        row = [[_t(family_name(i))], [_t(changes_text(family))],
+               [_t(change_words(family.changes))], [_t(members_text(family))]]
+        if finite:          # which families are bifurcations, which only first-order
+            row.append([_t(family_finite_text(
+                [locus.components[m].finite for m in family.members]))])
+        rows.append([*row, where, witness])
+    header = ["family", "what changes", "in words", "components",
+              *(["finite motion"] if finite else []), "for example", "witness (--at)"]
+    if finite:
+        return Table(header, rows, "lllllll", {1: "2.0cm", 2: "3.0cm", 3: "1.6cm",
+                                                4: "2.2cm", 5: "2.6cm", 6: "2.4cm"},
+                     css="families", latex_skip=(6,))
     return Table(header, rows, "llllll",
                  {1: "2.2cm", 2: "3.6cm", 3: "1.8cm", 4: "3.0cm", 5: "2.6cm"},
                  css="families", latex_skip=(5,))
