@@ -31,16 +31,18 @@ from coopkin_sym.analysis.finite import finite_mobility  # noqa: E402
 from coopkin_sym.errors import FiniteMobilityError  # noqa: E402
 
 EXAMPLES = ("paper-case1-hard", "paper-case1-planar", "paper-case1-complete-hard",
-            "four-bar", "shaky-pinned-bars", "five-bar", "planar-two-fingers")
+            "four-bar", "shaky-pinned-bars", "five-bar", "planar-two-fingers",
+            "bennett-linkage")
 QUICK = EXAMPLES[:4]
 
 #: Single configurations: branches along the roots of a cubic, overconstrained loops
-#: proved by the loop closure, over Q and over number fields.
+#: proved by the loop closure, over Q and over number fields (Bricard's linkage at
+#: home: its locus search is cut by its size bound, with no witness).
 _BENNETT = "2*atan((65*sqrt(3)-70)/311)"
 CASES = (("seven-r-loop", "q1=0"), ("seven-r-loop", "q4=pi/3"),
          ("parallel-cranks", "q1=0"), ("parallel-cranks", "q1=pi/3,q2=pi/3,q3=pi/3"),
          ("bennett-linkage", f"q1=pi/6,q2={_BENNETT},q3=pi/6,q4={_BENNETT}"),
-         ("paper-case1-complete-hard", "q1=0,q2=pi/2"))
+         ("paper-case1-complete-hard", "q1=0,q2=pi/2"), ("bricard-linkage", "q1=0"))
 
 
 def _radians(text: str):
