@@ -28,6 +28,9 @@ _CLASS_WORDS = {
                                   "does not close); whether they change along the "
                                   "motion is not decided",
     "bifurcation": "a bifurcation: {branches} branches of {dim} motion{s} cross here",
+    "cusp": "a singular point of the configuration space: one branch of {dim} "
+            "motion{s} through it, not smooth here (a cusp, or a branch with a "
+            "fractional power)",
     "cone": "a singular point of the configuration space: its motions form a cone "
             "of dimension {dim}, not smooth here (how many branches it holds is not "
             "decided)",
@@ -62,6 +65,11 @@ _REASON_WORDS = {
                       "the degrees), so on all of it; the configuration space is that "
                       "curve here",
     "no_first_order_motion": "there is no first-order motion",
+    "newton_polygon": "along each tangent where the reduced constraint's lowest term "
+                      "has a multiple root, the edges of its Newton polygon give the "
+                      "real branches (a simple real root of an edge's polynomial is one "
+                      "real half-branch, by the implicit function theorem after a "
+                      "weighted blow-up); each simple tangent is one smooth branch",
     "group_orbit": "every first-order motion is a rotation of the object that keeps "
                    "each contact with the joints still; these rotations form a group "
                    "acting on the configuration space, whose orbit through here is "
@@ -138,7 +146,8 @@ _MODEL_ASSUMPTIONS = ("unit_length", "frictionless_flat_face")
 
 #: A classification as the column of a family reads it.
 _FAMILY_WORDS = {"regular": "regular", "kinematic_singularity": "first-order only",
-                 "bifurcation": "bifurcation", "cone": "cone (not smooth)",
+                 "bifurcation": "bifurcation", "cusp": "cusp (not smooth)",
+                 "cone": "cone (not smooth)",
                  "shaky": "shaky", "undecided": "undecided"}
 
 

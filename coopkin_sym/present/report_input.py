@@ -129,7 +129,7 @@ class _AlongIn(_In):
 
     how: Literal["constant_rank", "second_point"]
     dimension: StrictInt | None
-    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cone",
+    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cusp", "cone",
                             "shaky", "undecided"]
     point: Names | None = None
     bounds: tuple[StrictInt, StrictInt] | None = None
@@ -142,7 +142,7 @@ class _FiniteIn(_In):
     dimension: StrictInt | None
     bounds: tuple[StrictInt, StrictInt]
     first_order: StrictInt
-    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cone",
+    classification: Literal["regular", "kinematic_singularity", "bifurcation", "cusp", "cone",
                             "shaky", "undecided"]
     reason: StrictStr
     order: StrictInt

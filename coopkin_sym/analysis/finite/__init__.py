@@ -55,6 +55,7 @@ from coopkin_sym.analysis.finite.forms import (
     quadratic_matrix,
     real_directions,
 )
+from coopkin_sym.analysis.finite.puiseux import along_tangent
 from coopkin_sym.analysis.finite.reduce import Reduced, echelon, reduce_map
 from coopkin_sym.analysis.finite.reduce import inverse as _field_inverse
 from coopkin_sym.errors import FiniteMobilityError
@@ -67,7 +68,8 @@ from coopkin_sym.model.model import Model
 #: The highest order tried when none is given.
 DEFAULT_ORDER = 4
 
-CLASSES = ("regular", "kinematic_singularity", "bifurcation", "cone", "shaky", "undecided")
+CLASSES = ("regular", "kinematic_singularity", "bifurcation", "cusp", "cone", "shaky",
+           "undecided")
 
 
 @dataclass(frozen=True)
@@ -399,8 +401,9 @@ def _decide_singular(cmap: ConstraintMap, red: Reduced) -> dict:
         ds, lins = diagonal_form(quadratic_matrix(h, n, field.coefficients(h)
                                                   if algebraic else None))
         pos, neg = sum(1 for x in ds if x > 0), sum(1 for x in ds if x < 0)
-        if not (pos and neg):
-            return dict(out, bounds=(0, n - len(ds)))
+        if not (pos and neg):                 # semidefinite: in two motions, a
+            out = dict(out, bounds=(0, n - len(ds)))    # double tangent, or undecided
+            return _binary_branches(cmap, red, h, d, out) if n == 2 else out
         out = dict(out, bounds=(n - 1, n - 1), dimension=n - 1,
                    reason="cone_regular_points", orders=((1, n), (2, n - 1)))
         if len(ds) == 2 and n == 2:
@@ -439,6 +442,8 @@ def _binary_branches(cmap: ConstraintMap, red: Reduced, h, d: int, out: dict) ->
     else:
         directions = real_directions([h], 2)
         multiple = any(m > 1 for _, m in directions)
+    if multiple and cmap.point is None and len(red.g) == 1:
+        return _multiple_tangents(cmap, red, directions, d, out)
     if multiple or not directions:
         return out
     along = _velocity(cmap, red, [sp.Integer(1), sp.Integer(0)])      # x = (1, 0)
@@ -465,6 +470,41 @@ def _binary_branches(cmap: ConstraintMap, red: Reduced, h, d: int, out: dict) ->
     return dict(out, bounds=(1, 1), dimension=1, classification=kind,
                 reason="binary_form_roots", branches=tuple(branches),
                 orders=tuple((i, 2) for i in range(1, d)) + ((d, 1),))
+
+
+def _multiple_tangents(cmap: ConstraintMap, red: Reduced, directions: list, d: int,
+                       out: dict) -> dict:
+    """Two first-order motions, one reduced constraint whose lowest form (degree
+    ``d``) has a multiple real root: the real branches along every real tangent by
+    Newton's polygon (:mod:`.puiseux`; simple tangents make one smooth branch each),
+    or ``out`` (undecided) where that does not decide them."""
+    branches, singular = [], 0
+    along = _velocity(cmap, red, [sp.Integer(1), sp.Integer(0)])      # x = (1, 0)
+    across = _velocity(cmap, red, [sp.Integer(0), sp.Integer(1)])     # x = (0, 1)
+    for (a, b), m in directions:
+        if isinstance(a, RealRoot):
+            return out                       # an irrational tangent: not done here
+        direction = (1, 0) if (a, b) == (1, 0) else (Fraction(str(flint.fmpq(a))), 1)
+        if (a, b) == (1, 0):
+            tangent = along
+        else:
+            s = sp.Rational(str(flint.fmpq(a)))
+            tangent = tuple(sp.expand(s * x + y) for x, y in zip(along, across, strict=True))
+        count = 1
+        if m > 1:
+            found = along_tangent(red.g[0], direction, red.order)
+            if found is None:
+                return out
+            count, singular = found.branches, singular + found.singular
+        branches += [Branch(1, (tangent,))] * count
+    orders = tuple((i, 2) for i in range(1, d)) + ((d, 1 if branches else 0),)
+    if not branches:
+        return dict(out, bounds=(0, 0), dimension=0, classification="shaky",
+                    reason="newton_polygon", orders=orders)
+    kind = ("cusp" if singular and len(branches) == 1 else
+            "bifurcation" if len(branches) > 1 else "kinematic_singularity")
+    return dict(out, bounds=(1, 1), dimension=1, classification=kind,
+                reason="newton_polygon", branches=tuple(branches), orders=orders)
 
 
 def _closure_expansion(cmap: ConstraintMap, orders: list[int], notes: tuple,
