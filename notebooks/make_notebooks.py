@@ -1751,6 +1751,18 @@ NB06 = [
     four_bar.draw("q1=-pi/2,q2=-pi/2", title="four-bar, folded: two branches cross")
     """),
     md("""
+    Which of the paper's first-order motions are finite ones? Each column of `C12`/`C22`
+    (here the driven motions) is either in a branch's tangent (`finite`), or a
+    lowest-order term of the reduced constraint is not zero along it: no finite motion
+    has that velocity, and the constraints fail at that order.
+    """),
+    code("""
+    for c in fm.columns:
+        print(f"{c.block} column {c.index}: {c.verdict}"
+              + (f" at order {c.order}" if c.order else ""))
+    assert [(c.verdict, c.order) for c in fm.columns] == [("finite", None), ("fails", 2)]
+    """),
+    md("""
     ## Paper case 1 as a linkage
 
     In the plane, case 1 with hard contacts is a four-bar with all four lengths equal

@@ -35,7 +35,7 @@ _CLASS_WORDS = {
             "of dimension {dim}, not smooth here (how many branches it holds is not "
             "decided)",
     "shaky": "shaky: first-order motions exist, but no finite motion follows them",
-    "shaky_partly": "shaky: only {dim} of the first-order motions are finite; no "
+    "shaky_partly": "shaky: only {dim} of the first-order motions {verb} finite; no "
                     "finite motion follows the others",
     "undecided": "undecided at order {order}: the expansion proves only "
                  "{lower} <= finite mobility <= {upper}",
@@ -113,6 +113,7 @@ def _classification_words(kind: str, dimension: int | None, branches: list[int],
         kind = "kinematic_singularity_loop"
     return _CLASS_WORDS[kind].format(branches=len(branches), dim=dim,
                                      s="" if dim == 1 else "s", order=order,
+                                     verb="is" if dim == 1 else "are",
                                      lower=bounds[0], upper=bounds[1])
 
 
