@@ -16,6 +16,8 @@ Example
 
 from __future__ import annotations
 
+from math import gcd
+
 from coopkin_sym.exact.deadline import check
 
 
@@ -37,12 +39,7 @@ def substitute_rows(rows, k: int, f0, f1):
         if not nonzero:
             out.append(new)
             continue
-        content = nonzero[0]
-        for e in nonzero[1:]:
-            check("a substitution")
-            content = content.gcd(e)
-        common = _part_dividing_a_power(content, f1, deg) if not f1.is_constant() else \
-            content.context().constant(content.content())
+        common = common_part(nonzero, f1, deg)
         if not common.is_one():
             for i in places:
                 new[i] = new[i] / common
@@ -50,17 +47,38 @@ def substitute_rows(rows, k: int, f0, f1):
     return out
 
 
-def _part_dividing_a_power(content, f1, deg: int):
-    """``gcd(content, f1^deg)``, one gcd with ``f1`` at a time (``f1^deg`` itself can
-    be far larger than either, and a flint gcd cannot be interrupted)."""
-    common = content.context().constant(1)
+def common_part(entries: list, f1, deg: int):
+    """The part of the content of ``entries`` (nonzero) that divides ``f1^deg``: its
+    integer content when ``f1`` is a constant. Taken one gcd with ``f1`` at a time,
+    each against the entries one by one, so that every gcd has ``f1`` (or a factor of
+    it) on one side: never one of two large entries, nor ``f1^deg`` itself (a flint gcd
+    cannot be interrupted).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> str(common_part([(x + 1)**2 * y, (x + 1)**3], x + 1, 2))
+    'x^2 + 2*x + 1'
+    """
+    ctx = entries[0].context()
+    if f1.is_constant():
+        g = 0
+        for e in entries:
+            g = gcd(g, int(e.content()))
+        return ctx.constant(g)
+    common = ctx.constant(1)
     for _ in range(deg):
-        check("a substitution")
-        g = content.gcd(f1)
-        if g.is_one():
-            break
-        common, content = common * g, content / g
+        g = f1
+        for e in entries:
+            check("a substitution")
+            g = g.gcd(e)
+            if g.is_one():
+                return common
+        common, entries = common * g, [e / g for e in entries]
     return common
+
 
 
 def split_linear(f, k: int):
@@ -130,4 +148,4 @@ def substitute(p, k: int, f0, f1, deg: int, powers: Powers | None = None):
     return acc
 
 
-__all__ = ["Powers", "split_linear", "substitute", "substitute_rows"]
+__all__ = ["Powers", "common_part", "split_linear", "substitute", "substitute_rows"]

@@ -8,7 +8,7 @@ import random
 import flint
 import sympy as sp
 
-from coopkin_sym.exact.substitution import Powers, substitute, substitute_rows
+from coopkin_sym.exact.substitution import Powers, common_part, substitute, substitute_rows
 
 CTX = flint.fmpz_mpoly_ctx.get(("x", "y", "z"), "degrevlex")
 
@@ -56,8 +56,6 @@ def test_rows_are_cleared_by_the_power_of_their_highest_degree():
 
 
 def test_the_part_of_a_content_dividing_a_power_is_the_gcd_with_that_power():
-    from coopkin_sym.exact.substitution import _part_dividing_a_power
-
     rng = random.Random(5)
     x, y, z = CTX.gens()
     factors = [x + 1, y - 2 * z, x * y + 3, CTX.constant(2), z]
@@ -71,4 +69,31 @@ def test_the_part_of_a_content_dividing_a_power_is_the_gcd_with_that_power():
         if f1.is_constant() or content.is_zero():
             continue
         deg = rng.randint(1, 3)
-        assert _part_dividing_a_power(content, f1, deg) == content.gcd(f1 ** deg)
+        assert common_part([content], f1, deg) == content.gcd(f1 ** deg)
+
+
+def test_the_common_part_of_a_row_is_that_of_its_content_never_a_gcd_of_two_entries():
+    """Over several entries, the part of their content that divides ``f1^deg`` is the
+    gcd of all of them with ``f1^deg`` (their integer content for a constant ``f1``),
+    found with gcds that each have ``f1`` or a factor of it on one side."""
+    rng = random.Random(11)
+    x, y, z = CTX.gens()
+    factors = [x + 1, y - 2 * z, x * y + 3, z]
+    for _ in range(40):
+        f1 = CTX.constant(rng.choice([1, 2]))
+        for f in factors:
+            f1 *= f ** rng.randint(0, 2)
+        shared = CTX.constant(rng.choice([1, 6]))
+        for f in factors:
+            shared *= f ** rng.randint(0, 3)
+        entries = [shared * _random_poly(rng, 2, 1) for _ in range(rng.randint(1, 4))]
+        entries = [e for e in entries if not e.is_zero()]
+        if not entries:
+            continue
+        deg = rng.randint(1, 3)
+        content = entries[0]
+        for e in entries[1:]:
+            content = content.gcd(e)
+        expected = (CTX.constant(content.content()) if f1.is_constant()
+                    else content.gcd(f1 ** deg))
+        assert common_part(entries, f1, deg) == expected
