@@ -50,11 +50,12 @@ def primitive(row: Sequence[Poly]) -> Row:
     """``row`` divided by the gcd of its entries, its first nonzero entry made to have
     a positive leading coefficient; a zero row is returned unchanged."""
     g = None
-    for e in row:
-        if not e.is_zero():
-            g = e if g is None else g.gcd(e)
-            if g.is_one():
-                break
+    # the smallest entries first: the gcd only shrinks, so each later gcd has a small
+    # polynomial on one side (and a constant one ends it)
+    for e in sorted((e for e in row if not e.is_zero()), key=len):
+        g = e if g is None else g.gcd(e)
+        if g.is_one():
+            break
     if g is None:
         return list(row)
     first = next(e for e in row if not e.is_zero())
