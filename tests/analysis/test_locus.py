@@ -513,3 +513,32 @@ def test_factorization_answers_where_flint_cannot_sort_its_factors():
             product *= f**e
         assert product == p or product == -p
         assert sorted(str(f) for f, _ in factors) == ["x + y", "x - y", "x*y + 3"]
+
+
+def test_a_gcd_or_discriminant_too_large_for_flint_is_not_started(monkeypatch):
+    """flint runs a gcd or a discriminant to its end once started: over their bounds
+    they are not started. A gcd refused is said in the report (unless its caller has a
+    safe way around it), and a discriminant refused proves nothing."""
+    from types import SimpleNamespace
+
+    import flint
+
+    from coopkin_sym.analysis.locus import algebra
+
+    zctx = flint.fmpz_mpoly_ctx.get(("a", "b"), "degrevlex")
+    a, b = zctx.gens()
+    ctx = SimpleNamespace(ring_names=("a", "b"), locus=SimpleNamespace(unexplored=[]))
+    p, q = (a + b + 1) ** 3 * (a - b), (a + b + 1) * (a + 2) ** 3
+    assert algebra.bounded_gcd(ctx, p, q) == a + b + 1
+    monkeypatch.setattr(algebra, "GCD_TERMS", 3)
+    assert algebra.bounded_gcd(ctx, p, q, report=False) is None
+    assert ctx.locus.unexplored == []
+    assert algebra.bounded_gcd(ctx, p, q) is None
+    (remark,) = ctx.locus.unexplored
+    assert remark.kind == "operation_too_large"
+    assert dict(remark.facts)["operation"] == "gcd"
+    assert algebra.bounded_gcd(ctx, p, zctx.constant(2)) == zctx.constant(1)  # small side
+    f = 3*a**2*b**2 - 2*a**2*b + 3*a**2 + 2*a*b**2 + 2*a + 3*b**2 - 2*b + 3
+    assert algebra.no_real_zeros(f)
+    monkeypatch.setattr(algebra, "DISCRIMINANT_TERMS", 2)
+    assert not algebra.no_real_zeros(f)

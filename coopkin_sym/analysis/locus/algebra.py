@@ -93,6 +93,27 @@ def bounded_gcd_modulo(ctx: SearchContext, polys, quotient: Quotient, name: str)
         return None
 
 
+#: The most terms of the smaller side of a multivariate gcd (flint runs it to its
+#: end once started: with both sides this large it can take minutes).
+GCD_TERMS = 20_000
+#: The most estimated terms of a discriminant (a resultant of a polynomial and its
+#: derivative) taken to prove that a polynomial has no real zeros.
+DISCRIMINANT_TERMS = 50_000
+
+
+def bounded_gcd(ctx: SearchContext, a, b, report: bool = True):
+    """``gcd(a, b)``, or None when both have more than :data:`GCD_TERMS` terms (then
+    a remark says so, unless ``report`` is False: for a caller that has a safe way
+    around it)."""
+    size = min(len(a), len(b))
+    if size > GCD_TERMS:
+        if report:
+            _too_large(ctx, "gcd", size, GCD_TERMS, [a, b])
+        return None
+    deadline.spend(len(a) + len(b), "a gcd")
+    return a.gcd(b)
+
+
 def bounded_factor(ctx: SearchContext, p):
     """``factor(p)`` (content and factors), or None when ``p`` has more than
     :data:`FACTOR_TERMS` terms (then a remark says so)."""
@@ -271,6 +292,8 @@ def no_real_zeros(f, depth: int = 0) -> bool:
     if degrees[k] % 2 == 1:
         return False  # odd degree in y: a real root for every x
     name = zctx.names()[k]
+    if resultant_terms(f, f.derivative(name), k) > DISCRIMINANT_TERMS:
+        return False      # not proved (a discriminant this large is not taken)
     disc = f.discriminant(name)
     if not disc.is_zero() and not no_real_zeros(disc, depth + 1):
         return False

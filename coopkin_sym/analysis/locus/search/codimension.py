@@ -15,6 +15,7 @@ from coopkin_sym.analysis.locus.algebra import (
     GCD_MODULO_TERMS,
     as_poly,
     bounded_factor,
+    bounded_gcd,
     bounded_gcd_modulo,
     bounded_resultant,
     linear_equation,
@@ -193,7 +194,13 @@ def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[
                 r = bounded_resultant(ctx, polys[0], p, y)
                 if r is None:
                     return True   # not solved, and the report says why
-                res = r if res is None else res.gcd(r)
+                if res is None:
+                    res = r
+                    continue
+                # either resultant's zeros hold the projection: over the gcd's size
+                # the smaller one is kept (its factors are checked on all of polys)
+                common = bounded_gcd(ctx, res, r, report=False)
+                res = common if common is not None else min(res, r, key=len)
             by_y[y] = res
         res = by_y[y]
         if res is None or res.is_zero() or res.is_constant() or res.degrees()[kx] == 0:
@@ -223,7 +230,9 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
     common = None
     for p in moved:
         if not p.is_zero():
-            common = p if common is None else common.gcd(p)
+            common = p if common is None else bounded_gcd(ctx, common, p)
+            if common is None:
+                return            # not solved, and the report says why
     if common is None or common.is_constant():
         return
     rows_x = substitute_rows(place.rows, kx, h0, h1)

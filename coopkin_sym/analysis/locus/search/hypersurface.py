@@ -12,6 +12,7 @@ import flint
 import sympy as sp
 
 from coopkin_sym.analysis.locus.algebra import (
+    FACTOR_TERMS,
     vars_of,
 )
 from coopkin_sym.analysis.locus.context import SearchContext
@@ -138,11 +139,11 @@ def _without_content(row, contents: list):
     """``row`` divided by the gcd of its entries; a non-constant gcd goes to
     ``contents`` (dividing by it must not hide the rank drop at its zeros)."""
     g = None
-    for e in row:
-        if not e.is_zero():
-            g = e if g is None else g.gcd(e)
-            if g.is_constant():
-                return row
+    # smallest first: the gcd only shrinks, so each later gcd has a small side
+    for e in sorted((e for e in row if not e.is_zero()), key=len):
+        g = e if g is None else g.gcd(e)
+        if g.is_constant():
+            return row
     if g is None:
         return row
     if not _positive(g):        # a positive divisor hides no real drop
@@ -247,8 +248,11 @@ def splitting_minor(rows, rank: int, zctx):
     best, best_key = None, None
     for ri in itertools.combinations(range(nrows), rank):
         for ci in itertools.combinations(range(ncols), rank):
-            det = _determinant([[rows[i][j] for j in ci] for i in ri])
-            if det.is_zero():
+            sub = [[rows[i][j] for j in ci] for i in ri]
+            if determinant_terms(sub) > DETERMINANT_TERMS:
+                continue      # another minor may do; none at all: the caller says so
+            det = _determinant(sub)
+            if det.is_zero() or len(det) > FACTOR_TERMS:
                 continue
             _, fs = factor(det)
             square_free = zctx.constant(1)

@@ -6,6 +6,8 @@ to the seams below that call back into them (through ``ctx.steps``).
 from __future__ import annotations
 
 from coopkin_sym.analysis.locus.algebra import (
+    bounded_factor,
+    bounded_gcd,
     normalize,
     poly_text,
     vars_of,
@@ -34,7 +36,6 @@ from coopkin_sym.analysis.locus.witness import (
 )
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.analysis.numbers import Numbers
-from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.substitution import substitute
 
 
@@ -57,8 +58,10 @@ def explore(ctx: SearchContext, place: Place) -> None:
     splitting: set[str] = set()  # factors of single minors (see splitting_minor)
     rests: list[list] = []
     def add_factors(g, matrix: str, split: bool = False) -> None:
-        _, fs = factor(g)
-        for f, _e in fs:
+        factored = bounded_factor(ctx, g)
+        if factored is None:
+            return                # not searched, and the report says why
+        for f, _e in factored[1]:
             f = normalize(f)
             key = str(f)
             drops = factors.get(key, (f, set()))[1]
@@ -73,8 +76,12 @@ def explore(ctx: SearchContext, place: Place) -> None:
                 add_factors(c, name.split(":")[1], name.startswith("split:"))
             continue
         g = polys[0]
-        for p in polys[1:]:
-            g = g.gcd(p)
+        for p in sorted(polys[1:], key=len):
+            g = bounded_gcd(ctx, g, p)
+            if g is None:
+                break
+        if g is None:
+            continue              # this block's drops not searched, said in the report
         if not g.is_constant():
             add_factors(g, name.split(":")[0])
         rest = [p / g for p in polys] if not g.is_constant() else polys
