@@ -173,7 +173,7 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"{f['variable']} share each {f['over']}: numbers not decided"),
     "fields_not_disjoint": lambda f: (
         f"where components #{f['first'] + 1} and #{f['second'] + 1} meet: not decided "
-        "(their fields are not linearly disjoint)"),
+        "(their fields are not proved linearly disjoint)"),
     "deeper_not_explored": _deeper_not_explored,
     "common_root_not_searched": lambda f: (
         f"inside {', '.join(f['equations'])}, {f['variable']} a common root of the minors "

@@ -542,3 +542,21 @@ def test_a_gcd_or_discriminant_too_large_for_flint_is_not_started(monkeypatch):
     assert algebra.no_real_zeros(f)
     monkeypatch.setattr(algebra, "DISCRIMINANT_TERMS", 2)
     assert not algebra.no_real_zeros(f)
+
+
+def test_linear_disjointness_over_its_degree_bound_is_not_claimed(monkeypatch):
+    """Q(sqrt 2) and Q(sqrt 3) are linearly disjoint (degree 4 compositum); with the
+    bound below 4 the resultant is not taken, and nothing is claimed."""
+    from types import SimpleNamespace
+
+    import flint
+
+    from coopkin_sym.analysis.locus import algebra
+
+    zctx = flint.fmpz_mpoly_ctx.get(("a", "b"), "degrevlex")
+    a, b = zctx.gens()
+    ctx = SimpleNamespace(ring_names=("a", "b"), locus=SimpleNamespace(unexplored=[]))
+    assert algebra.linearly_disjoint(ctx, a**2 - 2, "a", b**2 - 3, "b")
+    assert not algebra.linearly_disjoint(ctx, a**2 - 2, "a", b**2 - 8, "b")  # same field
+    monkeypatch.setattr(algebra, "DISJOINT_DEGREE", 3)
+    assert not algebra.linearly_disjoint(ctx, a**2 - 2, "a", b**2 - 3, "b")

@@ -612,6 +612,11 @@ def roots(ctx: SearchContext, g, name: str):
     return roots, curved
 
 
+#: The largest degree ``deg g1 * deg g2`` of a compositum tried by
+#: :func:`linearly_disjoint` (a resultant of that degree, then factored).
+DISJOINT_DEGREE = 64
+
+
 def linearly_disjoint(ctx: SearchContext, g1, x1: str, g2, x2: str) -> bool:
     """Whether the roots of the irreducible univariate ``g1`` (in ``x1``) and ``g2`` (in
     ``x2``) generate linearly disjoint fields: some ``alpha + c beta`` (small ``c``)
@@ -619,6 +624,8 @@ def linearly_disjoint(ctx: SearchContext, g1, x1: str, g2, x2: str) -> bool:
     irreducible)."""
     d1 = g1.degrees()[ctx.ring_names.index(x1)]
     d2 = g2.degrees()[ctx.ring_names.index(x2)]
+    if d1 * d2 > DISJOINT_DEGREE:
+        return False          # not proved (a resultant and factorization this large)
     zy = flint.fmpz_mpoly_ctx.get(("z", "y"), "degrevlex")
     z, y = zy.gens()
     p1 = univariate(ctx, g1, x1)

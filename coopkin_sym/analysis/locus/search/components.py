@@ -9,6 +9,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from coopkin_sym.analysis.locus.algebra import (
+    bounded_factor,
     has_real_point,
     normalize,
     poly_text,
@@ -23,7 +24,6 @@ from coopkin_sym.analysis.locus.witness import (
 )
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.exact.angles import COTANGENT_PREFIX, cotangent_name, joint_of
-from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.substitution import substitute
 
@@ -230,7 +230,8 @@ def _denominators(ctx: SearchContext, chain: dict | None, equations: list[str]) 
     for _f0, f1 in (chain or {}).values():
         if f1.is_constant():
             continue
-        for g, _e in factor(f1)[1]:
+        factored = bounded_factor(ctx, f1)      # too large: f1 itself, the same zeros
+        for g, _e in (factored[1] if factored is not None else [(f1, 1)]):
             g = normalize(g)
             if g.is_constant() or no_real_points(ctx, g):
                 continue
