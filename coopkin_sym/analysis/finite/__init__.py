@@ -484,7 +484,7 @@ def _multiple_tangents(cmap: ConstraintMap, red: Reduced, directions: list, d: i
     for (a, b), m in directions:
         if isinstance(a, RealRoot):
             return out                       # an irrational tangent: not done here
-        direction = (1, 0) if (a, b) == (1, 0) else (Fraction(str(flint.fmpq(a))), 1)
+        direction = (a, b)
         if (a, b) == (1, 0):
             tangent = along
         else:

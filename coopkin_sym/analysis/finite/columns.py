@@ -30,6 +30,7 @@ import sympy as sp
 from coopkin_sym.analysis.finite import FiniteMobility, _configuration, stabilizer
 from coopkin_sym.analysis.finite.constraints import ConstraintMap
 from coopkin_sym.analysis.finite.reduce import reduce_map
+from coopkin_sym.exact.matrix import RATIONALS, rank
 
 #: The verdicts of a column.
 VERDICTS = ("finite", "fails", "undecided")
@@ -84,15 +85,19 @@ def _rational(x) -> bool:
 
 
 def _in_span(v: list, basis: tuple) -> bool:
-    """Whether ``v`` lies in the span of ``basis`` (exact SymPy numbers)."""
-    if not any(sp.simplify(x) != 0 for x in v):
+    """Whether the rational ``v`` lies in the span of ``basis`` (exact numbers: over
+    Q with flint, SymPy only for a tangent written with radicals)."""
+    if not any(x != 0 for x in v):
         return True
     if not basis:
         return False
-    m = sp.Matrix([list(b) for b in basis]).T
-    rational = all(_rational(x) for x in m)
-    return m.rank(simplify=not rational) == m.row_join(sp.Matrix(v)).rank(
-        simplify=not rational)
+    rows = [list(b) for b in basis]
+    if all(_rational(x) for row in rows for x in row):
+        rows = [[flint.fmpq(str(x)) for x in row] for row in rows]
+        return rank(rows, len(v), RATIONALS) == rank(
+            [*rows, [flint.fmpq(str(x)) for x in v]], len(v), RATIONALS)
+    m = sp.Matrix(rows).T
+    return m.rank(simplify=True) == m.row_join(sp.Matrix(v)).rank(simplify=True)
 
 
 def _coordinates(cmap: ConstraintMap, v: list) -> list | None:
@@ -177,7 +182,7 @@ def with_columns(fm: FiniteMobility, model, at, blocks: dict) -> FiniteMobility:
     for k, m in blocks.items():
         values = {x: config.parameters[x.name] for x in m.free_symbols
                   if x.name in config.parameters}
-        exact[k] = m.subs(values).applyfunc(sp.nsimplify) if values else m
+        exact[k] = m.subs(values) if values else m
     rows, motions = stabilizer(ConstraintMap(model, config))
     return replace(fm, columns=column_verdicts(model, config, fm, exact, rows,
                                                tuple(motions)))

@@ -84,9 +84,9 @@ def _points(g, direction, order: int) -> dict[tuple[int, int], flint.fmpq]:
     return out
 
 
-def _edges(points: dict, top: tuple[int, int], bottom: int):
-    """The edges of the lower hull from ``top`` down to the pure power ``t^bottom``:
-    ``(slope as Fraction, [(i, k) on the edge])``."""
+def _edges(points: dict, top: tuple[int, int]):
+    """The edges of the lower hull from ``top`` down to the lowest pure power of
+    ``t``: ``(slope as Fraction, [(i, k) on the edge])``."""
     edges = []
     here = top
     while here[1] > 0:
@@ -97,7 +97,6 @@ def _edges(points: dict, top: tuple[int, int], bottom: int):
                              key=lambda p: -p[1])
         edges.append((slope, on))
         here = on[-1]
-    del bottom
     return edges
 
 
@@ -121,11 +120,11 @@ def _real_simple_roots(coeffs: list) -> int | None:
     return count
 
 
-def _side(points: dict, top, bottom: int) -> tuple[list[tuple[Fraction, int]], bool]:
+def _side(points: dict, top) -> tuple[list[tuple[Fraction, int]], bool]:
     """The real half-branches for ``t > 0``: ``(exponent, count)`` per edge, and
     whether every real root was simple."""
     found, simple = [], True
-    for slope, on in _edges(points, top, bottom):
+    for slope, on in _edges(points, top):
         low = on[-1][1]
         coeffs = [flint.fmpq(0)] * (on[0][1] - low + 1)
         for i, k in on:
@@ -153,18 +152,16 @@ def along_tangent(g, direction, order: int) -> Tangent | None:
     (2, Tangent(smooth=0, singular=0, half_branches=(0, 0)))
     """
     plus = _points(g, direction, order)
-    pure = [i for (i, k) in plus if k == 0]
-    if not pure:
-        return None
-    bottom = min(pure)
+    if not any(k == 0 for (_, k) in plus):
+        return None                          # no pure power of t: the polygon is open
     low = min(i + k for i, k in plus)
     m = min(k for i, k in plus if i + k == low)      # the multiplicity of the tangent
     top = (low - m, m)
     if m == 0:
         return None
     minus = {(i, k): a * (-1) ** i for (i, k), a in plus.items()}
-    right, ok_right = _side(plus, top, bottom)
-    left, ok_left = _side(minus, top, bottom)
+    right, ok_right = _side(plus, top)
+    left, ok_left = _side(minus, top)
     if not (ok_right and ok_left):
         return None
     smooth = sum(n for e, n in right if e.denominator == 1)
