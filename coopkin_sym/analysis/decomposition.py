@@ -12,11 +12,12 @@ from dataclasses import dataclass
 
 from coopkin_sym.analysis.numbers import Numbers, numbers_from_ranks, ranks_from_numbers
 from coopkin_sym.exact.deadline import check
+from coopkin_sym.exact.elimination import ranks_at_random_point
 from coopkin_sym.exact.matrix import PolyMatrix, rank_triple
 from coopkin_sym.exact.ratfunc import RatFunc
 from coopkin_sym.model.model import Model
 
-__all__ = ["Decomposition", "decompose", "numbers_modulo"]
+__all__ = ["Decomposition", "attains", "decompose", "numbers_modulo"]
 
 
 @dataclass
@@ -80,6 +81,31 @@ def decompose(q_rows, model: Model, row_contacts: list[int], zctx) -> Decomposit
     numbers = numbers_from_ranks(
         m, r, *ranks_from_numbers({"Nm": nm, "Ni": ni, "Nr": nr}, r, dim=dim), dim=dim)
     return Decomposition(numbers, c11, c11_pivots, c23, arm_maps, coord_u)
+
+
+def attains(q_rows, model: Model, numbers: Numbers) -> bool:
+    """Whether the ranks of ``Q``, its object columns and its joint columns at one
+    random point (modulo a prime) are those of ``numbers``. Where ``Q`` is a
+    specialization of a matrix whose generic numbers are ``numbers`` (a slice of its
+    chart), its generic ranks are at most those and at least the ranks at any point:
+    True proves its generic numbers are ``numbers`` (False proves nothing).
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis import kinematics
+    >>> from coopkin_sym.model import load_model
+    >>> from coopkin_sym.model.configuration import Configuration
+    >>> model = load_model("paper-case1-hard")
+    >>> kin = kinematics.build(model, Configuration.parse(model, "L=1", free=["q1", "q2"]))
+    >>> rows = [kin.ring.clear_row(r) for r in kin.Q]
+    >>> generic = decompose(rows, model, kin.row_contacts, kin.ring.zctx).numbers
+    >>> attains(rows, model, generic)
+    True
+    """
+    dim, r = model.object_dim, len(model.joints)
+    want = ranks_from_numbers(numbers, r, dim=dim)
+    got = ranks_at_random_point(q_rows, [range(dim + r), range(dim), range(dim, dim + r)])
+    return tuple(got) == tuple(want)
 
 
 @dataclass

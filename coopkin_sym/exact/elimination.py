@@ -271,6 +271,30 @@ def independent_rows(rows: Sequence[Sequence[Poly]], ncols: int) -> list[int]:
     return sorted(chosen)
 
 
+def ranks_at_random_point(rows: Sequence[Sequence[Poly]],
+                          blocks: Sequence[Sequence[int]]) -> list[int]:
+    """The rank of each block of columns of ``rows`` at one random integer point,
+    modulo a prime: each a certified lower bound on the block's rank over the fraction
+    field (a rank at a point, modulo p, never exceeds the generic rank).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> ranks_at_random_point([[x, x], [x, x + 1]], [[0, 1], [0]])
+    [2, 1]
+    """
+    if not rows:
+        return [0] * len(blocks)
+    nvars = rows[0][0].context().nvars()
+    point = [_rng.randrange(1, 2**20) for _ in range(nvars)]
+    values = [[int(e(*point)) % _PRIME if not e.is_zero() else 0 for e in row]
+              for row in rows]
+    return [flint.nmod_mat([[row[c] for c in cols] for row in values], _PRIME).rank()
+            if cols else 0 for cols in blocks]
+
+
 def nullspace_rref(rows: Sequence[Sequence[Poly]], ncols: int, zctx,
                    column_order: Sequence[int] | None = None) -> tuple[list[Row], list[int]]:
     """The reduced echelon basis of the right nullspace (as reduced rows, see the

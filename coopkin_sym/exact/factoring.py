@@ -19,16 +19,35 @@ from __future__ import annotations
 
 import sympy as sp
 
+#: Polynomials of at least this many terms have their factorization kept (a search
+#: meets one minor again in several places; factoring it again costs seconds).
+KEEP_TERMS = 1000
+
+#: How many such factorizations are kept, the latest first.
+KEPT = 16
+
+_kept: list[tuple] = []
+
 
 def factor(p) -> tuple[int, list]:
     """``(content, [(factor, multiplicity), ...])`` of an ``fmpz_mpoly`` over Z, the
     factors primitive and irreducible, their product times the content equal to ``p``
-    (up to the signs the factors carry)."""
+    (up to the signs the factors carry). The factorizations of the last few large
+    polynomials are kept and given again for an equal polynomial."""
+    big = len(p) >= KEEP_TERMS
+    if big:
+        for q, content, factors in _kept:
+            if len(q) == len(p) and q.context() is p.context() and q == p:
+                return content, list(factors)
     try:
         content, factors = p.factor()
-        return int(content), list(factors)
+        content, factors = int(content), list(factors)
     except OverflowError:
-        return _factor_with_sympy(p)
+        content, factors = _factor_with_sympy(p)
+    if big:
+        _kept.insert(0, (p, content, tuple(factors)))
+        del _kept[KEPT:]
+    return content, factors
 
 
 def _factor_with_sympy(p) -> tuple[int, list]:

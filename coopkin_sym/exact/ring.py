@@ -20,9 +20,9 @@ Example
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from fractions import Fraction
-from math import lcm
+from math import factorial, lcm
 
 import flint
 
@@ -115,6 +115,60 @@ class Ring:
             if e:
                 p = p * f**e
         return p
+
+    # --- values at t = oo -----------------------------------------------------------
+    def at_infinity(self, names: Sequence[str]) -> tuple[Ring, Callable[[RatFunc],
+                                                                     RatFunc | None]]:
+        """The ring without the denominator variables ``names``, and the map taking a
+        value over this ring's known factors to its value at ``t = oo`` for every ``t``
+        in ``names`` (``q = pi`` for ``t = tan(q/2)``). The map gives ``None`` for a
+        value without a finite limit there or in reduced form with a variable of
+        ``names``.
+
+        A value ``num / prod (1 + t_j^2)^e_j`` has the finite limit
+        ``[t^(2e)] num`` (its coefficient, a polynomial in the other variables, over the
+        other factors) when no term of ``num`` has a higher power of ``t``.
+
+        Example
+        -------
+        >>> ring = Ring(["t_q1", "L"], ["t_q1"])
+        >>> t, L = ring.gens()
+        >>> smaller, limit = ring.at_infinity(["t_q1"])
+        >>> c = limit(ring.cos_of(0) * L)               # cos(pi) L
+        >>> smaller.names, str(c.num), c.powers
+        (('L',), '-L', ())
+        """
+        drop = [self.names.index(n) for n in names]
+        den_at = [self.den_names.index(n) for n in names]
+        keep_den = [k for k in range(len(self.den_names)) if k not in den_at]
+        smaller = Ring([n for n in self.names if n not in names],
+                       [self.den_names[k] for k in keep_den])
+        qctx, zctx = smaller.qctx, smaller.zctx
+
+        zero = qctx.constant(0)
+
+        def limit(f: RatFunc) -> RatFunc | None:
+            num = f.num
+            if f.ring is not None and num.is_zero():
+                return RatFunc(zero, None, smaller, tuple(f.powers[k] for k in keep_den))
+            degrees = num.degrees()
+            if f.ring is None:
+                if any(degrees[i] or f.den.degrees()[i] for i in drop):
+                    return None
+                return RatFunc(num.project_to_context(zctx), f.den.project_to_context(zctx))
+            powers = tuple(f.powers[k] for k in keep_den)
+            for i, k in zip(drop, den_at, strict=True):
+                top = 2 * f.powers[k]
+                if degrees[i] > top:
+                    return None
+                if degrees[i] < top:               # the value tends to zero
+                    return smaller.ratfunc(0, powers)
+                if top:                            # [t^top] num: differentiate top times
+                    for _ in range(top):
+                        num = num.derivative(i)
+                    num = num / factorial(top)
+            return RatFunc(num.project_to_context(qctx), None, smaller, powers)
+        return smaller, limit
 
     # --- integer polynomials ------------------------------------------------------
     def to_zpoly(self, p: flint.fmpq_mpoly) -> flint.fmpz_mpoly:

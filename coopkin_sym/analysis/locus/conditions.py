@@ -25,6 +25,7 @@ import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import cached_property
 from typing import Union
 
 import sympy as sp
@@ -60,10 +61,11 @@ class Value:
     def text(self) -> str:
         return f"{self.name} = {self.value_text}"
 
-    @property
+    @cached_property
     def value_text(self) -> str:
         """The value as ``--at`` writes it: an angle with a rational tangent half-angle
-        as :class:`~coopkin_sym.exact.angles.ExactAngle` does (``2*atan(-1/3)``)."""
+        as :class:`~coopkin_sym.exact.angles.ExactAngle` does (``2*atan(-1/3)``); kept
+        once written (an algebraic value's text takes milliseconds)."""
         if self.kind == "revolute" and self.value.is_real is not False:
             half = sp.tan(self.value / 2)
             if half.is_Rational:

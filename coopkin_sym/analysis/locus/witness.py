@@ -24,6 +24,7 @@ import flint
 import numpy as np
 import sympy as sp
 
+from coopkin_sym.analysis import kinematics
 from coopkin_sym.analysis.floatcheck import float_numbers
 from coopkin_sym.analysis.irrational import point_motions
 from coopkin_sym.analysis.locus.algebra import NICE, roots, substitute_values, univariate, vars_of
@@ -311,8 +312,9 @@ def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot,
     alpha = root.expression()
     values = {ctx.symbols[n]: (alpha if n == x and n not in full else
                                value_expr(full[n], alpha)) for n in ctx.ring_names}
+    kin = ctx.kin if ctx.kin is not None else kinematics.build(ctx.model, ctx.config)
     motions = point_motions(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
-                            ctx.kin, values, root.degree, changed=set(changes))
+                            kin, values, root.degree, changed=set(changes))
     return WitnessMotions(numbers, ctx.model.joint_names, frozenset(changes),
                           motions=motions, object_dim=ctx.model.object_dim)
 

@@ -6,11 +6,12 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
+from coopkin_sym.analysis.decomposition import attains
 from coopkin_sym.analysis.locus.conditions import Condition, Value
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark
@@ -32,11 +33,13 @@ from coopkin_sym.model.model import Model
 PI_SEARCH_WEIGHT = 20
 
 
-def chart_of(model: Model, config: Configuration) -> tuple[dict, list]:
+def chart_of(model: Model, config: Configuration,
+             kin: kinematics.Kinematics | None = None) -> tuple[dict, list]:
     """The fields of a :class:`SearchContext` that belong to the chart of ``config``
     (its free joints and parameters are the variables), and the cleared rows of Q
-    there."""
-    kin = kinematics.build(model, config)
+    there; ``kin``: the kinematics at ``config`` when known."""
+    if kin is None:
+        kin = kinematics.build(model, config)
     ring = kin.ring
     q_rows = [ring.clear_row(row) for row in kin.Q]
     kinds: dict[str, tuple[str, str]] = {}
@@ -49,6 +52,23 @@ def chart_of(model: Model, config: Configuration) -> tuple[dict, list]:
     chart = {"config": config, "ring_names": ring.names, "kinds": kinds,
              "row_contacts": kin.row_contacts, "symbols": kin.symbols, "ring": ring,
              "rows0": q_rows, "kin": kin}
+    return chart, q_rows
+
+
+def slice_chart(ctx: SearchContext, config: Configuration, joints: Sequence[str]
+                ) -> tuple[dict, list]:
+    """:func:`chart_of` for the slice ``config`` of the chart of ``ctx`` with ``joints``
+    at pi: its ``Q`` is the limit of the chart's (:func:`kinematics.q_at_pi`), and its
+    kinematics (``kin``) is built only where a witness needs it."""
+    at = kinematics.q_at_pi(ctx.kin, joints) if ctx.kin is not None else None
+    if at is None:
+        return chart_of(ctx.model, config)
+    ring, symbols, Q = at
+    q_rows = [ring.clear_row(row) for row in Q]
+    chart = {"config": config, "ring_names": ring.names,
+             "kinds": {v: k for v, k in ctx.kinds.items() if v in ring.names},
+             "row_contacts": ctx.row_contacts, "symbols": symbols, "ring": ring,
+             "rows0": q_rows, "kin": None}
     return chart, q_rows
 
 
@@ -83,13 +103,15 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
             revolute[n] = ExactAngle(1, 0)
         config = Configuration(revolute, ctx.config.prismatic, ctx.config.parameters,
                                ctx.config.free - set(subset))
-        chart, rows = chart_of(ctx.model, config)
+        chart, rows = slice_chart(ctx, config, subset)
         sub = dataclasses.replace(ctx, **chart, pi=frozenset(subset), hidden=0, splits=0,
                                   deferred=[], polys={}, searched=set(), inside=0)
         equations = [cotangent_name(n) for n in subset]
         for n in subset:
             ctx.readings[cotangent_name(n)] = Value(n, sp.pi, "revolute")
-        numbers = decompose(rows, ctx.model, sub.row_contacts, sub.ring.zctx).numbers
+        # the slice's ranks are at most the chart's: reaching them at a point proves them
+        numbers = ctx.generic if attains(rows, ctx.model, ctx.generic) else decompose(
+            rows, ctx.model, sub.row_contacts, sub.ring.zctx).numbers
         parent, depth = None, 0
         wider = wider_component(sub, {}, numbers)
         if wider is not None:  # the slice lies in a component of a wider chart
