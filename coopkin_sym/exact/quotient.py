@@ -27,13 +27,13 @@ True
 from __future__ import annotations
 
 from collections.abc import Sequence
-from math import factorial
 
 import flint
 
 from coopkin_sym.errors import ArgumentError, BlockTooLarge
 from coopkin_sym.exact.deadline import check
 from coopkin_sym.exact.elimination import combine, primitive
+from coopkin_sym.exact.substitution import coefficients_in
 
 Poly = flint.fmpz_mpoly
 
@@ -75,8 +75,8 @@ class Quotient:
         if p.is_zero() or p.degrees()[self.k] < self.degree:
             return p, 0
         if self._coeffs is None:
-            self._coeffs = _split(self.f, self.k)
-        c = _split(p, self.k)
+            self._coeffs = coefficients_in(self.f, self.k)
+        c = coefficients_in(p, self.k)
         f, d, n = self._coeffs, self.degree, 0
         while len(c) > d:
             check("a reduction modulo a polynomial")
@@ -153,20 +153,6 @@ def _coefficient(p: Poly, k: int, e: int) -> Poly:
     """The coefficient of ``x_k^e`` in ``p`` (a polynomial free of ``x_k``)."""
     terms = {m[:k] + (0,) + m[k + 1:]: c for m, c in p.to_dict().items() if m[k] == e}
     return p.context().from_dict(terms)
-
-
-def _split(p: Poly, k: int) -> list[Poly]:
-    """The coefficients of ``p`` in ``x_k`` (free of it), lowest degree first: the
-    ``e``-th is the ``e``-th derivative in ``x_k`` at ``x_k = 0`` over ``e!`` (flint's
-    own operations, no pass over the terms in Python)."""
-    top = p.degrees()[k]
-    name = p.context().names()[k]
-    out = []
-    for e in range(top + 1):
-        out.append(p.subs({name: 0}) / factorial(e) if e else p.subs({name: 0}))
-        if e < top:
-            p = p.derivative(name)
-    return out
 
 
 def _join(coeffs: Sequence[Poly], x: Poly) -> Poly:
@@ -278,12 +264,6 @@ def rank_modulo(rows: Sequence[Sequence[Poly]], ncols: int, quotient: Quotient) 
     return pivots
 
 
-def coefficients_in(p: Poly, j: int) -> list[Poly]:
-    """``p`` as a polynomial in variable ``j``: its coefficients (free of ``x_j``),
-    lowest degree first."""
-    return _split(p, j)
-
-
 def gcd_modulo(polys: Sequence[Sequence[Poly]], quotient: Quotient,
                max_terms: int | None = None) -> list[Poly]:
     """The gcd, over the fraction field of ``quotient``, of polynomials in a further
@@ -392,5 +372,5 @@ def smallest_fraction(num: Poly, den: Poly, quotient: Quotient) -> tuple[Poly, P
     return num / g, den / g
 
 
-__all__ = ["Quotient", "Tower", "coefficients_in", "eliminate_modulo", "gcd_modulo",
+__all__ = ["Quotient", "Tower", "eliminate_modulo", "gcd_modulo",
            "nullspace_modulo", "rank_modulo", "smallest_fraction"]

@@ -16,7 +16,7 @@ Example
 
 from __future__ import annotations
 
-from math import gcd
+from math import factorial, gcd
 
 from coopkin_sym.exact.deadline import check
 
@@ -136,16 +136,36 @@ def substitute(p, k: int, f0, f1, deg: int, powers: Powers | None = None):
         return p
     zctx = p.context()
     powers = powers if powers is not None else Powers(f0, f1)
-    by_power: dict[int, dict] = {}
-    for mon, c in p.to_dict().items():
-        e = mon[k]
-        rest = tuple(0 if i == k else x for i, x in enumerate(mon))
-        by_power.setdefault(e, {})[rest] = c
     acc = zctx.constant(0)
-    for e, terms in by_power.items():
+    for e, c in enumerate(coefficients_in(p, k)):
         check("a substitution")
-        acc = acc + zctx.from_dict(terms) * powers.term(e, deg)
+        if not c.is_zero():
+            acc = acc + c * powers.term(e, deg)
     return acc
 
 
-__all__ = ["Powers", "common_part", "split_linear", "substitute", "substitute_rows"]
+def coefficients_in(p, k: int) -> list:
+    """The coefficients of ``p`` in ``x_k`` (free of it), lowest degree first: the
+    ``e``-th is the ``e``-th derivative in ``x_k`` at ``x_k = 0`` over ``e!`` (flint's
+    own operations, no pass over the terms in Python).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> [str(c) for c in coefficients_in(3 * x**2 * y + x + y, 0)]
+    ['y', '1', '3*y']
+    """
+    top = p.degrees()[k]
+    name = p.context().names()[k]
+    out = []
+    for e in range(top + 1):
+        out.append(p.subs({name: 0}) / factorial(e) if e > 1 else p.subs({name: 0}))
+        if e < top:
+            p = p.derivative(name)
+    return out
+
+
+__all__ = ["Powers", "coefficients_in", "common_part", "split_linear", "substitute",
+           "substitute_rows"]

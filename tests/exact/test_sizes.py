@@ -12,8 +12,9 @@ import pytest
 import sympy as sp
 
 from coopkin_sym.exact.elimination import determinant
-from coopkin_sym.exact.quotient import Quotient, coefficients_in
+from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.sizes import determinant_terms, resultant_terms, terms_bound
+from coopkin_sym.exact.substitution import coefficients_in
 
 CTX = flint.fmpz_mpoly_ctx.get(("a", "b", "x"), "degrevlex")
 A, B, X = CTX.gens()

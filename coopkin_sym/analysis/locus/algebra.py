@@ -32,10 +32,10 @@ from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.polynomial import NamedPolynomial, integer_text
 from coopkin_sym.exact.quotient import Quotient, gcd_modulo
-from coopkin_sym.exact.quotient import coefficients_in as coefficients_of
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot, real_root_count
 from coopkin_sym.exact.sizes import resultant_terms
+from coopkin_sym.exact.substitution import coefficients_in as coefficients_of
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
