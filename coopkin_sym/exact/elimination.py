@@ -46,13 +46,35 @@ def _size(p: Poly) -> tuple[int, int, int]:
     return (p.total_degree(), len(coeffs), max(abs(int(c)).bit_length() for c in coeffs))
 
 
-def primitive(row: Sequence[Poly]) -> Row:
+#: The most terms of both sides of a gcd taken only to shrink a row (its content, or the
+#: common part of two entries in :func:`combine`) when a caller bounds it: flint cannot
+#: interrupt a gcd, and one between two such polynomials can take minutes. Above it the
+#: row keeps its factor (the same span: every rank stays right).
+CONTENT_GCD_TERMS = 20_000
+
+
+def primitive(row: Sequence[Poly], max_terms: int | None = None) -> Row:
     """``row`` divided by the gcd of its entries, its first nonzero entry made to have
-    a positive leading coefficient; a zero row is returned unchanged."""
+    a positive leading coefficient; a zero row is returned unchanged. With
+    ``max_terms``: a gcd whose two sides both have more terms is not taken, and the row
+    is returned as it is (a multiple of its primitive part).
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x",), "degrevlex")
+    >>> (x,) = ctx.gens()
+    >>> [str(e) for e in primitive([-2 * x, 4 * x**2])]
+    ['1', '-2*x']
+    >>> [str(e) for e in primitive([2 * x + 2, 2 * x**2 + 2], max_terms=1)]
+    ['2*x + 2', '2*x^2 + 2']
+    """
     g = None
     # the smallest entries first: the gcd only shrinks, so each later gcd has a small
     # polynomial on one side (and a constant one ends it)
     for e in sorted((e for e in row if not e.is_zero()), key=len):
+        if g is not None and max_terms is not None and min(len(g), len(e)) > max_terms:
+            return list(row)
         g = e if g is None else g.gcd(e)
         if g.is_one():
             break
@@ -71,11 +93,14 @@ def _is_zero_row(row: Sequence[Poly]) -> bool:
 
 
 def combine(target: Sequence[Poly], pivot_row: Sequence[Poly], col: int,
-            reduce_row: Callable[[list[Poly]], list[Poly]] | None = None) -> Row:
+            reduce_row: Callable[[list[Poly]], list[Poly]] | None = None,
+            max_terms: int | None = None) -> Row:
     """The one row update of every elimination of the package: ``target`` with its
     entry in ``col`` cleared by ``pivot_row``, as ``(p/g) target - (a/g) pivot_row``
     with ``p``, ``a`` the two entries and ``g = gcd(p, a)``, reduced by ``reduce_row``
-    (in a quotient ring) and made primitive. The entry ``a`` must be nonzero.
+    (in a quotient ring) and made primitive. The entry ``a`` must be nonzero. With
+    ``max_terms``: no gcd between two polynomials both over that many terms
+    (``g = 1``, and see :func:`primitive`).
 
     Example
     -------
@@ -87,10 +112,13 @@ def combine(target: Sequence[Poly], pivot_row: Sequence[Poly], col: int,
     ['0', '1']
     """
     a, p = target[col], pivot_row[col]
-    g = p.gcd(a)
-    pg, ag = p / g, a / g
+    if max_terms is not None and min(len(p), len(a)) > max_terms:
+        pg, ag = p, a
+    else:
+        g = p.gcd(a)
+        pg, ag = p / g, a / g
     out = [pg * x - ag * y for x, y in zip(target, pivot_row, strict=True)]
-    return primitive(reduce_row(out) if reduce_row is not None else out)
+    return primitive(reduce_row(out) if reduce_row is not None else out, max_terms)
 
 
 def _eliminate_checked(target: Row, pivot_row: Row, col: int) -> Row:

@@ -32,7 +32,7 @@ import flint
 
 from coopkin_sym.errors import ArgumentError, BlockTooLarge
 from coopkin_sym.exact.deadline import check
-from coopkin_sym.exact.elimination import combine, primitive
+from coopkin_sym.exact.elimination import CONTENT_GCD_TERMS, combine, primitive
 from coopkin_sym.exact.substitution import coefficients_in
 
 Poly = flint.fmpz_mpoly
@@ -175,13 +175,16 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
                      quotient: Quotient) -> tuple[int, list[list[Poly]]]:
     """Fraction-free elimination over the fraction field of ``quotient`` on the given
     columns: the number of pivots found there, and the rows left over (zero in those
-    columns), reduced and primitive.
+    columns), reduced, and primitive unless that needs a gcd of two polynomials over
+    :data:`~coopkin_sym.exact.elimination.CONTENT_GCD_TERMS` terms (flint cannot
+    interrupt it; the row then keeps its factor, which no rank notices).
 
     Dividing a row by the gcd of its reduced entries is safe: that gcd has degree in
     ``x_k`` below ``deg_k f``, so ``f`` does not divide it.
     """
+    bound = CONTENT_GCD_TERMS   # only ranks are asked: a row may keep a large factor
     left = [quotient.reduce_row(row) for row in rows]
-    left = [primitive(r) for r in left if any(not e.is_zero() for e in r)]
+    left = [primitive(r, bound) for r in left if any(not e.is_zero() for e in r)]
     pivots = 0
     for col in columns:
         candidates = [i for i, r in enumerate(left) if not r[col].is_zero()]
@@ -194,7 +197,7 @@ def eliminate_modulo(rows: Sequence[Sequence[Poly]], columns: Sequence[int],
         for r in left:
             check("an elimination modulo a polynomial")
             if not r[col].is_zero():
-                r = combine(r, prow, col, quotient.reduce_row)
+                r = combine(r, prow, col, quotient.reduce_row, bound)
                 if all(e.is_zero() for e in r):
                     continue
             out.append(r)

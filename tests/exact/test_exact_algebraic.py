@@ -312,6 +312,23 @@ def test_random_rank_on_the_circle_matches_rational_parametrization(matrix):
     assert got == reference_rank(matrix, CIRCLE_POINT)
 
 
+@settings(max_examples=30, deadline=None)
+@given(xy_matrices())
+def test_rows_that_keep_their_content_give_the_same_ranks(matrix):
+    # no gcd at all (both sides always over the bound): the rows keep every factor,
+    # the ranks do not change
+    from coopkin_sym.exact import quotient
+
+    ncols = len(matrix[0])
+    before = quotient.CONTENT_GCD_TERMS
+    quotient.CONTENT_GCD_TERMS = 0
+    try:
+        got = rank_modulo(flint_rows(matrix), ncols, Quotient(CIRCLE, 0))
+    finally:
+        quotient.CONTENT_GCD_TERMS = before
+    assert got == reference_rank(matrix, CIRCLE_POINT)
+
+
 # ------------------------------------------------------------------ the circle
 
 
