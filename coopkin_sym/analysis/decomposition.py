@@ -92,14 +92,15 @@ def attains(q_rows, model: Model, numbers: Numbers) -> bool:
 
     Example
     -------
-    >>> from coopkin_sym.analysis import kinematics
+    >>> from coopkin_sym.analysis.kinematics import build, q_at_pi
+    >>> from coopkin_sym.analysis.numbers import numbers_from_ranks
     >>> from coopkin_sym.model import load_model
     >>> from coopkin_sym.model.configuration import Configuration
-    >>> model = load_model("paper-case1-hard")
-    >>> kin = kinematics.build(model, Configuration.parse(model, "L=1", free=["q1", "q2"]))
-    >>> rows = [kin.ring.clear_row(r) for r in kin.Q]
-    >>> generic = decompose(rows, model, kin.row_contacts, kin.ring.zctx).numbers
-    >>> attains(rows, model, generic)
+    >>> m = load_model("paper-case1-hard")
+    >>> chart = build(m, Configuration.parse(m, "L=1", free=["q1", "q2"]))
+    >>> ring, _, q = q_at_pi(chart, ["q1"])                # the slice q1 = pi
+    >>> generic = numbers_from_ranks(6, 2, 6, 5, 2, dim=6)   # the chart's: Nm = 2
+    >>> attains([ring.clear_row(r) for r in q], m, generic)
     True
     """
     dim, r = model.object_dim, len(model.joints)
