@@ -21,6 +21,7 @@ Run ``python benchmarks/bench_locus.py [--quick]``.
 from __future__ import annotations
 
 import math
+import resource
 import sys
 import tempfile
 import time
@@ -64,12 +65,69 @@ def _generic_ranks(locus, m: int, r: int) -> tuple[int, int, int]:
     return 6 + r - g["Nm"], 6 - g["Ni"], r - g["Nr"]
 
 
+class _Phases:
+    """CPU seconds of one search and of its slices at q = pi (``pi_slices`` timed from
+    outside: the package is not changed to be measured)."""
+
+    def __init__(self):
+        self.slices = 0.0
+
+    def __enter__(self):
+        import coopkin_sym.analysis.locus.search as search
+        self._search, self._inner = search, search.pi_slices
+
+        def timed(*args, **kwargs):
+            t = time.process_time()
+            try:
+                return self._inner(*args, **kwargs)
+            finally:
+                self.slices += time.process_time() - t
+        search.pi_slices = timed
+        return self
+
+    def __exit__(self, *exc):
+        self._search.pi_slices = self._inner
+
+
+def _cpu() -> float:
+    """CPU seconds of this process and of its children that have ended (a bounded step
+    or a picture may run in a worker process)."""
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + children.ru_utime + children.ru_stime
+
+
 def _ours(system, max_depth: int, timeout: float | None = None):
-    t0 = time.perf_counter()
-    locus = compute_locus(system, max_depth=max_depth, timeout=timeout)
+    """The locus and its report from a cold start: the locus, wall seconds in all, and
+    the CPU seconds of the search, of its slices at q = pi and of the report."""
+    t0, c0 = time.perf_counter(), _cpu()
+    with _Phases() as phases:
+        locus = compute_locus(system, max_depth=max_depth, timeout=timeout)
+    c1 = _cpu()
     with tempfile.TemporaryDirectory() as tmp:
         write_report(locus, Path(tmp) / "report.html", system=system)
-    return locus, time.perf_counter() - t0
+    cpu = {"search": c1 - c0, "slices": phases.slices, "report": _cpu() - c1}
+    return locus, time.perf_counter() - t0, cpu
+
+
+def _where(cpu: dict) -> str:
+    """Where the CPU time went, in words."""
+    return (f"CPU: search {cpu['search']:.2f} s (t chart {cpu['search'] - cpu['slices']:.2f}"
+            f" s, slices at q = pi {cpu['slices']:.2f} s), report {cpu['report']:.2f} s")
+
+
+#: The issue's goals: search and report in CPU seconds (case 2: and certified).
+TARGETS = {"five-bar": 5.0, "planar hand, 3 fingers x 3 joints": 5.0,
+           "paper-case2-hard": 10.0}
+
+
+def _target(name: str, cpu: dict) -> dict:
+    goal = TARGETS[name]
+    total = cpu["search"] + cpu["report"]
+    verdict = "met" if total <= goal else "not met"
+    return {"benchmark": "target", "case": f"locus of {name}, search and report",
+            "ours_s": total, "baseline": "-", "baseline_s": None, "ratio": None,
+            "note": f"goal: under {goal:g} s of CPU: {verdict} ({total:.2f} s); "
+                    f"certified: not run here (see bench_certify); {_where(cpu)}"}
 
 
 def _summary(locus) -> str:
@@ -85,7 +143,7 @@ def _summary(locus) -> str:
 
 def bench_grid_case1(step_deg: int) -> dict:
     system = coopkin_sym.load("paper-case1-hard")
-    locus, ours = _ours(system, max_depth=2)
+    locus, ours, cpu = _ours(system, max_depth=2)
     f, shape, names, r = _float_q(system)
     t0 = time.perf_counter()
     q = np.radians(np.arange(-180, 180 + step_deg, step_deg))              # float-ok
@@ -99,14 +157,15 @@ def bench_grid_case1(step_deg: int) -> dict:
                 f"({len(args[0])} points)",
         "ours_s": ours, "baseline": "batched numpy Q + matrix_rank on the grid",
         "baseline_s": base, "ratio": base / ours,
-        "note": f"{_summary(locus)}; float grid: {int(flagged.sum())} grid points flagged, "
-                "with no equations, no numbers and nothing between grid points",
+        "note": f"{_summary(locus)}; {_where(cpu)}; float grid: {int(flagged.sum())} grid "
+                "points flagged, with no equations, no numbers and nothing between grid "
+                "points",
     }
 
 
 def bench_random(name: str, system, samples: int, max_depth: int,
-                 timeout: float | None = None) -> dict:
-    locus, ours = _ours(system, max_depth=max_depth, timeout=timeout)
+                 timeout: float | None = None) -> list[dict]:
+    locus, ours, cpu = _ours(system, max_depth=max_depth, timeout=timeout)
     f, shape, names, r = _float_q(system)
     rng = np.random.default_rng(1992)
     t0 = time.perf_counter()
@@ -115,15 +174,15 @@ def bench_random(name: str, system, samples: int, max_depth: int,
             for n in names]
     flagged = _float_singular(f, shape, args, r, _generic_ranks(locus, shape[0], r))
     base = time.perf_counter() - t0
-    return {
+    return [{
         "benchmark": "singularity-locus report vs float random search",
         "case": f"{name}, all {len(names)} joint variables free; {samples} random "
                 "configurations for the float search",
         "ours_s": ours, "baseline": "batched numpy Q + matrix_rank at random points",
         "baseline_s": base, "ratio": base / ours,
-        "note": f"{_summary(locus)}; float search: {int(flagged.sum())} of {samples} "
-                "random configurations flagged (the locus has measure zero)",
-    }
+        "note": f"{_summary(locus)}; {_where(cpu)}; float search: {int(flagged.sum())} of "
+                f"{samples} random configurations flagged (the locus has measure zero)",
+    }, _target(name, cpu)]
 
 
 def run(quick: bool = False, log=print) -> list[dict]:
@@ -133,15 +192,14 @@ def run(quick: bool = False, log=print) -> list[dict]:
     rows.append(bench_grid_case1(4 if quick else 1))
     samples = 20_000 if quick else 200_000
     log("  locus: five-bar")
-    rows.append(bench_random("five-bar", coopkin_sym.load("five-bar"), samples,
-                             max_depth=2))
+    rows += bench_random("five-bar", coopkin_sym.load("five-bar"), samples, max_depth=2)
     log("  locus: paper case 2, eight joints")
     # capped: a cut search says what it left out (the note counts those items)
-    rows.append(bench_random("paper-case2-hard", coopkin_sym.load("paper-case2-hard"),
-                             samples, max_depth=2, timeout=CASE2_CAP_S))
+    rows += bench_random("paper-case2-hard", coopkin_sym.load("paper-case2-hard"),
+                         samples, max_depth=2, timeout=CASE2_CAP_S)
     log("  locus: planar three-finger hand")
-    rows.append(bench_random("planar hand, 3 fingers x 3 joints",
-                             coopkin_sym.load(planar_hand(3, 3)), samples, max_depth=1))
+    rows += bench_random("planar hand, 3 fingers x 3 joints",
+                         coopkin_sym.load(planar_hand(3, 3)), samples, max_depth=1)
     return rows
 
 

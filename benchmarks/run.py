@@ -2,6 +2,7 @@
 ``scaling.png`` (and ``scaling_speed.png`` from ``bench_speed``) next to this file.
 
     python benchmarks/run.py [--quick] [--rows FILE] [--replay FILE [--again MODULE]]
+                             [--before FILE]
 
 Each benchmark module has ``run(quick) -> list[dict]`` with rows
 ``{"benchmark", "case", "ours_s", "baseline", "baseline_s", "ratio", "note"}``
@@ -13,6 +14,8 @@ as JSON after each module, and ``--replay FILE`` writes the table, ``RESULTS.md`
 plots from such a file without measuring again (a run stopped late loses nothing);
 with ``--again MODULE`` that one module is measured again first, its rows and time
 replacing the saved ones in the file (a module that failed, rerun after a fix).
+``--before FILE`` (rows saved by an earlier run) adds a before/after table of our times
+to ``RESULTS.md``, case by case, each side with the package commit it measured.
 """
 
 from __future__ import annotations
@@ -217,6 +220,40 @@ def _save_rows(path: Path, rows: list[dict], durations: list, quick: bool,
     os.replace(tmp, path)
 
 
+def _commit_of(info) -> str:
+    """The package commit a run's machine table names."""
+    for k, v in info:
+        if k == "package code":
+            return v.split()[1] if v.startswith("commit ") else v
+    return "?"
+
+
+def before_after(before: dict, rows: list[dict], info) -> list[str]:
+    """The lines of the before/after table: our time of every (benchmark, case) that
+    both runs measured (its first row), with the ratio of the two."""
+    earlier: dict[tuple, dict] = {}
+    for r in before["rows"]:
+        earlier.setdefault((r.get("benchmark"), r.get("case")), r)
+    old, new = _commit_of(before["machine"]), _commit_of(info)
+    out = [f"## Before and after: package commit {old} and {new}", "",
+           "Our time of each case both runs measured (`speedup = before / after`; the "
+           "earlier run is `" + before.get("source", "--rows") + "`).", "",
+           f"| benchmark | case | before ({old}) | after ({new}) | speedup |",
+           "|---|---|---|---|---|"]
+    seen = set()
+    for r in rows:
+        key = (r.get("benchmark"), r.get("case"))
+        b = earlier.get(key)
+        if key in seen or b is None:
+            continue
+        seen.add(key)
+        a_s, b_s = r.get("ours_s"), b.get("ours_s")
+        ratio = (f"{b_s / a_s:.3g}" if isinstance(a_s, float | int) and a_s
+                 and isinstance(b_s, float | int) else "-")
+        out.append(f"| {key[0]} | {key[1]} | {_seconds(b_s)} | {_seconds(a_s)} | {ratio} |")
+    return out + [""]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="small sizes, short caps")
@@ -227,6 +264,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--again", choices=MODULES, metavar="MODULE",
                         help="with --replay: measure this module again, in place of its "
                              "saved rows")
+    parser.add_argument("--before", type=Path, metavar="FILE",
+                        help="rows of an earlier run (saved by --rows): a before/after "
+                             "table of our times in RESULTS.md")
     args = parser.parse_args(argv)
     if args.again and not args.replay:
         parser.error("--again needs --replay FILE")
@@ -280,6 +320,8 @@ def main(argv: list[str] | None = None) -> int:
               "`>=` marks a lower bound (the baseline was stopped at its cap). "
               "See `benchmarks/README.md` for what each row measures.", "",
               markdown_table(rows), ""]
+    if args.before:
+        lines += before_after(json.loads(args.before.read_text()), rows, info)
     if has_plot:
         lines += ["![scaling](scaling.png)", ""]
     if has_speed_plot:

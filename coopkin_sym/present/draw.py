@@ -204,7 +204,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
     if isinstance(a, _AtIrrational):
-        where = assignments_text(a.exact.at)
+        where = assignments_text(a.at)
     else:
         where = configuration_words(a)
     n = a.numbers
@@ -214,7 +214,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     lines.append(line)
     note = values.note(a)
     if isinstance(a, _AtIrrational):
-        exact = (f"{', '.join(f'tan({j}/2)' for j in a.exact.tangents)} irrational: "
+        exact = (f"{', '.join(f'tan({j}/2)' for j in a.tangents)} irrational: "
                  "numbers exact over Q(alpha), drawn at float coordinates")
         note = f"{note}; {exact}" if note else exact
     if note:

@@ -11,8 +11,10 @@ Example
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Any
 
 import sympy as sp
@@ -27,7 +29,7 @@ from coopkin_sym.analysis.mobility import Analysis, analyze
 from coopkin_sym.analysis.numbers import Numbers
 from coopkin_sym.errors import ConfigurationError, DrawError
 from coopkin_sym.exact.angles import tangent_name
-from coopkin_sym.exact.parse import brief
+from coopkin_sym.exact.parse import NumberError, brief, parse_angle
 from coopkin_sym.model.configuration import Configuration
 from coopkin_sym.model.model import Model, load_model, model_of
 
@@ -135,18 +137,17 @@ def gained_motion(here: Mapping[str, int], generic: Mapping[str, int]
 @dataclass(frozen=True)
 class _AtIrrational:
     """What a picture needs at a configuration with irrational tangents: the exact
-    analysis there (its numbers), the geometry with those joints symbolic, and for
-    each of their ``tan(q/2)`` a rational within ``1e-30`` to draw it at."""
+    assignments ``at`` (texts) and ``numbers`` there, the joints whose ``tan(q/2)`` is
+    irrational (``tangents``), the geometry with those joints symbolic, and for each of
+    their ``tan(q/2)`` a rational next to it to draw it at (``near``)."""
 
     model: Model
     kinematics: Any
     configuration: Configuration
-    exact: IrrationalAnalysis
+    at: Mapping[str, str]
+    tangents: tuple[str, ...]
+    numbers: Numbers
     near: dict[str, sp.Rational]
-
-    @property
-    def numbers(self) -> Numbers:
-        return self.exact.numbers
 
 
 def _near(value: sp.Expr) -> sp.Rational:
@@ -162,11 +163,60 @@ def _at_irrational(model: Model, at: str | Mapping) -> _AtIrrational | None:
         return None
     exact = analyze_irrational(model, at)
     config = Configuration.parse(model, dict(rational), free=list(irrational))
-    return _AtIrrational(model, kinematics.build(model, config), config, exact,
+    return _AtIrrational(model, kinematics.build(model, config), config, dict(exact.at),
+                         tuple(exact.tangents), exact.numbers,
                          {tangent_name(n): _near(v) for n, v in irrational.items()})
 
 
+def at_algebraic_witness(model: Model, at: Mapping[str, str], approx: Mapping[str, str],
+                         numbers: Numbers) -> _AtIrrational:
+    """What :func:`~coopkin_sym.present.draw.draw_system` draws at a locus component's
+    algebraic witness, from what the search knows of it: its exact values ``at`` (the
+    title), their approximations ``approx`` (the drawing: a revolute joint whose
+    ``tan(q/2)`` is irrational at a rational next to it, a length at a rational within
+    1e-9) and its exact ``numbers`` (no analysis is made again, no algebraic value is
+    read back).
+
+    Example
+    -------
+    >>> from coopkin_sym.analysis.numbers import Numbers
+    >>> from coopkin_sym.model import load_model
+    >>> m = load_model("paper-case1-hard")
+    >>> w = at_algebraic_witness(m, {"q1": "2*atan(sqrt(2))", "q2": "0"},
+    ...                          {"q1": "1.91063323625", "q2": "0"},
+    ...                          Numbers(2, 2, 1, 0, 1, 4, 0))
+    >>> w.tangents, w.configuration.free, float(w.near["t_q1"])
+    (('q1',), frozenset({'q1'}), 1.4142135623...)
+    """
+    joints = {j.name: j for j in model.joints}
+    rational: dict[str, str] = {}
+    irrational: dict[str, sp.Rational] = {}
+    for name, text in at.items():
+        joint = joints.get(name)
+        if joint is not None and joint.type == "revolute":
+            try:
+                parse_angle(text, name)
+                rational[name] = text
+            except NumberError:         # drawn at a rational tangent next to it
+                half = math.tan(float(approx[name]) / 2)              # float-ok: drawing
+                irrational[name] = sp.Rational(Fraction(half).limit_denominator(10**12))
+            continue
+        try:
+            Fraction(text)
+            rational[name] = text
+        except ValueError:              # a length: a rational within 1e-9 of it
+            rational[name] = str(Fraction(approx[name]).limit_denominator(10**9))
+    config = Configuration.parse(model, rational, free=list(irrational))
+    return _AtIrrational(model, kinematics.build(model, config), config, dict(at),
+                         tuple(irrational), numbers,
+                         {tangent_name(n): v for n, v in irrational.items()})
+
+
 def _analysis(source: Any, at: str | Mapping | None) -> Analysis | _AtIrrational:
+    if isinstance(source, _AtIrrational):
+        if at is not None:
+            raise DrawError("at: this drawing already has its configuration")
+        return source
     if isinstance(source, Analysis):
         if at is not None:
             raise DrawError("at: this analysis already has its configuration; pass the "

@@ -78,3 +78,33 @@ def test_an_irrational_length_is_drawn_at_a_rational_value_and_said():
     drawn = caption.split("Drawn with q4 = ")[1].split(" ")[0]
     assert abs(Fraction(drawn) + Fraction(3) * Fraction("1.7320508075688772") / 5) < 1e-9
     assert "its algebraic witness q1=pi/3" in caption and "q4=-3*sqrt(3)/5" in caption
+
+
+def test_a_picture_at_an_algebraic_witness_uses_what_the_search_knows(case1, monkeypatch):
+    """The search's exact numbers there and the witness's approximations: no analysis
+    is made again, no algebraic value read back; the same numbers and, within 1e-9,
+    the same drawing values as the analysis from the witness's text."""
+    from coopkin_sym.present import draw_inputs
+    from coopkin_sym.present.report.pictures import _witness_point, system_picture_jobs
+
+    system, locus = case1
+    comp = locus.components[4]
+    at, exact = _witness_point(comp)
+    assert not exact
+    from_text = draw_inputs._at_irrational(system.model, at)
+    given = draw_inputs.at_algebraic_witness(system.model, at,
+                                             comp.algebraic_witness["approx"],
+                                             comp.shown.numbers)
+    assert given.numbers == from_text.numbers and given.tangents == tuple(from_text.tangents)
+    assert given.configuration == from_text.configuration
+    assert given.near.keys() == from_text.near.keys()
+    assert all(abs(given.near[n] - from_text.near[n]) < 1e-9 for n in given.near)
+
+    def refused(*args, **kwargs):
+        raise AssertionError("analyzed again")
+    monkeypatch.setattr(draw_inputs, "analyze_irrational", refused)
+    monkeypatch.setattr(draw_inputs, "irrational_values", refused)
+    jobs = system_picture_jobs(locus, system, dpi=40)
+    png, (_, name, caption) = jobs[4][1]()
+    assert png.startswith(b"\x89PNG") and name == "component 5"
+    assert "indeterminate motions: 1 generically, 3 here" in caption

@@ -74,6 +74,10 @@ class Value:
 
     def approximation(self) -> float:  # float-ok: for display only
         """The value as a float (radians for an angle), for display only."""
+        return self._approximation
+
+    @cached_property
+    def _approximation(self) -> float:  # float-ok: display only; kept once evaluated
         return float(sp.N(self.value, 30))  # float-ok: display only
 
 

@@ -23,6 +23,7 @@ from coopkin_sym.errors import DrawError, OutputSkipped
 from coopkin_sym.model.configuration import Point
 from coopkin_sym.present.conditions import report_names, short_condition
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
+from coopkin_sym.present.draw_inputs import at_algebraic_witness
 
 # key of a picture of the system at a witness among the plots
 SYSTEM_PICTURE = "system"
@@ -56,6 +57,21 @@ def _witness_analysis(system: Any, comp: Component) -> Analysis | None:
     if isinstance(comp.witness, Point):
         return Analysis(system.model, comp.witness)
     return None
+
+
+def _at_witness(system: Any, comp: Component, at: Mapping[str, str]):
+    """What the picture at an algebraic witness is drawn from: the search's exact
+    numbers there and the witness's approximations (nothing is analyzed again, no
+    algebraic value read back); None when the component does not carry them (a
+    witness read back as text: then it is analyzed from its text)."""
+    shown = getattr(comp, "shown", None)
+    approx = (comp.algebraic_witness or {}).get("approx")
+    if shown is None or not approx:
+        return None
+    try:
+        return at_algebraic_witness(system.model, at, approx, shown.numbers)
+    except KeyError:        # a value without its approximation
+        return None
 
 
 def drawable_components(locus: Locus) -> list[int]:
@@ -128,10 +144,11 @@ class _SystemPicture:
         motion = gained_motion(comp.numbers, locus.generic)
         at_text = ",".join(f"{n}={v}" for n, v in at.items())
         title = f"{locus.system}: component {k + 1}"
-        held = _witness_analysis(system, comp) if exact else None
         near = {} if exact else _lengths_near(system, comp, at)
         if near:
             at_text = ",".join(f"{n}={near.get(n, v)}" for n, v in at.items())
+        held = _witness_analysis(system, comp) if exact else _at_witness(
+            system, comp, {n: near.get(n, v) for n, v in at.items()})
         drawn_at = (held, None) if held is not None else (system, at_text)
         try:
             fig = draw_system(*drawn_at, title=title,
