@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -89,13 +89,22 @@ class _Drawn:
     whole: bool = False
 
 
-def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis
+def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis,
+            tops: Callable[[int, tuple[str, ...]], sp.Expr] | None = None
             ) -> list[tuple[float, float]]:  # float-ok: plotting
     """Real common zeros of ``polys`` (gcd 1, so finitely many), in the plane's
-    coordinates, including the ones where a variable is infinite."""
+    coordinates, including the ones where a variable is infinite. ``tops(k, names)``:
+    the top coefficient of ``polys[k]`` in the variables ``names`` (in turn), when the
+    caller has it cheaper than SymPy."""
     out = []
     x, y = ax.symbol, ay.symbol
-    polys = [p for p in polys if p != 0]
+    nonzero = [k for k, p in enumerate(polys) if p != 0]
+
+    def top(k: int, names: tuple[str, ...]) -> sp.Expr:   # k among the nonzero ones
+        if tops is not None:
+            return tops(nonzero[k], names)
+        return _substitute(polys[nonzero[k]], dict.fromkeys(names, INFINITY))
+    polys = [polys[k] for k in nonzero]
     if not polys or any(p.is_number for p in polys):
         return out
     try:
@@ -110,11 +119,11 @@ def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis
     for inf, other, swap in ((ax, ay, False), (ay, ax, True)):
         if inf.at_infinity is None:
             continue
-        tops = [_substitute(p, {inf.variable: INFINITY}) for p in polys]
-        tops = [t for t in tops if t != 0]
-        if tops and any(t.is_number for t in tops):
+        lead = [top(k, (inf.variable,)) for k in range(len(polys))]
+        lead = [t for t in lead if t != 0]
+        if lead and any(t.is_number for t in lead):
             continue
-        g = functools.reduce(sp.gcd, tops) if tops else sp.Integer(0)
+        g = functools.reduce(sp.gcd, lead) if lead else sp.Integer(0)
         if g == 0:
             continue
         g = sp.Poly(g, other.symbol)
@@ -123,8 +132,7 @@ def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis
             if value is not None:
                 out.append((value, inf.at_infinity) if swap else (inf.at_infinity, value))
     if ax.at_infinity is not None and ay.at_infinity is not None:
-        both = [_substitute(p, {ax.variable: INFINITY, ay.variable: INFINITY})
-                for p in polys]
+        both = [top(k, (ax.variable, ay.variable)) for k in range(len(polys))]
         if all(b == 0 for b in both):
             out.append((ax.at_infinity, ay.at_infinity))
     return out
@@ -171,8 +179,25 @@ def _in_plane_rational(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _
     if not g.is_constant():
         drawn.curve = sp.Poly(back(g), ax.symbol, ay.symbol)
     if len(polys) > 1:
-        drawn.points = _points([back(f / g) for f in polys], ax, ay)
+        rest = [f / g for f in polys]
+
+        def tops(k: int, variables: tuple[str, ...]) -> sp.Expr:
+            f = rest[k]
+            for v in variables:
+                f = _top_coefficient(f, used.index(v))
+            return back(f)
+        drawn.points = _points([back(f) for f in rest], ax, ay, tops)
     return drawn
+
+
+def _top_coefficient(f, k: int):
+    """The coefficient of the highest power of variable ``k`` in the flint polynomial
+    ``f`` (free of it): what ``f`` over that power tends to at infinity."""
+    if f.is_zero():
+        return f
+    d = f.degrees()[k]
+    return f.context().from_dict({e[:k] + (0,) + e[k + 1:]: c
+                                  for e, c in f.to_dict().items() if e[k] == d})
 
 
 def _in_plane(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _Axis,
