@@ -99,3 +99,23 @@ def test_a_slice_reaching_the_generic_ranks_has_the_generic_numbers(source):
         # on a minor's zero set (a chance of about degree / 2^20)
         assert proved == (exact == generic), joints
     assert True in seen
+
+
+@pytest.mark.parametrize("source", ["paper-case1-hard", "five-bar", "planar-hand-2x2"])
+def test_the_rank_proofs_at_a_point_change_no_locus(source, monkeypatch):
+    """The search proves numbers by ranks at a point where it can (slices at q = pi,
+    candidates whose numbers are the enclosing ones); without those proofs, every
+    number decided over the function field, the locus is the same."""
+    from coopkin_sym.analysis.locus.search import charts, compute_locus, recursion
+
+    system = coopkin_sym.load(planar_hand(2, 2) if source == "planar-hand-2x2" else source)
+
+    def described(locus):
+        return [(tuple(c.equations), tuple(sorted(c.numbers.items())), c.kind)
+                for c in locus.components]
+    fast = compute_locus(system, max_depth=2)
+    monkeypatch.setattr(charts, "attains", lambda *args: False)
+    monkeypatch.setattr(recursion, "attains", lambda *args: False)
+    slow = compute_locus(system, max_depth=2)
+    assert described(fast) == described(slow)
+    assert len(fast.unexplored) == len(slow.unexplored)

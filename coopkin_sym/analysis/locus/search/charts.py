@@ -143,7 +143,7 @@ def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:
                 bound=pi_size))
             continue
         ctx.steps.explore(sub, Place(rows=rows, equations=equations, point={}, depth=depth,
-                                     parent=parent))
+                                     parent=parent, base=numbers))
     if rev:
         ctx.locus.notes.append(Remark.of("pi_chart"))
 

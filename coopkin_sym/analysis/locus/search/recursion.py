@@ -5,6 +5,7 @@ to the seams below that call back into them (through ``ctx.steps``).
 
 from __future__ import annotations
 
+from coopkin_sym.analysis.decomposition import attains
 from coopkin_sym.analysis.locus.algebra import (
     bounded_factor,
     bounded_gcd,
@@ -50,8 +51,10 @@ def explore(ctx: SearchContext, place: Place) -> None:
         ctx.locus.unexplored.append(Remark.of("time_depth", depth=place.depth,
                                               equations=place.equations))
         return
-    place = place.inside(base=decompose(place.rows, ctx.model, ctx.row_contacts,
-                                        ctx.ring.zctx).numbers)
+    # the enclosing numbers bound the ranks here: reaching them at a point proves them
+    if place.base is None or not attains(place.rows, ctx.model, place.base):
+        place = place.inside(base=decompose(place.rows, ctx.model, ctx.row_contacts,
+                                            ctx.ring.zctx).numbers)
     ctx.deferred.append([])
     cands = candidates(ctx, place.rows)
     factors: dict[str, tuple] = {}
@@ -139,7 +142,10 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
     eqs = place.equations + [f_text]
     chart_points(ctx, place.inside(equations=eqs), f0, f1)
-    numbers = decompose(sub_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+    # f = 0 lies in the place: its ranks are at most the place's, and reaching them at
+    # a point of it proves its numbers are the place's
+    numbers = place.base if attains(sub_rows, ctx.model, place.base) else decompose(
+        sub_rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
     sub_point = dict(place.point)
     sub_point[linear] = (f0, f1)
     inside = place.inside(rows=sub_rows, equations=eqs, point=sub_point, charts=sub_charts)
