@@ -53,7 +53,6 @@ import numpy as np  # float-ok: drawing coordinates
 from coopkin_sym.analysis.mobility import Analysis
 from coopkin_sym.errors import DrawError, OutputSkipped
 from coopkin_sym.exact.bounded import report
-from coopkin_sym.model.configuration import assignments_text
 from coopkin_sym.present.draw_inputs import (
     MOTION_KINDS,
     _analysis,
@@ -204,7 +203,7 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     _frame(ax, scene, a.model.planar)
     lines = [title if title is not None else a.model.name]
     if isinstance(a, _AtIrrational):
-        where = assignments_text(a.at)
+        where = a.short_at()
     else:
         where = configuration_words(a)
     n = a.numbers
@@ -214,8 +213,8 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     lines.append(line)
     note = values.note(a)
     if isinstance(a, _AtIrrational):
-        exact = (f"{', '.join(f'tan({j}/2)' for j in a.tangents)} irrational: "
-                 "numbers exact over Q(alpha), drawn at float coordinates")
+        exact = (f"{', '.join(f'tan({j}/2)' for j in a.tangents)} irrational (shown "
+                 "rounded): numbers exact over Q(alpha), drawn at float coordinates")
         note = f"{note}; {exact}" if note else exact
     if note:
         lines.append(note)

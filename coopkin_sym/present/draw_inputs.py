@@ -149,6 +149,18 @@ class _AtIrrational:
     numbers: Numbers
     near: dict[str, sp.Rational]
 
+    def short_at(self) -> str:
+        """The configuration for a title: rational values exactly, each irrational
+        angle as its approximation (``q1≈1.91063``; the exact value is long)."""
+        parts = []
+        for name, text in self.at.items():
+            if name in self.tangents:
+                half = float(self.near[tangent_name(name)])       # float-ok: display
+                parts.append(f"{name}≈{2 * math.atan(half):.6g}")  # float-ok
+            else:
+                parts.append(f"{name}={text}")
+        return ",".join(parts)
+
 
 def _near(value: sp.Expr) -> sp.Rational:
     """A rational within ``1e-30`` of a real algebraic number (for drawing only)."""

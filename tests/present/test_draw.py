@@ -326,3 +326,18 @@ def test_too_many_names_are_left_out_and_said():
     fig = draw_system(load(arm_cell(10, 3)))           # 40 names: drawn
     assert len([t for t in fig.axes[0].texts
                 if (t.get_gid() or "").startswith("label:")]) > 20
+
+
+def test_an_irrational_angle_is_named_rounded_in_the_title():
+    """q1 = -pi/6 has tan(q1/2) = -2 + sqrt(3): the title gives it rounded, the
+    numbers exactly (those over Q(sqrt(3)))."""
+    from coopkin_sym import load
+    from coopkin_sym.present.draw import draw_system
+
+    system = load("paper-case1-hard")
+    fig = draw_system(system, at="q1=-pi/6,q2=pi/6,L=1")
+    title = fig.axes[0].get_title()
+    n = system.analyze("q1=-pi/6,q2=pi/6,L=1").numbers
+    assert "at q1\u2248-0.523599,q2\u22480.523599,L=1" in title
+    assert f"Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}" in title
+    assert "tan(q1/2), tan(q2/2) irrational (shown rounded)" in title
