@@ -544,6 +544,33 @@ def test_a_gcd_or_discriminant_too_large_for_flint_is_not_started(monkeypatch):
     assert not algebra.no_real_zeros(f)
 
 
+
+def test_a_resultant_that_would_outlast_the_time_left_is_not_started(monkeypatch):
+    """Under a time bound, a resultant whose work (degrees, terms and coefficient bits)
+    needs more than the time left is refused and said; without a bound it is taken."""
+    from types import SimpleNamespace
+
+    import flint
+
+    from coopkin_sym.analysis.locus import algebra
+    from coopkin_sym.exact import deadline
+
+    zctx = flint.fmpz_mpoly_ctx.get(("a", "b"), "degrevlex")
+    a, b = zctx.gens()
+    ctx = SimpleNamespace(ring_names=("a", "b"), locus=SimpleNamespace(unexplored=[]))
+    p, q = (2**90 * a**2 + 3 * b**2 - 1), (a - 7 * b**3 + 5)
+    expected = p.resultant(q, "a")
+    assert algebra.bounded_resultant(ctx, p, q, "a") == expected
+    with deadline.time_limit(60):
+        assert algebra.bounded_resultant(ctx, p, q, "a") == expected
+        monkeypatch.setattr(algebra, "RESULTANT_WORK_RATE", 1)   # 1 unit of work a second
+        assert algebra.bounded_resultant(ctx, p, q, "a") is None
+    (remark,) = ctx.locus.unexplored
+    facts = dict(remark.facts)
+    assert remark.kind == "operation_too_slow" and facts["operation"] == "resultant"
+    assert facts["variables"] == ("a", "b") and facts["left"] <= 60 < facts["seconds"]
+
+
 def test_linear_disjointness_over_its_degree_bound_is_not_claimed(monkeypatch):
     """Q(sqrt 2) and Q(sqrt 3) are linearly disjoint (degree 4 compositum); with the
     bound below 4 the resultant is not taken, and nothing is claimed."""

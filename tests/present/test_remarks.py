@@ -32,6 +32,7 @@ SAMPLE_FOR = {("family_too_large", "variables"): ("t_q1", "t_q2"),
               ("lower_dimensional_not_solved", "variables"): ("t_q1", "t_q2", "t_q3"),
               ("block_not_solved", "bound"): (6, 200),
               ("operation_too_large", "variables"): ("t_q1", "t_q2"),
+              ("operation_too_slow", "variables"): ("t_q1", "t_q2"),
               ("inside_not_searched", "limit"): "terms"}
 
 

@@ -34,7 +34,7 @@ from coopkin_sym.exact.polynomial import NamedPolynomial, integer_text
 from coopkin_sym.exact.quotient import Quotient, gcd_modulo
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
 from coopkin_sym.exact.realroot import RealRoot, real_root_count
-from coopkin_sym.exact.sizes import resultant_terms
+from coopkin_sym.exact.sizes import resultant_terms, resultant_work
 from coopkin_sym.exact.substitution import coefficients_in as coefficients_of
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
@@ -55,6 +55,11 @@ FACTOR_TERMS = 100_000
 #: some ``s`` seconds here (measured on dense ones): the largest started is the one the
 #: time left allows.
 RESULTANT_RATE = 25_000
+#: Under a time bound, a resultant of :func:`~coopkin_sym.exact.sizes.resultant_work`
+#: ``w`` is taken to need ``w / RESULTANT_WORK_RATE`` seconds (the slowest rate measured
+#: here, on resultants in two variables with coefficients of up to 120 bits): one that
+#: would not end in the time left is not started.
+RESULTANT_WORK_RATE = 40_000_000
 
 
 def bounded_resultant(ctx: SearchContext, p, q, name: str):
@@ -69,6 +74,14 @@ def bounded_resultant(ctx: SearchContext, p, q, name: str):
     if size > bound:
         _too_large(ctx, "resultant", size, bound, [p, q])
         return None
+    if left is not None:
+        seconds = resultant_work(p, q, ctx.ring_names.index(name)) / RESULTANT_WORK_RATE
+        if seconds > max(left, 0.0):
+            add_once(ctx.locus.unexplored, Remark.of(
+                "operation_too_slow", operation="resultant",
+                variables=[n for n in ctx.ring_names if n in vars_of(ctx, p) + vars_of(ctx, q)],
+                seconds=max(1, round(seconds)), left=max(0, round(left))))
+            return None
     deadline.spend(size, "a resultant")   # under a work budget: one step per term
     return p.resultant(q, name)
 
