@@ -213,8 +213,9 @@ def _draw_into(fig, ax, a: Analysis, request, title: str | None, ellipsoid: bool
     lines.append(line)
     note = values.note(a)
     if isinstance(a, _AtIrrational):
-        exact = (f"{', '.join(f'tan({j}/2)' for j in a.tangents)} irrational (shown "
-                 "rounded): numbers exact over Q(alpha), drawn at float coordinates")
+        rounded = " (shown rounded)" if a.rounded else ""
+        exact = (f"{', '.join(f'tan({j}/2)' for j in a.tangents)} irrational{rounded}: "
+                 "numbers exact over Q(alpha), drawn at float coordinates")
         note = f"{note}; {exact}" if note else exact
     if note:
         lines.append(note)

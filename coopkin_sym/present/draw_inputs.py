@@ -134,6 +134,10 @@ def gained_motion(here: Mapping[str, int], generic: Mapping[str, int]
     return None
 
 
+#: The longest exact value a picture's title writes as it is (longer ones: rounded).
+SHORT_VALUE = 30
+
+
 @dataclass(frozen=True)
 class _AtIrrational:
     """What a picture needs at a configuration with irrational tangents: the exact
@@ -150,16 +154,32 @@ class _AtIrrational:
     near: dict[str, sp.Rational]
 
     def short_at(self) -> str:
-        """The configuration for a title: rational values exactly, each irrational
-        angle as its approximation (``q1≈1.91063``; the exact value is long)."""
+        """The configuration for a title: each value exactly, but an irrational angle
+        whose exact text is long (a root of a quartic) as its approximation
+        (``q1~0.636476``, with the sign for "approximately").
+
+        Example
+        -------
+        >>> from coopkin_sym.model import load_model
+        >>> a = at_algebraic_witness(load_model("paper-case1-hard"),
+        ...     {"q1": "2*atan(CRootOf(x**4 - 10*x**2 + 1, 2))", "q2": "-pi/6"},
+        ...     {"q1": "0.636476277", "q2": "-0.523598776"}, Numbers(2, 2, 1, 0, 1, 4, 0))
+        >>> a.short_at() == "q1\u22480.636476,q2=-pi/6"
+        True
+        """
         parts = []
         for name, text in self.at.items():
-            if name in self.tangents:
+            if name in self.tangents and len(str(text)) > SHORT_VALUE:
                 half = float(self.near[tangent_name(name)])       # float-ok: display
-                parts.append(f"{name}≈{2 * math.atan(half):.6g}")  # float-ok
+                parts.append(f"{name}\u2248{2 * math.atan(half):.6g}")  # float-ok
             else:
                 parts.append(f"{name}={text}")
         return ",".join(parts)
+
+    @property
+    def rounded(self) -> bool:
+        """Whether :meth:`short_at` rounds a value."""
+        return any(len(str(self.at[n])) > SHORT_VALUE for n in self.tangents)
 
 
 def _near(value: sp.Expr) -> sp.Rational:
@@ -197,8 +217,8 @@ def at_algebraic_witness(model: Model, at: Mapping[str, str], approx: Mapping[st
     >>> w = at_algebraic_witness(m, {"q1": "2*atan(sqrt(2))", "q2": "0"},
     ...                          {"q1": "1.91063323625", "q2": "0"},
     ...                          Numbers(2, 2, 1, 0, 1, 4, 0))
-    >>> w.tangents, w.configuration.free, float(w.near["t_q1"])
-    (('q1',), frozenset({'q1'}), 1.4142135623...)
+    >>> w.tangents, w.configuration.free, round(float(w.near["t_q1"]), 9)
+    (('q1',), frozenset({'q1'}), 1.414213562)
     """
     joints = {j.name: j for j in model.joints}
     rational: dict[str, str] = {}

@@ -329,6 +329,25 @@ def test_rows_that_keep_their_content_give_the_same_ranks(matrix):
     assert got == reference_rank(matrix, CIRCLE_POINT)
 
 
+def test_a_content_gcd_that_would_outlast_the_time_left_is_not_taken(monkeypatch):
+    from coopkin_sym.exact import deadline, elimination
+
+    row = [(X + Y) * (X**2 + 3), (X + Y) * (Y**3 - 2)]
+    assert elimination.primitive(row, 10) == [X**2 + 3, Y**3 - 2]
+    monkeypatch.setattr(elimination, "WEIGHED_TERMS", 0)
+    monkeypatch.setattr(elimination, "CONTENT_GCD_RATE", 0.01)   # every gcd takes ages
+    assert elimination.primitive(row, 10) == [X**2 + 3, Y**3 - 2]     # no bound: taken
+    with deadline.time_limit(60):
+        assert elimination.primitive(row, 10) == row                  # the factor kept
+        assert elimination.primitive(row) == [X**2 + 3, Y**3 - 2]     # not weighed
+        kept = elimination.combine([X * (X + 1), ONE, Y], [X * (X + 2), ONE, 0 * ONE], 0,
+                                   max_terms=10)
+    # x (x + 2) row1 - x (x + 1) row2: neither gcd (x, then the row's x) taken
+    assert kept == [0 * ONE, X, X * (X + 2) * Y]
+    assert elimination.combine([X * (X + 1), ONE, Y], [X * (X + 2), ONE, 0 * ONE], 0,
+                               max_terms=10) == [0 * ONE, ONE, (X + 2) * Y]
+
+
 # ------------------------------------------------------------------ the circle
 
 

@@ -328,16 +328,23 @@ def test_too_many_names_are_left_out_and_said():
                 if (t.get_gid() or "").startswith("label:")]) > 20
 
 
-def test_an_irrational_angle_is_named_rounded_in_the_title():
-    """q1 = -pi/6 has tan(q1/2) = -2 + sqrt(3): the title gives it rounded, the
-    numbers exactly (those over Q(sqrt(3)))."""
+def test_an_irrational_angle_is_named_rounded_in_the_title_when_long():
+    """q1 = -pi/6 (tan(q1/2) = -2 + sqrt(3)) is short: written as given. A root of a
+    quartic is written rounded, and the title says so."""
     from coopkin_sym import load
+    from coopkin_sym.analysis.numbers import Numbers
     from coopkin_sym.present.draw import draw_system
+    from coopkin_sym.present.draw_inputs import at_algebraic_witness
 
     system = load("paper-case1-hard")
     fig = draw_system(system, at="q1=-pi/6,q2=pi/6,L=1")
     title = fig.axes[0].get_title()
     n = system.analyze("q1=-pi/6,q2=pi/6,L=1").numbers
-    assert "at q1\u2248-0.523599,q2\u22480.523599,L=1" in title
-    assert f"Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}" in title
-    assert "tan(q1/2), tan(q2/2) irrational (shown rounded)" in title
+    assert f"at q1=-pi/6,q2=pi/6,L=1   Nm={n.Nm} Nc={n.Nc} Ni={n.Ni} Nr={n.Nr}" in title
+    assert "tan(q1/2), tan(q2/2) irrational: numbers exact" in title
+    root = "2*atan(CRootOf(x**4 - 10*x**2 + 1, 2))"          # tan(q1/2) = sqrt3 - sqrt2
+    drawn = at_algebraic_witness(system.model, {"q1": root, "q2": "0", "L": "1"},
+                                 {"q1": "0.636476277"}, Numbers(2, 2, 1, 0, 1, 4, 0))
+    title = draw_system(drawn).axes[0].get_title()
+    assert "at q1\u22480.636476,q2=0,L=1   Nm=2 Nc=2 Ni=1 Nr=0" in title
+    assert "tan(q1/2) irrational (shown rounded)" in title
