@@ -384,75 +384,31 @@ def build(model: Model, config: Configuration) -> Kinematics:
     return _Builder(model, config).build()
 
 
-def at_pi(kin: Kinematics, joints: Sequence[str]) -> Kinematics | None:
-    """The kinematics of ``kin`` with the free revolute ``joints`` at ``q = pi``, as the
-    limits of its entries at ``t = tan(q/2) = oo`` (no pose is multiplied again);
-    ``None`` when an entry has no such limit in its form (:meth:`Ring.at_infinity`).
-    Every entry is a polynomial in ``cos q`` and ``sin q``, so its limit is its value
-    at ``q = pi``: this is :func:`build` at the configuration with ``joints`` at pi.
-
-    Example
-    -------
-    >>> from coopkin_sym.model.model import load_model
-    >>> m = load_model("paper-case1-hard")
-    >>> c = Configuration.parse(m, "L=1", free=["q1", "q2"])
-    >>> at = Configuration.parse(m, "q1=pi,L=1", free=["q2"])
-    >>> slice_ = at_pi(build(m, c), ["q1"])
-    >>> slice_.ring.names, slice_.Q == build(m, at).Q, slice_.points == build(m, at).points
-    (('t_q2',), True, True)
-    """
-    return _AtPi(kin, joints).kinematics()
-
-
 def q_at_pi(kin: Kinematics, joints: Sequence[str]
             ) -> tuple[Ring, dict[str, sp.Symbol], Mat] | None:
-    """Only the ring, symbols and ``Q`` of :func:`at_pi` (a fraction of its cost).
+    """The ring, symbols and ``Q`` of ``kin`` with the free revolute ``joints`` at
+    ``q = pi``, as the limits of its entries at ``t = tan(q/2) = oo`` (no pose is
+    multiplied again); ``None`` when an entry has no such limit in its form
+    (:meth:`Ring.at_infinity`). Every entry is a polynomial in ``cos q`` and
+    ``sin q``, so its limit is its value at ``q = pi``: the ``Q`` of :func:`build` at
+    the configuration with ``joints`` at pi.
 
     Example
     -------
     >>> from coopkin_sym.model.model import load_model
     >>> m = load_model("paper-case1-hard")
     >>> c = Configuration.parse(m, "L=1", free=["q1", "q2"])
-    >>> ring, symbols, Q = q_at_pi(build(m, c), ["q1", "q2"])
-    >>> ring.names, Q == build(m, Configuration.parse(m, "q1=pi,q2=pi,L=1")).Q
-    ((), True)
+    >>> ring, symbols, Q = q_at_pi(build(m, c), ["q1"])
+    >>> ring.names, Q == build(m, Configuration.parse(m, "q1=pi,L=1", free=["q2"])).Q
+    (('t_q2',), True)
     """
-    at = _AtPi(kin, joints)
-    Q = at.mat(kin.Q)
-    return None if at.failed else (at.ring, at.symbols, Q)
-
-
-class _AtPi:
-    """The limits at ``t = oo`` of the entries of one kinematics (see :func:`at_pi`)."""
-
-    def __init__(self, kin: Kinematics, joints: Sequence[str]):
-        names = [tangent_name(j) for j in joints]
-        self.kin = kin
-        self.ring, self._limit = kin.ring.at_infinity(names)
-        self.symbols = {n: s for n, s in kin.symbols.items() if n not in names}
-        self.failed = False
-
-    def one(self, f: RatFunc) -> RatFunc:
-        g = self._limit(f)
-        if g is None:
-            self.failed = True
-            return f
-        return g
-
-    def mat(self, m: Mat) -> Mat:
-        check("the kinematics at q = pi")
-        return [[self.one(f) for f in row] for row in m]
-
-    def vecs(self, vs: list) -> list:
-        return [None if v is None else [self.one(f) for f in v] for v in vs]
-
-    def kinematics(self) -> Kinematics | None:
-        kin = self.kin
-        out = Kinematics(self.ring, self.symbols, self.mat(kin.GT), self.mat(kin.D),
-                         self.mat(kin.H), self.mat(kin.Q), kin.row_labels, kin.row_contacts,
-                         self.vecs(kin.points), self.vecs(kin.normals), self.vecs(kin.axes),
-                         self.vecs(kin.origins))
-        return None if self.failed else out
+    names = [tangent_name(j) for j in joints]
+    ring, limit = kin.ring.at_infinity(names)
+    check("the kinematics at q = pi")
+    Q = [[limit(f) for f in row] for row in kin.Q]
+    if any(f is None for row in Q for f in row):
+        return None
+    return ring, {n: s for n, s in kin.symbols.items() if n not in names}, Q
 
 
 # --- small exact 3-vector algebra on RatFunc ------------------------------------------

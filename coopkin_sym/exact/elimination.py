@@ -35,6 +35,7 @@ import flint
 
 from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.deadline import check, remaining
+from coopkin_sym.exact.sizes import coefficient_bits
 
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
@@ -42,8 +43,7 @@ Row = list[Poly]
 
 def _size(p: Poly) -> tuple[int, int, int]:
     """How costly ``p`` is as a pivot: (total degree, terms, coefficient bits)."""
-    coeffs = p.coeffs()
-    return (p.total_degree(), len(coeffs), max(abs(int(c)).bit_length() for c in coeffs))
+    return (p.total_degree(), len(p), coefficient_bits(p))
 
 
 #: The most terms of both sides of a gcd taken only to shrink a row (its content, or the
@@ -75,7 +75,7 @@ def _gcd_fits(a: Poly, b: Poly, max_terms: int | None) -> bool:
     left = remaining()
     if left is None:
         return True
-    work = min(len(p) * max(abs(int(c)).bit_length() for c in p.coeffs()) for p in (a, b))
+    work = min(len(p) * coefficient_bits(p) for p in (a, b))
     return (work / CONTENT_GCD_RATE) ** 2 <= max(left, 0.0)
 
 

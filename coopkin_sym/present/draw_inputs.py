@@ -217,7 +217,7 @@ def at_algebraic_witness(model: Model, at: Mapping[str, str], approx: Mapping[st
     >>> w = at_algebraic_witness(m, {"q1": "2*atan(sqrt(2))", "q2": "0"},
     ...                          {"q1": "1.91063323625", "q2": "0"},
     ...                          Numbers(2, 2, 1, 0, 1, 4, 0))
-    >>> w.tangents, w.configuration.free, round(float(w.near["t_q1"]), 9)
+    >>> w.tangents, w.configuration.free, round(float(w.near["t_q1"]), 9)  # float-ok
     (('q1',), frozenset({'q1'}), 1.414213562)
     """
     joints = {j.name: j for j in model.joints}

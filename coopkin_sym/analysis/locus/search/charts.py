@@ -33,13 +33,11 @@ from coopkin_sym.model.model import Model
 PI_SEARCH_WEIGHT = 20
 
 
-def chart_of(model: Model, config: Configuration,
-             kin: kinematics.Kinematics | None = None) -> tuple[dict, list]:
+def chart_of(model: Model, config: Configuration) -> tuple[dict, list]:
     """The fields of a :class:`SearchContext` that belong to the chart of ``config``
     (its free joints and parameters are the variables), and the cleared rows of Q
-    there; ``kin``: the kinematics at ``config`` when known."""
-    if kin is None:
-        kin = kinematics.build(model, config)
+    there."""
+    kin = kinematics.build(model, config)
     ring = kin.ring
     q_rows = [ring.clear_row(row) for row in kin.Q]
     kinds: dict[str, tuple[str, str]] = {}
