@@ -47,6 +47,7 @@ from coopkin_sym.exact.angles import tangent_name
 from coopkin_sym.exact.matrix import PolyMatrix
 from coopkin_sym.exact.parse import exact_expr
 from coopkin_sym.exact.quotient import Quotient
+from coopkin_sym.exact.realroot import radical_normal
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy, ratfunc_to_sympy
 from coopkin_sym.model.configuration import (
     assignments_text,
@@ -281,7 +282,7 @@ def point_motions(model: Model, numbers: Numbers, rows, quotient: Quotient, kin,
 
     def exact(e) -> sp.Expr:
         # every key a symbol: replacing them is substituting them, without subs's search
-        return sp.radsimp(sp.expand(exact_expr(e, None, "value").xreplace(values)))
+        return radical_normal(exact_expr(e, None, "value").xreplace(values))
 
     def written(v) -> list[sp.Expr]:
         return [sp.Integer(0) if e.is_zero() else

@@ -41,9 +41,17 @@ Poly = flint.fmpz_mpoly
 Row = list[Poly]
 
 
-def _size(p: Poly) -> tuple[int, int, int]:
-    """How costly ``p`` is as a pivot: (total degree, terms, coefficient bits)."""
-    return (p.total_degree(), len(p), coefficient_bits(p))
+def _cheaper(p: Poly, best: list) -> bool:
+    """Whether ``p`` is a cheaper pivot than ``best[0]``: by total degree, then terms,
+    then coefficient bits (``best[1]`` keeps the bits of ``best[0]`` once counted: they
+    are counted only to break a tie)."""
+    q = best[0]
+    key, best_key = (p.total_degree(), len(p)), (q.total_degree(), len(q))
+    if key != best_key:
+        return key < best_key
+    if best[1] is None:
+        best[1] = coefficient_bits(q)
+    return coefficient_bits(p) < best[1]
 
 
 #: The most terms of both sides of a gcd taken only to shrink a row (its content, or the
@@ -75,8 +83,9 @@ def _gcd_fits(a: Poly, b: Poly, max_terms: int | None) -> bool:
     left = remaining()
     if left is None:
         return True
-    work = min(len(p) * coefficient_bits(p) for p in (a, b))
-    return (work / CONTENT_GCD_RATE) ** 2 <= max(left, 0.0)
+    # the smaller side is weighed first: when it fits, the larger need not be weighed
+    return any((len(p) * coefficient_bits(p) / CONTENT_GCD_RATE) ** 2 <= max(left, 0.0)
+               for p in sorted((a, b), key=len))
 
 
 def primitive(row: Sequence[Poly], max_terms: int | None = None) -> Row:
@@ -203,15 +212,13 @@ def gauss_jordan(
         for c in cols:
             for i, r in enumerate(work):
                 e = r[c]
-                if not e.is_zero():
-                    s = _size(e)
-                    if best is None or s < best[0]:
-                        best = (s, i, c)
+                if not e.is_zero() and (best is None or _cheaper(e, best)):
+                    best = [e, None, i, c]
             if canonical and best is not None:
                 break
         if best is None:
             break
-        _, i, c = best
+        _, _, i, c = best
         prow = work.pop(i)
         work = [_eliminate_checked(r, prow, c) if not r[c].is_zero() else r for r in work]
         work = [r for r in work if not _is_zero_row(r)]

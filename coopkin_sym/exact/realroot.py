@@ -238,7 +238,32 @@ def element_expression(value: Element, root: RealRoot | sp.Expr) -> sp.Expr:
     coeffs = [sp.Rational(int(c.p), int(c.q)) for c in value.coeffs()]
     if coeffs == [0, 1]:
         return expr
-    return sp.radsimp(sp.expand(sum(c * expr**i for i, c in enumerate(coeffs))))
+    return radical_normal(sum(c * expr**i for i, c in enumerate(coeffs)))
+
+
+def _plain_radical(term: sp.Expr) -> bool:
+    """Whether ``term`` is a rational, a square root of an integer, or their product."""
+    def plain(f: sp.Expr) -> bool:
+        return f.is_Rational or (f.is_Pow and f.base.is_Integer and f.exp == sp.S.Half)
+    return plain(term) or (term.is_Mul and all(plain(f) for f in term.args))
+
+
+def radical_normal(expr: sp.Expr) -> sp.Expr:
+    """``radsimp(expand(expr))``, without the cost of ``radsimp`` when the expanded
+    form is already a sum of rationals times square roots of integers (no radical left
+    in a denominator: ``radsimp`` returns such a sum unchanged).
+
+    Example
+    -------
+    >>> radical_normal((1 + sp.sqrt(2))**2)
+    2*sqrt(2) + 3
+    >>> radical_normal(1 / (1 + sp.sqrt(2)))
+    -1 + sqrt(2)
+    """
+    expanded = sp.expand(expr)
+    if all(_plain_radical(t) for t in sp.Add.make_args(expanded)):
+        return expanded
+    return sp.radsimp(expanded)
 
 
 def _two_atan(t: sp.Expr) -> sp.Expr:
@@ -322,7 +347,8 @@ def _horner(coeffs: list[Fraction], lo: Fraction, hi: Fraction) -> tuple[Fractio
     return a, b
 
 
-__all__ = ["PI_DENOMINATOR", "RealRoot", "element_expression", "real_root_count",
+__all__ = ["PI_DENOMINATOR", "RealRoot", "element_expression", "radical_normal",
+           "real_root_count",
            "sturm_real_root_count"]
 
 

@@ -61,7 +61,10 @@ def resultant_terms(p: Poly, q: Poly, k: int) -> int:
 
 def coefficient_bits(p: Poly) -> int:
     """Bits of the largest coefficient of ``p`` (0 for the zero polynomial)."""
-    return max((abs(int(c)).bit_length() for c in p.coeffs()), default=0)
+    coeffs = p.coeffs()
+    if not coeffs:
+        return 0
+    return max(int(max(coeffs)), -int(min(coeffs))).bit_length()
 
 
 def resultant_work(p: Poly, q: Poly, k: int) -> int:

@@ -13,6 +13,7 @@ Example
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -89,13 +90,68 @@ class _Drawn:
     whole: bool = False
 
 
+#: Bits of the balls in which :func:`_real_common_zeros` finds the coordinates of a
+#: point (for a picture: far more than a pixel needs).
+POINT_BITS = 200
+
+
+def _real_roots(u, k: int) -> list[Any] | None:
+    """Balls around the real roots of ``u``, a flint polynomial in variable ``k``
+    alone (None when ``u`` is zero)."""
+    if u.is_zero():
+        return None
+    terms = {e[k]: c for e, c in u.to_dict().items()}
+    den = math.lcm(*(int(c.q) for c in terms.values()))
+    f = flint.fmpz_poly([int(terms.get(d, 0) * den) for d in range(max(terms) + 1)])
+    if f.degree() < 1:
+        return []
+    return [z.real for z, _ in f.complex_roots() if z.imag.is_zero()]
+
+
+def _real_common_zeros(polys: list[Any], ix: int, iy: int
+                       ) -> list[tuple[float, float]] | None:  # float-ok: plotting
+    """The real common zeros of flint polynomials in the variables ``ix``, ``iy`` alone
+    (finitely many), approximately, for a picture: each coordinate a real root of the
+    resultants eliminating the other variable (computed exactly, roots in balls of
+    :data:`POINT_BITS` bits), a pair kept where every polynomial's ball holds 0. None
+    when the resultants vanish (a common factor of two of them)."""
+    names = polys[0].context().names()
+    with flint.ctx.workprec(POINT_BITS):
+        coordinates = []
+        for keep, drop in ((ix, iy), (iy, ix)):
+            # a polynomial free of the other variable is an equation in this one;
+            # two that have it give their resultant
+            free = [p for p in polys if p.degrees()[drop] == 0]
+            pairs = [(a, b) for i, a in enumerate(polys) for b in polys[i + 1:]
+                     if a.degrees()[drop] > 0 and b.degrees()[drop] > 0]
+            found = None
+            for r in itertools.chain(free, (a.resultant(b, names[drop]) for a, b in pairs)):
+                if not r.is_zero():
+                    found = r if found is None else found.gcd(r)
+            roots = None if found is None else _real_roots(found, keep)
+            if roots is None:
+                return None
+            coordinates.append(roots)
+        terms = [[(flint.arb(c), e[ix], e[iy]) for e, c in p.to_dict().items()]
+                 for p in polys]
+        out = []
+        for x in coordinates[0]:
+            for y in coordinates[1]:
+                if all(sum((c * x**i * y**j for c, i, j in t), flint.arb(0)).contains(0)
+                       for t in terms):
+                    out.append((float(x.mid()), float(y.mid())))  # float-ok: plotting
+    return out
+
+
 def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis,
-            tops: Callable[[int, tuple[str, ...]], sp.Expr] | None = None
+            tops: Callable[[int, tuple[str, ...]], sp.Expr] | None = None,
+            finite: list[tuple[float, float]] | None = None  # float-ok: plotting
             ) -> list[tuple[float, float]]:  # float-ok: plotting
     """Real common zeros of ``polys`` (gcd 1, so finitely many), in the plane's
     coordinates, including the ones where a variable is infinite. ``tops(k, names)``:
     the top coefficient of ``polys[k]`` in the variables ``names`` (in turn), when the
-    caller has it cheaper than SymPy."""
+    caller has it cheaper than SymPy; ``finite``: the finite zeros (values of the two
+    variables), when the caller has them (:func:`_real_common_zeros`)."""
     out = []
     x, y = ax.symbol, ay.symbol
     nonzero = [k for k, p in enumerate(polys) if p != 0]
@@ -107,10 +163,13 @@ def _points(polys: list[sp.Expr], ax: _Axis, ay: _Axis,
     polys = [polys[k] for k in nonzero]
     if not polys or any(p.is_number for p in polys):
         return out
-    try:
-        solutions = sp.solve_poly_system(polys, x, y) or []
-    except (NotImplementedError, sp.PolificationFailed):  # pragma: no cover
-        solutions = []
+    if finite is not None:
+        solutions = finite
+    else:
+        try:
+            solutions = sp.solve_poly_system(polys, x, y) or []
+        except (NotImplementedError, sp.PolificationFailed):  # pragma: no cover
+            solutions = []
     for sx, sy in solutions:
         a, b = ax.angle(sx), ay.angle(sy)
         if a is not None and b is not None:
@@ -186,7 +245,8 @@ def _in_plane_rational(c: Component, values: Mapping[str, Any], ax: _Axis, ay: _
             for v in variables:
                 f = _top_coefficient(f, used.index(v))
             return back(f)
-        drawn.points = _points([back(f) for f in rest], ax, ay, tops)
+        finite = _real_common_zeros(rest, used.index(ax.variable), used.index(ay.variable))
+        drawn.points = _points([back(f) for f in rest], ax, ay, tops, finite)
     return drawn
 
 

@@ -175,6 +175,12 @@ def test_recursion_finds_the_codimension_two_drop():
     assert texts(tips.equations) == ["t_a2", "t_b2", "3*t_a1**2 + 8*t_a1 + 3", "t_a1 + t_b1"]
     assert tips.changes["Ni"] == (1, 3) and tips.witness_checked
     assert tips.algebraic_witness["point"]["a1"] == "-2*atan(sqrt(7)/3 + 4/3)"
+    # the approximations shown are the exact values to 12 digits
+    approx = tips.algebraic_witness["approx"]
+    assert set(approx) == {"a1", "a2", "b1", "b2"}      # the free joints (L is fixed)
+    for name, text in approx.items():
+        exact = sp.sympify(tips.algebraic_witness["point"][name]).evalf(30)
+        assert text == f"{float(exact):.12g}"
     # q = pi, outside the t chart: the finger folded back is singular too, alone and
     # with the other finger folded back (both at once: Nr 2, as both stretched); the
     # sets with a1 or b1 at pi lie in these (their equations do not involve a1, b1)

@@ -44,3 +44,19 @@ def test_close_roots_and_large_coefficients():
     rng = random.Random(3)
     q = flint.fmpq_poly([rng.randint(-10**20, 10**20) for _ in range(41)])
     assert real_root_count(q) == sturm_real_root_count(q)
+
+
+def test_radical_normal_is_radsimp_of_expand():
+    import sympy as sp
+
+    from coopkin_sym.exact.realroot import radical_normal
+    rng = random.Random(3)
+    r2, r5 = sp.sqrt(2), sp.sqrt(5)
+    cases = [(1 + r2) ** 2, 1 / (1 + r2), (r5 - 1) / 2 * (r5 + 1) / 2, r2 * sp.sqrt(3),
+             sp.Rational(3, 7), sp.Integer(0), (2 + r5) / (3 - r5), sp.I * r2 + 1]
+    for _ in range(60):
+        a, b = (sp.Rational(rng.randint(-9, 9), rng.randint(1, 9)) for _ in range(2))
+        root = sp.sqrt(rng.choice([2, 3, 5, 7, 13]))
+        cases.append((a + b * root) ** rng.randint(1, 3) * rng.choice([1, root, 1 + root]))
+    for e in cases:
+        assert radical_normal(e) == sp.radsimp(sp.expand(e)), e

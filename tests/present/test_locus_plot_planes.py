@@ -31,7 +31,8 @@ def _cuts(name):
             yield c, values, axes, names
 
 
-@pytest.mark.parametrize("name", ["four-bar", "paper-case1-hard", "underactuated-finger"])
+@pytest.mark.parametrize("name", ["four-bar", "paper-case1-hard", "underactuated-finger",
+                                  "planar-two-fingers"])
 def test_flint_and_sympy_cut_every_component_alike(name):
     compared = 0
     for c, values, (ax, ay), names in _cuts(name):
@@ -47,3 +48,58 @@ def test_flint_and_sympy_cut_every_component_alike(name):
             assert ratio.is_Rational and ratio != 0
         assert sorted(fast.points) == sorted(slow.points)
     assert compared > 0
+
+
+def _flint_polys(texts, names=("x", "y")):
+    import flint
+    ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
+    syms = sp.symbols(names)
+    out = []
+    for t in texts:
+        p = sp.Poly(t, *syms)
+        out.append(ctx.from_dict({m: flint.fmpq(int(c.p), int(c.q))
+                                  for m, c in p.as_dict().items()}))
+    return out
+
+
+def _sympy_real_points(texts):
+    x, y = sp.symbols("x y")
+    found = sp.solve_poly_system([sp.sympify(t) for t in texts], x, y) or []
+    values = [(complex(sp.N(a, 30)), complex(sp.N(b, 30))) for a, b in found]
+    return sorted((round(a.real, 9), round(b.real, 9)) for a, b in values
+                  if abs(a.imag) < 1e-12 and abs(b.imag) < 1e-12)
+
+
+@pytest.mark.parametrize("texts", [
+    ["x**2 + y**2 - 1", "x - y"],                 # two points
+    ["y", "2*x**2 - 8", "x + 2"],                # x + 2 divides 2x^2 - 8; y alone
+    ["x**2 + 1", "y - 1"],                       # no real point
+    ["x*y - 1", "x**2 - 2", "y**2 - 1/2"],       # irrational, three polynomials
+    ["x**3 - 2", "y**3 - 2", "x - y"],           # one real point of nine complex ones
+])
+def test_real_common_zeros_are_sympys_real_solutions(texts):
+    found = plot_plane._real_common_zeros(_flint_polys(texts), 0, 1)
+    assert sorted((round(a, 9), round(b, 9)) for a, b in found) == _sympy_real_points(texts)
+
+
+def test_real_common_zeros_on_random_systems():
+    import random
+    rng = random.Random(7)
+    x, y = sp.symbols("x y")
+    compared = 0
+    for _ in range(40):
+        polys = [sum(rng.randint(-3, 3) * x**i * y**j for i in range(3) for j in range(3)
+                     if i + j <= 2) for _ in range(2)]
+        texts = [str(sp.expand(p)) for p in polys]
+        if any(sp.sympify(t).is_number for t in texts) or sp.gcd(*polys).free_symbols:
+            continue
+        found = plot_plane._real_common_zeros(_flint_polys(texts), 0, 1)
+        assert sorted((round(a, 9), round(b, 9)) for a, b in found) == \
+            _sympy_real_points(texts)
+        compared += 1
+    assert compared >= 25
+
+
+def test_real_common_zeros_say_when_they_cannot():
+    # x - y shared by both: every resultant vanishes, the caller falls back to SymPy
+    assert plot_plane._real_common_zeros(_flint_polys(["x - y", "x**2 - x*y"]), 0, 1) is None

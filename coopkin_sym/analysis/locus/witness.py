@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from fractions import Fraction
 
 import flint
+import mpmath
 import numpy as np
 import sympy as sp
 
@@ -39,7 +40,6 @@ from coopkin_sym.analysis.sweep.compiled import _arm_blocks
 from coopkin_sym.exact import matrix
 from coopkin_sym.exact.angles import ExactAngle
 from coopkin_sym.exact.numberfield import NumberField
-from coopkin_sym.exact.parse import parse_expression
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.exact.quotient import Quotient, Tower
 from coopkin_sym.exact.rationals import to_fraction
@@ -272,8 +272,7 @@ def attach_algebraic_witness(ctx: SearchContext, comp: Component, x: str, g, val
                 ctx.symbols[x], sp.Symbol("alpha"))),
             "root": sp.sstr(root.expression()),
             "interval": [str(root.lo), str(root.hi)],
-            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
-                       for k, v in point.items()},
+            "approx": _approximations(ctx, point, near),
         }
         comp.witness_checked = True
         comp.shown = algebraic_motions(ctx, full, x, g, root, numbers, comp.changes)
@@ -281,6 +280,21 @@ def attach_algebraic_witness(ctx: SearchContext, comp: Component, x: str, g, val
             comp.float_checks = float_image_checks(ctx, approx_at, analysis_at(ctx, approx_at),
                                                    numbers, comp.equations)
         return
+
+
+def _approximations(ctx: SearchContext, point: dict[str, str], near: dict[str, Fraction]
+                    ) -> dict[str, str]:
+    """The coordinates of ``point`` to 12 digits, from ``near`` (each variable's value
+    within 1e-40 of the exact one: an angle is ``2 atan`` of its tangent), for
+    display."""
+    kinds = {name: (kind, n) for n, (kind, name) in ctx.kinds.items()}
+    out = {}
+    with mpmath.workdps(30):
+        for k in point:
+            kind, n = kinds[k]
+            v = mpmath.mpf(near[n].numerator) / near[n].denominator
+            out[k] = f"{float(2 * mpmath.atan(v) if kind == 'revolute' else v):.12g}"  # float-ok
+    return out
 
 
 def algebraic_witness_on(ctx: SearchContext, comp: Component, f, k: int, point_so_far: dict,
@@ -529,8 +543,7 @@ def attach_two_root_witness(ctx: SearchContext, comp: Component, first: tuple, s
                                  for g in (g1, g2)),
             "root": f"{sp.sstr(root1.expression())}; {sp.sstr(root2.expression())}",
             "interval": [f"{root1.lo}; {root2.lo}", f"{root1.hi}; {root2.hi}"],
-            "approx": {k: f"{float(parse_expression(v, [], k).evalf(20)):.12g}"  # float-ok
-                       for k, v in point.items()},
+            "approx": _approximations(ctx, point, near),
         }
         comp.witness_checked = True
         comp.shown = WitnessMotions(numbers, ctx.model.joint_names, frozenset(comp.changes),
