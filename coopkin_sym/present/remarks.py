@@ -265,6 +265,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         "the rank is larger than the component's numbers give at some of its points"
         + _modular(f)),
     "cert_never_drops": lambda f: "the rank never drops at a real point",
+    "cert_real_points_only": lambda f: (
+        "proved at the real points (the points outside the components are not real: "
+        "a polynomial that vanishes on them has no real zero)"),
     "cert_whole_slice": lambda f: (
         f"the whole slice lies in component #{f['component'] + 1}"),
     "cert_drops_elsewhere": lambda f: (

@@ -695,3 +695,51 @@ def test_hypersurfaces_with_huge_coefficients_are_stripped():
     gens, comps = gb._strip_hypersurfaces([big * bigger * (x - y)], [[big], [bigger]])
     assert [str(g) for g in gens] == [str(x - y)]
     assert gb._strip_hypersurfaces([big * bigger], [[big], [bigger]]) is None
+
+
+def _proved_without_real_points(ideal, components, allowed=()):
+    from coopkin_sym.analysis.locus.certify import _no_real_zero
+    return any(_no_real_zero(g) for g in gb.residual_eliminants(
+        ideal, components, timeout=60, allowed=allowed))
+
+
+def test_residual_eliminants_vanish_outside_the_components():
+    # x (x^2 + y^2 + 1) = 0 = y: outside x = 0 only (+-i, 0)
+    ideal = [X**3 + X * Y**2 + X, Y]
+    assert gb.covers(ideal, [[X]], timeout=60, backend="flint").holds is False
+    found = list(gb.residual_eliminants(ideal, [[X]], timeout=60))
+    assert X**2 + 1 in found and Y in found
+    assert _proved_without_real_points(ideal, [[X]])
+    # every eliminant vanishes at the points outside: here the real circle minus x = 0
+    ideal = [X * (X**2 + Y**2 - 1)]
+    found = list(gb.residual_eliminants(ideal, [[X]], timeout=60))
+    from fractions import Fraction as F
+    for px, py in ((F(3, 5), F(4, 5)), (F(-4, 5), F(3, 5)), (F(1), F(0))):
+        for g in found:
+            assert sum(int(c) * px**int(a) * py**int(b) for (a, b), c in g.to_dict().items()) == 0
+    assert not _proved_without_real_points(ideal, [[X]])
+    # a component with two generators: the residual through the covering system
+    ideal = [Y * (X**2 + 1), X * Y * (Y - 1)]
+    assert not _proved_without_real_points(ideal, [[X, Y - 1]])      # y = 0 is real
+    assert _proved_without_real_points(ideal, [[Y]])                  # only y = 1, x = +-i
+    # covered outright: a nonzero constant
+    assert [str(g) for g in gb.residual_eliminants([X], [[X]], timeout=60)] == ["1"]
+
+
+def test_drop_sets_without_real_points_outside_the_locus_are_certified():
+    # planar-two-fingers with q1 = pi: rank HG^T drops on a complex curve over
+    # 2 t3^2 t4^2 + 6 t3^2 - 3 t3 t4^2 + ... = 0, which has no real point; only real
+    # configurations matter, and the certificate proves so
+    system = load("planar-two-fingers")
+    locus = compute_locus(system, at="q1=pi", max_depth=2)
+    cert = certify_locus(system, locus, timeout=60, backend="flint")
+    assert cert.certified, [(c.where(), c.why) for c in cert.checks if not c.certified]
+    real_only = [c for c in cert.checks if c.why == Remark.of("cert_real_points_only")]
+    assert real_only and all(c.certified for c in real_only)
+    assert "proved at the real points" in remark_text(real_only[0].why)
+    # and it still fails when a component with real points is left out
+    for k in range(len(locus.components)):
+        partial = copy.deepcopy(locus)
+        del partial.components[k]
+        assert not certify_locus(system, partial, timeout=60, backend="flint",
+                                 first_failure=True).certified, k

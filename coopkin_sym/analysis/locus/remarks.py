@@ -95,6 +95,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "cert_larger_everywhere": (),
     "cert_larger_somewhere": ("depth", "modular"),
     "cert_never_drops": (),
+    "cert_real_points_only": (),
     "cert_whole_slice": ("component",),
     "cert_drops_elsewhere": ("depth", "modular"),
     "cert_modular_only": ("backend",),
