@@ -15,7 +15,10 @@ lines=6, seed=seed)``. One row per system, and a total:
 
 Each result is appended as one JSON line to ``--out`` (default
 ``benchmarks/results/verify_random.jsonl``); seeds already there are skipped, so an
-interrupted run resumes. ``--report`` writes the table as markdown.
+interrupted run resumes. ``--report`` writes the table as markdown. ``--certify S``
+also certifies each locus (``certify_locus``, S seconds in all, 30 s per test, on the
+backends installed): the ``cert`` column, and a total of the certified systems that the
+verifier found wrong (which must be none).
 
 Run ``python benchmarks/verify_random.py --seeds 20..219,0..19 --timeout 120``.
 """
@@ -65,8 +68,11 @@ def describe(seed: int) -> dict:
             "joints": joints, "degenerate": degeneracies(model)}
 
 
-def run_one(seed: int, timeout: float, lines: int, max_points: int) -> dict:
-    """Search and verify one system (in this process); the result row."""
+def run_one(seed: int, timeout: float, lines: int, max_points: int,
+            certify: float = 0.0) -> dict:
+    """Search and verify one system (in this process); the result row. With
+    ``certify`` (seconds for the whole certificate), the locus is also certified on
+    the backends installed (30 s per test at most)."""
     import coopkin_sym
     from coopkin_sym.analysis.locus.search import compute_locus
     from coopkin_sym.analysis.locus.verify import verify_locus
@@ -112,6 +118,17 @@ def run_one(seed: int, timeout: float, lines: int, max_points: int) -> dict:
         row["status"] = "timeout"
     else:
         row["status"] = "ok" if v.ok else "FAIL"
+    if certify > 0:
+        from coopkin_sym.analysis.locus.certify import certify_locus
+        from coopkin_sym.present.remarks import remark_text
+        started = time.monotonic()
+        cert = certify_locus(system, locus, timeout=min(30.0, certify), budget=certify)
+        row["cert_s"] = round(time.monotonic() - started, 2)
+        row["certified"] = cert.certified
+        row["cert_failures"] = [f"{c.where()}: {remark_text(c.why) if c.why else '?'}"
+                                for c in cert.checks if not c.certified][:5]
+        row["cert_real_only"] = sum(c.why is not None and c.why.kind == "cert_real_points_only"
+                                    for c in cert.checks)
     return row
 
 
@@ -123,7 +140,8 @@ def _limit_memory(gib: float) -> None:
 def run_isolated(seed: int, args) -> dict:
     """``run_one`` in a child process with a memory limit and a hard wall-clock kill."""
     cmd = [sys.executable, __file__, "--one", str(seed), "--timeout", str(args.timeout),
-           "--lines", str(args.lines), "--max-points", str(args.max_points)]
+           "--lines", str(args.lines), "--max-points", str(args.max_points),
+           "--certify", str(args.certify)]
     env = dict(os.environ, PYTHONPATH=str(args.source))
     started = time.monotonic()
     try:
@@ -144,22 +162,37 @@ def run_isolated(seed: int, args) -> dict:
 
 
 COLUMNS = ("seed", "models", "joints", "comps", "locus_s", "verify_s", "uncov", "unsound",
-           "status")
+           "status", "cert")
+
+
+def _cert(r: dict) -> str:
+    """The certificate in a word: ``yes`` (with the tests proved at real points only),
+    ``no``, or ``-`` when not run."""
+    if "certified" not in r:
+        return "-"
+    if not r["certified"]:
+        return "no"
+    return f"yes ({r['cert_real_only']} real)" if r.get("cert_real_only") else "yes"
 
 
 def table_row(r: dict) -> list[str]:
     return [str(r["seed"]), r["models"], r["joints"], str(r.get("components", "-")),
             f"{r.get('locus_s', 0):.1f}", f"{r.get('verify_s', 0):.1f}",
-            str(r.get("uncovered", "-")), str(r.get("unsound", "-")), r["status"]]
+            str(r.get("uncovered", "-")), str(r.get("unsound", "-")), r["status"], _cert(r)]
 
 
 def totals(rows: list[dict]) -> dict:
     times = [r.get("locus_s", 0) + r.get("verify_s", 0) for r in rows]
     count = {s: sum(r["status"] == s for r in rows)
              for s in ("ok", "FAIL", "timeout", "killed", "error")}
+    certified = [r for r in rows if r.get("certified")]
     return {"systems": len(rows), **count,
             "with uncovered": sum(bool(r.get("uncovered")) for r in rows),
             "with unsound": sum(bool(r.get("unsound")) for r in rows),
+            "certificates run": sum("certified" in r for r in rows),
+            "certified": len(certified),
+            "certified with uncovered or unsound": sum(
+                bool(r.get("uncovered") or r.get("unsound")) for r in certified),
             "median s": round(statistics.median(times), 1) if times else 0,
             "max s": round(max(times), 1) if times else 0}
 
@@ -196,6 +229,8 @@ def main(argv=None) -> int:
     p.add_argument("--lines", type=int, default=6)
     p.add_argument("--max-points", type=int, default=1500)
     p.add_argument("--jobs", type=int, default=1, help="systems run at once")
+    p.add_argument("--certify", type=float, default=0.0,
+                   help="also certify each locus, within this many seconds (0: no)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, help="JSON lines (resumable)")
     p.add_argument("--report", type=Path, default=None, help="write the table as markdown")
     p.add_argument("--rerun", action="store_true", help="run seeds already in --out again")
@@ -207,10 +242,11 @@ def main(argv=None) -> int:
     args = p.parse_args(argv)
     if args.one is not None:
         sys.path.insert(0, os.environ.get("PYTHONPATH", str(ROOT)).split(os.pathsep)[0])
-        print(json.dumps(run_one(args.one, args.timeout, args.lines, args.max_points)))
+        print(json.dumps(run_one(args.one, args.timeout, args.lines, args.max_points,
+                                 args.certify)))
         return 0
     if args.hard is None:
-        args.hard = args.timeout + 300
+        args.hard = args.timeout + args.certify + 300
     seeds = parse_seeds(args.seeds)
     args.out.parent.mkdir(parents=True, exist_ok=True)
     done = read_results(args.out)
