@@ -265,6 +265,10 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         "the rank is larger than the component's numbers give at some of its points"
         + _modular(f)),
     "cert_never_drops": lambda f: "the rank never drops at a real point",
+    "cert_real_points_tests": lambda f: (
+        f"{f['count']} test{'' if f['count'] == 1 else 's'} proved at the real points only: "
+        "outside the components, the drop sets there have complex points alone (a "
+        "polynomial that vanishes on them has no real zero)."),
     "cert_real_points_only": lambda f: (
         "proved at the real points (the points outside the components are not real: "
         "a polynomial that vanishes on them has no real zero)"),

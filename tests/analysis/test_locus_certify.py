@@ -737,6 +737,7 @@ def test_drop_sets_without_real_points_outside_the_locus_are_certified():
     real_only = [c for c in cert.checks if c.why == Remark.of("cert_real_points_only")]
     assert real_only and all(c.certified for c in real_only)
     assert "proved at the real points" in remark_text(real_only[0].why)
+    assert Remark.of("cert_real_points_tests", count=len(real_only)) in cert.notes
     # and it still fails when a component with real points is left out
     for k in range(len(locus.components)):
         partial = copy.deepcopy(locus)

@@ -285,6 +285,9 @@ def _certify(system, locus: Locus, at, timeout: float, backend: str, first_failu
             cert.checks.append(Check(name, 0, None, "Q", "drops", why=Remark.of(
                 "cert_chart_not_run", seconds=exc.seconds, where=exc.where, left=left)))
             break
+    real_only = sum(c.why == Remark.of("cert_real_points_only") for c in cert.checks)
+    if real_only:
+        cert.notes.append(Remark.of("cert_real_points_tests", count=real_only))
     if runner.stopped:
         cert.notes.append(Remark.of("cert_stopped_early"))
     if runner.skipped_depth:
