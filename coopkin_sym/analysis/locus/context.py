@@ -131,7 +131,7 @@ class SearchContext:
     ``ring_names`` are the free variables (``t_<joint>``, prismatic joints, free
     parameters) and ``kinds`` maps each to ``(kind, joint or parameter)``; ``rows0`` and
     ``kin`` are ``Q`` and the kinematics with every free variable (``kin`` is None in a
-    slice at q = pi, built where needed); ``readings`` (equation
+    slice at q = pi until a witness there builds it); ``readings`` (equation
     text -> the equation in angles) and ``chains`` (component id -> its context and
     linear parametrization) are shared by the charts; ``hidden`` and ``splits`` count how
     deep the search is inside candidate sets with the enclosing numbers and inside zero

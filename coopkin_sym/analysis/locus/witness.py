@@ -326,7 +326,9 @@ def algebraic_motions(ctx: SearchContext, full: dict, x: str, g, root: RealRoot,
     alpha = root.expression()
     values = {ctx.symbols[n]: (alpha if n == x and n not in full else
                                value_expr(full[n], alpha)) for n in ctx.ring_names}
-    kin = ctx.kin if ctx.kin is not None else kinematics.build(ctx.model, ctx.config)
+    if ctx.kin is None:        # a slice at q = pi: built once, where a witness needs it
+        ctx.kin = kinematics.build(ctx.model, ctx.config)
+    kin = ctx.kin
     motions = point_motions(ctx.model, numbers, rows, Quotient(g, ctx.ring_names.index(x)),
                             kin, values, root.degree, changed=set(changes))
     return WitnessMotions(numbers, ctx.model.joint_names, frozenset(changes),
