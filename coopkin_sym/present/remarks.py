@@ -265,6 +265,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         "the rank is larger than the component's numbers give at some of its points"
         + _modular(f)),
     "cert_never_drops": lambda f: "the rank never drops at a real point",
+    "cert_component_not_real": lambda f: (
+        "the component has no real point on this chart (a polynomial that vanishes on "
+        "it has no real zero): nothing to test"),
     "cert_real_points_tests": lambda f: (
         f"{f['count']} test{'' if f['count'] == 1 else 's'} proved at the real points only: "
         "outside the components, the drop sets there have complex points alone (a "

@@ -744,3 +744,24 @@ def test_drop_sets_without_real_points_outside_the_locus_are_certified():
         del partial.components[k]
         assert not certify_locus(system, partial, timeout=60, backend="flint",
                                  first_failure=True).certified, k
+
+
+def test_components_without_real_points_need_no_tests():
+    # random system 379 (frictionless and hard contacts, four revolute joints): two
+    # components at q3 = pi and q4 = pi have no real point, and their numbers are
+    # larger than claimed at every real point of those slices; only real
+    # configurations matter, and the certificate proves they have none
+    from random_systems import random_system
+    system = load(random_system(379))
+    locus = compute_locus(system, timeout=60)
+    cert = certify_locus(system, locus, timeout=60, backend="flint")
+    assert cert.certified, [(c.where(), c.why) for c in cert.checks if not c.certified]
+    skipped = [c for c in cert.checks if c.why == Remark.of("cert_component_not_real")]
+    assert {c.inside for c in skipped} and all(
+        not locus.components[c.inside].real for c in skipped)
+    # a component with real points is never passed over: without one, no certificate
+    real = next(i for i, c in enumerate(locus.components) if c.real and c.depth == 0)
+    partial = copy.deepcopy(locus)
+    del partial.components[real]
+    assert not certify_locus(system, partial, timeout=60, backend="flint",
+                             first_failure=True).certified

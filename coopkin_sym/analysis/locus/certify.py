@@ -45,6 +45,8 @@ What is checked
   :func:`~coopkin_sym.exact.groebner.residual_eliminants`) with no real zero
   (each irreducible factor, by :func:`~coopkin_sym.analysis.locus.algebra.no_real_zeros`)
   proves the inclusion at real points; the test says so ("proved at the real points").
+  A component without a real witness that is proved so to have no real point on a
+  chart needs no tests there.
 
 Together: **every real configuration has the generic numbers or the numbers of some
 reported component that contains it.** (A point with other numbers lies in a component
@@ -589,6 +591,8 @@ class _Runner:
             if self.max_depth is not None and comp.depth > self.max_depth:
                 self.skipped_depth = True
                 continue
+            if not comp.real and self._not_real(chart, i, here[i], conditions):
+                continue
             key = _order(i, comp, self.component_ranks[i])
             later = [(j, p) for j, p in here.items()
                      if _order(j, self.locus.components[j], self.component_ranks[j]) > key]
@@ -607,6 +611,32 @@ class _Runner:
                         self.bound(check, chart, here[i], gens, conditions)
                     else:
                         self.run(check, chart, here[i], gens, later, conditions)
+
+    def _not_real(self, chart: _Chart, index: int, own: list[Poly], conditions) -> bool:
+        """Whether component ``index`` (no real witness: ``own``, its equations on
+        the chart) is proved to have no real point on the chart outside the allowed
+        sets (:meth:`_over_reals`, within :data:`REAL_SHARE` of a test's bound); its
+        tests are then recorded as certified (only real configurations matter)."""
+        comp = self.locus.components[index]
+        seconds = self._test_timeout(Check(chart.name, comp.depth, index, "Q", "numbers"))
+        started = time.monotonic()
+        unknown = Verdict(False, True, "none", 0.0)
+        allowed = [[u] for u in chart.units] + conditions + [[o] for o in
+                                                             self.outs.get(index, ())]
+        if not self._over_reals(unknown, own, [], allowed, len(chart.names),
+                                seconds).proved:
+            return False
+        spent = round(time.monotonic() - started, 3)
+        for name in ("HG^T", "HD", "Q"):
+            for kind in ("numbers", "drops"):
+                depth = comp.depth + (1 if kind == "drops" else 0)
+                if self.max_depth is not None and depth > self.max_depth:
+                    self.skipped_depth = True
+                    continue
+                self._add(Check(chart.name, depth, index, name, kind, certified=True,
+                                backend="flint", seconds=spent,
+                                why=Remark.of("cert_component_not_real")))
+        return True
 
     def generators(self, chart: _Chart, real: _RealZeros, cache: dict, name: str,
                    target: int):

@@ -96,6 +96,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "cert_larger_somewhere": ("depth", "modular"),
     "cert_never_drops": (),
     "cert_real_points_only": (),
+    "cert_component_not_real": (),
     "cert_real_points_tests": ("count",),
     "cert_whole_slice": ("component",),
     "cert_drops_elsewhere": ("depth", "modular"),
