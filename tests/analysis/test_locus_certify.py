@@ -676,7 +676,9 @@ def test_without_the_saturation_the_points_at_a_denominator_are_covered_apart(mo
     assert any(c.why.kind == "cert_denominator_residual" for c in failed)
 
 
-@pytest.mark.parametrize("name", ["four-bar", "shaky-pinned-bars", "underactuated-finger"])
+@pytest.mark.parametrize("name", ["four-bar", "shaky-pinned-bars", "underactuated-finger",
+                                  "paper-case1-soft", "paper-case1-planar",
+                                  "paper-case1-soft-hard", "parallel-cranks"])
 def test_small_shipped_loci_are_certified_on_the_default_install(name):
     # as docs/locus-report.md says: flint alone proves every test of these
     system = load(name)
