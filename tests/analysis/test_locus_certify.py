@@ -30,12 +30,14 @@ from typer.testing import CliRunner
 
 from coopkin_sym import load
 from coopkin_sym.analysis.locus.certify import CertifyError, _integer_polynomial, certify_locus
+from coopkin_sym.analysis.locus.certify_real import no_real_zero
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.analysis.locus.search import compute_locus
 from coopkin_sym.analysis.locus.types import Component, Locus
 from coopkin_sym.cli import app
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact import groebner as gb
+from coopkin_sym.exact.eliminants import residual_eliminants
 from coopkin_sym.exact.parse import NumberError
 from coopkin_sym.exact.polynomial import NamedPolynomial
 from coopkin_sym.present.certificate import certificate_json, completeness_text
@@ -700,8 +702,7 @@ def test_hypersurfaces_with_huge_coefficients_are_stripped():
 
 
 def _proved_without_real_points(ideal, components, allowed=()):
-    from coopkin_sym.analysis.locus.certify import _no_real_zero
-    return any(_no_real_zero(g) for g in gb.residual_eliminants(
+    return any(no_real_zero(g) for g in residual_eliminants(
         ideal, components, timeout=60, allowed=allowed))
 
 
@@ -709,12 +710,12 @@ def test_residual_eliminants_vanish_outside_the_components():
     # x (x^2 + y^2 + 1) = 0 = y: outside x = 0 only (+-i, 0)
     ideal = [X**3 + X * Y**2 + X, Y]
     assert gb.covers(ideal, [[X]], timeout=60, backend="flint").holds is False
-    found = list(gb.residual_eliminants(ideal, [[X]], timeout=60))
+    found = list(residual_eliminants(ideal, [[X]], timeout=60))
     assert X**2 + 1 in found and Y in found
     assert _proved_without_real_points(ideal, [[X]])
     # every eliminant vanishes at the points outside: here the real circle minus x = 0
     ideal = [X * (X**2 + Y**2 - 1)]
-    found = list(gb.residual_eliminants(ideal, [[X]], timeout=60))
+    found = list(residual_eliminants(ideal, [[X]], timeout=60))
     from fractions import Fraction as F
     for px, py in ((F(3, 5), F(4, 5)), (F(-4, 5), F(3, 5)), (F(1), F(0))):
         for g in found:
@@ -725,7 +726,7 @@ def test_residual_eliminants_vanish_outside_the_components():
     assert not _proved_without_real_points(ideal, [[X, Y - 1]])      # y = 0 is real
     assert _proved_without_real_points(ideal, [[Y]])                  # only y = 1, x = +-i
     # covered outright: a nonzero constant
-    assert [str(g) for g in gb.residual_eliminants([X], [[X]], timeout=60)] == ["1"]
+    assert [str(g) for g in residual_eliminants([X], [[X]], timeout=60)] == ["1"]
 
 
 def test_drop_sets_without_real_points_outside_the_locus_are_certified():

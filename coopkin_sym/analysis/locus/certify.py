@@ -38,15 +38,9 @@ What is checked
   uses it also proves the points of its equations where ``o`` vanishes covered by the
   other components (unless the components without such polynomials cover alone).
 
-* **Real points only.** When an inclusion fails over C, the points outside the
-  components may all be complex. A polynomial that vanishes on them (an element of
-  a lexicographic Gröbner basis: of the drop ideal with the hypersurface components
-  taken out, then of the covering system with ``z`` and ``w`` eliminated,
-  :func:`~coopkin_sym.exact.groebner.residual_eliminants`) with no real zero
-  (each irreducible factor, by :func:`~coopkin_sym.analysis.locus.algebra.no_real_zeros`)
-  proves the inclusion at real points; the test says so ("proved at the real points").
-  A component without a real witness that is proved so to have no real point on a
-  chart needs no tests there.
+* **Real points only.** A test that fails over C may hold at the real points, and a
+  component without a real witness may have no real point on a chart
+  (:mod:`~coopkin_sym.analysis.locus.certify_real`).
 
 Together: **every real configuration has the generic numbers or the numbers of some
 reported component that contains it.** (A point with other numbers lies in a component
@@ -134,7 +128,7 @@ from functools import partial
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.locus.algebra import no_real_zeros
+from coopkin_sym.analysis.locus.certify_real import REAL_DETAIL, over_reals
 from coopkin_sym.analysis.locus.drops import (
     Poly,
     _Chart,
@@ -152,14 +146,12 @@ from coopkin_sym.analysis.numbers import NUMBER_NAMES, numbers_from_ranks, ranks
 from coopkin_sym.errors import CertifyError, TimeLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.angles import ExactAngle, cotangent_name
-from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.groebner import (
     EXTRA_HINT,
     Verdict,
     covers,
     is_unit_ideal,
     msolve_path,
-    residual_eliminants,
     singular_path,
 )
 from coopkin_sym.exact.matrix import POLYNOMIALS, rank
@@ -520,29 +512,6 @@ def _order(index: int, component, ranks: dict[str, int]) -> tuple[int, int, int,
     return (-sum(ranks.values()), component.depth, len(component.equations), index)
 
 
-#: How a test proved only at the real points says so (:meth:`_Runner._over_reals`).
-REAL_DETAIL = "at real points: a polynomial vanishing outside the components has no real zero"
-
-
-#: The share of a test's time bound that the proof at real points may take (measured
-#: on planar-two-fingers: those that succeed take milliseconds).
-REAL_SHARE = 0.2
-#: Eliminants up to this many terms are tried for real zeros (larger ones are not:
-#: their factorization and discriminants cannot be interrupted).
-REAL_FACTOR_TERMS = 5_000
-
-
-def _no_real_zero(g: Poly) -> bool:
-    """Whether ``g`` is proved to have no real zero: each irreducible factor by
-    :func:`no_real_zeros` (a factor like ``(1 + t^2)^3`` keeps it from a proof of the
-    product). False for ``g`` over :data:`REAL_FACTOR_TERMS` terms."""
-    if g.is_constant():
-        return not g.is_zero()
-    if len(g) > REAL_FACTOR_TERMS:
-        return False
-    return all(no_real_zeros(f) for f, _ in factor(g)[1])
-
-
 class _Runner:
     def __init__(self, cert: Certificate, setup: _Setup, locus: Locus, timeout: float,
                  backend: str, first_failure: bool, max_depth: int | None):
@@ -613,17 +582,16 @@ class _Runner:
                         self.run(check, chart, here[i], gens, later, conditions)
 
     def _not_real(self, chart: _Chart, index: int, own: list[Poly], conditions) -> bool:
-        """Whether component ``index`` (no real witness: ``own``, its equations on
-        the chart) is proved to have no real point on the chart outside the allowed
-        sets (:meth:`_over_reals`, within :data:`REAL_SHARE` of a test's bound); its
-        tests are then recorded as certified (only real configurations matter)."""
+        """Whether component ``index`` (``own``: its equations on the chart) is proved
+        to have no real point on the chart (:func:`over_reals`); its tests are then
+        recorded as certified (only real configurations matter)."""
         comp = self.locus.components[index]
         seconds = self._test_timeout(Check(chart.name, comp.depth, index, "Q", "numbers"))
         started = time.monotonic()
         unknown = Verdict(False, True, "none", 0.0)
         allowed = [[u] for u in chart.units] + conditions + [[o] for o in
                                                              self.outs.get(index, ())]
-        if not self._over_reals(unknown, own, [], allowed, len(chart.names),
+        if not over_reals(unknown, own, [], allowed, len(chart.names),
                                 seconds).proved:
             return False
         spent = round(time.monotonic() - started, 3)
@@ -688,7 +656,7 @@ class _Runner:
         allowed = [[u] for u in chart.units] + conditions + self._outside(check)
         verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names), allowed=allowed)
-        verdict = self._over_reals(verdict, own, [gens], allowed, len(chart.names),
+        verdict = over_reals(verdict, own, [gens], allowed, len(chart.names),
                                    seconds)
         self._record(check, verdict, "cert_larger_somewhere")
 
@@ -723,27 +691,10 @@ class _Runner:
             self._residual_failed(check, verdict, residual)
             return
         if not any(self.outs.get(i) for i, _ in covering):
-            verdict = self._over_reals(verdict, ideal, [p for _, p in covering],
+            verdict = over_reals(verdict, ideal, [p for _, p in covering],
                                        [[u] for u in chart.units] + allowed,
                                        len(chart.names), seconds)
         self._record(check, verdict, "cert_drops_elsewhere")
-
-    def _over_reals(self, verdict: Verdict, ideal: list, pieces: list, allowed: list,
-                    nvars: int, seconds: float) -> Verdict:
-        """``verdict`` of an inclusion that fails over C, proved at the real points when
-        a polynomial vanishing on the points outside the pieces
-        (:func:`~coopkin_sym.exact.groebner.residual_eliminants`, in the time left of
-        the test) has no real zeros (:func:`no_real_zeros`): only real configurations
-        matter."""
-        left = min(seconds - verdict.seconds, seconds * REAL_SHARE)
-        if verdict.holds is not False or left <= 0:
-            return verdict
-        started = time.monotonic()
-        if not any(_no_real_zero(g) for g in residual_eliminants(
-                ideal, pieces, timeout=left, nvars=nvars, allowed=allowed)):
-            return verdict
-        return Verdict(True, True, "flint", verdict.seconds + time.monotonic() - started,
-                       REAL_DETAIL)
 
     def cover(self, ideal: list, pieces: list, seconds: float, chart: _Chart,
               conditions, depth: int = 0) -> tuple[Verdict, tuple | None]:

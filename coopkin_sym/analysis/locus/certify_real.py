@@ -1,0 +1,82 @@
+"""Certificate tests proved at the real points only.
+
+A covering test of :mod:`~coopkin_sym.analysis.locus.certify` is decided over the
+complex numbers; only real configurations matter. When it fails, the points outside
+the components may all be complex: a polynomial that vanishes on them
+(:func:`~coopkin_sym.exact.eliminants.residual_eliminants`) whose irreducible factors
+have no real zero (:func:`~coopkin_sym.analysis.locus.algebra.no_real_zeros`:
+discriminants down to one variable, then Sturm's theorem) proves the test at the real
+points, within :data:`REAL_SHARE` of the test's bound. The same proof with no
+component at all shows that a component without a real witness has no real point on
+a chart (its tests there are then not needed).
+
+Example
+-------
+>>> import flint
+>>> from coopkin_sym.exact.groebner import Verdict
+>>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+>>> x, y = ctx.gens()
+>>> failed = Verdict(False, True, "flint", 0.0)     # V(x (x^2 + 1), y) is not in x = 0
+>>> over_reals(failed, [x**3 + x, y], [[x]], [], 2, 30.0).proved      # at real points
+True
+"""
+
+from __future__ import annotations
+
+import time
+
+from coopkin_sym.analysis.locus.algebra import no_real_zeros
+from coopkin_sym.exact.eliminants import residual_eliminants
+from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.groebner import Verdict
+
+#: How a test proved only at the real points says so.
+REAL_DETAIL = "at real points: a polynomial vanishing outside the components has no real zero"
+#: The share of a test's time bound that the proof at real points may take (measured
+#: on planar-two-fingers: those that succeed take milliseconds).
+REAL_SHARE = 0.2
+#: Eliminants up to this many terms are tried for real zeros (larger ones are not:
+#: their factorization and discriminants cannot be interrupted).
+REAL_FACTOR_TERMS = 5_000
+
+
+def no_real_zero(g) -> bool:
+    """Whether the integer polynomial ``g`` is proved to have no real zero: each
+    irreducible factor by :func:`no_real_zeros` (a factor like ``(1 + t^2)^3`` keeps it
+    from a proof of the product). False for ``g`` over :data:`REAL_FACTOR_TERMS`
+    terms.
+
+    Example
+    -------
+    >>> import flint
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    >>> x, y = ctx.gens()
+    >>> no_real_zero((x**2 + 1)**3 * (x**2 + y**2 + 2)), no_real_zero(x * (x**2 + 1))
+    (True, False)
+    """
+    if g.is_constant():
+        return not g.is_zero()
+    if len(g) > REAL_FACTOR_TERMS:
+        return False
+    return all(no_real_zeros(f) for f, _ in factor(g)[1])
+
+
+def over_reals(verdict: Verdict, ideal: list, pieces: list, allowed: list, nvars: int,
+               seconds: float) -> Verdict:
+    """``verdict`` of the test that ``V(ideal)`` lies in the ``pieces`` and ``allowed``
+    sets, proved at the real points (detail :data:`REAL_DETAIL`) when it failed over C
+    and a polynomial vanishing on the points outside has no real zero; else
+    ``verdict`` unchanged. The proof takes at most :data:`REAL_SHARE` of ``seconds``,
+    and no more than what the test left of them."""
+    left = min(seconds - verdict.seconds, seconds * REAL_SHARE)
+    if verdict.holds is not False or left <= 0:
+        return verdict
+    started = time.monotonic()
+    if not any(no_real_zero(g) for g in residual_eliminants(
+            ideal, pieces, timeout=left, nvars=nvars, allowed=allowed)):
+        return verdict
+    return Verdict(True, True, "flint", verdict.seconds + time.monotonic() - started,
+                   REAL_DETAIL)
+
+
+__all__ = ["REAL_DETAIL", "REAL_FACTOR_TERMS", "REAL_SHARE", "no_real_zero", "over_reals"]
