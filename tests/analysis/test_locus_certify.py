@@ -768,3 +768,30 @@ def test_components_without_real_points_need_no_tests():
     del partial.components[real]
     assert not certify_locus(system, partial, timeout=60, backend="flint",
                              first_failure=True).certified
+
+
+def test_residual_coverings_share_the_bound_of_their_test(monkeypatch):
+    """The coverings of the points where a parametrization's denominator vanishes run
+    within the bound of their test, not each with a bound of its own."""
+    import time
+    from types import SimpleNamespace
+
+    from coopkin_sym.analysis.locus import certify as C
+
+    asked = []
+
+    def slow_covers(ideal, pieces, *, timeout, **kwargs):
+        asked.append(timeout)
+        time.sleep(0.05)
+        return gb.Verdict(True, True, "flint", 0.05)
+    monkeypatch.setattr(C, "covers", slow_covers)
+    runner = C._Runner.__new__(C._Runner)
+    runner.backend = "flint"
+    runner.outs = {0: [X - 1, X - 2, X - 3], 1: [Y - 1, Y - 2, Y - 3]}
+    chart = SimpleNamespace(units=[], names=("x", "y"))
+    started = time.monotonic()
+    verdict, residual = runner.cover([X * Y], [(0, [X]), (1, [Y])], 0.3, chart, [])
+    assert time.monotonic() - started < 0.3 + 0.1     # one covering past the bound at most
+    assert all(t <= 0.3 for t in asked) and sorted(asked, reverse=True) == asked
+    assert verdict.holds is None and "timed out after 0.3 s" in verdict.detail
+    assert residual is not None

@@ -350,3 +350,12 @@ def test_a_number_run_into_a_name_gets_a_hint_that_works(text, message):
 def test_a_declared_name_deg_is_that_name():
     deg = sp.Symbol("deg")
     assert parse_expression("2*deg", {"deg": deg}, "x") == 2 * deg
+
+
+def test_angle_with_a_large_integer_factor_is_refused_at_once():
+    # 256/pi**4 (the fuzz tests' ((atan(1))**-2)**2): SymPy's simplification of
+    # tan(128/pi**4) expands a multiple angle of degree 128 and took a minute; the
+    # angle is now refused as undecided without it
+    from coopkin_sym.exact.parse import NumberError, parse_angle
+    with pytest.raises(NumberError, match="cannot be decided"):
+        parse_angle("(((1)**2*atan(1))**-2)**2", "x")

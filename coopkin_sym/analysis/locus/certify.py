@@ -85,16 +85,12 @@ fallback. Singular and msolve come with the ``certify`` extra
 (``pip install coopkin_sym[certify]``); without them flint does everything, and the
 large tests time out (the certificate then says so).
 
-Whole certificates of the current search's loci (every joint free, 30 s per test):
-paper case 1 (4 charts, 46-82 tests) 0.1-0.2 s; paper case 2 with complete contacts
-(8 joints, 64 charts, 1792 tests) complete (certified) in 9 s, depth 0 alone 1.3 s,
-flint alone 10 s; with hard contacts (1024 tests) not certified in 31 s (depth 0
-alone 18 s; flint alone unfinished after 300 s): the search misses the family where
-the contact points meet (``Ni`` 1 -> 3), in every chart. What makes case 2 feasible is
-the structure: per-arm blocks and the six object columns, pivots without real zeros
-(which leave one row of 9 polynomials of ``Q``), hypersurface components divided out of
-the generators, components that miss the drop set left out, and random subspaces that
-expose a missing family in 3 variables. The number of charts is ``2^r`` for ``r`` free
+Whole certificates of the shipped examples' loci are timed in
+``benchmarks/bench_certify.py``. What makes paper case 2 (64 charts) feasible is the
+structure: per-arm blocks and the six object columns, pivots without real zeros (which
+leave one row of 9 polynomials of ``Q``), hypersurface components divided out of the
+generators, components that miss the drop set left out, and random subspaces that
+expose a missing family in 3 variables. There are ``2^r`` charts for ``r`` free
 revolute joints.
 
 What the certificate takes from the locus: the components' equations and numbers, and
@@ -119,6 +115,7 @@ True
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import random
@@ -588,22 +585,18 @@ class _Runner:
         comp = self.locus.components[index]
         seconds = self._test_timeout(Check(chart.name, comp.depth, index, "Q", "numbers"))
         started = time.monotonic()
-        unknown = Verdict(False, True, "none", 0.0)
-        allowed = [[u] for u in chart.units] + conditions + [[o] for o in
-                                                             self.outs.get(index, ())]
-        if not over_reals(unknown, own, [], allowed, len(chart.names),
-                                seconds).proved:
+        allowed = [[u] for u in chart.units] + conditions + [[o] for o in self.outs.get(index, ())]
+        if not over_reals(Verdict(False, True, "none", 0.0), own, [], allowed,
+                          len(chart.names), seconds).proved:
             return False
         spent = round(time.monotonic() - started, 3)
-        for name in ("HG^T", "HD", "Q"):
-            for kind in ("numbers", "drops"):
-                depth = comp.depth + (1 if kind == "drops" else 0)
-                if self.max_depth is not None and depth > self.max_depth:
-                    self.skipped_depth = True
-                    continue
-                self._add(Check(chart.name, depth, index, name, kind, certified=True,
-                                backend="flint", seconds=spent,
-                                why=Remark.of("cert_component_not_real")))
+        for name, kind in itertools.product(("HG^T", "HD", "Q"), ("numbers", "drops")):
+            depth = comp.depth + (1 if kind == "drops" else 0)
+            if self.max_depth is not None and depth > self.max_depth:
+                self.skipped_depth = True
+                continue
+            self._add(Check(chart.name, depth, index, name, kind, certified=True, seconds=spent,
+                            backend="flint", why=Remark.of("cert_component_not_real")))
         return True
 
     def generators(self, chart: _Chart, real: _RealZeros, cache: dict, name: str,
@@ -686,7 +679,9 @@ class _Runner:
             self._add(check)
             return
         ideal, allowed = list(own) + list(gens), conditions + self._outside(check)
+        started = time.monotonic()
         verdict, residual = self.cover(ideal, list(covering), seconds, chart, allowed)
+        verdict = dataclasses.replace(verdict, seconds=time.monotonic() - started)
         if residual is not None and not verdict.proved:
             self._residual_failed(check, verdict, residual)
             return
@@ -697,17 +692,22 @@ class _Runner:
         self._record(check, verdict, "cert_drops_elsewhere")
 
     def cover(self, ideal: list, pieces: list, seconds: float, chart: _Chart,
-              conditions, depth: int = 0) -> tuple[Verdict, tuple | None]:
+              conditions, depth: int = 0, until: float | None = None
+              ) -> tuple[Verdict, tuple | None]:
         """Whether ``V(ideal)`` lies in the ``pieces`` ``(index, equations)``. A piece
         is ``V(equations)`` minus where an outside polynomial ``o`` of its component
         vanishes: the covering of ``V(equations)`` is proved, then that the pieces
         without such polynomials cover ``V(ideal)`` alone (in
         :data:`WITHOUT_DENOMINATORS_SHARE` of the time), else
         for each such ``o`` that ``V(ideal + equations + o)`` lies in the other pieces
-        (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep). Returns the verdict
-        and, when a residual test is what failed, ``(component index, o)``."""
+        (the same way, up to :data:`MAX_RESIDUAL_DEPTH` deep), all by ``until`` (default:
+        ``seconds`` from now). The verdict, and ``(component index, o)`` when a
+        residual test failed."""
+        until = time.monotonic() + seconds if until is None else until
+        if (left := until - time.monotonic()) <= 0:
+            return Verdict(None, False, "none", seconds, f"timed out after {seconds:g} s"), None
         allowed = [[u] for u in chart.units] + conditions
-        verdict = covers(ideal, [p for _, p in pieces], timeout=seconds,
+        verdict = covers(ideal, [p for _, p in pieces], timeout=left,
                          backend=self.backend, nvars=len(chart.names), allowed=allowed)
         if not verdict.proved:
             return verdict, None
@@ -715,7 +715,7 @@ class _Runner:
         if len(closed) < len(pieces):
             # the pieces with an outside polynomial may not be needed at all: then
             # no residual test is (its polynomial can be far larger than the rest)
-            share = seconds * WITHOUT_DENOMINATORS_SHARE
+            share = min(seconds * WITHOUT_DENOMINATORS_SHARE, until - time.monotonic())
             without = covers(ideal, [p for _, p in closed], timeout=share,
                              backend=self.backend, nvars=len(chart.names),
                              allowed=allowed) if closed and share > 0 else None
@@ -729,7 +729,7 @@ class _Runner:
                 deadline.check("a covering of the points outside a parametrization")
                 rest = [(j, q) for j, q in pieces if j != i]
                 inner, _ = self.cover([*ideal, *eqs, o], rest, seconds, chart,
-                                      conditions, depth + 1)
+                                      conditions, depth + 1, until)
                 if not inner.proved:
                     return inner, (i, o)
         return verdict, None

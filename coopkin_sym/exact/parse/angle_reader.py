@@ -319,13 +319,22 @@ def _simple_angle(value: object) -> tuple[sp.Rational, sp.Rational] | None:
     return None
 
 
+#: The largest integer factor of a term that SymPy's trigonometric simplification is
+#: given: ``tan(n x)`` expands into a polynomial of degree ``n`` (``256/pi**4`` took a
+#: minute).
+SMALL_MULTIPLE = 24
+
+
 def _small_angle(parts: _AngleParts) -> bool:
     """Whether the part this module does not decide itself is small enough for SymPy's
-    trigonometric simplification: one short term, such as ``2*atan(sqrt(2))``."""
+    trigonometric simplification: one short term, such as ``2*atan(sqrt(2))``, with no
+    integer factor over :data:`SMALL_MULTIPLE`."""
     terms = len(parts.other) + len(parts.atans) + bool(parts.pi_coeff) + \
         bool(parts.radians)
     return terms == 1 and all(sp.count_ops(t) <= 20 and len(t.atoms(sp.atan)) <= 1
-                              and not t.has(sp.CRootOf) for t in parts.other)
+                              and not t.has(sp.CRootOf)
+                              and abs(t.as_coeff_Mul()[0].p) <= SMALL_MULTIPLE
+                              for t in parts.other)
 
 
 def _direct_tangent(parts: _AngleParts) -> sp.Expr | None:
