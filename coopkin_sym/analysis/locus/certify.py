@@ -125,7 +125,7 @@ from functools import partial
 import sympy as sp
 
 from coopkin_sym.analysis import kinematics
-from coopkin_sym.analysis.locus.certify_real import REAL_DETAIL, over_reals
+from coopkin_sym.analysis.locus import certify_real as at_reals
 from coopkin_sym.analysis.locus.drops import (
     Poly,
     _Chart,
@@ -586,8 +586,8 @@ class _Runner:
         seconds = self._test_timeout(Check(chart.name, comp.depth, index, "Q", "numbers"))
         started = time.monotonic()
         allowed = [[u] for u in chart.units] + conditions + [[o] for o in self.outs.get(index, ())]
-        if not over_reals(Verdict(False, True, "none", 0.0), own, [], allowed,
-                          len(chart.names), seconds).proved:
+        if not at_reals.no_real_point_outside(own, [], allowed, len(chart.names),
+                                              seconds * at_reals.REAL_SHARE):
             return False
         spent = round(time.monotonic() - started, 3)
         for name, kind in itertools.product(("HG^T", "HD", "Q"), ("numbers", "drops")):
@@ -649,8 +649,8 @@ class _Runner:
         allowed = [[u] for u in chart.units] + conditions + self._outside(check)
         verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names), allowed=allowed)
-        verdict = over_reals(verdict, own, [gens], allowed, len(chart.names),
-                                   seconds)
+        verdict = at_reals.over_reals(verdict, own, [gens], allowed, len(chart.names),
+                                      seconds)
         self._record(check, verdict, "cert_larger_somewhere")
 
     def _outside(self, check: Check) -> list[list]:
@@ -686,9 +686,9 @@ class _Runner:
             self._residual_failed(check, verdict, residual)
             return
         if not any(self.outs.get(i) for i, _ in covering):
-            verdict = over_reals(verdict, ideal, [p for _, p in covering],
-                                       [[u] for u in chart.units] + allowed,
-                                       len(chart.names), seconds)
+            verdict = at_reals.over_reals(verdict, ideal, [p for _, p in covering],
+                                          [[u] for u in chart.units] + allowed,
+                                          len(chart.names), seconds)
         self._record(check, verdict, "cert_drops_elsewhere")
 
     def cover(self, ideal: list, pieces: list, seconds: float, chart: _Chart,
@@ -751,7 +751,7 @@ class _Runner:
         check.backend, check.seconds = verdict.backend, round(verdict.seconds, 3)
         if verdict.proved:
             check.certified = True
-            if verdict.detail == REAL_DETAIL:
+            if verdict.detail == at_reals.REAL_DETAIL:
                 check.why = Remark.of("cert_real_points_only")
         elif verdict.holds is False:
             check.why = Remark.of(failure, depth=check.depth, modular=not verdict.exact)

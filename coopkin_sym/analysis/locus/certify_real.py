@@ -72,11 +72,20 @@ def over_reals(verdict: Verdict, ideal: list, pieces: list, allowed: list, nvars
     if verdict.holds is not False or left <= 0:
         return verdict
     started = time.monotonic()
-    if not any(no_real_zero(g) for g in residual_eliminants(
-            ideal, pieces, timeout=left, nvars=nvars, allowed=allowed)):
+    if not no_real_point_outside(ideal, pieces, allowed, nvars, left):
         return verdict
     return Verdict(True, True, "flint", verdict.seconds + time.monotonic() - started,
                    REAL_DETAIL)
 
 
-__all__ = ["REAL_DETAIL", "REAL_FACTOR_TERMS", "REAL_SHARE", "no_real_zero", "over_reals"]
+def no_real_point_outside(ideal: list, pieces: list, allowed: list, nvars: int,
+                          seconds: float) -> bool:
+    """Whether ``V(ideal)`` is proved to have no real point outside the ``pieces`` and
+    ``allowed`` sets (with no pieces: no real point at all), within ``seconds``: a
+    polynomial vanishing there without a real zero (:func:`no_real_zero`)."""
+    return any(no_real_zero(g) for g in residual_eliminants(
+        ideal, pieces, timeout=seconds, nvars=nvars, allowed=allowed))
+
+
+__all__ = ["REAL_DETAIL", "REAL_FACTOR_TERMS", "REAL_SHARE", "no_real_point_outside",
+           "no_real_zero", "over_reals"]
