@@ -35,7 +35,7 @@ import flint
 
 from coopkin_sym.errors import ArgumentError
 from coopkin_sym.exact.deadline import check, remaining
-from coopkin_sym.exact.sizes import coefficient_bits
+from coopkin_sym.exact.sizes import coefficient_bits, determinant_terms
 
 Poly = flint.fmpz_mpoly
 Row = list[Poly]
@@ -66,11 +66,15 @@ CONTENT_GCD_TERMS = 20_000
 #: two variables, 3 s); one that would not end in the time left is not taken.
 CONTENT_GCD_RATE = 20_000_000
 
+#: The most terms (a bound from degrees) of the minors of a nullspace by Cramer's rule;
+#: above it elimination, which checks the time bound between its steps, decides.
+MINORS_TERMS = 100_000
+
 #: Polynomials with fewer terms are never weighed (their gcds take milliseconds).
 WEIGHED_TERMS = 500
 
 
-def _gcd_fits(a: Poly, b: Poly, max_terms: int | None) -> bool:
+def gcd_fits(a: Poly, b: Poly, max_terms: int | None) -> bool:
     """Whether a gcd of ``a`` and ``b`` taken only to shrink a row is taken: always
     without ``max_terms``; else unless both sides have more terms, or it would outlast
     the time left under a bound."""
@@ -109,7 +113,7 @@ def primitive(row: Sequence[Poly], max_terms: int | None = None) -> Row:
     # the smallest entries first: the gcd only shrinks, so each later gcd has a small
     # polynomial on one side (and a constant one ends it)
     for e in sorted((e for e in row if not e.is_zero()), key=len):
-        if g is not None and not _gcd_fits(g, e, max_terms):
+        if g is not None and not gcd_fits(g, e, max_terms):
             return list(row)
         g = e if g is None else g.gcd(e)
         if g.is_one():
@@ -148,7 +152,7 @@ def combine(target: Sequence[Poly], pivot_row: Sequence[Poly], col: int,
     ['0', '1']
     """
     a, p = target[col], pivot_row[col]
-    if not _gcd_fits(p, a, max_terms):
+    if not gcd_fits(p, a, max_terms):
         pg, ag = p, a
     else:
         g = p.gcd(a)
@@ -455,6 +459,8 @@ def _minors_nullspace(rows: list[Row], ncols: int, zctx, order: list[int]):
         while int(reduced[i, col]) == 0:
             col += 1
         pivots.append(rev[col])
+    if determinant_terms([[r[c] for c in pivots] for r in rows]) > MINORS_TERMS:
+        return None   # the minors could be too large to compute uninterrupted
     d = determinant([[r[c] for c in pivots] for r in rows])
     position = {c: i for i, c in enumerate(order)}
     basis, free = [], []

@@ -70,6 +70,7 @@ from dataclasses import dataclass
 
 import flint
 import sympy as sp
+from flint.utils.flint_exceptions import DomainError
 
 from coopkin_sym.errors import GroebnerError
 from coopkin_sym.exact.binaries import (
@@ -93,6 +94,12 @@ QUICK_SECONDS = 0.5
 SMALL_VARIABLES, SMALL_TERMS, SMALL_SECONDS = 6, 400, 0.1
 #: Largest covering system (in terms) written with the product of the components.
 MAX_PRODUCT_TERMS = 20_000
+#: Most term pairs of one multiplication building that product (flint cannot stop a
+#: product once started: 4e6 pairs take about 0.4 s here).
+MAX_PRODUCT_PAIRS = 4_000_000
+#: Largest hypersurface component factored, and largest generator made square-free,
+#: when the hypersurfaces' factors are taken out of the generators.
+STRIP_FACTOR_TERMS = 5_000
 EXTRA_HINT = "pip install coopkin_sym[certify]"
 
 
@@ -222,6 +229,8 @@ def covering_system(ideal: Sequence[PolyDict], components: Sequence[Sequence[Pol
         ctx = _ctx(total)
         product = ctx.constant(1)
         for g in sorted(combined, key=len):
+            if max_terms is not None and len(product) * len(g) > MAX_PRODUCT_PAIRS:
+                return None
             product = product * ctx.from_dict(g)
             if max_terms is not None and len(product) > max_terms:
                 return None
@@ -331,10 +340,10 @@ def covers(ideal: Sequence, components: Sequence[Sequence], *, timeout: float = 
     # 4. the exact attempt with the time left
     if clock.left() <= 0:
         return clock.done(None, False, "singular" if prover == "auto" else prover or "msolve",
-                          f"timed out after {timeout:g} s")
+                          f"timed out after {round(timeout, 1):g} s")
     verdict = _prove_cover(polys, comps, n, clock.left(), prover)
     if verdict.holds is None and verdict.detail.startswith("timed out"):
-        return clock.done(None, False, verdict.backend, f"timed out after {timeout:g} s")
+        return clock.done(None, False, verdict.backend, f"timed out after {round(timeout, 1):g} s")
     return clock.done(verdict.holds, verdict.exact, verdict.backend, verdict.detail)
 
 
@@ -464,7 +473,7 @@ def _prove_cover(polys, comps, n: int, timeout: float, prover: str) -> Verdict:
             return verdict
     return Verdict(None, False, "singular" if prover == "auto" else prover,
                    time.monotonic() - started,
-                   f"timed out after {timeout:g} s")
+                   f"timed out after {round(timeout, 1):g} s")
 
 
 def _screen_cover(polys, comps, n: int, timeout: float) -> Verdict:
@@ -502,27 +511,55 @@ def _normal(f: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
 
 def _strip_hypersurfaces(gens, comps):
     """Remove the factors of one-generator components from the generators; None when
-    a generator is left constant (the inclusion holds)."""
-    hyper = set()
+    a generator is left constant (the inclusion holds).
+
+    Only the components are factored, and only up to :data:`STRIP_FACTOR_TERMS`
+    terms (a larger one is divided out whole); the generators are divided by those
+    factors as long as the division is exact, then made square-free when at most as
+    large. Both change the generators only off the hypersurfaces, where they vanish
+    at the same points, so skipping a step is never wrong, only less helpful."""
+    hyper: dict[str, flint.fmpz_mpoly] = {}
     for c in comps:
         if len(c) == 1 and not c[0].is_constant():
-            for f, _e in factor(c[0])[1]:
-                hyper.add(str(_normal(f)))
+            parts = (factor(c[0])[1] if len(c[0]) <= STRIP_FACTOR_TERMS
+                     else [(c[0], 1)])
+            for f, _e in parts:
+                f = _normal(f)
+                hyper.setdefault(str(f), f)
     if not hyper:
         return gens, comps
     out = []
     for g in gens:
         if g.is_zero():
             continue
-        kept = g.context().constant(1)
-        for f, _e in factor(g)[1]:
-            f = _normal(f)
-            if str(f) not in hyper:
-                kept = kept * f
-        if kept.is_constant():
+        for f in hyper.values():
+            g = _divided_out(g, f)
+        if g.is_constant():
             return None
-        out.append(kept)
+        out.append(_square_free(_normal(g)))
     return out, comps
+
+
+def _divided_out(g: flint.fmpz_mpoly, f: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
+    """``g / f^k`` for the largest ``k`` (exact divisions, each polynomial in size)."""
+    while not g.is_constant():
+        try:
+            g = g / f
+        except DomainError:
+            break
+    return g
+
+
+def _square_free(g: flint.fmpz_mpoly) -> flint.fmpz_mpoly:
+    """The product of the square-free factors of ``g`` (the same zeros, simpler), for
+    ``g`` of at most :data:`STRIP_FACTOR_TERMS` terms; ``g`` itself when larger."""
+    if g.is_constant() or len(g) > STRIP_FACTOR_TERMS:
+        return g
+    _content, parts = g.factor_squarefree()
+    out = g.context().constant(1)
+    for f, _e in parts:
+        out = out * f
+    return _normal(out)
 
 
 def _prune(comps):
@@ -623,7 +660,7 @@ def _prove(polys: list[PolyDict], n: int, timeout: float, engine: str) -> Verdic
     answer = _Worker.ask(child.__name__, polys, n, timeout)
     seconds = time.monotonic() - started
     if answer is None:
-        return Verdict(None, False, engine, seconds, f"timed out after {timeout:g} s")
+        return Verdict(None, False, engine, seconds, f"timed out after {round(timeout, 1):g} s")
     if isinstance(answer, str):
         return Verdict(None, False, engine, seconds, answer)
     return Verdict(bool(answer), True, engine, seconds)
@@ -723,7 +760,7 @@ def _singular_unit(polys: list[PolyDict], n: int, timeout: float) -> Verdict:
     out, err, seconds = _run_binary([singular_path(), "-q", "--no-rc", "--no-warn",
                                      "{in}"], {"in": script}, timeout, "singular")
     if out is None:
-        return Verdict(None, False, "singular", seconds, f"timed out after {timeout:g} s")
+        return Verdict(None, False, "singular", seconds, f"timed out after {round(timeout, 1):g} s")
     marker = [line for line in out.splitlines() if line.startswith("DIMENSION ")]
     if not marker:
         return Verdict(None, False, "singular", seconds,
@@ -746,7 +783,7 @@ def _screen(polys: list[PolyDict], n: int, timeout: float) -> Verdict:
                                     {"in": msolve_text(reduced, n, MSOLVE_PRIME),
                                      "out": None}, timeout, "msolve")
     if out is None:
-        return Verdict(None, False, "msolve", seconds, f"timed out after {timeout:g} s")
+        return Verdict(None, False, "msolve", seconds, f"timed out after {round(timeout, 1):g} s")
     body = "".join(line for line in out.splitlines() if line and not line.startswith("#"))
     if not body.strip():
         return Verdict(None, False, "msolve", seconds,

@@ -32,7 +32,7 @@ import flint
 
 from coopkin_sym.errors import ArgumentError, BlockTooLarge
 from coopkin_sym.exact.deadline import check
-from coopkin_sym.exact.elimination import CONTENT_GCD_TERMS, combine, primitive
+from coopkin_sym.exact.elimination import CONTENT_GCD_TERMS, combine, gcd_fits, primitive
 from coopkin_sym.exact.substitution import coefficients_in
 
 Poly = flint.fmpz_mpoly
@@ -348,7 +348,8 @@ def smallest_fraction(num: Poly, den: Poly, quotient: Quotient) -> tuple[Poly, P
     Unique up to sign, hence as small as the element allows (a root found by a gcd over
     the quotient can carry thousands of spurious terms). Done for ``f`` of degree 2 in
     ``x_k``, where ``den`` times its conjugate is free of ``x_k``; for higher degrees the
-    content is removed only.
+    content is removed only. A common factor whose gcd would be too large to take
+    (:func:`~coopkin_sym.exact.elimination.primitive`'s bound) stays.
 
     Example
     -------
@@ -367,9 +368,14 @@ def smallest_fraction(num: Poly, den: Poly, quotient: Quotient) -> tuple[Poly, P
     if quotient.degree == 2 and den.degrees()[k] > 0:
         (num, den), = [quotient.reduce_row([e * _conjugate(den, quotient) for e in (num, den)])]
     parts = [c for c in coefficients_in(num, k) if not c.is_zero()] + [den]
-    g = parts[0]
-    for c in parts[1:]:
-        g = g.gcd(c)
+    g = None
+    for c in sorted(parts, key=len):   # the gcd only shrinks: small sides first
+        if g is not None and not gcd_fits(g, c, CONTENT_GCD_TERMS):
+            g = num.context().constant(1)   # too large to shrink: the same element
+            break
+        g = c if g is None else g.gcd(c)
+        if g.is_one():
+            break
     if den.leading_coefficient() < 0:
         g = -g
     return num / g, den / g

@@ -701,6 +701,52 @@ def test_hypersurfaces_with_huge_coefficients_are_stripped():
     assert gb._strip_hypersurfaces([big * bigger], [[big], [bigger]]) is None
 
 
+def test_stripping_divides_out_the_hypersurfaces_and_keeps_the_rest_square_free():
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    hyper = (x - 1) * (y + 2)
+    gens, _ = gb._strip_hypersurfaces([6 * (x - 1)**3 * (x + y)**2 * (x - y)], [[hyper]])
+    assert gens == [(x + y) * (x - y)]
+    # only the components are factored: a generator is never given to factor()
+    factored = []
+    original = gb.factor
+
+    def spy(p):
+        factored.append(p)
+        return original(p)
+
+    try:
+        gb.factor = spy
+        assert gb._strip_hypersurfaces([(y + 2)**2 * (x - 1)], [[hyper]]) is None
+    finally:
+        gb.factor = original
+    assert factored == [hyper]
+
+
+def test_stripping_skips_the_factoring_of_a_large_component(monkeypatch):
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    monkeypatch.setattr(gb, "STRIP_FACTOR_TERMS", 3)
+    hyper = (x - 1) * (y + 2)        # 4 terms: divided out whole, not factored
+    monkeypatch.setattr(gb, "factor", lambda p: pytest.fail("factored"))
+    gens, _ = gb._strip_hypersurfaces([hyper**2 * (x - y), (x - 1) * (x + y)], [[hyper]])
+    assert gens == [x - y, (x - 1) * (x + y)]
+
+
+def test_the_covering_product_is_abandoned_before_a_large_multiplication(monkeypatch):
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    ideal = [gb._plain(x * y)]
+    comps = [[gb._plain(x + y + 1)], [gb._plain(x**2 + y - 3)], [gb._plain(y**3 - x)]]
+    made = gb.covering_system(ideal, comps, 2, max_terms=10_000)
+    assert made is not None
+    monkeypatch.setattr(gb, "MAX_PRODUCT_PAIRS", 8)   # 3 x 3 term pairs
+    assert gb.covering_system(ideal, comps, 2, max_terms=10_000) is None
+    # the separate form is still there, and the inclusion is still decided
+    assert gb.covering_system(ideal, comps, 2, separate=True) is not None
+    assert gb.covers([x * y], [[x], [y]], timeout=30, backend="flint").holds is True
+
+
 def _proved_without_real_points(ideal, components, allowed=()):
     return any(no_real_zero(g) for g in residual_eliminants(
         ideal, components, timeout=60, allowed=allowed))

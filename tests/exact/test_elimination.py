@@ -36,6 +36,27 @@ def test_nullspace_of_polynomial_matrix_is_exact_and_primitive():
     assert g.is_one()
 
 
+def test_nullspace_without_the_minors_route_is_the_same_basis(monkeypatch):
+    ring = Ring(["t", "L"])
+    m = sp.Matrix([[T, L, 1 + T**2, 1], [2 * T, 2 * L, 2 + L * T**2, T], [0, 1, T, L]])
+    rows = poly_matrix(ring, m)
+    zctx = rows[0][0].context()
+    used = []
+    minors = el._minors_nullspace
+    monkeypatch.setattr(el, "_minors_nullspace",
+                        lambda *a: used.append(minors(*a)) or used[-1])
+    by_minors = el.nullspace_rref(rows, 4, zctx)
+    assert used and used[-1] is not None               # the minors route answered
+    monkeypatch.setattr(el, "MINORS_TERMS", 0)     # every minor counts as too large
+    by_elimination = el.nullspace_rref(rows, 4, zctx)
+    assert used[-1] is None                            # ... and now it declined
+    assert [[str(e) for e in v] for v in by_elimination[0]] == \
+        [[str(e) for e in v] for v in by_minors[0]]
+    assert by_elimination[1] == by_minors[1]
+    v = matrix_to_sympy([by_minors[0][0]], ring, SYMS).T
+    assert (m * v).expand() == sp.zeros(3, 1)
+
+
 def test_rank_drops_only_where_the_determinant_vanishes():
     ring = Ring(["t"])
     m = sp.Matrix([[T, 1], [1, T]])

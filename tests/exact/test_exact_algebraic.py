@@ -752,6 +752,20 @@ def test_smallest_fraction_is_the_same_element_with_a_denominator_free_of_x(num,
     assert g.is_constant()
 
 
+def test_smallest_fraction_keeps_a_factor_too_large_to_take_and_stays_the_element(
+        monkeypatch):
+    import coopkin_sym.exact.quotient as quotient_module
+    x, p, _ = _XPY.gens()
+    q = Quotient(x**2 - p, 0)                          # x = sqrt(p)
+    num, den = (p + 1) * (1 + x), (p + 1) * (x - 1)
+    assert [str(e) for e in smallest_fraction(num, den, q)] == ["2*x + p + 1", "p - 1"]
+    monkeypatch.setattr(quotient_module, "CONTENT_GCD_TERMS", 1)   # no gcd is taken
+    top, bottom = smallest_fraction(num, den, q)
+    assert bottom.degrees()[0] == 0 and int(bottom.leading_coefficient()) > 0
+    assert q.is_zero(top * den - bottom * num)        # the same element
+    assert divmod(bottom, p + 1)[1] == 0 and bottom != p - 1   # it kept p + 1
+
+
 def _coefficients_in_x(e):
     from coopkin_sym.exact.substitution import coefficients_in
     return coefficients_in(e, 0)

@@ -705,7 +705,7 @@ class _Runner:
         residual test failed."""
         until = time.monotonic() + seconds if until is None else until
         if (left := until - time.monotonic()) <= 0:
-            return Verdict(None, False, "none", seconds, f"timed out after {seconds:g} s"), None
+            return Verdict(None, False, "none", seconds, f"timed out after {seconds:.3g} s"), None
         allowed = [[u] for u in chart.units] + conditions
         verdict = covers(ideal, [p for _, p in pieces], timeout=left,
                          backend=self.backend, nvars=len(chart.names), allowed=allowed)
