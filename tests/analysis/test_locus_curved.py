@@ -229,6 +229,55 @@ def test_equations_in_one_variable_with_no_common_real_root_leave_nothing_to_sol
     assert any(u.kind == "lower_dimensional_not_solved" for u in ctx.locus.unexplored)
 
 
+def test_roots_in_one_variable_times_points_in_the_others_are_solved():
+    """Inside a family at an irrational angle of one joint, the remaining minors can be
+    its equation (in that joint alone) and equations free of it in two other
+    variables: their zeros are the roots times the points, solved as such."""
+    system = coopkin_sym.load(random_system(154))
+    ctx, rows = search_context(system, at="q4=0")
+    t1, t2, t3 = ctx.ring.zctx.gens()
+    names = ["t_q1", "t_q2", "t_q3"]
+    # t3 = +-sqrt(2) or 1, and (t1, t2) = (3, 2) or (3, 3)
+    system_ = [(t3**2 - 2) * (t3 - 1), t1 - 3, t2**2 - 5 * t2 + 6]
+    points, algebraic, unresolved = codimension._product_points(ctx, system_, names, None, 1)
+    assert sorted(tuple(sorted((k, str(v)) for k, v in p.items())) for p in points) == [
+        (("t_q1", "3"), ("t_q2", "2"), ("t_q3", "1")),
+        (("t_q1", "3"), ("t_q2", "3"), ("t_q3", "1"))]
+    assert sorted((x, str(h), sorted((k, str(v)) for k, v in values.items()))
+                  for x, h, values, _eqs, _alpha in algebraic) == [
+        ("t_q3", "t_q3^2 - 2", [("t_q1", "3"), ("t_q2", "2")]),
+        ("t_q3", "t_q3^2 - 2", [("t_q1", "3"), ("t_q2", "3")])]
+    assert unresolved == []
+    # t2 = 0 times the points t1 = t3 = +-sqrt(2) (over the field of t1)
+    _, algebraic, _ = codimension._product_points(ctx, [t3**2 - 2, t1 - t3, t2], names,
+                                                  None, 1)
+    assert [(x, str(h), values["t_q2"]) for x, h, values, _e, _a in algebraic] == [
+        ("t_q1", "t_q1^2 - 2", 0)]
+    # not of this form: no variable's equations stand apart from the others
+    assert codimension._product_points(ctx, [t3**2 - 2, t1 - t3, t2 - t1], names,
+                                       None, 1) is None
+
+
+def test_drops_at_an_irrational_angle_times_rational_points_are_found():
+    """Random system 392: inside the family 7 t_q4^2 - 2 t_q4 - 7 = 0, Nm rises to 3
+    where q1 = 2 atan(3) or 2 atan(-1/3) and q3 = 2/5 (q2 free). These were said not
+    solved before, and missed; found, they make the certificate complete."""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    system = coopkin_sym.load(random_system(392))
+    locus = compute_locus(system, timeout=60)
+    raised = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 3, "Nd": 6, "Nh": 2}
+    found = [c for c in locus.components if c.numbers == raised]
+    assert len(found) == 2
+    for q1, comp in zip(("2*atan(3)", "2*atan(-1/3)"), found, strict=True):
+        assert f"q1 = {q1}, q3 = 2/5" in str(comp.condition)
+        for q4 in ("2*atan(1/7 + 5*sqrt(2)/7)", "2*atan(1/7 - 5*sqrt(2)/7)"):
+            at = f"q1={q1},q2=2*atan(5),q3=2/5,q4={q4}"
+            assert analyze_irrational(system.model, at).numbers.as_dict() == raised
+            off = f"q1={q1},q2=2*atan(5),q3=1/2,q4={q4}"
+            assert analyze_irrational(system.model, off).numbers.as_dict() != raised
+    assert certify_locus(system, locus, timeout=120).certified
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("seed, point, numbers", [
     # a drop inside a curved family of the first level, inside a hypersurface linear in

@@ -22,6 +22,7 @@ from coopkin_sym.analysis.locus.algebra import (
     linearly_disjoint,
     normalize,
     poly_text,
+    roots,
     solve_small,
     substitute_values,
     univariate,
@@ -78,6 +79,14 @@ def isolated(ctx: SearchContext, place: Place, rests, max_degree: int | None = N
         if len(names_used) > 2 and _no_real_common_zero(ctx, polys):
             continue
         if len(names_used) > 2:
+            product = _product_points(ctx, polys, names_used, max_degree, place.depth)
+            if product is not None:
+                points, algebraic, unresolved = product
+                for remark in unresolved:
+                    add_once(ctx.locus.unexplored, remark)
+                rational_points += points
+                algebraic_points += algebraic
+                continue
             if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
                 continue
             note(ctx, "lower_dimensional_not_solved", depth=place.depth,
@@ -94,6 +103,44 @@ def isolated(ctx: SearchContext, place: Place, rests, max_degree: int | None = N
     for x, g, values, eqs, alpha in algebraic_points:
         created.append(_decide_point(ctx, place, values, (x, g, eqs, alpha), free))
     _intersections(ctx, place, [c for c in created if c is not None], free)
+
+
+def _product_points(ctx: SearchContext, polys, names: list[str], max_degree: int | None,
+                    depth: int):
+    """The common zeros of ``polys`` when some of them are in one variable ``x`` alone
+    and the others are free of ``x`` in at most two variables: the roots of the first
+    (their gcd) times the points of the others, as :func:`solve_small` gives points
+    (a root of degree 2 or more with rational other coordinates, or a rational root
+    with an algebraic point). ``None`` when the system is not of this form; a root and
+    a point both irrational are said not decided (two fields at once)."""
+    for x in names:
+        k = ctx.ring_names.index(x)
+        alone = [p for p in polys if vars_of(ctx, p) == [x]]
+        rest = [p for p in polys if p.degrees()[k] == 0]
+        others = [n for n in names if n != x]
+        if not alone or len(alone) + len(rest) != len(polys) or not 1 <= len(others) <= 2:
+            continue
+        g = alone[0]
+        for p in alone[1:]:
+            g = g.gcd(p)
+        rational_x, curved_x = roots(ctx, g, x)
+        points, algebraic, unresolved = solve_small(ctx, rest, others, max_degree)
+        out_points = [{**pt, x: x0} for x0 in rational_x for pt in points]
+        out_algebraic = [(y, h, {**values, x: x0}, [*eqs, linear_equation(ctx, x, x0)], alpha)
+                         for x0 in rational_x for y, h, values, eqs, alpha in algebraic]
+        for h in curved_x:
+            if max_degree is not None and h.degrees()[k] > max_degree:
+                unresolved.append(Remark.of("points_not_decided", polynomial=poly_text(ctx, h),
+                                            degree=int(h.degrees()[k]), bound=max_degree))
+                continue
+            out_algebraic += [(x, h, dict(pt), [h, *(linear_equation(ctx, n, v)
+                                                     for n, v in pt.items())], x)
+                              for pt in points]
+            if algebraic:
+                unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
+                                            variables=names, bound=_PARAMETER_SOLVE_TERMS))
+        return out_points, out_algebraic, unresolved
+    return None
 
 
 def _no_real_common_zero(ctx: SearchContext, polys) -> bool:
