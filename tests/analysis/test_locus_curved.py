@@ -278,6 +278,52 @@ def test_drops_at_an_irrational_angle_times_rational_points_are_found():
     assert certify_locus(system, locus, timeout=120).certified
 
 
+def test_finitely_many_points_in_three_variables_are_solved_by_elimination():
+    """q1 is eliminated by resultants, the points in (t2, t3) solved, then q1 at each
+    point from the gcd of the equations there."""
+    system = coopkin_sym.load(random_system(154))
+    ctx, rows = search_context(system, at="q4=0")
+    t1, t2, t3 = ctx.ring.zctx.gens()
+    names = ["t_q1", "t_q2", "t_q3"]
+    # t3^2 = 2, t2 = 1, and t1 t3 = 2 (t1 = sqrt(2) = t3) or t1 = t2 + 1 = 2 ...
+    polys = [t3**2 - 2, (t2 - 1) * t3, t1 * t3 - 2 * t2]
+    points, algebraic, unresolved = codimension._eliminated_points(ctx, polys, names,
+                                                                   None, 1)
+    assert points == [] and unresolved == []
+    assert [(x, str(h), sorted((k, str(v)) for k, v in values.items()))
+            for x, h, values, _e, _a in algebraic] == [
+        ("t_q3", "t_q3^2 - 2", [("t_q1", "x"), ("t_q2", "1")])]     # t1 = t3
+    # rational points, one with t1 free: t2 = t3 = 0 makes every equation vanish
+    polys = [t2 * (t2 - 1), t3 * (t3 - 2), t1 * t2 - t3]
+    points, algebraic, _ = codimension._eliminated_points(ctx, polys, names, None, 1)
+    assert sorted(sorted((k, str(v)) for k, v in p.items()) for p in points) == [
+        [("t_q1", "0"), ("t_q2", "1"), ("t_q3", "0")],
+        [("t_q1", "2"), ("t_q2", "1"), ("t_q3", "2")],
+        [("t_q2", "0"), ("t_q3", "0")]]
+    assert algebraic == []
+    # a curve (t1 = t2 = t3) is not finitely many points: left to the others
+    assert codimension._eliminated_points(ctx, [t1 - t2, t2 - t3], names, None, 1) is None
+
+
+def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
+    """Random system 395: where q1 = q3 = 0, q2 = 0 or pi and tan(q4/2) = 2 +- sqrt(5),
+    Nm is 7 (6 around): points of a system in three variables, said not solved and
+    missed before; found, the certificate is complete."""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    system = coopkin_sym.load(random_system(395))
+    locus = compute_locus(system, timeout=60)
+    top = {"Nm": 7, "Nc": 4, "Ni": 3, "Nr": 3, "Ng": 1, "Nd": 3, "Nh": 1}
+    points = [c for c in locus.components if c.kind == "isolated" and c.numbers == top]
+    assert len(points) == 2
+    for q2 in ("0", "pi"):
+        for q4 in ("2*atan(2 + sqrt(5))", "2*atan(2 - sqrt(5))"):
+            at = f"q1=0,q2={q2},q3=0,q4={q4}"
+            assert analyze_irrational(system.model, at).numbers.as_dict() == top
+            assert analyze_irrational(system.model, at.replace("q1=0", "q1=1/3")
+                                      ).numbers.as_dict() != top
+    assert certify_locus(system, locus, timeout=120).certified
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("seed, point, numbers", [
     # a drop inside a curved family of the first level, inside a hypersurface linear in

@@ -11,6 +11,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from coopkin_sym.analysis.locus import algebra
 from coopkin_sym.analysis.locus.algebra import (
     GCD_MODULO_TERMS,
     as_poly,
@@ -26,6 +27,7 @@ from coopkin_sym.analysis.locus.algebra import (
     solve_small,
     substitute_values,
     univariate,
+    value_equation,
     vars_of,
 )
 from coopkin_sym.analysis.locus.conditions import Condition
@@ -53,6 +55,7 @@ from coopkin_sym.analysis.locus.witness import (
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
 from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.exact.factoring import factor
+from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -88,6 +91,14 @@ def isolated(ctx: SearchContext, place: Place, rests, max_degree: int | None = N
                 algebraic_points += algebraic
                 continue
             if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
+                continue
+            finite = _eliminated_points(ctx, polys, names_used, max_degree, place.depth)
+            if finite is not None:
+                points, algebraic, unresolved = finite
+                for remark in unresolved:
+                    add_once(ctx.locus.unexplored, remark)
+                rational_points += points
+                algebraic_points += algebraic
                 continue
             note(ctx, "lower_dimensional_not_solved", depth=place.depth,
                  variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
@@ -141,6 +152,123 @@ def _product_points(ctx: SearchContext, polys, names: list[str], max_degree: int
                                             variables=names, bound=_PARAMETER_SOLVE_TERMS))
         return out_points, out_algebraic, unresolved
     return None
+
+
+def _eliminated_points(ctx: SearchContext, polys, names: list[str], max_degree: int | None,
+                       depth: int):
+    """The common zeros of ``polys`` in three variables when the other two take finitely
+    many values on them: a variable ``v`` is eliminated (resultants in ``v`` with the
+    smallest equation in it; every common zero projects into their zeros), the points
+    of the result in the two others solved (:func:`solve_small`: finitely many exactly
+    when its equations have no common factor), and ``v`` at each point from the gcd of
+    all the equations there (``v`` stays free where they all vanish). ``None`` when no
+    variable leaves finitely many points, or a resultant is over its bound."""
+    if len(names) != 3:
+        return None
+    for v in names:
+        kv = ctx.ring_names.index(v)
+        with_v = sorted((p for p in polys if p.degrees()[kv] > 0), key=len)
+        if not with_v:
+            continue
+        system = [p for p in polys if p.degrees()[kv] == 0]
+        for p in with_v[1:]:
+            r = bounded_resultant(ctx, with_v[0], p, v)
+            if r is None:
+                return None      # not solved, and the report says why
+            system.append(r)
+        system = [p for p in system if not p.is_zero()]
+        if not system or any(p.is_constant() for p in system):
+            if system:
+                return [], [], []                       # no common zero at all
+            continue
+        g = system[0]
+        for p in system[1:]:
+            g = g.gcd(p)
+        if not g.is_constant():
+            continue                                    # a curve: not finitely many
+        others = [n for n in names if n != v]
+        points, algebraic, unresolved = solve_small(ctx, system, others, max_degree)
+        out_points, out_algebraic = [], []
+        for point in points:
+            at = _values_substituted(ctx, polys, point, None)
+            rational, curved = _lifted_roots(ctx, at, v)
+            if rational is None:
+                out_points.append(point)                # v free there
+                continue
+            out_points += [{**point, v: r} for r in rational]
+            for f in curved:
+                if max_degree is not None and f.degrees()[kv] > max_degree:
+                    unresolved.append(Remark.of(
+                        "points_not_decided", polynomial=poly_text(ctx, f),
+                        degree=int(f.degrees()[kv]), bound=max_degree))
+                    continue
+                out_algebraic.append((v, f, dict(point), [f, *(linear_equation(ctx, n, c)
+                                                           for n, c in point.items())], v))
+        for x, h, values, eqs, alpha in algebraic:
+            how, lifted = _lifted_value(ctx, polys, x, h, values, v)
+            if how == "one":
+                out_algebraic.append((x, h, {**values, v: lifted},
+                                      [*eqs, value_equation(ctx, v, lifted, x)], alpha))
+            elif how == "free":
+                out_algebraic.append((x, h, values, eqs, alpha))
+            elif how == "several":
+                unresolved.append(Remark.of("shared_values_undecided",
+                                            polynomial=poly_text(ctx, h), count=lifted,
+                                            variable=v, over=x))
+            elif how == "sheared":
+                unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
+                                            variables=names, bound=_PARAMETER_SOLVE_TERMS))
+        return out_points, out_algebraic, unresolved
+    return None
+
+
+def _values_substituted(ctx: SearchContext, polys, values: dict, x: str | None) -> list:
+    """``polys`` with each variable of ``values`` replaced by its value (a rational, or
+    a polynomial over Q in the root ``x``), denominators cleared."""
+    out = []
+    for p in polys:
+        for name, value in values.items():
+            k = ctx.ring_names.index(name)
+            if p.degrees()[k] == 0:
+                continue
+            num, den = as_poly(ctx, value, x)
+            p = substitute(p, k, -num, ctx.ring.zctx.constant(den), p.degrees()[k])
+        out.append(p)
+    return out
+
+
+def _lifted_roots(ctx: SearchContext, polys, v: str):
+    """The real roots of the gcd of univariate ``polys`` in ``v`` (``roots``), or
+    ``(None, None)`` when they all vanish (``v`` free)."""
+    g = None
+    for p in polys:
+        if not p.is_zero():
+            g = p if g is None else g.gcd(p)
+    if g is None:
+        return None, None
+    return roots(ctx, g, v)
+
+
+def _lifted_value(ctx: SearchContext, polys, x: str, h, values: dict, v: str):
+    """The value of ``v`` at a point whose coordinates are polynomials over Q in a root
+    ``x`` of ``h``, as ``(how, value)``: ``("one", P)`` when the equations there have
+    one common root in ``v``, a polynomial in that root; ``("free", None)`` when they
+    all vanish; ``("none", None)`` when they have no common root; ``("several", n)``
+    when they share ``n`` (not decided here); ``("sheared", None)`` for a point in
+    sheared coordinates (``x`` among the values: not lifted here)."""
+    if x in values:
+        return "sheared", None
+    at = _values_substituted(ctx, polys, values, x)
+    nonzero = [p for p in at if not p.is_zero()]
+    if not nonzero:
+        return "free", None
+    field = NumberField(univariate(ctx, h, x))
+    kx, kv = ctx.ring_names.index(x), ctx.ring_names.index(v)
+    common = field.squarefree(field.gcd([algebra.coefficients_in(ctx, p, kx, kv)
+                                         for p in nonzero]))
+    if len(common) == 2:
+        return "one", field.element(-common[0])
+    return ("none", None) if len(common) < 2 else ("several", len(common) - 1)
 
 
 def _no_real_common_zero(ctx: SearchContext, polys) -> bool:
