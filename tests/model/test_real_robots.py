@@ -107,6 +107,7 @@ def test_the_hand_at_exact_configurations_agrees_with_the_independent_analysis(
     assert ours == numbers == _independent("allegro-hand-sphere", at)
 
 
+@pytest.mark.slow          # the hand's whole generic analysis: about 40 s
 def test_the_generic_blocks_of_the_hand_over_the_budget_are_refused_before_written():
     """The hand's generic C12 (24,440 terms in an entry) and C22 (a bound of 7,063,244)
     are over the term budget: both are refused with their sizes before anything is

@@ -82,6 +82,7 @@ def test_real_common_zeros_are_sympys_real_solutions(texts):
     assert sorted((round(a, 9), round(b, 9)) for a, b in found) == _sympy_real_points(texts)
 
 
+@pytest.mark.slow          # 40 systems against SymPy's solver: about 16 s
 def test_real_common_zeros_on_random_systems():
     import random
     rng = random.Random(7)

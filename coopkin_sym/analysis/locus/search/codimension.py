@@ -162,8 +162,9 @@ def _eliminated_points(ctx: SearchContext, polys, names: list[str], max_degree: 
     of the result in the two others solved (:func:`solve_small`: finitely many exactly
     when its equations have no common factor), and ``v`` at each point from the gcd of
     all the equations there (``v`` stays free where they all vanish). ``None`` when no
-    variable leaves finitely many points, or a resultant is over its bound."""
-    if len(names) != 3:
+    variable leaves finitely many points, an equation has more than
+    :data:`_PARAMETER_SOLVE_TERMS` terms, or a resultant is over its bound."""
+    if len(names) != 3 or any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
         return None
     for v in names:
         kv = ctx.ring_names.index(v)
