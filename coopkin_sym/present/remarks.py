@@ -158,8 +158,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "inside_not_searched": lambda f: f"inside {_where(f)}: {_inside_limit(f)}",
     "lower_dimensional_not_solved": lambda f: (
         f"depth {f['depth']}: lower-dimensional drops in {len(f['variables'])} variables "
-        f"({', '.join(f['variables'])}) not solved (solved: up to two variables, and up "
-        f"to four when the equations have at most {f['bound']} terms)"),
+        f"({', '.join(f['variables'])}) not solved (solved: up to two variables; curves "
+        f"in three or four and points in three when the equations have at most "
+        f"{f['bound']} terms)"),
     "operation_too_large": lambda f: (
         f"a {f['operation']} in {', '.join(f['variables'])} of about {f['size']} terms "
         f"(more than {f['bound']}, and it cannot be interrupted) was not computed: the "
