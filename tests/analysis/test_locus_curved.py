@@ -305,6 +305,29 @@ def test_finitely_many_points_in_three_variables_are_solved_by_elimination():
     assert codimension._eliminated_points(ctx, [t1 - t2, t2 - t3], names, None, 1) is None
 
 
+def test_finitely_many_points_in_four_variables_are_solved_by_elimination():
+    """Two eliminations: t4 = t1, t1 t2 = 1, t2 = +-2, and t3 = +-sqrt(3) (the last
+    equation is (t3^2 - 3) (t4 - t1 + 1)); the order that determines every point from
+    one root is the one kept. A curve (t2 = t3 free) is not points."""
+    system = coopkin_sym.load(random_system(154))
+    ctx, _ = search_context(system)
+    t1, t2, t3, t4 = ctx.ring.zctx.gens()
+    names = list(ctx.ring_names)
+    polys = [t4 - t1, t1 * t2 - 1, t2**2 - 4, (t3**2 - 3) * (t4 - t1 + 1)]
+    points, algebraic, unresolved = codimension._eliminated_points(ctx, polys, names,
+                                                                   None, 1)
+    assert points == [] and unresolved == []
+    found = sorted((x, str(h), sorted((k, str(v)) for k, v in values.items()))
+                   for x, h, values, _e, _a in algebraic)
+    assert found == [
+        ("t_q3", "t_q3^2 - 3", [("t_q1", "(-1/2)"), ("t_q2", "-2"), ("t_q4", "-1/2")]),
+        ("t_q3", "t_q3^2 - 3", [("t_q1", "1/2"), ("t_q2", "2"), ("t_q4", "1/2")])]
+    for _x, _h, _values, eqs, _a in algebraic:     # the equations hold at the points
+        assert len(eqs) == 4
+    assert codimension._eliminated_points(ctx, [t4 - t1, t2 - t3, t1**2 - 2], names,
+                                          None, 1) is None
+
+
 def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
     """Random system 395: where q1 = q3 = 0, q2 = 0 or pi and tan(q4/2) = 2 +- sqrt(5),
     Nm is 7 (6 around): points of a system in three variables, said not solved and

@@ -64,6 +64,7 @@ from coopkin_sym.exact.quotient import (
     smallest_fraction,
 )
 from coopkin_sym.exact.realroot import real_root_count
+from coopkin_sym.exact.sizes import resultant_terms
 from coopkin_sym.exact.substitution import split_linear, substitute, substitute_rows
 from coopkin_sym.exact.sympy_bridge import poly_to_sympy
 
@@ -156,71 +157,100 @@ def _product_points(ctx: SearchContext, polys, names: list[str], max_degree: int
 
 def _eliminated_points(ctx: SearchContext, polys, names: list[str], max_degree: int | None,
                        depth: int):
-    """The common zeros of ``polys`` in three variables when the other two take finitely
-    many values on them: a variable ``v`` is eliminated (resultants in ``v`` with the
-    smallest equation in it; every common zero projects into their zeros), the points
-    of the result in the two others solved (:func:`solve_small`: finitely many exactly
-    when its equations have no common factor), and ``v`` at each point from the gcd of
-    all the equations there (``v`` stays free where they all vanish). ``None`` when no
-    variable leaves finitely many points, an equation has more than
+    """The common zeros of ``polys`` in three or four variables when the others take
+    finitely many values on them: a variable ``v`` is eliminated (resultants in ``v``
+    with the smallest equation in it; every common zero projects into their zeros), the
+    points of the result in the others solved (in two by :func:`solve_small`: finitely
+    many exactly when its equations have no common factor; in three by this function),
+    and ``v`` at each point from the gcd of all the equations there (``v`` stays free
+    where they all vanish, at the outermost level only). ``None`` when no variable
+    leaves finitely many points, an equation has more than
     :data:`_PARAMETER_SOLVE_TERMS` terms, or a resultant is over its bound."""
-    if len(names) != 3 or any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
+    if not 3 <= len(names) <= 4 or any(len(p) > _PARAMETER_SOLVE_TERMS for p in polys):
         return None
-    for v in names:
-        kv = ctx.ring_names.index(v)
-        with_v = sorted((p for p in polys if p.degrees()[kv] > 0), key=len)
-        if not with_v:
-            continue
-        system = [p for p in polys if p.degrees()[kv] == 0]
-        for p in with_v[1:]:
-            r = bounded_resultant(ctx, with_v[0], p, v)
-            if r is None:
-                return None      # not solved, and the report says why
-            system.append(r)
-        system = [p for p in system if not p.is_zero()]
-        if not system or any(p.is_constant() for p in system):
-            if system:
-                return [], [], []                       # no common zero at all
-            continue
+    first = None
+    for v in names:          # the first order that leaves nothing undecided
+        found = _eliminating(ctx, polys, names, v, max_degree, depth)
+        if found == "too large":
+            return None       # not solved, and the report says why
+        if found is not None and not found[2]:
+            return found
+        first = first or found
+    return first
+
+
+def _eliminating(ctx: SearchContext, polys, names: list[str], v: str,
+                 max_degree: int | None, depth: int):
+    """:func:`_eliminated_points` with ``v`` eliminated first: its result, ``None``
+    when that leaves infinitely many points, ``"too large"`` when a resultant is over
+    its bound."""
+    kv = ctx.ring_names.index(v)
+    with_v = sorted((p for p in polys if p.degrees()[kv] > 0), key=len)
+    if not with_v:
+        return None
+    if any(resultant_terms(with_v[0], p, kv) > _ELIMINATION_TERMS for p in with_v[1:]):
+        return None           # a resultant that could be large and slow: not this way
+    system = [p for p in polys if p.degrees()[kv] == 0]
+    for p in with_v[1:]:
+        r = bounded_resultant(ctx, with_v[0], p, v)
+        if r is None:
+            return "too large"
+        system.append(r)
+    system = [p for p in system if not p.is_zero()]
+    if not system or any(p.is_constant() for p in system):
+        return ([], [], []) if system else None     # no common zero at all, or v alone
+    others = [n for n in names if n != v]
+    if len(others) == 2:
         g = system[0]
         for p in system[1:]:
             g = g.gcd(p)
         if not g.is_constant():
-            continue                                    # a curve: not finitely many
-        others = [n for n in names if n != v]
+            return None                                 # a curve: not finitely many
         points, algebraic, unresolved = solve_small(ctx, system, others, max_degree)
-        out_points, out_algebraic = [], []
-        for point in points:
-            at = _values_substituted(ctx, polys, point, None)
-            rational, curved = _lifted_roots(ctx, at, v)
-            if rational is None:
-                out_points.append(point)                # v free there
+        if unresolved:       # the other variable first may determine every point
+            again = solve_small(ctx, system, others[::-1], max_degree)
+            if not again[2]:
+                points, algebraic, unresolved = again
+    else:
+        inner = _eliminated_points(ctx, system, others, max_degree, depth)
+        if inner is None:
+            return None
+        points, algebraic, unresolved = inner
+        if any(set(p) != set(others) for p in points) or any(
+                set(values) | {x} != set(others) for x, _h, values, _e, _a in algebraic):
+            return None                         # an inner coordinate free: a curve
+    unresolved = list(unresolved)
+    out_points, out_algebraic = [], []
+    for point in points:
+        at = _values_substituted(ctx, polys, point, None)
+        rational, curved = _lifted_roots(ctx, at, v)
+        if rational is None:
+            out_points.append(point)                    # v free there
+            continue
+        out_points += [{**point, v: r} for r in rational]
+        for f in curved:
+            if max_degree is not None and f.degrees()[kv] > max_degree:
+                unresolved.append(Remark.of(
+                    "points_not_decided", polynomial=poly_text(ctx, f),
+                    degree=int(f.degrees()[kv]), bound=max_degree))
                 continue
-            out_points += [{**point, v: r} for r in rational]
-            for f in curved:
-                if max_degree is not None and f.degrees()[kv] > max_degree:
-                    unresolved.append(Remark.of(
-                        "points_not_decided", polynomial=poly_text(ctx, f),
-                        degree=int(f.degrees()[kv]), bound=max_degree))
-                    continue
-                out_algebraic.append((v, f, dict(point), [f, *(linear_equation(ctx, n, c)
-                                                           for n, c in point.items())], v))
-        for x, h, values, eqs, alpha in algebraic:
-            how, lifted = _lifted_value(ctx, polys, x, h, values, v)
-            if how == "one":
-                out_algebraic.append((x, h, {**values, v: lifted},
-                                      [*eqs, value_equation(ctx, v, lifted, x)], alpha))
-            elif how == "free":
-                out_algebraic.append((x, h, values, eqs, alpha))
-            elif how == "several":
-                unresolved.append(Remark.of("shared_values_undecided",
-                                            polynomial=poly_text(ctx, h), count=lifted,
-                                            variable=v, over=x))
-            elif how == "sheared":
-                unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
-                                            variables=names, bound=_PARAMETER_SOLVE_TERMS))
-        return out_points, out_algebraic, unresolved
-    return None
+            out_algebraic.append((v, f, dict(point), [f, *(linear_equation(ctx, n, c)
+                                                       for n, c in point.items())], v))
+    for x, h, values, eqs, alpha in algebraic:
+        how, lifted = _lifted_value(ctx, polys, x, h, values, v)
+        if how == "one":
+            out_algebraic.append((x, h, {**values, v: lifted},
+                                  [*eqs, value_equation(ctx, v, lifted, x)], alpha))
+        elif how == "free":
+            out_algebraic.append((x, h, values, eqs, alpha))
+        elif how == "several":
+            unresolved.append(Remark.of("shared_values_undecided",
+                                        polynomial=poly_text(ctx, h), count=lifted,
+                                        variable=v, over=x))
+        elif how == "sheared":
+            unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
+                                        variables=names, bound=_PARAMETER_SOLVE_TERMS))
+    return out_points, out_algebraic, unresolved
 
 
 def _values_substituted(ctx: SearchContext, polys, values: dict, x: str | None) -> list:
@@ -345,6 +375,8 @@ def _intersections(ctx: SearchContext, place: Place, created, free) -> None:
 
 # the largest minor combination (in terms) solved with parameters
 _PARAMETER_SOLVE_TERMS = 400
+# the largest resultant (a bound from degrees, in terms) that points are eliminated with
+_ELIMINATION_TERMS = 2_000
 
 
 def _solve_with_parameters(ctx: SearchContext, place: Place, polys, names: list[str]) -> bool:
