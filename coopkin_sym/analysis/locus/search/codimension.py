@@ -83,28 +83,21 @@ def isolated(ctx: SearchContext, place: Place, rests, max_degree: int | None = N
         if len(names_used) > 2 and _no_real_common_zero(ctx, polys):
             continue
         if len(names_used) > 2:
-            product = _product_points(ctx, polys, names_used, max_degree, place.depth)
-            if product is not None:
-                points, algebraic, unresolved = product
-                for remark in unresolved:
-                    add_once(ctx.locus.unexplored, remark)
-                rational_points += points
-                algebraic_points += algebraic
+            # roots in one variable times points in the others, families of
+            # codimension 2, then finitely many points (each None when it does not apply)
+            found = _product_points(ctx, polys, names_used, max_degree, place.depth)
+            if found is None and len(names_used) <= 4 and _solve_with_parameters(
+                    ctx, place, polys, names_used):
                 continue
-            if len(names_used) <= 4 and _solve_with_parameters(ctx, place, polys, names_used):
+            if found is None:
+                found = _eliminated_points(ctx, polys, names_used, max_degree, place.depth)
+            if found is None:
+                note(ctx, "lower_dimensional_not_solved", depth=place.depth,
+                     variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
                 continue
-            finite = _eliminated_points(ctx, polys, names_used, max_degree, place.depth)
-            if finite is not None:
-                points, algebraic, unresolved = finite
-                for remark in unresolved:
-                    add_once(ctx.locus.unexplored, remark)
-                rational_points += points
-                algebraic_points += algebraic
-                continue
-            note(ctx, "lower_dimensional_not_solved", depth=place.depth,
-                 variables=names_used, bound=_PARAMETER_SOLVE_TERMS)
-            continue
-        points, algebraic, unresolved = solve_small(ctx, polys, names_used, max_degree)
+            points, algebraic, unresolved = found
+        else:
+            points, algebraic, unresolved = solve_small(ctx, polys, names_used, max_degree)
         for remark in unresolved:
             add_once(ctx.locus.unexplored, remark)
         rational_points += points
