@@ -226,7 +226,7 @@ def _builder(name: str, *sizes: int) -> Callable[[], str]:
 #: search takes minutes (its generic numbers under a second).
 INPUTS: dict[str, Callable[[], str]] = {
     "bad.yaml": lambda: BAD_YAML,
-    "hand.json": _builder("spatial_hand", 3, 5),
+    "hand.json": _builder("spatial_hand", 3, 7),
     "cell.json": _builder("arm_cell", 3, 3),
 }
 
