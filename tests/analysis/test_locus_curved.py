@@ -337,7 +337,10 @@ def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
     locus = compute_locus(system, timeout=60)
     top = {"Nm": 7, "Nc": 4, "Ni": 3, "Nr": 3, "Ng": 1, "Nd": 3, "Nh": 1}
     points = [c for c in locus.components if c.kind == "isolated" and c.numbers == top]
-    assert len(points) == 2
+    # q3 = 0 with q2 = 0 or pi; and q2 = q3 = pi, a point of the curve at q3 = pi
+    assert sorted(", ".join(w for w in ("q2 = 0", "q2 = pi", "q3 = 0", "q3 = pi")
+                            if w in str(c.condition)) for c in points) == [
+        "q2 = 0, q3 = 0", "q2 = pi, q3 = 0", "q2 = pi, q3 = pi"]
     for q2 in ("0", "pi"):
         for q4 in ("2*atan(2 + sqrt(5))", "2*atan(2 - sqrt(5))"):
             at = f"q1=0,q2={q2},q3=0,q4={q4}"
@@ -345,6 +348,81 @@ def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
             assert analyze_irrational(system.model, at.replace("q1=0", "q1=1/3")
                                       ).numbers.as_dict() != top
     assert certify_locus(system, locus, timeout=120).certified
+
+
+def test_sets_with_one_irrational_coordinate_are_searched_inside():
+    """Random system 408: inside the family t_q4^2 + 2 t_q4 - 1 = 0 (q4 = pi/4 or
+    -3 pi/4), the sets q1 = -q4 and q1 = q4 + pi (tan(q1/2) = tan(q4/2) + 2) have the
+    family's numbers, and inside them Nm rises to 3 where q3 = +-pi/2 (q2 free). The
+    sets have no rational parametrization (their coordinates lie in Q(sqrt(2))): they
+    were said not searched, and the rise was missed; written as a family in q4 (the
+    other coordinate a polynomial in it) they are searched like any curved family, and
+    the certificate is complete."""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    system = coopkin_sym.load(random_system(408))
+    locus = compute_locus(system, timeout=60)
+    raised = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 3, "Nd": 6, "Nh": 2}
+    found = [c for c in locus.components if c.numbers == raised]
+    assert len(found) == 4
+    for q4, q1s in (("pi/4", ("-pi/4", "3*pi/4")), ("-3*pi/4", ("3*pi/4", "-pi/4"))):
+        for q1 in q1s:
+            for q3 in ("pi/2", "-pi/2"):
+                at = f"q1={q1},q2=2*atan(5),q3={q3},q4={q4}"
+                assert analyze_irrational(system.model, at).numbers.as_dict() == raised
+                assert analyze_irrational(system.model, at.replace(f"q3={q3}", "q3=pi/3")
+                                          ).numbers.as_dict() != raised
+    # q1 = q4 lies in the family too, with its numbers
+    assert analyze_irrational(system.model, "q1=pi/4,q2=2*atan(5),q3=pi/2,q4=pi/4"
+                              ).numbers.as_dict() != raised
+    assert not any("no rational parametrization" in t and "t_q1 - t_q4 - 2" in t
+                   for t in remark_texts(locus.unexplored))
+    assert certify_locus(system, locus, timeout=120).certified
+
+
+def test_a_family_recorded_in_the_t_chart_is_searched_inside_at_q_pi():
+    """Random system 404: inside the family t_q4^2 - 11 t_q4 - 1 = 0, Nm rises to 3
+    where q3 = 3/5 and q1 = 0, and also where q1 = pi. The family is recorded in the t
+    chart; found again in the chart q1 = pi it is not recorded twice, but it is searched
+    inside there (it was not: the drop at q1 = pi was missed, and the certificate
+    said so). Now the locus is certified on flint alone."""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    system = coopkin_sym.load(random_system(404))
+    locus = compute_locus(system, timeout=60)
+    raised = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 4, "Nd": 7, "Nh": 3}
+    found = sorted(str(c.condition).split(",")[0] for c in locus.components
+                   if c.numbers == raised)
+    assert found == ["q1 = pi", "t_q4**2 - 11*t_q4 - 1 = 0"]
+    for q1 in ("0", "pi"):
+        for q4 in ("2*atan(11/2 + 5*sqrt(5)/2)", "2*atan(11/2 - 5*sqrt(5)/2)"):
+            at = f"q1={q1},q2=2*atan(5),q3=3/5,q4={q4}"
+            assert analyze_irrational(system.model, at).numbers.as_dict() == raised
+            assert analyze_irrational(system.model, at.replace("q3=3/5", "q3=1/2")
+                                      ).numbers.as_dict() != raised
+    assert certify_locus(system, locus, timeout=120).certified
+
+
+def test_a_family_is_written_in_a_coordinate_that_generates_its_field():
+    """A point's coordinates given in a root x = 3 t_q4 of x^2 + 6 x - 9 (t_q4 = x/3,
+    t_q1 = x/3 + 2) become the family t_q4^2 + 2 t_q4 - 1 = 0 with t_q1 = t_q4 + 2;
+    coordinates that do not generate the field (sqrt(2) and sqrt(3) apart, in
+    Q(sqrt(2) + sqrt(3))) give none."""
+    system = coopkin_sym.load(random_system(408))
+    ctx, rows = search_context(system)
+    place = Place(rows=rows, equations=[], point={}, charts=(), depth=1)
+    x = flint.fmpq_poly([0, 1])
+    t4 = ctx.ring.zctx.gens()[ctx.ring_names.index("t_q4")]
+    g = t4**2 + 6 * t4 - 9
+    inside, (h, k) = codimension.irrational_family(
+        ctx, place, {"t_q4": x / 3, "t_q1": x / 3 + 2}, "t_q4", g, ["e"])
+    assert (str(h), ctx.ring_names[k]) == ("t_q4^2 + 2*t_q4 - 1", "t_q4")
+    f0, f1 = inside.point["t_q1"]
+    assert (str(-f0), str(f1)) == ("t_q4 + 2", "1")
+    assert inside.equations == ["e"]
+    # x = sqrt(2) + sqrt(3): x^4 - 10 x^2 + 1; t_q4 = sqrt(2), t_q1 = sqrt(3)
+    quartic = t4**4 - 10 * t4**2 + 1
+    sqrt2, sqrt3 = (x**3 - 9 * x) / 2, (11 * x - x**3) / 2
+    assert codimension.irrational_family(ctx, place, {"t_q4": sqrt2, "t_q1": sqrt3},
+                                         "t_q4", quartic, ["e"]) is None
 
 
 @pytest.mark.slow

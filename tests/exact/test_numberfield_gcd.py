@@ -96,3 +96,41 @@ def test_coprime_polynomials_are_proved_coprime_by_one_prime():
     assert modular_gcd(field.g, [[1, 0, 1], [-2 * x, 1]], max_primes=1) == [1]
     # with y - i they share y - i
     assert modular_gcd(field.g, [[1, 0, 1], [-x, 1]]) == [-x, 1]
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_a_change_of_generator_keeps_every_element(seed):
+    """``change_generator``: the minimal polynomial it gives vanishes at ``t`` in
+    ``Q[x]/(g)`` and has the degree of ``g``, every element written in ``t`` equals
+    itself there; a ``t`` of a proper subfield (a rational, or ``u^2`` where
+    ``g(x) = h(x^2)``) gives None."""
+    from coopkin_sym.exact.numberfield import change_generator
+    rng = random.Random(seed)
+    g = _irreducible(rng)
+    field = NumberField(g)
+    t = _element(rng, field, 9)
+    elements = [_element(rng, field, 20) for _ in range(3)]
+    changed = change_generator(g, t, elements)
+    d = g.degree()
+    if changed is None:
+        # then t lies in a proper subfield: its powers up to d - 1 are dependent
+        powers = [flint.fmpq_poly([1])]
+        for _ in range(d - 1):
+            powers.append((powers[-1] * t) % g)
+        assert flint.fmpq_mat(d, d, [p[i] for p in powers for i in range(d)]).rank() < d
+        return
+    minimal, written = changed
+    assert minimal.degree() == d and minimal(t) % g == 0
+    for e, w in zip(elements, written, strict=True):
+        assert w.degree() < d and (w(t) - e) % g == 0
+    assert change_generator(g, flint.fmpq_poly([flint.fmpq(3, 7)]), elements) is None \
+        or d == 1
+
+
+def test_a_generator_of_a_subfield_gives_none():
+    from coopkin_sym.exact.numberfield import change_generator
+    g = flint.fmpq_poly([1, 0, -10, 0, 1])          # sqrt(2) + sqrt(3)
+    x = flint.fmpq_poly([0, 1])
+    assert change_generator(g, x * x, [x]) is None  # x^2 = 5 + 2 sqrt(6)
+    minimal, (back,) = change_generator(g, x + 1, [x])
+    assert minimal == g(x - 1) and back == x - 1

@@ -40,6 +40,7 @@ from coopkin_sym.analysis.locus.search.components import (
     no_real_points,
     note,
     off_charts,
+    recorded_elsewhere,
     variable_to_solve,
 )
 from coopkin_sym.analysis.locus.witness import (
@@ -55,7 +56,7 @@ from coopkin_sym.analysis.locus.witness import (
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
 from coopkin_sym.errors import BlockTooLarge
 from coopkin_sym.exact.factoring import factor
-from coopkin_sym.exact.numberfield import NumberField
+from coopkin_sym.exact.numberfield import NumberField, change_generator
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -507,9 +508,13 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"}, decided,
                           chain=chain, within=inner,
                           generic_point=None if chain is not None else (inner, quotient))
-    if comp is None:
-        return
-    family_witness(ctx, comp, k, y, inner, numbers)
+    if comp is None:   # recorded in another chart: searched inside at its joints at pi
+        comp = recorded_elsewhere(ctx, eqs, numbers, *((chain, None) if chain is not None
+                                                        else (inner, quotient)))
+        if comp is None:
+            return
+    else:
+        family_witness(ctx, comp, k, y, inner, numbers)
     if k.degrees()[ky] == 1:
         sub_point = dict(inner)
         sub_point[y] = (k0, k1)
@@ -580,9 +585,12 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"},
                           Remark.of("decided_family_modulo"), within=inner,
                           generic_point=(inner, quotient))
-    if comp is None:
-        return
-    family_witness(ctx, comp, h, x, inner, numbers)
+    if comp is None:   # recorded in another chart: searched inside at its joints at pi
+        comp = recorded_elsewhere(ctx, eqs, numbers, inner, quotient)
+        if comp is None:
+            return
+    else:
+        family_witness(ctx, comp, h, x, inner, numbers)
     ctx.steps.go_deeper(ctx, comp, on_h, family=(h, kx))
 
 
@@ -643,17 +651,23 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
         numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
     eqs = list(place.equations)
     if algebraic is not None:
-        eqs += [poly_text(ctx, e) for e in algebraic[2]]
+        new = [poly_text(ctx, e) for e in algebraic[2]]
     else:
-        eqs += [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
+        new = [poly_text(ctx, linear_equation(ctx, n, v)) for n, v in values.items()]
+    eqs += [e for e in dict.fromkeys(new) if e not in eqs]   # an equation once
     dims = set(values) | ({x} if x is not None else set())
     kind = "isolated" if len(dims) == len(free) else "subvariety"
     if numbers == place.base:
-        if kind == "subvariety":
-            sub_point = (_with_values(ctx, place.point, values) if algebraic is None
-                         else dict(place.point))
-            ctx.steps.inside_candidate(ctx, place.inside(rows=rows if algebraic is None else None,
-                                                         equations=eqs, point=sub_point))
+        if kind == "subvariety" and algebraic is None:
+            ctx.steps.inside_candidate(ctx, place.inside(
+                rows=rows, equations=eqs, point=_with_values(ctx, place.point, values)))
+        elif kind == "subvariety":
+            family = irrational_family(ctx, place, values, x, algebraic[1], eqs)
+            if family is None:   # said in the report: no rational parametrization
+                ctx.steps.inside_candidate(ctx, place.inside(rows=None, equations=eqs,
+                                                             point=dict(place.point)))
+            else:
+                ctx.steps.inside_candidate(ctx, family[0], family=family[1])
         return None
     if algebraic is not None:
         return _algebraic_point(ctx, place, values, algebraic, quotient, rows, eqs, numbers,
@@ -665,6 +679,11 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
                           chain=chain,
                           generic_point=(chain, None) if ctx.inside else None)
     if comp is None:
+        holder = (recorded_elsewhere(ctx, eqs, numbers, chain, None) if kind == "subvariety"
+                  else None)
+        if holder is not None:   # recorded in another chart: searched inside here
+            ctx.steps.go_deeper(ctx, holder, place.inside(rows=rows, equations=eqs,
+                                                          point=chain))
         return None
     for offset in range(6):
         full = complete_point(ctx, place.point, values, offset)
@@ -709,6 +728,59 @@ def _algebraic_point(ctx: SearchContext, place: Place, values: dict, algebraic, 
     if comp is None:
         return None
     attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
-    ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
-                        "irrational_family")
+    family = (irrational_family(ctx, place, values, x, g, eqs) if kind == "subvariety"
+              else None)
+    if family is None:
+        ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
+                            "irrational_family")
+    else:   # after the sets of this level, as the other searches inside a family
+        ctx.steps.after_enclosing(
+            ctx, lambda: ctx.steps.go_deeper(ctx, comp, family[0], family=family[1]))
     return comp, values, (x, g)
+
+
+def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,
+                      equations: list[str]) -> tuple[Place, tuple] | None:
+    """The set where the coordinates ``values`` are fixed (rationals, or polynomials
+    over Q in a root ``x`` of ``g``; the other free variables generic) as a family
+    ``h = 0`` that :func:`~.curved.inside_curved` searches inside: ``(place, (h, k))``,
+    ``h`` the minimal polynomial of one of its irrational coordinates (variable ``k``),
+    the others polynomials in it, substituted in the rows. The first coordinate that
+    generates ``Q(x)`` is taken; None when none does (the report then says there is no
+    rational parametrization).
+
+    ``x`` is the variable whose slot holds the root; its own coordinate may be one of
+    ``values`` (a polynomial in the root, as when the root is ``3 t``): the family is
+    then written in the coordinate, never in the root."""
+    gq = univariate(ctx, g, x)
+    irrational = {n: v for n, v in values.items() if not isinstance(v, Fraction)}
+    if x not in values:
+        chosen, h, fixed = x, g, dict(values)
+    else:
+        order = [x, *sorted((n for n in irrational if n != x), key=ctx.ring_names.index)]
+        for chosen in order:
+            if chosen not in irrational:
+                continue
+            others = [n for n in irrational if n != chosen]
+            changed = change_generator(gq, irrational[chosen], [irrational[n] for n in others])
+            if changed is not None:
+                break
+        else:
+            return None
+        minimal, expressed = changed
+        fixed = {n: v for n, v in values.items() if n not in irrational}
+        fixed.update(zip(others, expressed, strict=True))
+        k = ctx.ring_names.index(chosen)
+        den = int(minimal.denom())
+        h = normalize(ctx.ring.zctx.from_dict({
+            tuple(e if i == k else 0 for i in range(len(ctx.ring_names))): int(c * den)
+            for e, c in enumerate(minimal.coeffs()) if c}))
+    rows = substitute_values(ctx, place.rows, fixed, chosen)
+    point = dict(place.point)
+    for n, v in fixed.items():
+        num, den = as_poly(ctx, v, chosen)
+        point[n] = (-num, ctx.ring.zctx.constant(den))
+    charts = tuple(c for c in (substitute_values(ctx, [[c]], fixed, chosen)[0][0]
+                               for c in place.charts) if not c.is_constant())
+    return (place.inside(rows=rows, equations=equations, point=point, charts=charts),
+            (h, ctx.ring_names.index(chosen)))
