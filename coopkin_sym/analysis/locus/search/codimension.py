@@ -40,7 +40,6 @@ from coopkin_sym.analysis.locus.search.components import (
     no_real_points,
     note,
     off_charts,
-    recorded_elsewhere,
     variable_to_solve,
 )
 from coopkin_sym.analysis.locus.witness import (
@@ -508,13 +507,9 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"}, decided,
                           chain=chain, within=inner,
                           generic_point=None if chain is not None else (inner, quotient))
-    if comp is None:   # recorded in another chart: searched inside at its joints at pi
-        comp = recorded_elsewhere(ctx, eqs, numbers, *((chain, None) if chain is not None
-                                                        else (inner, quotient)))
-        if comp is None:
-            return
-    else:
-        family_witness(ctx, comp, k, y, inner, numbers)
+    if comp is None:
+        return
+    family_witness(ctx, comp, k, y, inner, numbers)
     if k.degrees()[ky] == 1:
         sub_point = dict(inner)
         sub_point[y] = (k0, k1)
@@ -585,12 +580,9 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"},
                           Remark.of("decided_family_modulo"), within=inner,
                           generic_point=(inner, quotient))
-    if comp is None:   # recorded in another chart: searched inside at its joints at pi
-        comp = recorded_elsewhere(ctx, eqs, numbers, inner, quotient)
-        if comp is None:
-            return
-    else:
-        family_witness(ctx, comp, h, x, inner, numbers)
+    if comp is None:
+        return
+    family_witness(ctx, comp, h, x, inner, numbers)
     ctx.steps.go_deeper(ctx, comp, on_h, family=(h, kx))
 
 
@@ -679,11 +671,6 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
                           chain=chain,
                           generic_point=(chain, None) if ctx.inside else None)
     if comp is None:
-        holder = (recorded_elsewhere(ctx, eqs, numbers, chain, None) if kind == "subvariety"
-                  else None)
-        if holder is not None:   # recorded in another chart: searched inside here
-            ctx.steps.go_deeper(ctx, holder, place.inside(rows=rows, equations=eqs,
-                                                          point=chain))
         return None
     for offset in range(6):
         full = complete_point(ctx, place.point, values, offset)

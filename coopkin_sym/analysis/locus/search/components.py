@@ -294,28 +294,6 @@ def wider_component(ctx: SearchContext, chain: dict, numbers: Numbers) -> Compon
     return None
 
 
-def recorded_elsewhere(ctx: SearchContext, equations: list[str], numbers: Numbers,
-                       point: dict, quotient) -> Component | None:
-    """The component, recorded in another chart with the same numbers, that holds the
-    set of ``equations`` (its equations are among them) or its generic point (the
-    parametrization ``point`` and the ``quotient``, as in :func:`_new_component`);
-    None when there is none. The set is then not recorded again, but what lies inside
-    it in this chart (at the joints at pi here) is searched here."""
-    if quotient is None and (wider := wider_component(ctx, point, numbers)) is not None:
-        return wider
-    if ctx.owners is None:
-        return None
-    here = numbers.as_dict()
-    mine = frozenset(_named(ctx, text) for text in equations)
-    for comp in ctx.locus.components:
-        if comp.numbers != here or ctx.owners.get(id(comp)) in (None, ctx):
-            continue
-        if (comp.equations and _equation_set(ctx, comp) <= mine) or _vanish_at(
-                ctx, comp, point, quotient):
-            return comp
-    return None
-
-
 def _transfer(p, source, target):
     """``p`` from the ring of context ``source`` to that of ``target`` by variable
     names (None when it uses a variable ``target`` does not have)."""

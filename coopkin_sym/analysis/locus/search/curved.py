@@ -20,7 +20,6 @@ from coopkin_sym.analysis.locus.search.components import (
     beyond_chart,
     no_real_points,
     note,
-    recorded_elsewhere,
 )
 from coopkin_sym.analysis.locus.search.hypersurface import candidates
 from coopkin_sym.analysis.locus.witness import (
@@ -75,11 +74,6 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
                           Remark.of("decided_modulo_family"), real=real is True, within=place.point,
                           generic_point=(place.point, Quotient(f, k)))
     if comp is None:
-        # recorded in another chart: what lies inside it at the joints at pi here
-        holder = recorded_elsewhere(ctx, place.equations + [f_text], numbers, place.point,
-                                    Quotient(f, k))
-        if holder is not None:
-            ctx.steps.go_deeper(ctx, holder, on_f, family=(f, k))
         return
     point = rational_point(ctx, f, names)
     if point is not None:
