@@ -328,6 +328,15 @@ def test_finitely_many_points_in_four_variables_are_solved_by_elimination():
                                           None, 1) is None
 
 
+def _rises_exactly_there(system, raised: dict, places) -> None:
+    """For each ``(at, off)``: the exact numbers at ``at`` are ``raised`` (checked by
+    the analysis over the field of the angles, apart from the search), at ``off``
+    they are not."""
+    for at, off in places:
+        assert analyze_irrational(system.model, at).numbers.as_dict() == raised, at
+        assert analyze_irrational(system.model, off).numbers.as_dict() != raised, off
+
+
 def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
     """Random system 395: where q1 = q3 = 0, q2 = 0 or pi and tan(q4/2) = 2 +- sqrt(5),
     Nm is 7 (6 around): points of a system in three variables, said not solved and
@@ -338,12 +347,10 @@ def test_isolated_points_at_an_irrational_angle_are_found_and_certified():
     top = {"Nm": 7, "Nc": 4, "Ni": 3, "Nr": 3, "Ng": 1, "Nd": 3, "Nh": 1}
     points = [c for c in locus.components if c.kind == "isolated" and c.numbers == top]
     assert len(points) == 2
-    for q2 in ("0", "pi"):
-        for q4 in ("2*atan(2 + sqrt(5))", "2*atan(2 - sqrt(5))"):
-            at = f"q1=0,q2={q2},q3=0,q4={q4}"
-            assert analyze_irrational(system.model, at).numbers.as_dict() == top
-            assert analyze_irrational(system.model, at.replace("q1=0", "q1=1/3")
-                                      ).numbers.as_dict() != top
+    _rises_exactly_there(system, top, [
+        (at, at.replace("q1=0", "q1=1/3")) for q2 in ("0", "pi")
+        for q4 in ("2*atan(2 + sqrt(5))", "2*atan(2 - sqrt(5))")
+        for at in [f"q1=0,q2={q2},q3=0,q4={q4}"]])
     assert certify_locus(system, locus, timeout=120).certified
 
 
@@ -361,13 +368,10 @@ def test_sets_with_one_irrational_coordinate_are_searched_inside():
     raised = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 3, "Nd": 6, "Nh": 2}
     found = [c for c in locus.components if c.numbers == raised]
     assert len(found) == 4
-    for q4, q1s in (("pi/4", ("-pi/4", "3*pi/4")), ("-3*pi/4", ("3*pi/4", "-pi/4"))):
-        for q1 in q1s:
-            for q3 in ("pi/2", "-pi/2"):
-                at = f"q1={q1},q2=2*atan(5),q3={q3},q4={q4}"
-                assert analyze_irrational(system.model, at).numbers.as_dict() == raised
-                assert analyze_irrational(system.model, at.replace(f"q3={q3}", "q3=pi/3")
-                                          ).numbers.as_dict() != raised
+    _rises_exactly_there(system, raised, [
+        (f"q1={q1},q2=2*atan(5),q3={q3},q4={q4}", f"q1={q1},q2=2*atan(5),q3=pi/3,q4={q4}")
+        for q4, q1s in (("pi/4", ("-pi/4", "3*pi/4")), ("-3*pi/4", ("3*pi/4", "-pi/4")))
+        for q1 in q1s for q3 in ("pi/2", "-pi/2")])
     # q1 = q4 lies in the family too, with its numbers
     assert analyze_irrational(system.model, "q1=pi/4,q2=2*atan(5),q3=pi/2,q4=pi/4"
                               ).numbers.as_dict() != raised
@@ -392,12 +396,10 @@ def test_a_family_recorded_in_the_t_chart_is_searched_inside_at_q_pi():
     found = sorted(str(c.condition).split(",")[0] for c in locus.components
                    if c.numbers == raised)
     assert found == ["q1 = pi", "t_q4**2 - 11*t_q4 - 1 = 0"]
-    for q1 in ("0", "pi"):
-        for q4 in ("2*atan(11/2 + 5*sqrt(5)/2)", "2*atan(11/2 - 5*sqrt(5)/2)"):
-            at = f"q1={q1},q2=2*atan(5),q3=3/5,q4={q4}"
-            assert analyze_irrational(system.model, at).numbers.as_dict() == raised
-            assert analyze_irrational(system.model, at.replace("q3=3/5", "q3=1/2")
-                                      ).numbers.as_dict() != raised
+    _rises_exactly_there(system, raised, [
+        (f"q1={q1},q2=2*atan(5),q3=3/5,q4={q4}", f"q1={q1},q2=2*atan(5),q3=1/2,q4={q4}")
+        for q1 in ("0", "pi")
+        for q4 in ("2*atan(11/2 + 5*sqrt(5)/2)", "2*atan(11/2 - 5*sqrt(5)/2)")])
     assert certify_locus(system, locus, timeout=120).certified
 
 
