@@ -720,9 +720,8 @@ def _algebraic_point(ctx: SearchContext, place: Place, values: dict, algebraic, 
     if family is None:
         ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
                             "irrational_family")
-    else:   # after the sets of this level, as the other searches inside a family
-        ctx.steps.after_enclosing(
-            ctx, lambda: ctx.steps.go_deeper(ctx, comp, family[0], family=family[1]))
+    else:
+        ctx.steps.go_deeper(ctx, comp, family[0], family=family[1])
     return comp, values, (x, g)
 
 
@@ -744,10 +743,8 @@ def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,
     if x not in values:
         chosen, h, fixed = x, g, dict(values)
     else:
-        order = [x, *sorted((n for n in irrational if n != x), key=ctx.ring_names.index)]
+        order = sorted(irrational, key=lambda n: (n != x, ctx.ring_names.index(n)))
         for chosen in order:
-            if chosen not in irrational:
-                continue
             others = [n for n in irrational if n != chosen]
             changed = change_generator(gq, irrational[chosen], [irrational[n] for n in others])
             if changed is not None:
@@ -757,11 +754,7 @@ def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,
         minimal, expressed = changed
         fixed = {n: v for n, v in values.items() if n not in irrational}
         fixed.update(zip(others, expressed, strict=True))
-        k = ctx.ring_names.index(chosen)
-        den = int(minimal.denom())
-        h = normalize(ctx.ring.zctx.from_dict({
-            tuple(e if i == k else 0 for i in range(len(ctx.ring_names))): int(c * den)
-            for e, c in enumerate(minimal.coeffs()) if c}))
+        h = normalize(as_poly(ctx, minimal, chosen)[0])
     rows = substitute_values(ctx, place.rows, fixed, chosen)
     point = dict(place.point)
     for n, v in fixed.items():
