@@ -159,6 +159,7 @@ class _SystemPicture:
                 raise
             fig = draw_system(*drawn_at, title=title)
             motion = None
+        keep_layout(fig)
         buf = io.BytesIO()
         fig.savefig(buf, format="png", dpi=min(self.dpi, SYSTEM_PICTURE_DPI))
         caption = _system_caption(locus, k, comp, at, exact, motion)
@@ -166,6 +167,31 @@ class _SystemPicture:
             caption += (" Drawn with " + ", ".join(f"{n} = {v}" for n, v in near.items())
                         + " (rational values within 1e-9 of the witness's lengths).")
         return buf.getvalue(), (SYSTEM_PICTURE, f"component {k + 1}", caption)
+
+
+def keep_layout(fig: Any) -> bool:
+    """Keep the layout a picture of the system was given when its name labels were
+    moved apart (that drew it once, laid out): saving it then draws it once more,
+    instead of laying it out again first. True if kept; a picture drawn without name
+    labels (never laid out yet) keeps its layout engine.
+
+    Example
+    -------
+    >>> from coopkin_sym import load
+    >>> from coopkin_sym.present.draw import draw_system
+    >>> fig = draw_system(load("paper-case1-hard"))
+    >>> keep_layout(fig), fig.get_layout_engine()
+    (True, None)
+    """
+    import matplotlib
+
+    if not any((t.get_gid() or "").startswith("label:") for ax in fig.axes
+               for t in ax.texts):
+        return False
+    with matplotlib.rc_context({"figure.autolayout": False,
+                                "figure.constrained_layout.use": False}):
+        fig.set_layout_engine(None)
+    return True
 
 
 def _lengths_near(system: Any, comp: Component, at: Mapping[str, str]) -> dict[str, str]:
