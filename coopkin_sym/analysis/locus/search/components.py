@@ -17,6 +17,7 @@ from coopkin_sym.analysis.locus.algebra import (
 )
 from coopkin_sym.analysis.locus.conditions import Condition, Vanishes
 from coopkin_sym.analysis.locus.context import Place, SearchContext
+from coopkin_sym.analysis.locus.implied import without_implied
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
 from coopkin_sym.analysis.locus.types import Component
 from coopkin_sym.analysis.locus.witness import (
@@ -147,7 +148,8 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     if callable(condition):
         condition = condition()
     comp = Component(equations=polys, numbers=here, witness=None, real=real,
-                     kind=kind, condition=condition or angle_condition(ctx, equations),
+                     kind=kind, condition=without_implied(
+                         condition or angle_condition(ctx, equations), ctx.kinds),
                      drops=drops_text(drops), changes=changes, decided=decided,
                      depth=place.depth, parent=place.parent,
                      outside=[_named(ctx, text) for text in outside],
