@@ -44,12 +44,18 @@ def test_a_lone_quadratic_becomes_its_two_real_roots_and_other_clauses_stay():
     # no real root, or a joint at q = pi (its tangent infinite): written as it was
     none = Condition.of(Vanishes(_p("t_q1**2 + 1")))
     assert without_implied(none, VARIABLES) == none
+    long = Condition.of(Vanishes(_p("38500*t_q1**2 - 152717*t_q1 - 38500")))
+    assert without_implied(long, VARIABLES) == long     # its roots read worse
     at_pi = Condition.of(Vanishes(_p("t_q1*t_q2 - 1")), Value("q1", sp.pi, "revolute"))
     assert without_implied(at_pi, VARIABLES) == at_pi
 
 
 def test_a_clause_the_values_do_not_make_vanish_stays():
     c = Condition.of(Vanishes(_p("t_q1**2 - 3")), Value("q1", sp.pi / 4, "revolute"))
+    assert without_implied(c, VARIABLES) == c
+    # linear in q2 once q1 is put in, but q2's value is a long radical: kept
+    c = Condition.of(Vanishes(_p("77000*t_q2 - 17*t_q1 - 152717")),
+                     Value("q1", 2 * sp.atan(sp.sqrt(101216201)), "revolute"))
     assert without_implied(c, VARIABLES) == c
 
 

@@ -38,6 +38,10 @@ __all__ = ["without_implied"]
 #: Values longer than this (SymPy operations) are not put into clauses: a clause they
 #: would leave out stays (reducing them could take long).
 MAX_VALUE_SIZE = 60
+#: A value written in place of a polynomial clause is at most this long as text
+#: (``2*atan(2 + sqrt(5))``, ``3*pi/4``); a longer one (a radical with large numbers)
+#: reads worse than the polynomial, which then stays.
+MAX_VALUE_TEXT = 32
 
 
 def without_implied(condition: Condition, variables: Mapping[str, tuple[str, str]]
@@ -164,7 +168,12 @@ def _fixed_by(reduced: sp.Expr, variables: Mapping[str, tuple[str, str]],
     root = _exactly_reduced(-poly.nth(0) / poly.nth(1))
     if not root.is_real or sp.count_ops(root) > MAX_VALUE_SIZE:
         return None
-    return Value(name, 2 * sp.atan(root) if kind == "revolute" else root, kind)
+    value = Value(name, 2 * sp.atan(root) if kind == "revolute" else root, kind)
+    return value if _short(value) else None
+
+
+def _short(value: Value) -> bool:
+    return len(value.value_text) <= MAX_VALUE_TEXT
 
 
 def _split_quadratic(clauses: tuple[Clause, ...], variables: Mapping[str, tuple[str, str]]
@@ -183,7 +192,8 @@ def _split_quadratic(clauses: tuple[Clause, ...], variables: Mapping[str, tuple[
         poly = sp.Poly(clause.polynomial.to_sympy(), sp.Symbol(v))
         if poly.degree() != 2 or sp.discriminant(poly) <= 0:
             continue
-        roots = poly.real_roots()
-        return [clauses[:k] + (Value(name, 2 * sp.atan(r), kind),) + clauses[k + 1:]
-                for r in roots]
+        values = [Value(name, 2 * sp.atan(r), kind) for r in poly.real_roots()]
+        if not all(_short(v) for v in values):
+            continue
+        return [clauses[:k] + (v,) + clauses[k + 1:] for v in values]
     return [clauses]
