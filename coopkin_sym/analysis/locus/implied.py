@@ -116,12 +116,14 @@ def _known_values(clauses: list[Clause]) -> dict[str, sp.Expr]:
 
 
 def _variable_value(kind: str, value: sp.Expr) -> sp.Expr | None:
-    """The value of a polynomial variable: ``tan(q/2)`` for a revolute joint (None at
-    ``q = pi``, where it is infinite), the value itself otherwise."""
-    if kind != "revolute":
-        return value
-    half = sp.tan(value / 2)
-    return None if half.has(sp.zoo, sp.oo, sp.nan) else half
+    """The value of a polynomial variable: ``tan(q/2)`` for a revolute joint, the
+    value itself otherwise; None where it is not put in: infinite (``q = pi``), a root
+    of a polynomial of degree above 4 (``CRootOf``: its clauses would not reduce, at
+    length) or too large."""
+    half = sp.tan(value / 2) if kind == "revolute" else value
+    if half.has(sp.zoo, sp.oo, sp.nan, sp.CRootOf) or sp.count_ops(half) > MAX_VALUE_SIZE:
+        return None
+    return half
 
 
 def _put_in(clause: Vanishes, values: Mapping[str, sp.Expr],
@@ -134,7 +136,7 @@ def _put_in(clause: Vanishes, values: Mapping[str, sp.Expr],
         kind, name = variables.get(v, ("", ""))
         if name in values:
             value = _variable_value(kind, values[name])
-            if value is None or sp.count_ops(value) > MAX_VALUE_SIZE:
+            if value is None:
                 return None
             at[sp.Symbol(v)] = value
     if not at:
@@ -162,10 +164,14 @@ def _fixed_by(reduced: sp.Expr, variables: Mapping[str, tuple[str, str]],
     kind, name = variables.get(symbol.name, ("", ""))
     if not name or name in values:
         return None
-    poly = sp.Poly(reduced, symbol)
-    if poly.degree() != 1:
+    by_power: dict = {}
+    for term in sp.Add.make_args(reduced):
+        coefficient, power = term.as_coeff_exponent(symbol)
+        by_power[power] = by_power.get(power, 0) + coefficient
+    slope = _exactly_reduced(by_power.get(1, 0))
+    if set(by_power) - {0, 1} or slope == 0:
         return None
-    root = _exactly_reduced(-poly.nth(0) / poly.nth(1))
+    root = _exactly_reduced(-by_power.get(0, 0) / slope)
     if not root.is_real or sp.count_ops(root) > MAX_VALUE_SIZE:
         return None
     value = Value(name, 2 * sp.atan(root) if kind == "revolute" else root, kind)
