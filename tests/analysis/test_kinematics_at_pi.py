@@ -100,7 +100,11 @@ def test_a_slice_reaching_the_generic_ranks_has_the_generic_numbers(source):
     assert True in seen
 
 
-@pytest.mark.parametrize("source", ["paper-case1-hard", "five-bar", "planar-hand-2x2"])
+@pytest.mark.parametrize("source", [
+    "paper-case1-hard",
+    # two whole searches each (about 11 s): with the slow tests
+    pytest.param("five-bar", marks=pytest.mark.slow),
+    pytest.param("planar-hand-2x2", marks=pytest.mark.slow)])
 def test_the_rank_proofs_at_a_point_change_no_locus(source, monkeypatch):
     """The search proves numbers by ranks at a point where it can (slices at q = pi,
     candidates whose numbers are the enclosing ones); without those proofs, every

@@ -129,10 +129,14 @@ def test_inside_a_curve_of_codimension_two_the_minors_give_its_points():
     for at in witnesses:
         assert _numbers_at(system, at) == NI_2
     # where the curve meets 3 t_q2^2 - 2 t_q2 - 3 = 0 (H D of the first arm drops), two
-    # values of t_q4 share each t_q2: said, not guessed
-    assert remark_texts(ctx.locus.unexplored) == [
-        "real points where 3*t_q2**2 - 2*t_q2 - 3 = 0 and 2 values of t_q4 share each "
-        "t_q2: numbers not decided"]
+    # values of t_q4 share each t_q2; in t_q4 + t_q2 they are separated, and none is
+    # real: nothing is left undecided. Checked apart: on h = 0, t_q4^2 = -(11 t_q2^2 +
+    # t_q2 - 7) / (6 t_q2^2 + t_q2 - 12), negative at both roots
+    assert remark_texts(ctx.locus.unexplored) == []
+    s2, s4, w = sp.symbols("t_q2 t_q4 w")
+    square = sp.solve(sp.sympify(H85).subs(s4**2, w), w)[0]
+    for root in sp.Poly(3 * s2**2 - 2 * s2 - 3, s2).real_roots():
+        assert square.subs(s2, root).is_negative
 
 
 def test_a_family_too_large_or_too_slow_to_search_inside_is_said(monkeypatch):
@@ -429,6 +433,25 @@ def test_a_family_is_written_in_a_coordinate_that_generates_its_field():
     assert codimension.irrational_family(ctx, place, {"t_q4": sqrt2, "t_q1": sqrt3},
                                          "t_q4", quartic, ["e"]) is None
 
+
+
+def test_points_sheared_into_one_field_are_solved_with_none_real():
+    """Two coordinates x, y with y not determined by x (x = +-sqrt 2, y^2 = 3 or
+    y^2 = -1): in z = y + x the real points are one field (z^4 - 10 z^2 + 1), and
+    the system whose y is never real is solved too, with no point (an empty list, not
+    the None of a system left unsolved: its points were said not decided)."""
+    system = coopkin_sym.load(random_system(408))
+    ctx, _rows = search_context(system)
+    gens = dict(zip(ctx.ring_names, ctx.ring.zctx.gens(), strict=True))
+    x, y = gens["t_q1"], gens["t_q2"]
+    real = algebra.solve_sheared(ctx, [y**2 - 3, x**2 - 2], "t_q1", "t_q2")
+    assert [(v, str(m)) for v, m, *_ in real] == [("t_q2", "t_q2^4 - 10*t_q2^2 + 1")]
+    _v, m, values, equations, _alpha = real[0]
+    z = flint.fmpq_poly([0, 1])
+    g = algebra.univariate(ctx, m, "t_q2")
+    assert (values["t_q1"] ** 2 - 2) % g == 0 and (values["t_q2"] ** 2 - 3) % g == 0
+    assert (values["t_q1"] + values["t_q2"] - z) % g == 0
+    assert algebra.solve_sheared(ctx, [y**2 + 1, x**2 - 2], "t_q1", "t_q2") == []
 
 @pytest.mark.slow
 @pytest.mark.parametrize("seed, point, numbers", [

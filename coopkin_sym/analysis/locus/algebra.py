@@ -501,7 +501,7 @@ def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | Non
             algebraic.append((x, h, {y: value}, [h, value_equation(ctx, y, value, x)], x))
         elif len(common) > 2:
             sheared = solve_sheared(ctx, [*polys, h], x, y)
-            if sheared:
+            if sheared is not None:     # solved (none when no point is real)
                 algebraic += sheared
             else:
                 unresolved.append(Remark.of(
@@ -510,11 +510,15 @@ def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | Non
     return points, algebraic, unresolved
 
 
-def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)) -> list[tuple]:
+def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)
+                  ) -> list[tuple] | None:
     """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
     (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
-    point's field. Returns ``(y, m(z), {y: z - c r(z), x: r(z)}, equations)`` with the
-    equations in the original coordinates (``m(y + c x)``, ``x - r(y + c x)``)."""
+    point's field. Returns the real ones as ``(y, m(z), {y: z - c r(z), x: r(z)},
+    equations)`` with the equations in the original coordinates (``m(y + c x)``,
+    ``x - r(y + c x)``): an empty list when none is real (``z`` is real at a real
+    point, and no factor ``m`` has a real root); None when they are not separated or a
+    resultant or a factorization is over its bound."""
     zctx = ctx.ring.zctx
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     gx, gy = zctx.gens()[kx], zctx.gens()[ky]
@@ -525,13 +529,13 @@ def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)
         for p in moved[1:]:
             r = bounded_resultant(ctx, moved[0], p, x) if moved[0].degrees()[kx] else moved[0]
             if r is None:
-                return []
+                return None
             elim = r if elim is None else elim.gcd(r)
         if elim is None or elim.is_zero() or elim.is_constant():
             continue
         factored = bounded_factor(ctx, elim)
         if factored is None:
-            return []
+            return None
         _, factors = factored
         out, separated = [], True
         for m, _e in factors:
@@ -558,9 +562,9 @@ def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)
             out.append((y, normalize(m), values, [normalize(m_back), x_eq],
                         f"{y} {'+' if c > 0 else '-'} {abs(c) if abs(c) != 1 else ''}"
                         f"{'*' if abs(c) != 1 else ''}{x}"))
-        if separated and out:
+        if separated:
             return out
-    return []
+    return None
 
 
 def linear_equation(ctx: SearchContext, name: str, value: Fraction):

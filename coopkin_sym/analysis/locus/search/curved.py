@@ -162,7 +162,7 @@ INSIDE_TERMS = 150
 #: machine and under any load).
 INSIDE_STEPS = 10**9
 #: The highest degree over Q of a point decided inside such a family.
-INSIDE_DEGREE = 4
+INSIDE_DEGREE = 8
 #: The owner of the time bound of one such search (see :func:`.deadline.active`).
 INSIDE_OWNER = "the search inside a family"
 #: The order the blocks are searched in: those that change the most numbers first.
