@@ -824,7 +824,7 @@ NB03 = [
     """),
     code("""
     said = coopkin_sym.grouped_remark_texts(locus2.unexplored)
-    print(f"{len(said)} items not explored")
+    print(f"{len(said)} item{'' if len(said) == 1 else 's'} not explored")
     for item in said:
         print("-", item if len(item) < 160 else item[:160] + " ...")
     assert all(any(words in item for words in ("not solved", "not explored",
@@ -832,8 +832,10 @@ NB03 = [
                for item in remark_texts(locus2.unexplored))
     """),
     md("""
-    Here the search left nothing out: inside each curved family, a minor that cuts out
-    a deeper set is solved factor by factor. Where it does leave something out, the
+    Here the search left out one kind of set, and says so: two components found in the
+    t chart meet the slices a1 = pi and b1 = pi, and the search looks inside a component
+    only in the chart where it found it. Elsewhere, inside each curved family, a minor
+    that cuts out a deeper set is solved factor by factor. Where it leaves something out, the
     report lists it (section 3 has such items): families where one angle does not
     determine the other (two values share each point), blocks whose equations in four
     variables are too large to solve with parameters, curved families inside which it

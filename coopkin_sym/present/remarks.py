@@ -66,6 +66,10 @@ def _inside_limit(facts: Mapping[str, Any]) -> str:
             f"{facts['size']} terms: more than {facts['bound']})")
 
 
+#: Why the drops inside a component at joints at pi it was not found at are not searched.
+_OWN_CHART = "searched inside only in the chart where it was found"
+
+
 def _at_pi(joints: Sequence[str]) -> str:
     return ", ".join(f"{n} = pi" for n in joints)
 
@@ -190,6 +194,9 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
     "pi_deeper_not_explored": lambda f: (
         f"inside {_at_pi(f['joints'])}: deeper drops not explored (max depth "
         f"{f['bound']})"),
+    "pi_inside_not_searched": lambda f: (
+        f"inside component #{f['component'] + 1} where {_at_pi(f['joints'])}: deeper "
+        f"drops not searched ({_OWN_CHART})"),
     "pi_set_not_searched": lambda f: (
         f"inside {_at_pi(f['joints'])}: {'deeper ' if f['deeper'] else ''}drops not "
         f"searched (sets of joints at pi are searched inside up to {f['bound']} at once: "
@@ -354,6 +361,7 @@ _GROUP_WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"{f['variable']} a common root of the minors (enclosing numbers there): deeper "
         f"drops not searched ({_NO_PARAMETRIZATION})"),
     "pi_deeper_not_explored": lambda f: f"deeper drops not explored (max depth {f['bound']})",
+    "pi_inside_not_searched": lambda f: f"deeper drops at q = pi not searched ({_OWN_CHART})",
     "pi_set_not_searched": lambda f: (
         f"{'deeper ' if f['deeper'] else ''}drops not searched (sets of joints at pi are "
         f"searched inside up to {f['bound']} at once: pi_size)"),
@@ -364,7 +372,8 @@ def _place(facts: Mapping[str, Any]) -> str:
     """Where one remark of a group is: its component, else its polynomial, equations
     or joints at pi (cut at :data:`MAX_PLACE` characters)."""
     if facts.get("component") is not None:
-        return f"#{facts['component'] + 1}"
+        at = f" ({_at_pi(facts['joints'])})" if facts.get("joints") else ""
+        return f"#{facts['component'] + 1}{at}"
     parts = []
     if facts.get("polynomial"):
         parts.append(f"{facts['polynomial']} = 0")
@@ -390,7 +399,9 @@ def _group_text(group: Sequence[Remark | str], max_listed: int) -> str:
     facts = dict(first.facts)
     places = [_place(dict(r.facts)) for r in group]
     in_components = all(p.startswith("#") for p in places)
-    what = "components" if in_components else "places"
+    # a component at several sets of joints at pi: places in components
+    distinct = len({p.split(" (")[0] for p in places}) == n
+    what = "components" if in_components and distinct else "places"
     shown = ", ".join(places[:max_listed]) if in_components else "; ".join(places[:max_listed])
     if n > max_listed:
         shown += f", ... ({n - max_listed} more, all listed in the JSON report)"

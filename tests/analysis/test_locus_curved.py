@@ -28,7 +28,7 @@ from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import split_linear, substitute_rows
 from coopkin_sym.model.configuration import Configuration
-from coopkin_sym.present.remarks import remark_texts
+from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts
 from coopkin_sym.present.verification import summary_lines
 
 #: Two soft fingers, three joints: with q3 = pi, the curved family F below has the
@@ -409,6 +409,22 @@ def test_a_family_recorded_in_the_t_chart_is_searched_inside_at_q_pi():
         for q4 in ("2*atan(11/2 + 5*sqrt(5)/2)", "2*atan(11/2 - 5*sqrt(5)/2)")])
     assert certify_locus(system, locus, timeout=120).certified
 
+
+def test_a_family_not_searched_inside_at_q_pi_is_said():
+    """Random system 404 (the gap above): the family t_q4^2 - 11 t_q4 - 1 = 0, found
+    in the t chart, is found again at q1 = pi and at q2 = pi, where it is not searched
+    inside; the search says so, and the report groups it with its places."""
+    system = coopkin_sym.load(random_system(404))
+    locus = compute_locus(system, timeout=60)
+    family = next(k for k, c in enumerate(locus.components)
+                  if texts(c.equations) == ["t_q4**2 - 11*t_q4 - 1"])
+    said = {r["joints"] for r in locus.unexplored
+            if getattr(r, "kind", None) == "pi_inside_not_searched"
+            and r["component"] == family}
+    assert {("q1",), ("q2",)} <= said
+    assert any(t.startswith("deeper drops at q = pi not searched") and
+               f"#{family + 1} (q1 = pi)" in t
+               for t in grouped_remark_texts(locus.unexplored))
 
 def test_a_family_is_written_in_a_coordinate_that_generates_its_field():
     """A point's coordinates given in a root x = 3 t_q4 of x^2 + 6 x - 9 (t_q4 = x/3,

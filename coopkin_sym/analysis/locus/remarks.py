@@ -64,6 +64,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "shared_values_not_solved": ("depth", "polynomial", "count", "variable"),
     "pi_deeper_not_explored": ("joints", "bound"),
     "pi_set_not_searched": ("joints", "deeper", "bound"),
+    "pi_inside_not_searched": ("component", "joints"),
     # how a component's numbers were decided
     "decided_function_field": (),
     "decided_modulo_family": (),

@@ -131,15 +131,19 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     if any(_equation_set(ctx, c) == mine for c in ctx.locus.components):
         return None
     here = numbers.as_dict()
-    if any(c.numbers == here and c.equations and _equation_set(ctx, c) < mine
-           for c in ctx.locus.components):
+    holder = next((c for c in ctx.locus.components if c.numbers == here and c.equations
+                   and _equation_set(ctx, c) < mine), None)
+    if holder is not None:
+        _held_elsewhere(ctx, holder)
         return None  # inside a recorded component, with its numbers: nothing new
     if chain is not None and any(_within(ctx, chain, c, numbers)
                                  for c in ctx.locus.components):
         return None
-    if generic_point is not None and any(_vanish_at(ctx, c, *generic_point)
-                                         for c in ctx.locus.components
-                                         if c.numbers == here):
+    holder = None if generic_point is None else next(
+        (c for c in ctx.locus.components
+         if c.numbers == here and _vanish_at(ctx, c, *generic_point)), None)
+    if holder is not None:
+        _held_elsewhere(ctx, holder)
         return None
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
@@ -177,6 +181,18 @@ def _named(ctx: SearchContext, text: str) -> NamedPolynomial:
     # then reads back exactly through the one parser
     names = [*ctx.ring_names, *(cotangent_name(j) for j in sorted(ctx.pi))]
     return NamedPolynomial.parse(text, names, "equation")
+
+
+def _held_elsewhere(ctx: SearchContext, holder: Component) -> None:
+    """A set found inside ``holder`` (with its numbers) is not recorded again; when
+    ``holder`` was found in a chart with other joints at pi, the drops inside the set
+    here are not searched (``holder`` is searched inside in its own chart, which does
+    not reach these joints at pi): said."""
+    beyond = sorted(ctx.pi - set(holder.chart))
+    if beyond:
+        add_once(ctx.locus.unexplored, Remark.of(
+            "pi_inside_not_searched", component=ctx.locus.components.index(holder),
+            joints=tuple(beyond)))
 
 
 def _vanish_at(ctx: SearchContext, comp: Component, point: dict, quotient) -> bool:
