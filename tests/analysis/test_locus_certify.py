@@ -841,3 +841,39 @@ def test_residual_coverings_share_the_bound_of_their_test(monkeypatch):
     assert all(t <= 0.3 for t in asked) and sorted(asked, reverse=True) == asked
     assert verdict.holds is None and "timed out after 0.3 s" in verdict.detail
     assert residual is not None
+
+
+@pytest.mark.slow     # the whole certificate: about 50 s of Groebner bases
+def test_a_component_whose_larger_rank_lies_where_its_slope_has_no_real_zero():
+    """Random system 463: a family t_q2 = -c0 / c1 over a surface, with c1 = t_q3^2
+    (t_q4^2 + 2 t_q4 + 3) + ... never zero at a real point (its discriminant in t_q3 is
+    -4 (t_q4^4 + 5 t_q4^2 + 5)). Its equations also hold where c1 = c0 = 0, with t_q2
+    free, and there the rank of H G^T is the generic one: over C the family's numbers
+    do not hold on all of it, and the test failed. At the real points it holds, and
+    the certificate is complete."""
+    from random_systems import random_system
+
+    from coopkin_sym.analysis.locus.certify_real import nonreal_slopes
+
+    system = load(random_system(463))
+    locus = compute_locus(system, timeout=60)
+    family = next(c for c in locus.components if c.kind == "subvariety" and not c.chart
+                  and len(c.equations) == 2 and c.numbers["Ng"] == 1
+                  and "t_q2" in c.equations[1].variables)
+    ctx = flint.fmpz_mpoly_ctx.get(("t_q1", "t_q2", "t_q3", "t_q4"), "degrevlex")
+    own = [ctx.from_dict({tuple(e.get(n, 0) for n in ctx.names()): int(c)
+                          for e, c in _terms(p)}) for p in family.equations]
+    t3, t4 = ctx.gens()[2:]
+    c1 = (t3**2 * (t4**2 + 2 * t4 + 3) + t3 * (2 * t4**2 + 2 * t4 - 2)
+          + 2 * t4**2 - 2 * t4 + 2)
+    assert c1 in nonreal_slopes(own)
+    cert = certify_locus(system, locus, timeout=120)
+    assert cert.certified
+    assert any(n.kind == "cert_real_points_tests" for n in cert.notes)
+
+
+def _terms(p):
+    """The terms of a named polynomial as ``({variable: exponent}, coefficient)``."""
+    for exps, c in p.terms:
+        assert c.denominator == 1
+        yield dict(zip(p.variables, exps, strict=True)), c.numerator

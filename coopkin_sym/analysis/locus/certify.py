@@ -650,7 +650,7 @@ class _Runner:
         verdict = covers(own, [gens], timeout=seconds, backend=self.backend,
                          nvars=len(chart.names), allowed=allowed)
         verdict = at_reals.over_reals(verdict, own, [gens], allowed, len(chart.names),
-                                      seconds)
+                                      seconds, slopes_backend=self.backend)
         self._record(check, verdict, "cert_larger_somewhere")
 
     def _outside(self, check: Check) -> list[list]:
