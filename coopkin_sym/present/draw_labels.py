@@ -33,7 +33,7 @@ from typing import Any
 from coopkin_sym.errors import DrawError
 
 __all__ = ["LABEL_STYLES", "NAME_CHARACTERS", "arm_prefix", "check_labels", "contact_label",
-           "joint_label", "label_boxes", "shorten", "spread_labels"]
+           "joint_label", "label_boxes", "name_labels", "shorten", "spread_labels"]
 
 #: What ``labels=`` takes.
 LABEL_STYLES = (True, False, "short")
@@ -138,7 +138,8 @@ def contact_label(name: str, style: bool | str) -> str:
     return shorten(name, 7 if style == "short" else NAME_CHARACTERS)
 
 
-def _name_labels(ax: Any) -> list[Any]:
+def name_labels(ax: Any) -> list[Any]:
+    """The name labels drawn in ``ax`` (texts whose gid starts ``label:``)."""
     return [t for t in ax.texts if (t.get_gid() or "").startswith("label:")]
 
 
@@ -175,7 +176,7 @@ def label_boxes(ax: Any) -> list[Any]:
     (4, False)
     """
     with _projected(ax) as box:
-        return [box(t) for t in _name_labels(ax)]
+        return [box(t) for t in name_labels(ax)]
 
 
 def spread_labels(ax: Any) -> int:
@@ -200,7 +201,7 @@ def spread_labels(ax: Any) -> int:
     taken: list[Any] = []
     moved = 0
     with _projected(ax) as box:
-        for text in _name_labels(ax):
+        for text in name_labels(ax):
             start = _FIRST.get(text.get_gid().split(":")[1], _PLACES[0])
             places = [start, *(p for p in _PLACES if p != start)]
             for k, (right, up) in enumerate(places):

@@ -31,6 +31,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
+from coopkin_sym.analysis.locus.algebra import angle_value
 from coopkin_sym.analysis.locus.conditions import Clause, Condition, Related, Value, Vanishes
 
 __all__ = ["without_implied"]
@@ -174,7 +175,8 @@ def _fixed_by(reduced: sp.Expr, variables: Mapping[str, tuple[str, str]],
     root = _exactly_reduced(-by_power.get(0, 0) / slope)
     if not root.is_real or sp.count_ops(root) > MAX_VALUE_SIZE:
         return None
-    value = Value(name, 2 * sp.atan(root) if kind == "revolute" else root, kind)
+    angle = angle_value(root) if root.is_Rational else 2 * sp.atan(root)
+    value = Value(name, angle if kind == "revolute" else root, kind)
     return value if _short(value) else None
 
 

@@ -24,6 +24,7 @@ from coopkin_sym.model.configuration import Point
 from coopkin_sym.present.conditions import report_names, short_condition
 from coopkin_sym.present.draw import MOTION_KINDS, draw_system, gained_motion, motion_counts
 from coopkin_sym.present.draw_inputs import at_algebraic_witness
+from coopkin_sym.present.draw_labels import name_labels
 
 # key of a picture of the system at a witness among the plots
 SYSTEM_PICTURE = "system"
@@ -185,8 +186,7 @@ def keep_layout(fig: Any) -> bool:
     """
     import matplotlib
 
-    if not any((t.get_gid() or "").startswith("label:") for ax in fig.axes
-               for t in ax.texts):
+    if not any(name_labels(ax) for ax in fig.axes):
         return False
     with matplotlib.rc_context({"figure.autolayout": False,
                                 "figure.constrained_layout.use": False}):
