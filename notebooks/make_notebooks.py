@@ -832,15 +832,16 @@ NB03 = [
                for item in remark_texts(locus2.unexplored))
     """),
     md("""
-    Here the search left out one kind of set, and says so: two components found in the
-    t chart meet the slices a1 = pi and b1 = pi, and the search looks inside a component
-    only in the chart where it found it. Elsewhere, inside each curved family, a minor
-    that cuts out a deeper set is solved factor by factor. Where it leaves something out, the
-    report lists it (section 3 has such items): families where one angle does not
-    determine the other (two values share each point), blocks whose equations in four
-    variables are too large to solve with parameters, curved families inside which it
-    did not search for deeper drops, and candidate sets with the enclosing numbers
-    that it did not search inside.
+    Here the search left nothing out. Two components found in the t chart meet the
+    slices a1 = pi and b1 = pi: the sets they hold there are not recorded again, but
+    they are searched inside in those slices too. Inside each curved family, a minor
+    that cuts out a deeper set is solved factor by factor. Where the search leaves
+    something out, the report lists it (section 3 has such items): families where one
+    angle does not determine the other (two values share each point), blocks whose
+    equations in four variables are too large to solve with parameters, curved
+    families inside which it did not search for deeper drops, candidate sets with the
+    enclosing numbers that it did not search inside, and sets at q = pi held by a
+    component of another chart once the work budget of those searches is spent.
 
     ## 3. Paper case 2, all eight joints free
 
@@ -1252,9 +1253,10 @@ NB04 = [
     component ($10^{-12}$ rad mostly, up to $10^{-6}$ beside one where a rank falls
     slowly) (moving a joint of its last equation, so the point stays in the
     enclosing component, or leaves it too), and mostly gives the numbers of the
-    component it has just left, sometimes numbers that belong to neither. A few happen
-    with $L = 1$ too: beside a component found inside a family at $q_3 = \\pi$, numpy
-    still sees a rank drop up to $10^{-6}$ rad away, where exactly there is none. In
+    component it has just left, sometimes numbers that belong to neither. Some happen
+    with $L = 1$ too: beside components found in the slices at $q = \\pi$ (of $q_1$,
+    $q_2$, $q_3$, $q_2$ and $q_6$ together), numpy still sees a rank drop from
+    $10^{-12}$ up to $10^{-6}$ rad away, where exactly there is none. In
     case 1 it calls regular configurations singular; for the fingers and inside case
     2's hypersurfaces it gives configurations of a singular family the numbers of a
     deeper family next to them

@@ -16,7 +16,7 @@ Example
 
 from __future__ import annotations
 
-from math import factorial, gcd
+from math import gcd
 
 from coopkin_sym.exact.deadline import check
 
@@ -145,8 +145,8 @@ def substitute(p, k: int, f0, f1, deg: int, powers: Powers | None = None):
 
 
 def coefficients_in(p, k: int) -> list:
-    """The coefficients of ``p`` in ``x_k`` (free of it), lowest degree first: the
-    ``e``-th is the ``e``-th derivative in ``x_k`` at ``x_k = 0`` over ``e!`` (flint's
+    """The coefficients of ``p`` in ``x_k`` (free of it), lowest degree first: each is
+    the remainder of a division by the monomial ``x_k``, the quotient going on (flint's
     own operations, no pass over the terms in Python).
 
     Example
@@ -158,12 +158,11 @@ def coefficients_in(p, k: int) -> list:
     ['y', '1', '3*y']
     """
     top = p.degrees()[k]
-    name = p.context().names()[k]
+    x = p.context().gens()[k]
     out = []
-    for e in range(top + 1):
-        out.append(p.subs({name: 0}) / factorial(e) if e > 1 else p.subs({name: 0}))
-        if e < top:
-            p = p.derivative(name)
+    for _ in range(top + 1):
+        p, rest = divmod(p, x)
+        out.append(rest)
     return out
 
 

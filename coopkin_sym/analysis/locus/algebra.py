@@ -17,6 +17,7 @@ Example
 from __future__ import annotations
 
 import itertools
+import math
 from fractions import Fraction
 
 import flint
@@ -466,7 +467,7 @@ def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | Non
     algebraic: list[tuple] = []
     unresolved: list[Remark] = []
     g = bounded_resultant(ctx, polys[0], combo, y)
-    for p in polys[1:]:
+    for p in (polys[1:] if len(polys) > 2 else []):   # with two, combo is polys[1]
         if g is None or g.is_constant():
             break
         r = bounded_resultant(ctx, polys[0], p, y)
@@ -500,7 +501,8 @@ def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | Non
             value = field.element(-common[0])
             algebraic.append((x, h, {y: value}, [h, value_equation(ctx, y, value, x)], x))
         elif len(common) > 2:
-            sheared = solve_sheared(ctx, [*polys, h], x, y)
+            # the points are the common zeros of h(x) and of the shared factor, lifted
+            sheared = solve_sheared(ctx, [h, _lifted(ctx, common, x, y)], x, y)
             if sheared is not None:     # solved (none when no point is real)
                 algebraic += sheared
             else:
@@ -510,11 +512,29 @@ def solve_two(ctx: SearchContext, polys, names: list[str], max_degree: int | Non
     return points, algebraic, unresolved
 
 
+def _lifted(ctx: SearchContext, coefficients, x: str, y: str):
+    """The polynomial in ``y`` with coefficients in ``Q[x]/(h)`` (``fmpq_poly`` in
+    ``x``, lowest power of ``y`` first) as an integer polynomial in ``x`` and ``y``
+    (a positive multiple: denominators cleared)."""
+    zctx = ctx.ring.zctx
+    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
+    den = math.lcm(*(int(c.denom()) for c in coefficients))
+    terms = {}
+    for j, c in enumerate(coefficients):
+        for e, a in enumerate(c.coeffs()):
+            if a:
+                mon = [0] * len(ctx.ring_names)
+                mon[kx], mon[ky] = e, j
+                terms[tuple(mon)] = int(a * den)
+    return zctx.from_dict(terms)
+
+
 def solve_sheared(ctx: SearchContext, polys, x: str, y: str, tries=(1, -1, 2, 3)
                   ) -> list[tuple] | None:
     """Points whose ``x`` does not determine ``y``: in the coordinate ``z = y + c x``
     (slot of ``y``), for a small ``c`` that separates them, ``z`` generates each
-    point's field. Returns the real ones as ``(y, m(z), {y: z - c r(z), x: r(z)},
+    point's field (``polys[0]`` free of ``y``, best: each resultant is then a norm
+    from ``Q[x]/(polys[0])``). Returns the real ones as ``(y, m(z), {y: z - c r(z), x: r(z)},
     equations)`` with the equations in the original coordinates (``m(y + c x)``,
     ``x - r(y + c x)``): an empty list when none is real (``z`` is real at a real
     point, and no factor ``m`` has a real root); None when they are not separated or a

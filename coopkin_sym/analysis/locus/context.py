@@ -181,6 +181,9 @@ class SearchContext:
     # component with its numbers holds, in any chart, is not recorded again)
     searched: set = field(default_factory=set)
     inside: int = 0
+    # steps left of the budget of the searches inside sets held by a component of
+    # another chart (None: not started)
+    held_left: int | None = None
     # the systems in one or two variables solved (the ring, their texts, the
     # variables, the degree bound) -> the points found (the search meets the same
     # system again from other components)

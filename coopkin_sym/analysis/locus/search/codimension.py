@@ -13,7 +13,6 @@ import sympy as sp
 
 from coopkin_sym.analysis.locus import algebra
 from coopkin_sym.analysis.locus.algebra import (
-    GCD_MODULO_TERMS,
     as_poly,
     bounded_factor,
     bounded_gcd,
@@ -40,7 +39,13 @@ from coopkin_sym.analysis.locus.search.components import (
     no_real_points,
     note,
     off_charts,
+    recorded_elsewhere,
     variable_to_solve,
+)
+from coopkin_sym.analysis.locus.search.modular import (
+    enclosing_numbers_at_a_point,
+    numbers_on,
+    reaches_at_values,
 )
 from coopkin_sym.analysis.locus.witness import (
     algebraic_condition,
@@ -53,14 +58,10 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
-from coopkin_sym.errors import BlockTooLarge
-from coopkin_sym.exact.factoring import factor
 from coopkin_sym.exact.numberfield import NumberField, change_generator
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
-    coefficients_in,
-    gcd_modulo,
     smallest_fraction,
 )
 from coopkin_sym.exact.realroot import real_root_count
@@ -454,6 +455,13 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
             _linear_x_family(ctx, place, h, (kx, h0, h1), rows_x, inner, k, y)
 
 
+def _charts_after(charts, at, denominator) -> tuple:
+    """The denominators of a parametrization once a variable is put in: each of
+    ``charts`` through ``at`` (the substitution), and the new ``denominator``, those
+    that are not constants."""
+    return tuple(c for c in (*(at(c) for c in charts), denominator) if not c.is_constant())
+
+
 def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inner: dict,
                      k, y: str) -> None:
     """One family ``h = 0, k = 0`` of :func:`_solve_linear_x`, ``x`` (index ``at[0]``)
@@ -492,11 +500,11 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
         quotient = Quotient(k, ky)
         if off_charts([*place.charts, h1], at_x, quotient):
             return
-        numbers = numbers_modulo(rows_x, ctx.model, ctx.row_contacts, quotient)
+        numbers = numbers_on(ctx, rows_x, quotient, place.base)
         decided = Remark.of("decided_substitution_modulo")
     eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, k)]
     on_x = place.inside(rows=rows_x, equations=eqs, point=inner,
-                        charts=(*place.charts, h1) if not h1.is_constant() else place.charts)
+                        charts=_charts_after(place.charts, at_x, h1))
     if numbers == place.base:
         ctx.steps.inside_candidate(ctx, on_x, family=(k, ky))
         return
@@ -506,26 +514,32 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
         chain[y] = (k0, k1)
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"}, decided,
                           chain=chain, within=inner,
-                          generic_point=None if chain is not None else (inner, quotient))
-    if comp is None:
-        return
-    family_witness(ctx, comp, k, y, inner, numbers)
+                          generic_point=None if chain is not None else (inner, quotient),
+                          held_searched=True)
+    held = comp is None
+    if held:   # recorded in another chart: searched inside at its joints at pi
+        comp = recorded_elsewhere(ctx, eqs, numbers, *((chain, None) if chain is not None
+                                                        else (inner, quotient)))
+        if comp is None:
+            return
+    else:
+        family_witness(ctx, comp, k, y, inner, numbers)
     if k.degrees()[ky] == 1:
         sub_point = dict(inner)
         sub_point[y] = (k0, k1)
         sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
                            not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
         ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point,
-                                                    charts=sub_charts))
+                                                    charts=sub_charts), held=held)
     else:
-        ctx.steps.go_deeper(ctx, comp, on_x, family=(k, ky))
+        ctx.steps.go_deeper(ctx, comp, on_x, family=(k, ky), held=held)
 
 
 def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                     swapped: bool = False) -> None:
     kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
     if ((ctx.hidden >= HIDDEN_DEPTH or place.depth > ctx.max_depth or ctx.expired())
-            and _enclosing_numbers_at_a_point(ctx, place, polys, h, x, y)):
+            and enclosing_numbers_at_a_point(ctx, place, polys, h, x, y)):
         # its numbers are the enclosing ones, and it would not be searched inside
         note(ctx, "common_root_not_searched",
              equations=place.equations + [poly_text(ctx, h)], variable=y)
@@ -567,58 +581,27 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
                   quotient):
         return
     rows = substitute_rows(place.rows, ky, c0, c1)
-    numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+    numbers = numbers_on(ctx, rows, quotient, place.base)
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
     eqs = place.equations + [poly_text(ctx, h), poly_text(ctx, y_eq)]
     inner = dict(place.point)
     inner[y] = (c0, c1)
-    on_h = place.inside(rows=rows, equations=eqs, point=inner,
-                        charts=(*place.charts, c1) if not c1.is_constant() else place.charts)
+    on_h = place.inside(rows=rows, equations=eqs, point=inner, charts=_charts_after(
+        place.charts, lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]), c1))
     if numbers == place.base:
         ctx.steps.inside_candidate(ctx, on_h, family=(h, kx))
         return
     comp = _new_component(ctx, place, eqs, numbers, "subvariety", {"Q"},
                           Remark.of("decided_family_modulo"), within=inner,
-                          generic_point=(inner, quotient))
-    if comp is None:
-        return
-    family_witness(ctx, comp, h, x, inner, numbers)
-    ctx.steps.go_deeper(ctx, comp, on_h, family=(h, kx))
-
-
-# parameters of a family set to random integers of at most this size
-_SPECIALIZE_BOUND = 1 << 16
-
-
-def _enclosing_numbers_at_a_point(ctx: SearchContext, place: Place, polys, h, x, y) -> bool:
-    """Whether the family ``h = 0`` (``x`` curved), ``y`` a common root of ``polys``,
-    has the enclosing numbers, shown at one point of it: the other variables set to
-    random integers, ``x`` a root of a factor of ``h`` there, ``y`` from the gcd over
-    ``Q(x)``. Ranks never rise at a special point and never exceed the enclosing ones, so
-    equal ranks there are the family's own. ``False`` means not shown (the family is then
-    decided over its function field). The point lies on the family unless the random
-    values hit a proper subset of it (Schwartz-Zippel)."""
-    kx, ky = ctx.ring_names.index(x), ctx.ring_names.index(y)
-    values = {n: Fraction(ctx.rng.randint(-_SPECIALIZE_BOUND, _SPECIALIZE_BOUND))
-              for n in ctx.ring_names if n not in (x, y)}
-    (h_here, *polys_here), = substitute_values(ctx, [[h, *polys]], values)
-    if h_here.degrees()[kx] < h.degrees()[kx] or any(
-            p.degrees()[ky] < q.degrees()[ky] for p, q in zip(polys_here, polys, strict=True)):
-        return False
-    _, factors = factor(h_here)
-    curved = [f for f, _e in factors if f.degrees()[kx] > 0]
-    if not curved:
-        return False
-    quotient = Quotient(min(curved, key=lambda f: (f.degrees()[kx], len(f))), kx)
-    try:   # a cheap test only: too large, the family is decided the other way
-        common = gcd_modulo([coefficients_in(p, ky) for p in polys_here], quotient,
-                            max_terms=GCD_MODULO_TERMS)
-    except BlockTooLarge:
-        return False
-    if len(common) != 2:
-        return False
-    rows = substitute_rows(substitute_values(ctx, place.rows, values), ky, *common)
-    return numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient) == place.base
+                          generic_point=(inner, quotient), held_searched=True)
+    held = comp is None
+    if held:   # recorded in another chart: searched inside at its joints at pi
+        comp = recorded_elsewhere(ctx, eqs, numbers, inner, quotient)
+        if comp is None:
+            return
+    else:
+        family_witness(ctx, comp, h, x, inner, numbers)
+    ctx.steps.go_deeper(ctx, comp, on_h, family=(h, kx), held=held)
 
 
 def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
@@ -632,15 +615,22 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
         x, g, _, _ = algebraic
         quotient = Quotient(g, ctx.ring_names.index(x))
     x = algebraic[0] if algebraic is not None else None
+    charts = []   # the denominators of the parametrization, the values put in
     for c in place.charts:
         c_here = substitute_values(ctx, [[c]], values, x)[0][0]
         if c_here.is_zero() or (quotient is not None and quotient.is_zero(c_here)):
             return None  # outside the enclosing parametrization
-    rows = substitute_values(ctx, place.rows, values, x)
-    if quotient is None:
-        numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+        if not c_here.is_constant():
+            charts.append(c_here)
+    rows = None
+    if quotient is not None and reaches_at_values(ctx, place.rows, values, x,
+                                                  algebraic[1], place.base):
+        numbers = place.base   # shown modulo a prime: no substitution over Q[x]/(g)
     else:
-        numbers = numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient)
+        rows = substitute_values(ctx, place.rows, values, x)
+        numbers = (decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
+                   if quotient is None else
+                   numbers_modulo(rows, ctx.model, ctx.row_contacts, quotient))
     eqs = list(place.equations)
     if algebraic is not None:
         new = [poly_text(ctx, e) for e in algebraic[2]]
@@ -652,7 +642,8 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
     if numbers == place.base:
         if kind == "subvariety" and algebraic is None:
             ctx.steps.inside_candidate(ctx, place.inside(
-                rows=rows, equations=eqs, point=_with_values(ctx, place.point, values)))
+                rows=rows, equations=eqs, point=_with_values(ctx, place.point, values),
+                charts=tuple(charts)))
         elif kind == "subvariety":
             family = irrational_family(ctx, place, values, x, algebraic[1], eqs)
             if family is None:   # said in the report: no rational parametrization
@@ -669,8 +660,15 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
                           Remark.of("decided_at_point" if kind == "isolated" else
                                     "decided_free_variables"),
                           chain=chain,
-                          generic_point=(chain, None) if ctx.inside else None)
+                          generic_point=(chain, None) if ctx.inside else None,
+                          held_searched=True)
     if comp is None:
+        holder = (recorded_elsewhere(ctx, eqs, numbers, chain, None) if kind == "subvariety"
+                  else None)
+        if holder is not None:   # recorded in another chart: searched inside here
+            ctx.steps.go_deeper(ctx, holder, place.inside(rows=rows, equations=eqs,
+                                                          point=chain, charts=tuple(charts)),
+                                held=True)
         return None
     for offset in range(6):
         full = complete_point(ctx, place.point, values, offset)
@@ -678,7 +676,8 @@ def _decide_point(ctx: SearchContext, place: Place, values: dict, algebraic,
             attach_witness(ctx, comp, to_at(ctx, full), numbers)
             break
     ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs,
-                                                point=_with_values(ctx, place.point, values)))
+                                                point=_with_values(ctx, place.point, values),
+                                                charts=tuple(charts)))
     return comp, values, None
 
 
@@ -711,18 +710,24 @@ def _algebraic_point(ctx: SearchContext, place: Place, values: dict, algebraic, 
     comp = _new_component(ctx, place, eqs, numbers, kind, {"Q"},
                           Remark.of("decided_algebraic", variable=alpha, minimal_polynomial=m),
                           condition=condition, within=place.point,
-                          generic_point=(at_point, quotient) if ctx.inside else None)
-    if comp is None:
-        return None
-    attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
+                          generic_point=(at_point, quotient) if ctx.inside else None,
+                          held_searched=True)
+    held = comp is None
+    if held:   # recorded in another chart (or here): searched inside at its joints at pi
+        comp = (recorded_elsewhere(ctx, eqs, numbers, at_point, quotient)
+                if kind == "subvariety" else None)
+        if comp is None:
+            return None
+    else:
+        attach_algebraic_witness(ctx, comp, x, g, values, place.point, numbers, alpha)
     family = (irrational_family(ctx, place, values, x, g, eqs) if kind == "subvariety"
               else None)
     if family is None:
         ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=None),
-                            "irrational_family")
+                            "irrational_family", held=held)
     else:
-        ctx.steps.go_deeper(ctx, comp, family[0], family=family[1])
-    return comp, values, (x, g)
+        ctx.steps.go_deeper(ctx, comp, family[0], family=family[1], held=held)
+    return None if held else (comp, values, (x, g))
 
 
 def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,

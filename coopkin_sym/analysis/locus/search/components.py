@@ -115,7 +115,8 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
                    condition: Condition | Callable[[], Condition] | None = None,
                    real: bool = True, chain: dict | None = None,
                    within: dict | None = None,
-                   generic_point: tuple | None = None) -> Component | None:
+                   generic_point: tuple | None = None,
+                   held_searched: bool = False) -> Component | None:
     """Record a component found at ``place`` (its depth and parent; None when the same
     set is already recorded); used by every seam of the search. ``chain`` is its
     parametrization by successive linear substitutions (variable -> ``(f0, f1)``,
@@ -125,7 +126,9 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     ``(parametrization, quotient or None)``, describes its generic point: a component of
     the same chart with the same numbers whose equations vanish there contains it, and
     it is not recorded. ``condition`` may be given as a function, called only for a
-    component that is recorded (a costly one is then not built for the others)."""
+    component that is recorded (a costly one is then not built for the others).
+    ``held_searched``: the caller searches inside a set held by a component of another
+    chart here (:func:`recorded_elsewhere`), so that is not said to be left out."""
     polys = [_named(ctx, text) for text in equations]
     mine = frozenset(polys)
     if any(_equation_set(ctx, c) == mine for c in ctx.locus.components):
@@ -134,7 +137,7 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
     holder = next((c for c in ctx.locus.components if c.numbers == here and c.equations
                    and _equation_set(ctx, c) < mine), None)
     if holder is not None:
-        _held_elsewhere(ctx, holder)
+        _held_elsewhere(ctx, holder, kind, held_searched)
         return None  # inside a recorded component, with its numbers: nothing new
     if chain is not None and any(_within(ctx, chain, c, numbers)
                                  for c in ctx.locus.components):
@@ -143,7 +146,7 @@ def _new_component(ctx: SearchContext, place: Place, equations: list[str], numbe
         (c for c in ctx.locus.components
          if c.numbers == here and _vanish_at(ctx, c, *generic_point)), None)
     if holder is not None:
-        _held_elsewhere(ctx, holder)
+        _held_elsewhere(ctx, holder, kind, held_searched)
         return None
     generic = ctx.generic.as_dict()
     here = numbers.as_dict()
@@ -183,13 +186,14 @@ def _named(ctx: SearchContext, text: str) -> NamedPolynomial:
     return NamedPolynomial.parse(text, names, "equation")
 
 
-def _held_elsewhere(ctx: SearchContext, holder: Component) -> None:
+def _held_elsewhere(ctx: SearchContext, holder: Component, kind: str,
+                    searched: bool) -> None:
     """A set found inside ``holder`` (with its numbers) is not recorded again; when
     ``holder`` was found in a chart with other joints at pi, the drops inside the set
-    here are not searched (``holder`` is searched inside in its own chart, which does
-    not reach these joints at pi): said."""
+    here are not reached by the search inside ``holder`` in its own chart: said, unless
+    the caller searches inside the set here (``searched``) or it is a point."""
     beyond = sorted(ctx.pi - set(holder.chart))
-    if beyond:
+    if beyond and not searched and kind != "isolated":
         add_once(ctx.locus.unexplored, Remark.of(
             "pi_inside_not_searched", component=ctx.locus.components.index(holder),
             joints=tuple(beyond)))
@@ -308,6 +312,28 @@ def wider_component(ctx: SearchContext, chain: dict, numbers: Numbers) -> Compon
         if all(_on_chain(r, ctx, chain).is_zero() and
                (d.is_constant() or not _on_chain(d, ctx, chain).is_zero())
                for r, d in moved):
+            return comp
+    return None
+
+
+def recorded_elsewhere(ctx: SearchContext, equations: list[str], numbers: Numbers,
+                       point: dict, quotient) -> Component | None:
+    """The component, recorded in another chart with the same numbers, that holds the
+    set of ``equations`` (its equations are among them) or its generic point (the
+    parametrization ``point`` and the ``quotient``, as in :func:`_new_component`);
+    None when there is none. The set is then not recorded again, but what lies inside
+    it in this chart (at the joints at pi here) is searched here."""
+    if quotient is None and (wider := wider_component(ctx, point, numbers)) is not None:
+        return wider
+    if ctx.owners is None:
+        return None
+    here = numbers.as_dict()
+    mine = frozenset(_named(ctx, text) for text in equations)
+    for comp in ctx.locus.components:
+        if comp.numbers != here or ctx.owners.get(id(comp)) in (None, ctx):
+            continue
+        if (comp.equations and _equation_set(ctx, comp) <= mine) or _vanish_at(
+                ctx, comp, point, quotient):
             return comp
     return None
 

@@ -20,8 +20,10 @@ from coopkin_sym.analysis.locus.search.components import (
     beyond_chart,
     no_real_points,
     note,
+    recorded_elsewhere,
 )
 from coopkin_sym.analysis.locus.search.hypersurface import candidates
+from coopkin_sym.analysis.locus.search.modular import numbers_on
 from coopkin_sym.analysis.locus.witness import (
     algebraic_witness_on,
     attach_witness,
@@ -29,7 +31,6 @@ from coopkin_sym.analysis.locus.witness import (
     numbers_at_values,
     to_at,
 )
-from coopkin_sym.analysis.mobility import numbers_modulo
 from coopkin_sym.errors import WorkLimitReached
 from coopkin_sym.exact import deadline
 from coopkin_sym.exact.quotient import Quotient
@@ -62,7 +63,7 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
         return
     k = min((ctx.ring_names.index(n) for n in names if ctx.kinds[n][0] != "parameter"),
             key=lambda i: (f.degrees()[i], i))
-    numbers = numbers_modulo(place.rows, ctx.model, ctx.row_contacts, Quotient(f, k))
+    numbers = numbers_on(ctx, place.rows, Quotient(f, k), place.base)
     on_f = place.inside(equations=place.equations + [f_text])
     if numbers == place.base:
         if len([n for n in ctx.ring_names if n not in place.point]) > 1:
@@ -72,8 +73,13 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
                           "hypersurface" if not beyond_chart(ctx, place.equations)
                           else "subvariety", drops,
                           Remark.of("decided_modulo_family"), real=real is True, within=place.point,
-                          generic_point=(place.point, Quotient(f, k)))
+                          generic_point=(place.point, Quotient(f, k)), held_searched=True)
     if comp is None:
+        # recorded in another chart: what lies inside it at the joints at pi here
+        holder = recorded_elsewhere(ctx, place.equations + [f_text], numbers, place.point,
+                                    Quotient(f, k))
+        if holder is not None:
+            ctx.steps.go_deeper(ctx, holder, on_f, family=(f, k), held=True)
         return
     point = rational_point(ctx, f, names)
     if point is not None:

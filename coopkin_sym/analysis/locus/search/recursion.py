@@ -22,6 +22,7 @@ from coopkin_sym.analysis.locus.search.components import (
     Steps,
     _new_component,
     note,
+    recorded_elsewhere,
     step_name,
     wider_component,
 )
@@ -37,6 +38,8 @@ from coopkin_sym.analysis.locus.witness import (
 )
 from coopkin_sym.analysis.mobility import decompose
 from coopkin_sym.analysis.numbers import Numbers
+from coopkin_sym.errors import WorkLimitReached
+from coopkin_sym.exact import deadline
 from coopkin_sym.exact.substitution import substitute
 
 
@@ -162,8 +165,12 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
     kind = ("isolated" if not left else "hypersurface" if len(eqs) == 1 else "subvariety")
     comp = _new_component(ctx, place, eqs, numbers, kind, drops,
                           Remark.of("decided_function_field"), witness=witness,
-                          chain=sub_point)
-    go_deeper(ctx, comp, inside)
+                          chain=sub_point, held_searched=True)
+    if comp is not None:
+        go_deeper(ctx, comp, inside)
+    else:   # recorded in another chart: searched inside at its joints at pi
+        go_deeper(ctx, recorded_elsewhere(ctx, eqs, numbers, sub_point, None), inside,
+                  held=True)
 
 
 def inside_candidate(ctx: SearchContext, place: Place, split: bool = False,
@@ -225,15 +232,38 @@ def after_enclosing(ctx: SearchContext, search) -> None:
         search()
 
 
+#: The work budget, in steps of :func:`~coopkin_sym.exact.deadline.check`, that the
+#: searches inside the sets of one chart at q = pi held by a component of another
+#: chart share (deterministic: the same cut on any machine); past it, each such set
+#: is said not searched inside.
+HELD_STEPS = 50_000
+#: The owner of that budget (see :func:`~coopkin_sym.exact.deadline.active`).
+HELD_OWNER = "the search inside sets held in another chart"
+
+
 def go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
-              why_not: str | None = None, family: tuple | None = None) -> None:
+              why_not: str | None = None, family: tuple | None = None,
+              held: bool = False) -> None:
     """Search inside a new component for deeper drops, or say why it was not done
     (``why_not``: a reason of :data:`~.remarks.REASONS`). ``family = (f, k)``: the
     component is ``f = 0`` inside the rows of ``place`` (``f`` curved in variable
-    ``k``), searched by :func:`~.curved.inside_curved`."""
+    ``k``), searched by :func:`~.curved.inside_curved`. ``held``: ``place`` is a set
+    of this chart inside ``comp``, a component recorded in another chart (searched
+    under the chart's budget :data:`HELD_STEPS`)."""
     if comp is None or comp.kind == "isolated":
         return
+    if held:
+        _search_held(ctx, comp, place, why_not, family)
+        return
     index = ctx.locus.components.index(comp)
+    # a set held by a component of another chart, found again from another minor with
+    # the same parametrization's denominators: searched inside once
+    key = ("inside", index, frozenset(place.equations),
+           tuple(sorted(str(c) for c in place.charts)),
+           None if family is None else str(family[0]))
+    if key in ctx.searched:
+        return
+    ctx.searched.add(key)
     if place.depth >= ctx.max_depth:
         why_not = "max_depth"
     elif place.rows is None and why_not is None:
@@ -247,6 +277,29 @@ def go_deeper(ctx: SearchContext, comp: Component | None, place: Place,
     else:
         inside_curved(ctx, place.inside(depth=place.depth + 1, parent=index,
                                         base=Numbers(**comp.numbers)), *family)
+
+
+def _search_held(ctx: SearchContext, comp: Component, place: Place, why_not: str | None,
+                 family: tuple | None) -> None:
+    """:func:`go_deeper` inside a set held by ``comp`` from another chart, under what
+    is left of the chart's budget; said when the budget is used up."""
+    said = Remark.of("pi_inside_not_searched", component=ctx.locus.components.index(comp),
+                     joints=tuple(sorted(ctx.pi - set(comp.chart))))
+    left = HELD_STEPS if ctx.held_left is None else ctx.held_left
+    if left <= 0:
+        add_once(ctx.locus.unexplored, said)
+        return
+    levels = len(ctx.deferred)
+    with deadline.work_limit(left, HELD_OWNER) as bound:
+        start = bound.budget[0]   # less than left inside a smaller enclosing budget
+        try:
+            go_deeper(ctx, comp, place, why_not, family)
+        except WorkLimitReached:
+            if bound.budget[0] >= 0:
+                raise   # an enclosing budget, used up here
+            del ctx.deferred[levels:]   # what it left to search later is cut too
+            add_once(ctx.locus.unexplored, said)
+    ctx.held_left = max(left - (start - bound.budget[0]), 0)
 
 
 #: The steps the seams below call back into (see :class:`.components.Steps`).
