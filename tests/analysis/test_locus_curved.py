@@ -28,7 +28,7 @@ from coopkin_sym.analysis.mobility import analyze, numbers_modulo
 from coopkin_sym.exact.quotient import Quotient
 from coopkin_sym.exact.substitution import split_linear, substitute_rows
 from coopkin_sym.model.configuration import Configuration
-from coopkin_sym.present.remarks import grouped_remark_texts, remark_texts
+from coopkin_sym.present.remarks import remark_texts
 from coopkin_sym.present.verification import summary_lines
 
 #: Two soft fingers, three joints: with q3 = pi, the curved family F below has the
