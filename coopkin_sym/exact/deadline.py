@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 from coopkin_sym.errors import TimeLimitReached, WorkLimitReached
 
-__all__ = ["Bound", "TimeLimitReached", "WorkLimitReached", "active", "check", "keep",
+__all__ = ["Bound", "TimeLimitReached", "WorkLimitReached", "active", "check", "give_up", "keep",
            "budget_left", "kept", "remaining", "spend", "time_limit",
            "work_limit"]
 
@@ -147,6 +147,24 @@ def spend(steps: int, where: str = "") -> None:
     if bound is not None and bound.budget is not None:
         bound.budget[0] -= max(int(steps), 0)
     check(where)
+
+
+def give_up(where: str = "") -> None:
+    """Raise :class:`TimeLimitReached` now, under a time bound: an operation that
+    cannot be interrupted and would outlast the time left is not started.
+
+    Example
+    -------
+    >>> with time_limit(60, "an example"):
+    ...     try:
+    ...         give_up("a large gcd")
+    ...     except TimeLimitReached as exc:
+    ...         message = str(exc)
+    >>> message
+    'time bound of 60 s reached during a large gcd'
+    """
+    bound = _CURRENT.get()
+    raise TimeLimitReached(bound.seconds if bound is not None else 0.0, where)
 
 
 def budget_left() -> int | None:

@@ -34,7 +34,7 @@ from collections.abc import Callable, Sequence
 import flint
 
 from coopkin_sym.errors import ArgumentError
-from coopkin_sym.exact.deadline import check, remaining
+from coopkin_sym.exact.deadline import check, give_up, remaining
 from coopkin_sym.exact.sizes import coefficient_bits, determinant_terms
 
 Poly = flint.fmpz_mpoly
@@ -82,13 +82,19 @@ def gcd_fits(a: Poly, b: Poly, max_terms: int | None) -> bool:
         return True
     if min(len(a), len(b)) > max_terms:
         return False
+    return not _outlasts(a, b)
+
+
+def _outlasts(a: Poly, b: Poly) -> bool:
+    """Whether a gcd of ``a`` and ``b`` would outlast the time left under a bound (see
+    :data:`CONTENT_GCD_RATE`; small ones never do)."""
     if min(len(a), len(b)) < WEIGHED_TERMS:
-        return True
+        return False
     left = remaining()
     if left is None:
-        return True
+        return False
     # the smaller side is weighed first: when it fits, the larger need not be weighed
-    return any((len(p) * coefficient_bits(p) / CONTENT_GCD_RATE) ** 2 <= max(left, 0.0)
+    return all((len(p) * coefficient_bits(p) / CONTENT_GCD_RATE) ** 2 > max(left, 0.0)
                for p in sorted((a, b), key=len))
 
 
@@ -305,6 +311,9 @@ def _kernel_vector(reduced: list[Row], pivots: list[int], free: int, ncols: int,
     involved = [(r, c) for r, c in zip(reduced, pivots, strict=True) if not r[free].is_zero()]
     scale = zctx.constant(1)
     for r, c in involved:
+        check("a nullspace vector")
+        if _outlasts(scale, r[c]):   # flint cannot interrupt the gcd: not started
+            give_up("a nullspace vector (a gcd that would outlast the time left)")
         scale = scale * r[c] / scale.gcd(r[c])
     v = [zctx.constant(0)] * ncols
     v[free] = scale

@@ -145,3 +145,25 @@ def test_primitive_makes_the_first_entry_positive_even_when_it_is_alone():
     assert [str(e) for e in el.primitive([-y, zero])] == ["1", "0"]
     assert [str(e) for e in el.primitive([-2 * y, 4 * y**2])] == ["1", "-2*y"]
     assert [str(e) for e in el.primitive([zero, -3 * y, ctx.constant(6)])] == ["0", "y", "-2"]
+
+
+def test_a_gcd_of_a_nullspace_vector_that_would_outlast_the_time_left_is_not_started(
+        monkeypatch):
+    """The lcm of the pivots of a nullspace vector takes gcds flint cannot interrupt:
+    under a time bound, one estimated to outlast the time left is not started (the
+    bound is reported reached there); without a bound it is taken."""
+    from coopkin_sym.errors import TimeLimitReached
+    from coopkin_sym.exact import deadline, elimination
+    ctx = flint.fmpz_mpoly_ctx.get(("x", "y"), "degrevlex")
+    x, y = ctx.gens()
+    p = sum((x**i * y**(i % 7) * (i + 1) for i in range(600)), ctx.constant(1))
+    q = sum((y**i * x**(i % 5) * (i + 2) for i in range(600)), ctx.constant(3))
+    zero = ctx.constant(0)
+    reduced = [[p, zero, x + 1], [zero, q, y - 2]]
+    vector = elimination._kernel_vector(reduced, [0, 1], 2, 3, ctx)
+    assert all((row[0] * vector[0] + row[1] * vector[1] + row[2] * vector[2]).is_zero()
+               for row in reduced)
+    monkeypatch.setattr(elimination, "CONTENT_GCD_RATE", 1)   # every large gcd is slow
+    with deadline.time_limit(60, "a test"):
+        with pytest.raises(TimeLimitReached, match="a nullspace vector"):
+            elimination._kernel_vector(reduced, [0, 1], 2, 3, ctx)
