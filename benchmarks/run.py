@@ -228,16 +228,25 @@ def _commit_of(info) -> str:
     return "?"
 
 
-def before_after(before: dict, rows: list[dict], info) -> list[str]:
+def before_after(before: dict, rows: list[dict], info,
+                 again: list[tuple[str, str]] = ()) -> list[str]:
     """The lines of the before/after table: our time of every (benchmark, case) that
-    both runs measured (its first row), with the ratio of the two."""
+    both runs measured (its first row), with the ratio of the two. With ``again``
+    (modules measured again by ``--again``, with their package commit), only their
+    rows: the others were not measured again."""
     earlier: dict[tuple, dict] = {}
     for r in before["rows"]:
         earlier.setdefault((r.get("benchmark"), r.get("case")), r)
     old, new = _commit_of(before["machine"]), _commit_of(info)
+    only = ""
+    if again:
+        modules = {name for name, _ in again}
+        rows = [r for r in rows if r.get("module") in modules]
+        new = ", ".join(sorted({code for _, code in again}))
+        only = " Only the modules measured again: " + ", ".join(sorted(modules)) + "."
     out = [f"## Before and after: package commit {old} and {new}", "",
            "Our time of each case both runs measured (`speedup = before / after`; the "
-           "earlier run is `" + before.get("source", "--rows") + "`).", "",
+           "earlier run is `" + before.get("source", "--rows") + "`)." + only, "",
            f"| benchmark | case | before ({old}) | after ({new}) | speedup |",
            "|---|---|---|---|---|"]
     seen = set()
@@ -321,7 +330,7 @@ def main(argv: list[str] | None = None) -> int:
               "See `benchmarks/README.md` for what each row measures.", "",
               markdown_table(rows), ""]
     if args.before:
-        lines += before_after(json.loads(args.before.read_text()), rows, info)
+        lines += before_after(json.loads(args.before.read_text()), rows, info, again)
     if has_plot:
         lines += ["![scaling](scaling.png)", ""]
     if has_speed_plot:

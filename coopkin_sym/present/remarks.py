@@ -67,7 +67,8 @@ def _inside_limit(facts: Mapping[str, Any]) -> str:
 
 
 #: Why the drops inside a component at joints at pi it was not found at are not searched.
-_OWN_CHART = "searched inside only in the chart where it was found"
+_OWN_CHART = ("a set inside a component of another chart: past the work budget of such "
+              "searches in this slice, or not run")
 
 
 def _at_pi(joints: Sequence[str]) -> str:
