@@ -488,9 +488,7 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
         if numbers == place.base:
             sub_point = dict(inner)
             sub_point[y] = (k0, k1)
-            sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
-                               not c.is_constant()) + ((k1,) if not k1.is_constant()
-                                                       else ())
+            sub_charts = _charts_after([*place.charts, h1], at_xy, k1)
             ctx.steps.inside_candidate(ctx, place.inside(
                 rows=rows, equations=place.equations + [poly_text(ctx, h),
                                                         poly_text(ctx, k)],
@@ -527,8 +525,7 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
     if k.degrees()[ky] == 1:
         sub_point = dict(inner)
         sub_point[y] = (k0, k1)
-        sub_charts = tuple(c for c in (at_xy(c) for c in [*place.charts, h1]) if
-                           not c.is_constant()) + ((k1,) if not k1.is_constant() else ())
+        sub_charts = _charts_after([*place.charts, h1], at_xy, k1)
         ctx.steps.go_deeper(ctx, comp, place.inside(rows=rows, equations=eqs, point=sub_point,
                                                     charts=sub_charts), held=held)
     else:
