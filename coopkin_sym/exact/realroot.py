@@ -31,6 +31,7 @@ import flint
 import sympy as sp
 
 from coopkin_sym.exact.rationals import to_fraction, to_sympy
+from coopkin_sym.exact.subfields import minimal_polynomial
 
 _T = sp.Symbol("t")
 
@@ -124,6 +125,44 @@ class RealRoot:
         if self.lo == self.hi:
             return bool(sp.Eq(expr, lo))
         return bool(expr > lo) and bool(expr <= hi)
+
+    def in_subfield(self, value: flint.fmpq_poly) -> RealRoot | None:
+        """``value`` (a polynomial in this root) as a root of its own minimal
+        polynomial when that has degree at most two and below this root's: which of
+        its roots it is is decided by enclosing ``value`` on isolating intervals of
+        this root, refined until the enclosure falls on one side of a rational strictly
+        between the two.
+        None otherwise (or when no refinement up to ``1e-200`` decides).
+
+        Example
+        -------
+        >>> import flint
+        >>> r = RealRoot.all_of([1, 0, -10, 0, 1])[-1]             # sqrt 2 + sqrt 3
+        >>> r.in_subfield(flint.fmpq_poly([0, -9, 0, 1]) / 2).expression()   # sqrt 2
+        sqrt(2)
+        """
+        g = flint.fmpq_poly(list(self.coeffs))
+        m = minimal_polynomial(g, value % g)
+        if m.degree() > 2 or m.degree() >= self.degree:
+            return None
+        den = 1
+        for c in m.coeffs():
+            den = den * int(c.q) // gcd(den, int(c.q))
+        own = RealRoot.all_of([int(c * den) for c in m.coeffs()])
+        if len(own) == 1:
+            return own[0]
+        low, high = own
+        width = (high.lo - low.lo) / 4 if high.lo > low.lo else Fraction(1)
+        while low.refine(width)[1] >= high.refine(width)[0]:
+            width /= 16
+        split = (low.refine(width)[1] + high.refine(width)[0]) / 2   # strictly between
+        for k in range(1, 21):
+            a, b = _interval_value(value % g, *self.refine(Fraction(1, 10 ** (10 * k))))
+            if b < split:
+                return low
+            if a > split:
+                return high
+        return None   # pragma: no cover
 
     def angle(self) -> sp.Expr:
         """The angle ``q = 2 atan(root)`` in ``(-pi, pi)``, a rational multiple of pi
@@ -232,13 +271,29 @@ def element_expression(value: Element, root: RealRoot | sp.Expr) -> sp.Expr:
     >>> element_expression(flint.fmpq_poly([1, flint.fmpq(1, 2)]), r)
     sqrt(2)/2 + 1
     """
-    expr = root.expression() if isinstance(root, RealRoot) else root
     if isinstance(value, Fraction):
         return to_sympy(value)
+    if isinstance(root, RealRoot) and root.degree > 2:
+        own = root.in_subfield(value)
+        if own is not None:   # in a quadratic subfield: its own radicals
+            return own.expression()
+    expr = root.expression() if isinstance(root, RealRoot) else root
     coeffs = [sp.Rational(int(c.p), int(c.q)) for c in value.coeffs()]
     if coeffs == [0, 1]:
         return expr
     return radical_normal(sum(c * expr**i for i, c in enumerate(coeffs)))
+
+
+def _interval_value(p: flint.fmpq_poly, lo: Fraction, hi: Fraction
+                    ) -> tuple[Fraction, Fraction]:
+    """An interval holding ``p(x)`` for every ``x`` in ``[lo, hi]`` (Horner's rule in
+    exact interval arithmetic)."""
+    coeffs = [Fraction(int(c.p), int(c.q)) for c in p.coeffs()] or [Fraction(0)]
+    a = b = coeffs[-1]
+    for c in reversed(coeffs[:-1]):
+        products = (a * lo, a * hi, b * lo, b * hi)
+        a, b = min(products) + c, max(products) + c
+    return a, b
 
 
 def _plain_radical(term: sp.Expr) -> bool:

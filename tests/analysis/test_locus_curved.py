@@ -20,7 +20,7 @@ import coopkin_sym
 from coopkin_sym.analysis.irrational import analyze_irrational
 from coopkin_sym.analysis.locus import algebra
 from coopkin_sym.analysis.locus.context import Place
-from coopkin_sym.analysis.locus.search import codimension, compute_locus, search_context
+from coopkin_sym.analysis.locus.search import codimension, compute_locus, fields, search_context
 from coopkin_sym.analysis.locus.search import curved as curved_search
 from coopkin_sym.analysis.locus.search.curved import inside_curved
 from coopkin_sym.analysis.locus.verify import verify_locus
@@ -376,8 +376,9 @@ def test_sets_with_one_irrational_coordinate_are_searched_inside():
     found = [c for c in locus.components if c.numbers == raised]
     # read in angles: the family's polynomials, which the values imply, left out
     assert sorted(c.condition.text for c in found) == sorted(
-        f"q1 = {q1a}, q3 = {q3}, q4 = -3*pi/4 or q1 = {q1b}, q3 = {q3}, q4 = pi/4"
-        for q1a, q1b in (("-q4", "-q4"), ("-pi/4", "3*pi/4")) for q3 in ("-pi/2", "pi/2"))
+        f"q1 = -pi/4, q3 = {q3}, q4 = {q4a} or q1 = 3*pi/4, q3 = {q3}, q4 = {q4b}"
+        for q4a, q4b in (("pi/4", "-3*pi/4"), ("-3*pi/4", "pi/4"))
+        for q3 in ("-pi/2", "pi/2"))
     _rises_exactly_there(system, raised, [
         (f"q1={q1},q2=2*atan(5),q3={q3},q4={q4}", f"q1={q1},q2=2*atan(5),q3=pi/3,q4={q4}")
         for q4, q1s in (("pi/4", ("-pi/4", "3*pi/4")), ("-3*pi/4", ("3*pi/4", "-pi/4")))
@@ -416,16 +417,18 @@ def test_a_family_recorded_in_the_t_chart_is_searched_inside_at_q_pi():
 
 def test_a_family_is_written_in_a_coordinate_that_generates_its_field():
     """A point's coordinates given in a root x = 3 t_q4 of x^2 + 6 x - 9 (t_q4 = x/3,
-    t_q1 = x/3 + 2) become the family t_q4^2 + 2 t_q4 - 1 = 0 with t_q1 = t_q4 + 2;
-    coordinates that do not generate the field (sqrt(2) and sqrt(3) apart, in
-    Q(sqrt(2) + sqrt(3))) give none."""
+    t_q1 = x/3 + 2) become the family t_q4^2 + 2 t_q4 - 1 = 0 with t_q1 = t_q4 + 2.
+    Coordinates that each generate only part of the field (sqrt(2) and sqrt(3) apart,
+    in Q(sqrt(2) + sqrt(3))) give a product family, two of them each a root of its
+    own quadratic and the third written in both; two in one quadratic field give
+    none."""
     system = coopkin_sym.load(random_system(408))
     ctx, rows = search_context(system)
     place = Place(rows=rows, equations=[], point={}, charts=(), depth=1)
     x = flint.fmpq_poly([0, 1])
     t4 = ctx.ring.zctx.gens()[ctx.ring_names.index("t_q4")]
     g = t4**2 + 6 * t4 - 9
-    inside, (h, k) = codimension.irrational_family(
+    inside, (h, k) = fields.irrational_family(
         ctx, place, {"t_q4": x / 3, "t_q1": x / 3 + 2}, "t_q4", g, ["e"])
     assert (str(h), ctx.ring_names[k]) == ("t_q4^2 + 2*t_q4 - 1", "t_q4")
     f0, f1 = inside.point["t_q1"]
@@ -434,7 +437,16 @@ def test_a_family_is_written_in_a_coordinate_that_generates_its_field():
     # x = sqrt(2) + sqrt(3): x^4 - 10 x^2 + 1; t_q4 = sqrt(2), t_q1 = sqrt(3)
     quartic = t4**4 - 10 * t4**2 + 1
     sqrt2, sqrt3 = (x**3 - 9 * x) / 2, (11 * x - x**3) / 2
-    assert codimension.irrational_family(ctx, place, {"t_q4": sqrt2, "t_q1": sqrt3},
+    inside, (hs, ks) = fields.irrational_family(
+        ctx, place, {"t_q4": sqrt2, "t_q1": sqrt3, "t_q3": (sqrt2 * sqrt3) % (
+            x**4 - 10 * x**2 + 1)}, "t_q4", quartic, ["e"])
+    # the first pair in the ring's order: sqrt 3 and sqrt 6, sqrt 2 = sqrt 3 sqrt 6 / 3
+    assert [str(h) for h in hs] == ["t_q1^2 - 3", "t_q3^2 - 6"]
+    assert [ctx.ring_names[k] for k in ks] == ["t_q1", "t_q3"]
+    f0, f1 = inside.point["t_q4"]
+    assert (str(-f0), str(f1)) == ("t_q1*t_q3", "3")
+    assert set(inside.point) == {"t_q4"}
+    assert fields.irrational_family(ctx, place, {"t_q4": sqrt2, "t_q1": 2 * sqrt2},
                                          "t_q4", quartic, ["e"]) is None
 
 
@@ -516,3 +528,33 @@ def test_proportional_polynomials_are_constant_multiples_of_each_other():
     assert not _proportional(g + a, g)                  # one more term
     assert not _proportional(g - 2 * a**2 + 5 * a**2, g)  # same terms, not a multiple
     assert not _proportional(a * g, g)
+
+
+@pytest.mark.parametrize(("seed", "family"), [(440, "t_q4**2 + 9*t_q4 - 1"),
+                                              (456, "t_q4**2 - 2*t_q4 - 1")])
+def test_a_root_times_an_algebraic_point_is_decided_and_searched(seed, family):
+    """Random systems 440 and 456: inside the family ``family`` = 0 (q4 at one of two
+    irrational angles), Nm rises to 3 where t_q1 and t_q3 take irrational values too,
+    q2 free. The points are a root of one variable times an algebraic point of the
+    others (two fields at once): said not solved before, and the sets they span had
+    coordinates that each generate only part of their field (said with no rational
+    parametrization). Now each orbit of conjugate pairs is one point over the
+    compositum, the set is searched inside over the product of its coordinates'
+    fields, nothing is said left out, the numbers at each witness agree with an
+    independent analysis over the field of the angles, moving q1 off the set brings
+    them back, and the certificate proves the locus complete on flint alone."""
+    from coopkin_sym.analysis.locus.certify import certify_locus
+    system = coopkin_sym.load(random_system(seed))
+    locus = compute_locus(system, timeout=60)
+    assert not locus.unexplored
+    raised = {"Nm": 3, "Nc": 2, "Ni": 0, "Nr": 1, "Ng": 3, "Nd": 6, "Nh": 2}
+    found = [c for c in locus.components if c.numbers == raised]
+    assert found and all(c.kind == "subvariety" and c.parent == 0
+                         and c.equations[0].text == family for c in found)
+    for c in found:
+        point = c.algebraic_witness["point"]
+        at = ",".join(f"{k}={v}" for k, v in point.items())
+        off = ",".join(f"{k}={'2*atan(1/7)' if k == 'q1' else v}"
+                       for k, v in point.items())
+        _rises_exactly_there(system, raised, [(at, off)])
+    assert certify_locus(system, locus, timeout=120).certified

@@ -30,7 +30,9 @@ by joint in the second chart.
 The search is split along its seams: :mod:`.charts` (the ring and rows of a chart,
 the slices at q = pi), :mod:`.hypersurface` (candidate polynomials from the minors),
 :mod:`.curved` (families linear in no variable), :mod:`.codimension` (points and
-codimension-2 families), :mod:`.components` (recording what is found) and
+codimension-2 families), :mod:`.fields` (sets over number fields: points joined over
+a compositum, sets with irrational coordinates as families), :mod:`.modular` (numbers
+shown modulo a prime), :mod:`.components` (recording what is found) and
 :mod:`.recursion` (explore a place, decide a factor, go deeper), joined here by
 :func:`compute_locus`. The polynomial systems are solved in
 :mod:`coopkin_sym.analysis.locus.algebra`, witnesses and float checks are made in

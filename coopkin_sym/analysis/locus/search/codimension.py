@@ -7,7 +7,6 @@ over its field.
 from __future__ import annotations
 
 import itertools
-from fractions import Fraction
 
 import sympy as sp
 
@@ -42,6 +41,7 @@ from coopkin_sym.analysis.locus.search.components import (
     recorded_elsewhere,
     variable_to_solve,
 )
+from coopkin_sym.analysis.locus.search.fields import irrational_family, joined_points
 from coopkin_sym.analysis.locus.search.modular import (
     enclosing_numbers_at_a_point,
     numbers_on,
@@ -58,7 +58,9 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
-from coopkin_sym.exact.numberfield import NumberField, change_generator
+from coopkin_sym.exact.numberfield import (
+    NumberField,
+)
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -142,9 +144,15 @@ def _product_points(ctx: SearchContext, polys, names: list[str], max_degree: int
             out_algebraic += [(x, h, dict(pt), [h, *(linear_equation(ctx, n, v)
                                                      for n, v in pt.items())], x)
                               for pt in points]
-            if algebraic:
-                unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
-                                            variables=names, bound=_PARAMETER_SOLVE_TERMS))
+            for point in algebraic:
+                joined = joined_points(ctx, x, h, point, max_degree)
+                if joined is None:
+                    unresolved.append(Remark.of("lower_dimensional_not_solved", depth=depth,
+                                                variables=names,
+                                                bound=_PARAMETER_SOLVE_TERMS))
+                    continue
+                for one in joined:
+                    (unresolved if isinstance(one, Remark) else out_algebraic).append(one)
         return out_points, out_algebraic, unresolved
     return None
 
@@ -725,44 +733,3 @@ def _algebraic_point(ctx: SearchContext, place: Place, values: dict, algebraic, 
     else:
         ctx.steps.go_deeper(ctx, comp, family[0], family=family[1], held=held)
     return None if held else (comp, values, (x, g))
-
-
-def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,
-                      equations: list[str]) -> tuple[Place, tuple] | None:
-    """The set where the coordinates ``values`` are fixed (rationals, or polynomials
-    over Q in a root ``x`` of ``g``; the other free variables generic) as a family
-    ``h = 0`` that :func:`~.curved.inside_curved` searches inside: ``(place, (h, k))``,
-    ``h`` the minimal polynomial of one of its irrational coordinates (variable ``k``),
-    the others polynomials in it, substituted in the rows. The first coordinate that
-    generates ``Q(x)`` is taken; None when none does (the report then says there is no
-    rational parametrization).
-
-    ``x`` is the variable whose slot holds the root; its own coordinate may be one of
-    ``values`` (a polynomial in the root, as when the root is ``3 t``): the family is
-    then written in the coordinate, never in the root."""
-    gq = univariate(ctx, g, x)
-    irrational = {n: v for n, v in values.items() if not isinstance(v, Fraction)}
-    if x not in values:
-        chosen, h, fixed = x, g, dict(values)
-    else:
-        order = sorted(irrational, key=lambda n: (n != x, ctx.ring_names.index(n)))
-        for chosen in order:
-            others = [n for n in irrational if n != chosen]
-            changed = change_generator(gq, irrational[chosen], [irrational[n] for n in others])
-            if changed is not None:
-                break
-        else:
-            return None
-        minimal, expressed = changed
-        fixed = {n: v for n, v in values.items() if n not in irrational}
-        fixed.update(zip(others, expressed, strict=True))
-        h = normalize(as_poly(ctx, minimal, chosen)[0])
-    rows = substitute_values(ctx, place.rows, fixed, chosen)
-    point = dict(place.point)
-    for n, v in fixed.items():
-        num, den = as_poly(ctx, v, chosen)
-        point[n] = (-num, ctx.ring.zctx.constant(den))
-    charts = tuple(c for c in (substitute_values(ctx, [[c]], fixed, chosen)[0][0]
-                               for c in place.charts) if not c.is_constant())
-    return (place.inside(rows=rows, equations=equations, point=point, charts=charts),
-            (h, ctx.ring_names.index(chosen)))

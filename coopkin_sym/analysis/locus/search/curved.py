@@ -33,7 +33,7 @@ from coopkin_sym.analysis.locus.witness import (
 )
 from coopkin_sym.errors import WorkLimitReached
 from coopkin_sym.exact import deadline
-from coopkin_sym.exact.quotient import Quotient
+from coopkin_sym.exact.quotient import Quotient, Tower
 from coopkin_sym.exact.substitution import split_linear, substitute_rows
 
 
@@ -91,11 +91,13 @@ def nonlinear_factor(ctx: SearchContext, place: Place, f, f_text, drops) -> None
     ctx.steps.go_deeper(ctx, comp, on_f, family=(f, k))
 
 
-def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
+def inside_curved(ctx: SearchContext, place: Place, f, k) -> None:
     """Drops inside a family ``f = 0`` (``f`` irreducible, linear in no variable; ``k``
     a variable it is curved in) with no rational parametrization, whose numbers are
     ``place.base``. ``place.rows`` are the rows of the set ``f`` was found in (they hold
-    on ``f = 0``, outside the zeros of ``place.charts``).
+    on ``f = 0``, outside the zeros of ``place.charts``). ``f`` and ``k`` may also be
+    tuples: univariate polynomials in distinct variables whose roots generate linearly
+    disjoint fields (the family is where all of them vanish, over their compositum).
 
     For each block whose rank drop changes a number (``H G^T``, ``H D`` of each arm,
     the left nullspace of each ``H D`` and the object rows it leaves) the rank over the
@@ -113,8 +115,9 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
     cut (what it found by then is kept, and the searches it deferred still run),
     and points of degree above :data:`INSIDE_DEGREE` are not decided; the report
     says so each time."""
+    moduli = family_moduli(f, k)
     names = ({n for row in place.rows for e in row if not e.is_constant()
-              for n in vars_of(ctx, e)} | set(vars_of(ctx, f)))
+              for n in vars_of(ctx, e)} | {n for g, _ in moduli for n in vars_of(ctx, g)})
     where = (dict(component=place.parent, equations=()) if place.parent is not None
              and place.depth > 0 and _is_component(ctx, place) else
              dict(component=None, equations=place.equations))
@@ -124,7 +127,7 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
         return
     if len(names) < 2:
         return   # points: nothing lies deeper inside them
-    size = max(len(f), max(len(e) for row in place.rows for e in row))
+    size = max(*(len(g) for g, _ in moduli), max(len(e) for row in place.rows for e in row))
     if size > INSIDE_TERMS:
         note(ctx, "inside_not_searched", limit="terms", size=size, bound=INSIDE_TERMS,
              **where)
@@ -133,7 +136,7 @@ def inside_curved(ctx: SearchContext, place: Place, f, k: int) -> None:
     with deadline.work_limit(INSIDE_STEPS, INSIDE_OWNER) as bound:
         ctx.inside += 1
         try:
-            _search_inside(ctx, place, f, k)
+            _search_inside(ctx, place, moduli)
         except WorkLimitReached:
             if bound.budget[0] >= 0:
                 raise   # an enclosing family's budget, used up here
@@ -175,10 +178,24 @@ INSIDE_OWNER = "the search inside a family"
 BLOCK_ORDER = ("HG^T", "HD", "A", "Y")
 
 
-def _search_inside(ctx: SearchContext, place: Place, f, k: int) -> None:
+def family_moduli(f, k) -> list[tuple]:
+    """The polynomials of a family ``(f, k)`` of :func:`inside_curved` with their
+    variables: ``[(f, k)]``, or one pair per polynomial when they are tuples."""
+    return list(zip(f, k, strict=True)) if isinstance(f, tuple) else [(f, k)]
+
+
+def family_quotient(moduli) -> Quotient | Tower:
+    """The quotient ranks are taken in on a family of :func:`family_moduli`."""
+    if len(moduli) == 1:
+        return Quotient(*moduli[0])
+    return Tower([Quotient(g, k) for g, k in moduli])
+
+
+def _search_inside(ctx: SearchContext, place: Place, moduli) -> None:
     """The drop sets of :func:`inside_curved`, block by block (:data:`BLOCK_ORDER`,
     the divisors taken out of the rows of every block before the minors)."""
-    cands = candidates(ctx, place.rows, Quotient(f, k))
+    cands = candidates(ctx, place.rows, family_quotient(moduli))
+    f = [g for g, _ in moduli]
 
     def order(name: str) -> tuple:
         block = name.split(":")[1] if name.startswith("content:") else name.split(":")[0]
@@ -195,19 +212,20 @@ def _search_inside(ctx: SearchContext, place: Place, f, k: int) -> None:
             ctx.steps.isolated(ctx, place, systems, INSIDE_DEGREE)
 
 
-def _split_system(ctx: SearchContext, f, polys) -> list[list]:
-    """``f = 0`` and ``polys = 0`` as a union of smaller systems when ``polys`` are one
-    polynomial ``g`` (up to constants): one system ``[f, h]`` per factor ``h`` of ``g``
-    with real points (factors without are listed as dropped). A minor such as
-    ``(1 + t_3^2)^2 (t_4^2 - 2 t_4 - 1)`` then gives a set in two variables (``f`` in
-    ``t_2``, ``h`` in ``t_4``), not one in three. Otherwise ``[[f, *polys]]``."""
+def _split_system(ctx: SearchContext, f: list, polys) -> list[list]:
+    """``f = 0`` (the family's polynomials) and ``polys = 0`` as a union of smaller
+    systems when ``polys`` are one polynomial ``g`` (up to constants): one system
+    ``[*f, h]`` per factor ``h`` of ``g`` with real points (factors without are listed
+    as dropped). A minor such as ``(1 + t_3^2)^2 (t_4^2 - 2 t_4 - 1)`` then gives a set
+    in two variables (``f`` in ``t_2``, ``h`` in ``t_4``), not one in three. Otherwise
+    ``[[*f, *polys]]``."""
     g = polys[0]
     if g.is_constant() or not all(_proportional(p, g) for p in polys[1:]):
-        return [[f, *polys]]
+        return [[*f, *polys]]
     factored = bounded_factor(ctx, g)
     if factored is None:
-        return [[f, *polys]]
-    return [[f, h] for h in (normalize(h) for h, _e in factored[1])
+        return [[*f, *polys]]
+    return [[*f, h] for h in (normalize(h) for h, _e in factored[1])
             if not no_real_points(ctx, h)]
 
 
