@@ -175,6 +175,10 @@ _WORDS: dict[str, Callable[[Mapping[str, Any]], str]] = {
         f"{f['seconds']} s (more than the {f['left']} s left under the time bound, and "
         "it cannot be interrupted) was not computed: the sets it would have solved were "
         "not searched"),
+    "operation_over_bound": lambda f: (
+        f"a {f['operation']} in {', '.join(f['variables'])} estimated at about "
+        f"{f['seconds']} s (over the {f['bound']} s one step that cannot be interrupted "
+        "may take) was not computed: the sets it would have solved were not searched"),
     "points_not_decided": lambda f: (
         f"the real points where {f['polynomial']} = 0 (degree {f['degree']}) inside a "
         f"family with no rational parametrization: numbers not decided (points of "

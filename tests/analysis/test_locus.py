@@ -577,6 +577,32 @@ def test_a_resultant_that_would_outlast_the_time_left_is_not_started(monkeypatch
     assert facts["variables"] == ("a", "b") and facts["left"] <= 60 < facts["seconds"]
 
 
+def test_a_resultant_estimated_over_its_bound_is_not_started(monkeypatch):
+    """With or without a time bound, a resultant estimated to take more than
+    RESULTANT_SECONDS (flint cannot interrupt it) is refused and said; its work is
+    decided from the sizes alone."""
+    from types import SimpleNamespace
+
+    import flint
+
+    from coopkin_sym.analysis.locus import algebra
+    from coopkin_sym.exact.sizes import resultant_work
+
+    zctx = flint.fmpz_mpoly_ctx.get(("a", "b"), "degrevlex")
+    a, b = zctx.gens()
+    ctx = SimpleNamespace(ring_names=("a", "b"), locus=SimpleNamespace(unexplored=[]))
+    p, q = (2**90 * a**2 + 3 * b**2 - 1), (a - 7 * b**3 + 5)
+    work = resultant_work(p, q, 0)
+    monkeypatch.setattr(algebra, "RESULTANT_WORK_RATE", work // 12)   # about 12 s
+    assert algebra.bounded_resultant(ctx, p, q, "a") is None
+    (remark,) = ctx.locus.unexplored
+    assert remark.kind == "operation_over_bound"
+    assert dict(remark.facts) == {"operation": "resultant", "variables": ("a", "b"),
+                                  "seconds": 12, "bound": 10}
+    monkeypatch.setattr(algebra, "RESULTANT_WORK_RATE", work // 9)    # about 9 s
+    assert algebra.bounded_resultant(ctx, p, q, "a") == p.resultant(q, "a")
+
+
 def test_linear_disjointness_over_its_degree_bound_is_not_claimed(monkeypatch):
     """Q(sqrt 2) and Q(sqrt 3) are linearly disjoint (degree 4 compositum); with the
     bound below 4 the resultant is not taken, and nothing is claimed."""

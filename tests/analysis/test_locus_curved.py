@@ -558,3 +558,24 @@ def test_a_root_times_an_algebraic_point_is_decided_and_searched(seed, family):
                        for k, v in point.items())
         _rises_exactly_there(system, raised, [(at, off)])
     assert certify_locus(system, locus, timeout=120).certified
+
+
+def test_where_a_family_parametrization_fails_its_points_are_searched():
+    """The five-bar at q1 = pi: a curve in (t_q2, t_q3, t_q4) with Ni 1 is written
+    t_q3 = -f0/f1, f1 = 2 (t_q4 + 1); where f0 = f1 = 0 (t_q4 = -1, t_q2 = -2, t_q3
+    free) the parametrization says nothing. That set is now searched as a set of its
+    own: its point t_q3 = 4/3 (the curve's limit there) has Ni 1, which an
+    independent analysis confirms, and Ni is back to 0 along the set (t_q3 = 1/2)."""
+    locus = shipped_locus("five-bar")
+    system = coopkin_sym.load("five-bar")
+    at = "q1=pi,q2=2*atan(-2),q3=2*atan(4/3),q4=-pi/2,L=1"
+    (point,) = [c for c in locus.components if c.kind == "isolated" and c.chart == ("q1",)
+                and str(c.condition) == "q1 = pi, q3 = 2*atan(4/3), q4 = -pi/2, q2 = "
+                                        "2*atan(-2)"]
+    assert point.numbers == {"Nm": 3, "Nc": 3, "Ni": 1, "Nr": 0, "Ng": 2, "Nd": 0, "Nh": 0}
+    assert system.analyze(at=at).numbers.as_dict() == point.numbers
+    off = system.analyze(at=at.replace("2*atan(4/3)", "2*atan(1/2)")).numbers
+    assert off.Ni == 0
+    (curve,) = [c for c in locus.components if c.chart == ("q1",) and c.kind == "subvariety"
+                and c.numbers == point.numbers]
+    assert [o.text for o in curve.outside] == ["t_q4 + 1"]

@@ -33,6 +33,7 @@ SAMPLE_FOR = {("family_too_large", "variables"): ("t_q1", "t_q2"),
               ("block_not_solved", "bound"): (6, 200),
               ("operation_too_large", "variables"): ("t_q1", "t_q2"),
               ("operation_too_slow", "variables"): ("t_q1", "t_q2"),
+              ("operation_over_bound", "variables"): ("t_q1", "t_q2"),
               ("inside_not_searched", "limit"): "terms"}
 
 

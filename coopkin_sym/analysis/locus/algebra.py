@@ -61,12 +61,17 @@ RESULTANT_RATE = 25_000
 #: here, on resultants in two variables with coefficients of up to 120 bits): one that
 #: would not end in the time left is not started.
 RESULTANT_WORK_RATE = 40_000_000
+#: The longest a single resultant may be estimated to take (``work /
+#: RESULTANT_WORK_RATE`` seconds), with or without a time bound: flint cannot interrupt
+#: it, so a longer one is not started (deterministic: decided from the sizes alone).
+RESULTANT_SECONDS = 10
 
 
 def bounded_resultant(ctx: SearchContext, p, q, name: str):
     """The resultant of ``p`` and ``q`` in the variable ``name``, or None when its
-    estimated size is over :data:`RESULTANT_TERMS`, or over what the time left allows
-    under a time bound (then a remark says so)."""
+    estimated size is over :data:`RESULTANT_TERMS`, its estimated time over
+    :data:`RESULTANT_SECONDS`, or over what the time left allows under a time bound
+    (then a remark says so)."""
     size = resultant_terms(p, q, ctx.ring_names.index(name))
     bound = RESULTANT_TERMS
     left = deadline.remaining()
@@ -75,14 +80,18 @@ def bounded_resultant(ctx: SearchContext, p, q, name: str):
     if size > bound:
         _too_large(ctx, "resultant", size, bound, [p, q])
         return None
-    if left is not None:
-        seconds = resultant_work(p, q, ctx.ring_names.index(name)) / RESULTANT_WORK_RATE
-        if seconds > max(left, 0.0):
-            add_once(ctx.locus.unexplored, Remark.of(
-                "operation_too_slow", operation="resultant",
-                variables=[n for n in ctx.ring_names if n in vars_of(ctx, p) + vars_of(ctx, q)],
-                seconds=max(1, round(seconds)), left=max(0, round(left))))
-            return None
+    seconds = resultant_work(p, q, ctx.ring_names.index(name)) / RESULTANT_WORK_RATE
+    names = [n for n in ctx.ring_names if n in vars_of(ctx, p) + vars_of(ctx, q)]
+    if left is not None and seconds > max(left, 0.0):
+        add_once(ctx.locus.unexplored, Remark.of(
+            "operation_too_slow", operation="resultant", variables=names,
+            seconds=max(1, round(seconds)), left=max(0, round(left))))
+        return None
+    if seconds > RESULTANT_SECONDS:
+        add_once(ctx.locus.unexplored, Remark.of(
+            "operation_over_bound", operation="resultant", variables=names,
+            seconds=round(seconds), bound=RESULTANT_SECONDS))
+        return None
     deadline.spend(size, "a resultant")   # under a work budget: one step per term
     return p.resultant(q, name)
 

@@ -58,6 +58,7 @@ REMARK_KINDS: dict[str, tuple[str, ...]] = {
     "points_not_decided": ("polynomial", "degree", "bound"),
     "operation_too_large": ("operation", "variables", "size", "bound"),
     "operation_too_slow": ("operation", "variables", "seconds", "left"),
+    "operation_over_bound": ("operation", "variables", "seconds", "bound"),
     "fields_not_disjoint": ("first", "second"),
     "deeper_not_explored": ("component", "condition", "reason", "bound"),
     "common_root_not_searched": ("equations", "variable"),

@@ -448,6 +448,7 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
     rows_x = substitute_rows(place.rows, kx, h0, h1)
     inner = dict(place.point)
     inner[x] = (h0, h1)
+    _where_denominator_vanishes(ctx, place, [*polys, h], h0, h1)
     factored = bounded_factor(ctx, common)
     if factored is None:
         return
@@ -461,6 +462,21 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
         k = normalize(k)
         if not no_real_points(ctx, k):
             _linear_x_family(ctx, place, h, (kx, h0, h1), rows_x, inner, k, y)
+
+
+def _where_denominator_vanishes(ctx: SearchContext, place: Place, polys, f0, f1) -> None:
+    """The part of a family ``polys = 0`` that its parametrization ``v = -f0/f1`` does
+    not reach: where ``f0 = f1 = 0`` too (``v`` free there), searched as a set of its
+    own (its numbers decided, and inside it), as :func:`~.charts.chart_points` does for
+    a hypersurface; each such system once."""
+    if f1.is_constant():
+        return
+    system = [*polys, f0, f1]
+    key = ("denominator", frozenset(str(p) for p in system), frozenset(place.point or ()))
+    if key in ctx.searched:
+        return
+    ctx.searched.add(key)
+    ctx.steps.isolated(ctx, place, [system])
 
 
 def _charts_after(charts, at, denominator) -> tuple:
@@ -490,6 +506,7 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
 
         if off_charts([*place.charts, h1], at_xy):
             return
+        _where_denominator_vanishes(ctx, place, [h, k], k0, k1)
         rows = substitute_rows(rows_x, ky, k0, k1)
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
         decided = Remark.of("decided_two_substitutions")
@@ -585,6 +602,7 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     if off_charts([*place.charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
                   quotient):
         return
+    _where_denominator_vanishes(ctx, place, [*polys, h], c0, c1)
     rows = substitute_rows(place.rows, ky, c0, c1)
     numbers = numbers_on(ctx, rows, quotient, place.base)
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0
