@@ -243,6 +243,9 @@ def before_after(before: dict, rows: list[dict], info,
         modules = {name for name, _ in again}
         rows = [r for r in rows if r.get("module") in modules]
         new = ", ".join(sorted({code for _, code in again}))
+        measured = {code for name, code in before.get("again", []) if name in modules}
+        if measured:   # the earlier run measured these modules again too
+            old = ", ".join(sorted(measured))
         only = " Only the modules measured again: " + ", ".join(sorted(modules)) + "."
     out = [f"## Before and after: package commit {old} and {new}", "",
            "Our time of each case both runs measured (`speedup = before / after`; the "
