@@ -8,9 +8,10 @@ Elements are ``fmpq_poly`` in ``x`` reduced modulo ``g`` (``g`` irreducible).
 Example
 -------
 >>> import flint
->>> g = flint.fmpq_poly([1, 0, -10, 0, 1])            # x = sqrt(2) + sqrt(3)
->>> minimal_polynomial(g, flint.fmpq_poly([0, -9, 0, 1]) / 2)   # sqrt(2)
-x^2 + (-2)
+>>> two, three = flint.fmpq_poly([-2, 0, 1]), flint.fmpq_poly([-3, 0, 1])
+>>> c, m, w, _ = compositum(two, three, [])      # the pairs (+-sqrt 2, +-sqrt 3)
+>>> str(m), str((w * w) % m)                      # one orbit: Q(sqrt 2 + sqrt 3)
+('x^4 + (-10)*x^2 + 1', '2')
 """
 
 from __future__ import annotations
