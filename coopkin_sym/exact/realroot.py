@@ -145,10 +145,7 @@ class RealRoot:
         m = minimal_polynomial(g, value % g)
         if m.degree() > 2 or m.degree() >= self.degree:
             return None
-        den = 1
-        for c in m.coeffs():
-            den = den * int(c.q) // gcd(den, int(c.q))
-        own = RealRoot.all_of([int(c * den) for c in m.coeffs()])
+        own = RealRoot.all_of(m.numer().coeffs())
         if len(own) == 1:
             return own[0]
         low, high = own

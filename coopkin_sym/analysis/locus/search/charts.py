@@ -15,7 +15,6 @@ from coopkin_sym.analysis.decomposition import attains
 from coopkin_sym.analysis.locus.conditions import Condition, Value
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark
-from coopkin_sym.analysis.locus.search.codimension import isolated
 from coopkin_sym.analysis.locus.search.components import _new_component, wider_component
 from coopkin_sym.analysis.locus.witness import (
     attach_witness,
@@ -68,14 +67,6 @@ def slice_chart(ctx: SearchContext, config: Configuration, joints: Sequence[str]
              "row_contacts": ctx.row_contacts, "symbols": symbols, "ring": ring,
              "rows0": q_rows, "kin": None}
     return chart, q_rows
-
-
-def chart_points(ctx: SearchContext, place: Place, f0, f1) -> None:
-    """The part of ``f1 x + f0 = 0`` that ``x = -f0/f1`` does not reach: ``f0 = f1 = 0``
-    (codimension 2 when ``f1`` is not constant), searched as a set of its own."""
-    if f1.is_constant():
-        return
-    isolated(ctx, place, [[f0, f1]])
 
 
 def pi_slices(ctx: SearchContext, pi_size: int | None = None) -> None:

@@ -58,9 +58,7 @@ from coopkin_sym.analysis.locus.witness import (
     to_at,
 )
 from coopkin_sym.analysis.mobility import decompose, numbers_modulo
-from coopkin_sym.exact.numberfield import (
-    NumberField,
-)
+from coopkin_sym.exact.numberfield import NumberField
 from coopkin_sym.exact.quotient import (
     Quotient,
     Tower,
@@ -448,7 +446,7 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
     rows_x = substitute_rows(place.rows, kx, h0, h1)
     inner = dict(place.point)
     inner[x] = (h0, h1)
-    _where_denominator_vanishes(ctx, place, [*polys, h], h0, h1)
+    where_parametrization_fails(ctx, place, [*polys, h], h0, h1)
     factored = bounded_factor(ctx, common)
     if factored is None:
         return
@@ -464,11 +462,11 @@ def _solve_linear_x(ctx: SearchContext, place: Place, polys, h, x, y) -> None:
             _linear_x_family(ctx, place, h, (kx, h0, h1), rows_x, inner, k, y)
 
 
-def _where_denominator_vanishes(ctx: SearchContext, place: Place, polys, f0, f1) -> None:
-    """The part of a family ``polys = 0`` that its parametrization ``v = -f0/f1`` does
-    not reach: where ``f0 = f1 = 0`` too (``v`` free there), searched as a set of its
-    own (its numbers decided, and inside it), as :func:`~.charts.chart_points` does for
-    a hypersurface; each such system once."""
+def where_parametrization_fails(ctx: SearchContext, place: Place, polys, f0, f1) -> None:
+    """The part of a set ``polys = 0`` (a hypersurface ``f1 v + f0 = 0``: no ``polys``)
+    that its parametrization ``v = -f0/f1`` does not reach: where ``f0 = f1 = 0`` too
+    (``v`` free there), searched as a set of its own (its numbers decided, and inside
+    it) when ``f1`` is not constant; each such system once per parametrization."""
     if f1.is_constant():
         return
     system = [*polys, f0, f1]
@@ -506,7 +504,7 @@ def _linear_x_family(ctx: SearchContext, place: Place, h, at: tuple, rows_x, inn
 
         if off_charts([*place.charts, h1], at_xy):
             return
-        _where_denominator_vanishes(ctx, place, [h, k], k0, k1)
+        where_parametrization_fails(ctx, place, [h, k], k0, k1)
         rows = substitute_rows(rows_x, ky, k0, k1)
         numbers = decompose(rows, ctx.model, ctx.row_contacts, ctx.ring.zctx).numbers
         decided = Remark.of("decided_two_substitutions")
@@ -602,7 +600,7 @@ def _solve_curved_x(ctx: SearchContext, place: Place, polys, h, x, y,
     if off_charts([*place.charts, c1], lambda c: substitute(c, ky, c0, c1, c.degrees()[ky]),
                   quotient):
         return
-    _where_denominator_vanishes(ctx, place, [*polys, h], c0, c1)
+    where_parametrization_fails(ctx, place, [*polys, h], c0, c1)
     rows = substitute_rows(place.rows, ky, c0, c1)
     numbers = numbers_on(ctx, rows, quotient, place.base)
     y_eq = c1 * ctx.ring.zctx.gens()[ky] + c0

@@ -244,8 +244,8 @@ def _denominators(ctx: SearchContext, chain: dict | None, equations: list[str]) 
     """The irreducible factors of the denominators of a linear parametrization: its
     image is the set where the equations hold and none of them vanishes (where one
     does, the equations may hold on a wider set, searched apart by
-    :func:`chart_points`). None for one irreducible equation (in a chart): its zero
-    set is the closure of that image."""
+    :func:`~.codimension.where_parametrization_fails`). None for one irreducible
+    equation (in a chart): its zero set is the closure of that image."""
     if len(beyond_chart(ctx, equations)) <= 1:
         return []
     out: list[str] = []

@@ -24,7 +24,7 @@ from coopkin_sym.analysis.locus.algebra import (
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark
 from coopkin_sym.exact.numberfield import change_generator
-from coopkin_sym.exact.realroot import RealRoot
+from coopkin_sym.exact.realroot import real_root_count
 from coopkin_sym.exact.subfields import compositum, minimal_polynomial, product_generators
 from coopkin_sym.exact.substitution import substitute_rows
 
@@ -56,14 +56,14 @@ def joined_points(ctx: SearchContext, x: str, h, point: tuple, max_degree: int |
     sign = "+" if c > 0 else "-"
     text = f"{x} {sign} {inner}" if abs(c) == 1 else f"{x} {sign} {abs(c)}*{inner}"
     orbits = [m for m, _e in minimal.factor()[1]]
-    values = [dict(zip(irrational, (e % m for e in expressed), strict=True))
-              for m in orbits]
-    apart = _orbit_equations(ctx, x, [root % m for m in orbits], orbits, values)
+    per_orbit = [dict(zip(irrational, (e % m for e in expressed), strict=True))
+                 for m in orbits]
+    apart = _orbit_equations(ctx, x, [root % m for m in orbits], orbits, per_orbit)
     if apart is None:
         return None
     out = []
-    for m, here, orbit in zip(orbits, values, apart, strict=True):
-        if not RealRoot.all_of(m.numer().coeffs()):
+    for m, here, orbit in zip(orbits, per_orbit, apart, strict=True):
+        if real_root_count(m) == 0:
             continue   # no real pair in this orbit
         equations = [h, *eqs, *([orbit] if orbit is not None else [])]
         if max_degree is not None and m.degree() > max_degree:
@@ -78,7 +78,7 @@ def joined_points(ctx: SearchContext, x: str, h, point: tuple, max_degree: int |
 
 def _orbit_equations(ctx: SearchContext, x: str, roots: list, orbits: list, values: list
                      ) -> list | None:
-    """An equation that holds on each orbit of :func:`_joined_points` and on no other:
+    """An equation that holds on each orbit of :func:`joined_points` and on no other:
     ``M_i(L) = 0``, ``M_i`` the minimal polynomial on orbit ``i`` of a linear form
     ``L = x + c u`` or ``x + c u + d v`` (``u, v`` other coordinates), the first that
     makes them pairwise distinct (so, irreducible, with no common root). ``[None]``
@@ -98,13 +98,8 @@ def _orbit_equations(ctx: SearchContext, x: str, roots: list, orbits: list, valu
             t = zctx.gens()[ctx.ring_names.index(x)] + sum(
                 (c * zctx.gens()[ctx.ring_names.index(u)]
                  for u, c in zip(used, coefficients, strict=True)), zctx.constant(0))
-            out = []
-            for form in forms:
-                den = math.lcm(*(int(a.q) for a in form.coeffs()))
-                out.append(normalize(sum((int(a * den) * t**k
-                                          for k, a in enumerate(form.coeffs()) if a != 0),
-                                         zctx.constant(0))))
-            return out
+            return [normalize(sum((int(a) * t**k for k, a in enumerate(form.numer().coeffs())
+                                   if a), zctx.constant(0))) for form in forms]
     return None
 
 
@@ -156,16 +151,16 @@ def irrational_family(ctx: SearchContext, place: Place, values: dict, x: str, g,
         fixed[n] = (-sum((zctx.constant(int(c * den)) * ga**p * gb**q
                           for (p, q), c in terms.items()), zctx.constant(0)),
                     zctx.constant(den))
-    here = place.inside(rows=substitute_pairs(ctx, place.rows, fixed), equations=equations,
+    here = place.inside(rows=_substitute_chain(ctx, place.rows, fixed), equations=equations,
                         point={**place.point, **fixed},
-                        charts=tuple(c for c in (substitute_pairs(ctx, [[c]], fixed)[0][0]
+                        charts=tuple(c for c in (_substitute_chain(ctx, [[c]], fixed)[0][0]
                                                  for c in place.charts)
                                      if not c.is_constant()))
     return here, ((normalize(as_poly(ctx, m_i, a)[0]), normalize(as_poly(ctx, m_j, b)[0])),
                   (ctx.ring_names.index(a), ctx.ring_names.index(b)))
 
 
-def substitute_pairs(ctx: SearchContext, rows, values: dict):
+def _substitute_chain(ctx: SearchContext, rows, values: dict):
     """``rows`` with each variable of ``values`` replaced by ``-f0/f1`` (``values`` maps
     it to ``(f0, f1)``, polynomials in variables not among ``values``), rows scaled by
     the cleared denominators."""

@@ -15,8 +15,7 @@ from coopkin_sym.analysis.locus.algebra import (
 )
 from coopkin_sym.analysis.locus.context import Place, SearchContext
 from coopkin_sym.analysis.locus.remarks import Remark, add_once
-from coopkin_sym.analysis.locus.search.charts import chart_points
-from coopkin_sym.analysis.locus.search.codimension import isolated
+from coopkin_sym.analysis.locus.search.codimension import isolated, where_parametrization_fails
 from coopkin_sym.analysis.locus.search.components import (
     HIDDEN_DEPTH,
     Steps,
@@ -109,7 +108,7 @@ def explore(ctx: SearchContext, place: Place) -> None:
             if any(not c.gcd(f).is_constant() for c in place.charts):
                 # the image of f = 0 lies where a parametrization's denominator
                 # vanishes: those points are searched from the enclosing variables
-                # (chart_points)
+                # (where_parametrization_fails)
                 continue
             split = str(f) in splitting
             _decide_factor(ctx, place, f, drops, split=split)
@@ -144,7 +143,7 @@ def _decide_factor(ctx: SearchContext, place: Place, f, drops, split: bool = Fal
         return
     sub_charts = tuple(c for c in [*sub_charts, f1] if not c.is_constant())
     eqs = place.equations + [f_text]
-    chart_points(ctx, place.inside(equations=eqs), f0, f1)
+    where_parametrization_fails(ctx, place.inside(equations=eqs), [], f0, f1)
     # f = 0 lies in the place: its ranks are at most the place's, and reaching them at
     # a point of it proves its numbers are the place's
     numbers = place.base if attains(sub_rows, ctx.model, place.base) else decompose(
